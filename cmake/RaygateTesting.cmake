@@ -1,0 +1,23 @@
+# raygate_add_test(NAME <name> LABEL unit|integration SOURCES ... [LIBS ...] [TIMEOUT s])
+# One GoogleTest executable; its tests are registered with CTest individually and labelled,
+# so `ctest -L unit` runs the fast ones.
+include(GoogleTest)
+
+function(raygate_add_test)
+  cmake_parse_arguments(T "" "NAME;LABEL;TIMEOUT" "SOURCES;LIBS" ${ARGN})
+  if(NOT T_LABEL MATCHES "^(unit|integration)$")
+    message(FATAL_ERROR "raygate_add_test(${T_NAME}): LABEL must be unit or integration")
+  endif()
+  if(NOT T_TIMEOUT)
+    set(T_TIMEOUT 120)
+  endif()
+  add_executable(${T_NAME} ${T_SOURCES})
+  target_link_libraries(${T_NAME} PRIVATE ${T_LIBS} GTest::gtest GTest::gtest_main GTest::gmock
+                        raygate_warnings)
+  target_compile_definitions(${T_NAME} PRIVATE
+    RAYGATE_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
+    RAYGATE_BINARY_DIR="${PROJECT_BINARY_DIR}"
+    RAYGATE_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
+  gtest_discover_tests(${T_NAME} PROPERTIES LABELS ${T_LABEL} TIMEOUT ${T_TIMEOUT}
+                       DISCOVERY_TIMEOUT 60)
+endfunction()

@@ -72,7 +72,7 @@ void generate(std::string_view name, const GenerateOptions& options, std::ostrea
     throw std::invalid_argument("unknown scene '" + std::string(name) +
                                 "' (raygate scenes list shows the 13 SPD scenes)");
   }
-  const int size = options.size == 0 ? generator->default_size : options.size;
+  const int size = options.size.value_or(generator->default_size);
   const int limit = max_size(*generator);
   if (size < 1 || size > limit) {
     throw std::invalid_argument("scene '" + std::string(name) + "': size " +
@@ -84,7 +84,12 @@ void generate(std::string_view name, const GenerateOptions& options, std::ostrea
                                 std::to_string(options.tessellation_resolution) +
                                 " is out of range 1..64");
   }
+  if (options.width < 0 || options.width > 16384 || options.height < 0 || options.height > 16384) {
+    throw std::invalid_argument("resolution " + std::to_string(options.width) + "x" +
+                                std::to_string(options.height) + " is out of range 1..16384");
+  }
   NffWriter writer(out, options.mode, options.tessellation_resolution);
+  writer.override_resolution(options.width, options.height);
   generator->generate(size, writer);
 }
 

@@ -2,6 +2,7 @@
 // name, with its size factor, written as NFF.
 #pragma once
 
+#include <optional>
 #include <ostream>
 #include <span>
 #include <string>
@@ -12,9 +13,11 @@
 namespace raygate::scenes {
 
 struct GenerateOptions {
-  int size = 0;  // 0: the scene's SPD default
+  std::optional<int> size;  // empty: the scene's SPD default
   OutputMode mode = OutputMode::curves;
   int tessellation_resolution = 3;
+  int width = 0;   // 0: the scene's own resolution
+  int height = 0;
 };
 
 struct SceneGenerator {

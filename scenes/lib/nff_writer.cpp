@@ -50,7 +50,8 @@ void NffWriter::view(const Vec3& from, const Vec3& at, const Vec3& up, double an
   out_ << "\nup ";
   write_vec(up);
   out_ << "\nangle " << format_g(angle_degrees) << "\nhither " << format_g(hither)
-       << "\nresolution " << width << ' ' << height << '\n';
+       << "\nresolution " << (width_override_ > 0 ? width_override_ : width) << ' '
+       << (height_override_ > 0 ? height_override_ : height) << '\n';
 }
 
 void NffWriter::light(const Vec3& position) {

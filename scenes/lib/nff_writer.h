@@ -42,6 +42,13 @@ class NffWriter {
   NffWriter(std::ostream& out, OutputMode mode = OutputMode::curves,
             int tessellation_resolution = 3);
 
+  // Suites render SPD scenes smaller than the SPD's 512x512: the `resolution` line is written
+  // with these values instead of the generator's (0 keeps the generator's).
+  void override_resolution(int width, int height) {
+    width_override_ = width;
+    height_override_ = height;
+  }
+
   OutputMode mode() const { return mode_; }
   int tessellation_resolution() const { return resolution_; }
 
@@ -69,6 +76,8 @@ class NffWriter {
   std::ostream& out_;
   OutputMode mode_;
   int resolution_;
+  int width_override_ = 0;
+  int height_override_ = 0;
 };
 
 }  // namespace raygate::scenes

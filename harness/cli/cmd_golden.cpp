@@ -1,0 +1,149 @@
+// `raygate golden verify | bless`: the baseline's golden image of every suite scene. verify
+// re-renders and demands identical pixels (the baseline is deterministic); bless rewrites goldens
+// only for the scenes named (or all), never as a side effect of anything else.
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "cli/commands.h"
+#include "compare/golden.h"
+#include "compare/image_compare.h"
+#include "core/error.h"
+#include "core/paths.h"
+#include "core/sha256.h"
+#include "runner/baseline_tool.h"
+#include "runner/scene_files.h"
+#include "runner/suite.h"
+
+namespace raygate::cli {
+namespace {
+
+struct GoldenArgs {
+  std::string suite = "ci";
+  std::vector<std::string> scenes;
+  std::string golden_dir;  // default: <data root>/golden
+  std::string work_dir = ".raygate/golden";
+  std::string baseline;
+};
+
+struct GoldenContext {
+  Suite suite;
+  std::vector<SuiteScene> selected;
+  std::filesystem::path golden_dir;
+  std::filesystem::path work_dir;
+  BaselineTool baseline;
+};
+
+GoldenContext open_context(const GoldenArgs& args) {
+  const ToolPaths tools = locate_tools(args.baseline);
+  Suite suite = load_suite(args.suite, tools.data_root);
+  std::vector<SuiteScene> selected = select_scenes(suite, args.scenes);
+  const std::filesystem::path golden_dir =
+      args.golden_dir.empty() ? tools.data_root / "golden" : std::filesystem::path(args.golden_dir);
+  return {std::move(suite), std::move(selected), golden_dir, args.work_dir,
+          BaselineTool(tools.baseline)};
+}
+
+// Renders one suite scene with the baseline into the work directory; a failed render is an
+// infrastructure failure (the instrument itself broke).
+BaselineRender render_scene(const GoldenContext& ctx, const SuiteScene& scene) {
+  const std::filesystem::path nff = prepare_scene(scene, ctx.work_dir / "scenes");
+  BaselineOptions options;
+  options.sampling = ctx.suite.sampling;
+  BaselineRender render = ctx.baseline.render(nff, ctx.work_dir / "renders" / (scene.id + ".png"), options);
+  if (!render.process.succeeded()) {
+    throw InfraError("raygate-baseline " + render.process.describe() + " on " + nff.string() +
+                     "; log: " + render.log.string() + "\n" + log_tail(render.log, 10));
+  }
+  return render;
+}
+
+int run_verify(const GoldenArgs& args) {
+  const GoldenContext ctx = open_context(args);
+  const GoldenManifest manifest = load_golden_manifest(ctx.golden_dir);
+  const std::string current_hash = ctx.baseline.source_hash();
+  if (!manifest.baseline_source_sha256.empty() && manifest.baseline_source_sha256 != current_hash) {
+    fmt::print("note: goldens were blessed with baseline source {}, this baseline is {}\n",
+               manifest.baseline_source_sha256.substr(0, 12), current_hash.substr(0, 12));
+  }
+  int missing = 0;
+  int mismatched = 0;
+  for (const SuiteScene& scene : ctx.selected) {
+    const GoldenEntry* entry = manifest.find(scene.id);
+    if (entry == nullptr || !std::filesystem::exists(ctx.golden_dir / entry->file)) {
+      fmt::print("MISSING   {:<12} no golden image; create it with: raygate golden bless {}\n",
+                 scene.id, scene.id);
+      ++missing;
+      continue;
+    }
+    const BaselineRender render = render_scene(ctx, scene);
+    const ImageMetrics m = compare_images(render.image, ctx.golden_dir / entry->file, {});
+    if (m.identical()) {
+      fmt::print("ok        {:<12} identical ({:.2f} s)\n", scene.id, render.process.wall_seconds);
+      continue;
+    }
+    ++mismatched;
+    const std::filesystem::path evidence = ctx.work_dir / "evidence";
+    write_evidence(render.image, ctx.golden_dir / entry->file, evidence, scene.id);
+    fmt::print("DIFFERENT {:<12} {}; evidence in {}\n", scene.id, summarize(m), evidence.string());
+  }
+  fmt::print("{} scenes: {} identical, {} different, {} missing\n", ctx.selected.size(),
+             ctx.selected.size() - mismatched - missing, mismatched, missing);
+  if (missing > 0) return to_int(ExitCode::usage);
+  return mismatched > 0 ? to_int(ExitCode::regression) : 0;
+}
+
+int run_bless(const GoldenArgs& args) {
+  const GoldenContext ctx = open_context(args);
+  GoldenManifest manifest = load_golden_manifest(ctx.golden_dir);
+  if (!manifest.suite.empty() && manifest.suite != ctx.suite.name) {
+    throw UsageError(ctx.golden_dir.string() + " holds goldens of suite '" + manifest.suite +
+                     "', not '" + ctx.suite.name + "' (use --golden-dir)");
+  }
+  manifest.suite = ctx.suite.name;
+  manifest.baseline_version = ctx.baseline.version_line();
+  manifest.baseline_source_sha256 = ctx.baseline.source_hash();
+  for (const SuiteScene& scene : ctx.selected) {
+    const BaselineRender render = render_scene(ctx, scene);
+    const std::string file = scene.id + ".png";
+    std::filesystem::create_directories(ctx.golden_dir);
+    std::filesystem::copy_file(render.image, ctx.golden_dir / file,
+                               std::filesystem::copy_options::overwrite_existing);
+    manifest.upsert({scene.id, scene.scene, scene.size, render.stats.value("width", 0),
+                     render.stats.value("height", 0), ctx.suite.sampling, "none", file,
+                     sha256_file_hex(ctx.golden_dir / file)});
+    save_golden_manifest(manifest, ctx.golden_dir);  // after each scene: an interrupted bless keeps its work
+    fmt::print("blessed   {:<12} {} ({:.2f} s)\n", scene.id, (ctx.golden_dir / file).string(),
+               render.process.wall_seconds);
+  }
+  return 0;
+}
+
+void add_common_options(CLI::App* cmd, GoldenArgs& args) {
+  cmd->add_option("--suite", args.suite, "Suite name or file")->capture_default_str();
+  cmd->add_option("--golden-dir", args.golden_dir, "Golden directory (default: raygate's golden/)");
+  cmd->add_option("--work-dir", args.work_dir, "Where scenes, renders and evidence go")
+      ->capture_default_str();
+  cmd->add_option("--baseline", args.baseline, "raygate-baseline to use (default: beside raygate)");
+}
+
+}  // namespace
+
+void add_golden_command(CLI::App& app, int& exit_code) {
+  CLI::App* golden = app.add_subcommand("golden", "Verify or bless the baseline's golden images");
+  golden->require_subcommand(1);
+
+  auto verify_args = std::make_shared<GoldenArgs>();
+  CLI::App* verify = golden->add_subcommand("verify", "Re-render and demand identical pixels");
+  add_common_options(verify, *verify_args);
+  verify->add_option("scenes", verify_args->scenes, "Suite scene ids (default: all)");
+  verify->callback([verify_args, &exit_code] { exit_code = run_verify(*verify_args); });
+
+  auto bless_args = std::make_shared<GoldenArgs>();
+  CLI::App* bless = golden->add_subcommand("bless", "Re-render and overwrite goldens (on request only)");
+  add_common_options(bless, *bless_args);
+  bless->add_option("scenes", bless_args->scenes, "Suite scene ids (default: all)");
+  bless->callback([bless_args, &exit_code] { exit_code = run_bless(*bless_args); });
+}
+
+}  // namespace raygate::cli

@@ -1,0 +1,13 @@
+// One function per subcommand: each adds itself to the application and, when chosen, runs and
+// leaves its exit code in `exit_code`. Errors travel up as raygate::Error to main().
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace raygate::cli {
+
+void add_scenes_command(CLI::App& app, int& exit_code);
+void add_golden_command(CLI::App& app, int& exit_code);
+void add_validate_command(CLI::App& app, int& exit_code);
+
+}  // namespace raygate::cli

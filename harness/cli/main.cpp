@@ -1,0 +1,35 @@
+// raygate: measures ray tracers against a fixed baseline tracer on the SPD scenes and gates
+// merges on the normalized ratio. This file only wires subcommands and maps errors to exit codes.
+#include <fmt/core.h>
+
+#include <CLI/CLI.hpp>
+#include <exception>
+
+#include "cli/commands.h"
+#include "core/error.h"
+#include "core/exit_codes.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"raygate: ray tracer regression harness, normalized against a baseline tracer"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("raygate ") + RAYGATE_VERSION);
+  int exit_code = 0;
+  raygate::cli::add_scenes_command(app, exit_code);
+  raygate::cli::add_golden_command(app, exit_code);
+  raygate::cli::add_validate_command(app, exit_code);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {
+    return app.exit(e);  // --help, --version
+  } catch (const CLI::ParseError& e) {
+    app.exit(e);
+    return raygate::to_int(raygate::ExitCode::usage);
+  } catch (const raygate::Error& e) {
+    fmt::print(stderr, "raygate: error: {}\n", e.what());
+    return raygate::to_int(e.code());
+  } catch (const std::exception& e) {
+    fmt::print(stderr, "raygate: internal error: {}\n", e.what());
+    return raygate::to_int(raygate::ExitCode::infrastructure);
+  }
+  return exit_code;
+}

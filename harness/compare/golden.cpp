@@ -1,0 +1,82 @@
+#include "compare/golden.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+
+#include "core/error.h"
+#include "core/fs.h"
+
+namespace raygate {
+namespace {
+
+using nlohmann::json;
+
+constexpr const char* kManifestName = "manifest.json";
+
+}  // namespace
+
+const GoldenEntry* GoldenManifest::find(const std::string& id) const {
+  for (const GoldenEntry& e : entries) {
+    if (e.id == id) return &e;
+  }
+  return nullptr;
+}
+
+void GoldenManifest::upsert(const GoldenEntry& entry) {
+  for (GoldenEntry& e : entries) {
+    if (e.id == entry.id) {
+      e = entry;
+      return;
+    }
+  }
+  entries.push_back(entry);
+}
+
+GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir) {
+  const std::filesystem::path path = golden_dir / kManifestName;
+  GoldenManifest manifest;
+  if (!std::filesystem::exists(path)) return manifest;
+  try {
+    const json doc = json::parse(read_file(path));
+    if (doc.at("schema_version").get<int>() != GoldenManifest::kSchemaVersion) {
+      throw UsageError(path.string() + ": schema_version " +
+                       std::to_string(doc.at("schema_version").get<int>()) +
+                       " is not supported (expected " +
+                       std::to_string(GoldenManifest::kSchemaVersion) + ")");
+    }
+    manifest.suite = doc.at("suite").get<std::string>();
+    manifest.baseline_version = doc.at("baseline").at("version").get<std::string>();
+    manifest.baseline_source_sha256 = doc.at("baseline").at("source_sha256").get<std::string>();
+    for (const json& e : doc.at("images")) {
+      manifest.entries.push_back({e.at("id"), e.at("scene"), e.at("size"), e.at("width"),
+                                  e.at("height"), e.at("sampling"), e.at("accel"), e.at("file"),
+                                  e.at("sha256")});
+    }
+  } catch (const json::exception& e) {
+    throw UsageError(path.string() + ": malformed golden manifest: " + e.what());
+  }
+  return manifest;
+}
+
+void save_golden_manifest(const GoldenManifest& manifest,
+                          const std::filesystem::path& golden_dir) {
+  std::vector<GoldenEntry> entries = manifest.entries;
+  std::sort(entries.begin(), entries.end(),
+            [](const GoldenEntry& a, const GoldenEntry& b) { return a.id < b.id; });
+  json images = json::array();
+  for (const GoldenEntry& e : entries) {
+    images.push_back({{"id", e.id}, {"scene", e.scene}, {"size", e.size}, {"width", e.width},
+                      {"height", e.height}, {"sampling", e.sampling}, {"accel", e.accel},
+                      {"file", e.file}, {"sha256", e.sha256}});
+  }
+  const json doc = {{"schema_version", GoldenManifest::kSchemaVersion},
+                    {"suite", manifest.suite},
+                    {"baseline",
+                     {{"version", manifest.baseline_version},
+                      {"source_sha256", manifest.baseline_source_sha256}}},
+                    {"images", images}};
+  write_file_atomically(golden_dir / kManifestName, doc.dump(2) + "\n");
+}
+
+}  // namespace raygate

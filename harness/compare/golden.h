@@ -1,0 +1,40 @@
+// Golden images: the baseline's own picture of every suite scene, and the manifest that says
+// how each was made (golden/manifest.json). Goldens change only on request (`golden bless`).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raygate {
+
+struct GoldenEntry {
+  std::string id;  // suite scene id
+  std::string scene;
+  int size = 0;
+  int width = 0;
+  int height = 0;
+  std::string sampling;
+  std::string accel;
+  std::string file;    // relative to the golden directory
+  std::string sha256;  // of the image file's bytes
+};
+
+struct GoldenManifest {
+  static constexpr int kSchemaVersion = 1;
+  std::string suite;
+  std::string baseline_version;  // the baseline's --version line when blessed
+  std::string baseline_source_sha256;
+  std::vector<GoldenEntry> entries;
+
+  const GoldenEntry* find(const std::string& id) const;
+  void upsert(const GoldenEntry& entry);  // replaces the entry with the same id
+};
+
+// A missing manifest yields an empty one; a malformed one is a UsageError naming the file.
+GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir);
+// Written atomically, entries sorted by id so diffs stay small.
+void save_golden_manifest(const GoldenManifest& manifest, const std::filesystem::path& golden_dir);
+
+}  // namespace raygate

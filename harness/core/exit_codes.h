@@ -1,0 +1,15 @@
+// The exit codes raygate promises (DESIGN.md §9). CI scripts branch on them, so they never change.
+#pragma once
+
+namespace raygate {
+
+enum class ExitCode : int {
+  pass = 0,            // everything measured; warnings allowed
+  regression = 1,      // the change made a scene slower or its image wrong
+  usage = 2,           // bad command line, adapter, policy or scene file
+  infrastructure = 3,  // raygate could not check out, build or measure
+};
+
+constexpr int to_int(ExitCode code) { return static_cast<int>(code); }
+
+}  // namespace raygate

@@ -1,0 +1,86 @@
+#include "core/fs.h"
+
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace raygate {
+namespace {
+
+std::string system_reason() { return std::strerror(errno); }
+
+// Writes all of `content` to fd, retrying short writes; false with errno set on failure.
+bool write_all(int fd, std::string_view content) {
+  while (!content.empty()) {
+    const ssize_t n = ::write(fd, content.data(), content.size());
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      return false;
+    }
+    content.remove_prefix(static_cast<std::size_t>(n));
+  }
+  return true;
+}
+
+}  // namespace
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+  const std::filesystem::path parent = path.parent_path().empty() ? "." : path.parent_path();
+  std::error_code ec;
+  std::filesystem::create_directories(parent, ec);
+  if (ec) throw InfraError("cannot create directory " + parent.string() + ": " + ec.message());
+
+  std::string temp = (parent / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0) throw InfraError("cannot write " + path.string() + ": " + system_reason());
+  const bool written = write_all(fd, content) && ::fsync(fd) == 0;
+  const std::string reason = written ? "" : system_reason();
+  ::close(fd);
+  if (!written) {
+    ::unlink(temp.c_str());
+    throw InfraError("cannot write " + path.string() + ": " + reason);
+  }
+  ::chmod(temp.c_str(), 0644);
+  if (std::rename(temp.c_str(), path.c_str()) != 0) {
+    const std::string rename_reason = system_reason();
+    ::unlink(temp.c_str());
+    throw InfraError("cannot replace " + path.string() + ": " + rename_reason);
+  }
+}
+
+std::string read_file(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) {
+    throw UsageError(path.string() + ": is a directory, expected a file");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UsageError(path.string() + ": cannot open: " + system_reason());
+  std::ostringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw UsageError(path.string() + ": read failed");
+  return buffer.str();
+}
+
+TempDir::TempDir(std::string_view prefix) {
+  std::string pattern =
+      (std::filesystem::temp_directory_path() / (std::string(prefix) + "-XXXXXX")).string();
+  if (::mkdtemp(pattern.data()) == nullptr) {
+    throw InfraError("cannot create a temporary directory: " + system_reason());
+  }
+  path_ = pattern;
+}
+
+TempDir::~TempDir() {
+  std::error_code ec;
+  std::filesystem::remove_all(path_, ec);
+}
+
+}  // namespace raygate

@@ -1,0 +1,31 @@
+// File helpers with the guarantees raygate's results need: a write either lands whole or not at
+// all (temp file, fsync, rename), and failures name the path and the system's reason.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace raygate {
+
+// Replaces `path` atomically with `content`; creates parent directories. On any failure
+// (including a full disk) the old file is untouched and an InfraError names the path and why.
+void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+// Whole file as bytes; throws UsageError (missing or unreadable input is the user's to fix).
+std::string read_file(const std::filesystem::path& path);
+
+// A fresh, empty directory under the system temp dir, removed by the destructor.
+class TempDir {
+ public:
+  explicit TempDir(std::string_view prefix = "raygate");
+  ~TempDir();
+  TempDir(const TempDir&) = delete;
+  TempDir& operator=(const TempDir&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+}  // namespace raygate

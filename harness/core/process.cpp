@@ -1,0 +1,310 @@
+#include "core/process.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <sched.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <deque>
+#include <fstream>
+#include <sstream>
+#include <utility>
+
+#include "core/error.h"
+
+extern char** environ;
+
+namespace raygate {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_of(const timeval& tv) {
+  return static_cast<double>(tv.tv_sec) + static_cast<double>(tv.tv_usec) * 1e-6;
+}
+
+int open_log(const std::filesystem::path& path) {
+  if (path.empty()) return -1;
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path());
+  const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+  if (fd < 0) throw InfraError("cannot create log " + path.string() + ": " + std::strerror(errno));
+  return fd;
+}
+
+void close_fd(int& fd) {
+  if (fd >= 0) ::close(fd);
+  fd = -1;
+}
+
+std::vector<std::string> build_environment(const ProcessSpec& spec) {
+  std::map<std::string, std::string> vars;
+  if (spec.inherit_environment) {
+    for (char** e = environ; e != nullptr && *e != nullptr; ++e) {
+      const std::string entry(*e);
+      const auto eq = entry.find('=');
+      if (eq != std::string::npos) vars[entry.substr(0, eq)] = entry.substr(eq + 1);
+    }
+  }
+  for (const auto& [key, value] : spec.environment) vars[key] = value;
+  std::vector<std::string> out;
+  for (const auto& [key, value] : vars) out.push_back(key + "=" + value);
+  return out;
+}
+
+std::vector<char*> c_strings(std::vector<std::string>& strings) {
+  std::vector<char*> out;
+  for (std::string& s : strings) out.push_back(s.data());
+  out.push_back(nullptr);
+  return out;
+}
+
+// posix_spawn has no affinity attribute; the child inherits the calling thread's mask, so the
+// mask is set around the spawn and restored after it.
+class ScopedAffinity {
+ public:
+  explicit ScopedAffinity(const std::vector<int>& cpus) {
+    if (cpus.empty()) return;
+    if (sched_getaffinity(0, sizeof saved_, &saved_) != 0) return;
+    cpu_set_t wanted;
+    CPU_ZERO(&wanted);
+    for (const int cpu : cpus) CPU_SET(cpu, &wanted);
+    active_ = sched_setaffinity(0, sizeof wanted, &wanted) == 0;
+  }
+  ~ScopedAffinity() {
+    if (active_) sched_setaffinity(0, sizeof saved_, &saved_);
+  }
+  ScopedAffinity(const ScopedAffinity&) = delete;
+  ScopedAffinity& operator=(const ScopedAffinity&) = delete;
+
+ private:
+  cpu_set_t saved_{};
+  bool active_ = false;
+};
+
+}  // namespace
+
+std::string ProcessResult::describe() const {
+  std::ostringstream out;
+  switch (outcome) {
+    case ProcessOutcome::exited:
+      out << "exited with status " << exit_code;
+      break;
+    case ProcessOutcome::signaled:
+      out << "killed by signal " << signal << " (" << sigabbrev_np(signal) << ")";
+      break;
+    case ProcessOutcome::timed_out:
+      out << "timed out after " << wall_seconds << " s";
+      break;
+    case ProcessOutcome::spawn_failed:
+      out << "could not start: " << spawn_error;
+      break;
+  }
+  return out.str();
+}
+
+Process Process::start(const ProcessSpec& spec) {
+  Process p;
+  p.spec_ = spec;
+  if (spec.argv.empty()) {
+    p.early_result_ = ProcessResult{};
+    p.early_result_->spawn_error = "empty command";
+    return p;
+  }
+  p.stdout_log_ = open_log(spec.stdout_path);
+  p.stderr_log_ = spec.stderr_path == spec.stdout_path ? -1 : open_log(spec.stderr_path);
+
+  int out_pipe[2];
+  int err_pipe[2];
+  if (::pipe2(out_pipe, O_CLOEXEC) != 0 || ::pipe2(err_pipe, O_CLOEXEC) != 0) {
+    throw InfraError(std::string("cannot create pipes: ") + std::strerror(errno));
+  }
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  const std::string stdin_path = spec.stdin_path.empty() ? "/dev/null" : spec.stdin_path.string();
+  posix_spawn_file_actions_addopen(&actions, 0, stdin_path.c_str(), O_RDONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, out_pipe[1], 1);
+  posix_spawn_file_actions_adddup2(&actions, err_pipe[1], 2);
+  if (!spec.working_directory.empty()) {
+    posix_spawn_file_actions_addchdir_np(&actions, spec.working_directory.c_str());
+  }
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  sigset_t no_signals;
+  sigset_t default_signals;
+  sigemptyset(&no_signals);
+  sigemptyset(&default_signals);
+  sigaddset(&default_signals, SIGPIPE);
+  sigaddset(&default_signals, SIGINT);
+  sigaddset(&default_signals, SIGTERM);
+  posix_spawnattr_setsigmask(&attr, &no_signals);
+  posix_spawnattr_setsigdefault(&attr, &default_signals);
+  posix_spawnattr_setpgroup(&attr, 0);  // own group: a timeout kills the tracer's children too
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK |
+                                      POSIX_SPAWN_SETSIGDEF);
+
+  std::vector<std::string> argv_strings = spec.argv;
+  std::vector<std::string> env_strings = build_environment(spec);
+  std::vector<char*> argv = c_strings(argv_strings);
+  std::vector<char*> envp = c_strings(env_strings);
+  int spawn_status = 0;
+  {
+    ScopedAffinity affinity(spec.cpu_affinity);
+    p.started_ = Clock::now();
+    spawn_status = ::posix_spawnp(&p.pid_, argv[0], &actions, &attr, argv.data(), envp.data());
+  }
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attr);
+  ::close(out_pipe[1]);
+  ::close(err_pipe[1]);
+  p.stdout_fd_ = out_pipe[0];
+  p.stderr_fd_ = err_pipe[0];
+  if (spawn_status != 0) {
+    p.pid_ = -1;
+    p.early_result_ = ProcessResult{};
+    p.early_result_->spawn_error = spec.argv[0] + ": " + std::strerror(spawn_status);
+    close_fd(p.stdout_fd_);
+    close_fd(p.stderr_fd_);
+    return p;
+  }
+  p.pidfd_ = static_cast<int>(::syscall(SYS_pidfd_open, p.pid_, 0));
+  return p;
+}
+
+Process::Process(Process&& other) noexcept
+    : spec_(std::move(other.spec_)),
+      pid_(std::exchange(other.pid_, -1)),
+      pidfd_(std::exchange(other.pidfd_, -1)),
+      stdout_fd_(std::exchange(other.stdout_fd_, -1)),
+      stderr_fd_(std::exchange(other.stderr_fd_, -1)),
+      stdout_log_(std::exchange(other.stdout_log_, -1)),
+      stderr_log_(std::exchange(other.stderr_log_, -1)),
+      started_(other.started_),
+      early_result_(std::move(other.early_result_)),
+      reaped_(std::exchange(other.reaped_, true)) {}
+
+Process::~Process() {
+  if (pid_ > 0 && !reaped_) {
+    kill_group(SIGKILL);
+    ::waitpid(pid_, nullptr, 0);
+  }
+  for (int* fd : {&pidfd_, &stdout_fd_, &stderr_fd_, &stdout_log_, &stderr_log_}) close_fd(*fd);
+}
+
+void Process::kill_group(int sig) const {
+  if (pid_ > 0) ::kill(-pid_, sig);
+}
+
+void Process::drain(int& fd, int log_fd, std::uint64_t& written, bool& truncated) {
+  char buffer[1 << 15];
+  const ssize_t n = ::read(fd, buffer, sizeof buffer);
+  if (n < 0 && errno == EINTR) return;
+  if (n <= 0) {
+    close_fd(fd);
+    return;
+  }
+  const auto size = static_cast<std::uint64_t>(n);
+  if (log_fd < 0) return;
+  const std::uint64_t room = spec_.log_limit_bytes > written ? spec_.log_limit_bytes - written : 0;
+  const std::uint64_t keep = std::min(room, size);
+  if (keep > 0 && ::write(log_fd, buffer, keep) > 0) written += keep;
+  if (keep < size && !truncated) {
+    truncated = true;
+    static constexpr char kNote[] = "\n[raygate: log truncated here]\n";
+    [[maybe_unused]] const ssize_t ignored = ::write(log_fd, kNote, sizeof kNote - 1);
+  }
+}
+
+void Process::reap(ProcessResult& result, bool block) {
+  int status = 0;
+  rusage usage{};
+  const pid_t r = ::wait4(pid_, &status, block ? 0 : WNOHANG, &usage);
+  if (r != pid_) return;
+  reaped_ = true;
+  result.wall_seconds = std::chrono::duration<double>(Clock::now() - started_).count();
+  result.user_seconds = seconds_of(usage.ru_utime);
+  result.system_seconds = seconds_of(usage.ru_stime);
+  result.max_rss_kib = usage.ru_maxrss;
+  if (WIFEXITED(status)) {
+    if (result.outcome != ProcessOutcome::timed_out) result.outcome = ProcessOutcome::exited;
+    result.exit_code = WEXITSTATUS(status);
+  } else if (WIFSIGNALED(status)) {
+    if (result.outcome != ProcessOutcome::timed_out) result.outcome = ProcessOutcome::signaled;
+    result.signal = WTERMSIG(status);
+  }
+}
+
+ProcessResult Process::wait() {
+  if (early_result_) return *early_result_;
+  ProcessResult result;
+  result.outcome = ProcessOutcome::exited;
+  std::uint64_t out_written = 0;
+  std::uint64_t err_written = 0;
+  const int err_log = stderr_log_ >= 0 ? stderr_log_ : stdout_log_;
+  const bool has_timeout = spec_.timeout.count() > 0;
+  const auto deadline = started_ + spec_.timeout;
+  std::optional<Clock::time_point> kill_at;
+  std::optional<Clock::time_point> pipes_deadline;  // after exit, how long grandchildren may hold pipes
+
+  while (!reaped_ || stdout_fd_ >= 0 || stderr_fd_ >= 0) {
+    const auto now = Clock::now();
+    if (!reaped_ && has_timeout && !kill_at && now >= deadline) {
+      result.outcome = ProcessOutcome::timed_out;
+      kill_group(SIGTERM);
+      kill_at = now + spec_.kill_grace;
+    }
+    if (kill_at && !reaped_ && now >= *kill_at) kill_group(SIGKILL);
+    if (reaped_ && !pipes_deadline) pipes_deadline = now + std::chrono::milliseconds(200);
+    if (pipes_deadline && now >= *pipes_deadline) {
+      kill_group(SIGKILL);  // stray descendants still holding our pipes
+      close_fd(stdout_fd_);
+      close_fd(stderr_fd_);
+      break;
+    }
+    pollfd fds[3] = {{stdout_fd_, POLLIN, 0}, {stderr_fd_, POLLIN, 0},
+                     {reaped_ ? -1 : pidfd_, POLLIN, 0}};
+    int wait_ms = 50;  // also bounds the reaping latency when pidfd_open is unavailable
+    if (has_timeout && !kill_at && !reaped_) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now);
+      wait_ms = static_cast<int>(std::clamp<long>(left.count() + 1, 0, wait_ms));
+    }
+    if (pidfd_ >= 0 && !has_timeout && !kill_at && !pipes_deadline) wait_ms = -1;
+    const int ready = ::poll(fds, 3, wait_ms);
+    if (ready < 0 && errno != EINTR) break;
+    if (fds[0].revents != 0) drain(stdout_fd_, stdout_log_, out_written, result.stdout_truncated);
+    if (fds[1].revents != 0) drain(stderr_fd_, err_log, err_written, result.stderr_truncated);
+    if (!reaped_) reap(result, false);
+  }
+  if (!reaped_) reap(result, true);
+  if (result.outcome == ProcessOutcome::timed_out) result.signal = result.signal ? result.signal : SIGTERM;
+  for (int* fd : {&pidfd_, &stdout_log_, &stderr_log_}) close_fd(*fd);
+  return result;
+}
+
+ProcessResult run_process(const ProcessSpec& spec) {
+  Process p = Process::start(spec);
+  return p.wait();
+}
+
+std::string log_tail(const std::filesystem::path& path, int max_lines) {
+  std::ifstream in(path);
+  if (!in) return {};
+  std::deque<std::string> lines;
+  std::string line;
+  while (std::getline(in, line)) {
+    lines.push_back(line);
+    if (static_cast<int>(lines.size()) > max_lines) lines.pop_front();
+  }
+  std::string out;
+  for (const std::string& l : lines) out += l + "\n";
+  return out;
+}
+
+}  // namespace raygate

@@ -1,0 +1,97 @@
+// One child process, owned from spawn to reaping (like ninja's Subprocess): argv without a
+// shell, a controlled environment, its own process group, a timeout that sends SIGTERM and then
+// SIGKILL to the whole group, stdout/stderr drained into size-bounded log files, and the
+// resources wait4 reports. A tracer that crashes or hangs is a result here, not an exception.
+#pragma once
+
+#include <sys/types.h>
+
+#include <chrono>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace raygate {
+
+struct ProcessSpec {
+  std::vector<std::string> argv;  // argv[0] is looked up in PATH when it has no '/'
+  std::filesystem::path working_directory;  // empty: the caller's
+  bool inherit_environment = true;
+  std::map<std::string, std::string> environment;  // set (or override) these variables
+  std::filesystem::path stdin_path;   // empty: /dev/null
+  std::filesystem::path stdout_path;  // empty: discarded
+  std::filesystem::path stderr_path;  // empty: discarded; may equal stdout_path (merged)
+  std::uint64_t log_limit_bytes = 8u << 20;  // per stream; the rest is drained and dropped
+  std::chrono::milliseconds timeout{0};      // 0: none
+  std::chrono::milliseconds kill_grace{2000};  // SIGTERM to SIGKILL
+  std::vector<int> cpu_affinity;  // CPUs to pin to; empty: inherit
+};
+
+enum class ProcessOutcome {
+  exited,        // ran to completion; see exit_code
+  signaled,      // killed by a signal it did not get from us (a crash)
+  timed_out,     // we stopped it at the timeout
+  spawn_failed,  // never ran (no such program, not executable, bad working directory)
+};
+
+struct ProcessResult {
+  ProcessOutcome outcome = ProcessOutcome::spawn_failed;
+  int exit_code = -1;  // when exited
+  int signal = 0;      // when signaled or timed_out
+  double wall_seconds = 0.0;
+  double user_seconds = 0.0;
+  double system_seconds = 0.0;
+  long max_rss_kib = 0;
+  bool stdout_truncated = false;
+  bool stderr_truncated = false;
+  std::string spawn_error;
+
+  bool succeeded() const { return outcome == ProcessOutcome::exited && exit_code == 0; }
+  double cpu_seconds() const { return user_seconds + system_seconds; }
+  // "exited with status 3", "killed by SIGSEGV", "timed out after 10 s", ...
+  std::string describe() const;
+};
+
+class Process {
+ public:
+  // Starts the child. Never throws for a program that cannot run: wait() reports spawn_failed.
+  // Throws InfraError only if the log files cannot be created.
+  static Process start(const ProcessSpec& spec);
+
+  Process(Process&& other) noexcept;
+  Process& operator=(Process&&) = delete;
+  Process(const Process&) = delete;
+  ~Process();  // a still-running child's group is killed and reaped
+
+  // Drains output and waits for the child (honouring the timeout); call once.
+  ProcessResult wait();
+  pid_t pid() const { return pid_; }
+
+ private:
+  Process() = default;
+  void drain(int& fd, int log_fd, std::uint64_t& written, bool& truncated);
+  void kill_group(int sig) const;
+  void reap(ProcessResult& result, bool block);
+
+  ProcessSpec spec_;
+  pid_t pid_ = -1;
+  int pidfd_ = -1;
+  int stdout_fd_ = -1;
+  int stderr_fd_ = -1;
+  int stdout_log_ = -1;
+  int stderr_log_ = -1;
+  std::chrono::steady_clock::time_point started_;
+  std::optional<ProcessResult> early_result_;  // set when spawning failed
+  bool reaped_ = false;
+};
+
+// Starts, waits, returns the result.
+ProcessResult run_process(const ProcessSpec& spec);
+
+// The last `max_lines` lines of a log file (for error messages); empty if unreadable.
+std::string log_tail(const std::filesystem::path& path, int max_lines = 20);
+
+}  // namespace raygate

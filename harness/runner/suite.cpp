@@ -1,0 +1,119 @@
+#include "runner/suite.h"
+
+#include <nlohmann/json.hpp>
+
+#include <set>
+
+#include "core/error.h"
+#include "core/fs.h"
+#include "spd.h"
+
+namespace raygate {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void fail(const Suite& suite, const std::string& where, const std::string& what) {
+  throw UsageError(suite.path.string() + ": " + where + ": " + what);
+}
+
+void check_keys(const Suite& suite, const json& object, const std::string& where,
+                const std::set<std::string>& allowed) {
+  for (const auto& [key, value] : object.items()) {
+    if (!allowed.contains(key)) fail(suite, where, "unknown key '" + key + "'");
+  }
+}
+
+int read_int(const Suite& suite, const json& object, const std::string& key,
+             const std::string& where) {
+  if (!object.contains(key)) return 0;
+  if (!object[key].is_number_integer()) fail(suite, where + "." + key, "expected an integer");
+  return object[key].get<int>();
+}
+
+SuiteScene read_scene(const Suite& suite, const json& entry, const std::string& where) {
+  if (!entry.is_object()) fail(suite, where, "expected an object");
+  check_keys(suite, entry, where, {"id", "scene", "size", "resolution"});
+  SuiteScene s;
+  if (!entry.contains("scene") || !entry["scene"].is_string()) {
+    fail(suite, where + ".scene", "expected the SPD scene name (a string)");
+  }
+  s.scene = entry["scene"].get<std::string>();
+  const scenes::SceneGenerator* generator = scenes::find_generator(s.scene);
+  if (generator == nullptr) fail(suite, where + ".scene", "unknown SPD scene '" + s.scene + "'");
+  s.size = read_int(suite, entry, "size", where);
+  if (entry.contains("size") && (s.size < 1 || s.size > scenes::max_size(*generator))) {
+    fail(suite, where + ".size",
+         "size " + std::to_string(s.size) + " out of range 1.." +
+             std::to_string(scenes::max_size(*generator)));
+  }
+  if (entry.contains("resolution")) {
+    const json& r = entry["resolution"];
+    if (!r.is_array() || r.size() != 2 || !r[0].is_number_integer() || !r[1].is_number_integer()) {
+      fail(suite, where + ".resolution", "expected [width, height]");
+    }
+    s.width = r[0].get<int>();
+    s.height = r[1].get<int>();
+    if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384) {
+      fail(suite, where + ".resolution", "each side must be in 1..16384");
+    }
+  }
+  s.id = entry.contains("id") ? entry["id"].get<std::string>() : s.scene;
+  return s;
+}
+
+}  // namespace
+
+Suite load_suite(const std::string& name_or_path, const std::filesystem::path& data_root) {
+  Suite suite;
+  const bool is_path = name_or_path.find('/') != std::string::npos ||
+                       name_or_path.ends_with(".json");
+  suite.path = is_path ? std::filesystem::path(name_or_path)
+                       : data_root / "scenes" / "suites" / (name_or_path + ".json");
+  if (!is_path && !std::filesystem::exists(suite.path)) {
+    throw UsageError("unknown suite '" + name_or_path + "' (no " + suite.path.string() + ")");
+  }
+  json doc;
+  try {
+    doc = json::parse(read_file(suite.path));
+  } catch (const json::parse_error& e) {
+    throw UsageError(suite.path.string() + ": not valid JSON: " + e.what());
+  }
+  if (!doc.is_object()) fail(suite, "$", "expected an object");
+  check_keys(suite, doc, "$", {"name", "description", "sampling", "scenes"});
+  suite.name = doc.value("name", suite.path.stem().string());
+  suite.description = doc.value("description", "");
+  suite.sampling = doc.value("sampling", "center");
+  if (suite.sampling != "center" && suite.sampling != "corners") {
+    fail(suite, "$.sampling", "expected \"center\" or \"corners\"");
+  }
+  if (!doc.contains("scenes") || !doc["scenes"].is_array() || doc["scenes"].empty()) {
+    fail(suite, "$.scenes", "expected a non-empty array of scenes");
+  }
+  std::set<std::string> ids;
+  for (std::size_t i = 0; i < doc["scenes"].size(); ++i) {
+    const std::string where = "$.scenes[" + std::to_string(i) + "]";
+    SuiteScene s = read_scene(suite, doc["scenes"][i], where);
+    if (!ids.insert(s.id).second) fail(suite, where + ".id", "duplicate id '" + s.id + "'");
+    suite.scenes.push_back(std::move(s));
+  }
+  return suite;
+}
+
+std::vector<SuiteScene> select_scenes(const Suite& suite, const std::vector<std::string>& ids) {
+  if (ids.empty()) return suite.scenes;
+  std::vector<SuiteScene> out;
+  for (const std::string& id : ids) {
+    bool found = false;
+    for (const SuiteScene& s : suite.scenes) {
+      if (s.id == id) {
+        out.push_back(s);
+        found = true;
+      }
+    }
+    if (!found) throw UsageError("suite '" + suite.name + "' has no scene '" + id + "'");
+  }
+  return out;
+}
+
+}  // namespace raygate

@@ -1,0 +1,123 @@
+// Image metrics through OpenImageIO on images made here with known differences.
+#include "compare/image_compare.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "compare/golden.h"
+#include "core/error.h"
+#include "core/fs.h"
+
+namespace raygate {
+namespace {
+
+namespace OIIO = OIIO_NAMESPACE;
+
+// A 10x10 RGB float image, uniform grey 0.5, with optional changed pixels.
+std::filesystem::path make_image(const TempDir& dir, const std::string& name,
+                                 std::vector<std::array<float, 5>> changes = {}, int size = 10) {
+  OIIO::ImageBuf buf(OIIO::ImageSpec(size, size, 3, OIIO::TypeDesc::FLOAT));
+  const float grey[3] = {0.5f, 0.5f, 0.5f};
+  OIIO::ImageBufAlgo::fill(buf, grey);
+  for (const auto& c : changes) {  // x, y, r, g, b
+    const float v[3] = {c[2], c[3], c[4]};
+    buf.setpixel(static_cast<int>(c[0]), static_cast<int>(c[1]), v);
+  }
+  const auto path = dir.path() / name;
+  EXPECT_TRUE(buf.write(path.string()));
+  return path;
+}
+
+TEST(ImageCompare, IdenticalImages) {
+  TempDir dir;
+  const ImageMetrics m = compare_images(make_image(dir, "a.exr"), make_image(dir, "b.exr"), {});
+  EXPECT_TRUE(m.identical());
+  EXPECT_EQ(judge(m, {}), ImageVerdict::pass);
+  EXPECT_EQ(summarize(m), "identical");
+}
+
+TEST(ImageCompare, LocatesTheWorstPixelAndCountsFailures) {
+  TempDir dir;
+  const auto a = make_image(dir, "a.exr", {{3, 7, 0.5f, 0.9f, 0.5f}, {1, 1, 0.51f, 0.5f, 0.5f}});
+  const auto b = make_image(dir, "b.exr");
+  const ImageMetrics m = compare_images(a, b, {});
+  EXPECT_NEAR(m.max_error, 0.4, 1e-6);
+  EXPECT_EQ(m.max_x, 3);
+  EXPECT_EQ(m.max_y, 7);
+  EXPECT_EQ(m.max_channel, 1);
+  EXPECT_NEAR(m.max_actual_value, 0.9, 1e-6);
+  EXPECT_NEAR(m.max_expected_value, 0.5, 1e-6);
+  EXPECT_EQ(m.pixels_over_fail, 2);
+  EXPECT_DOUBLE_EQ(m.percent_over_fail, 2.0);
+  EXPECT_EQ(judge(m, {}), ImageVerdict::fail);  // 2% > 0.02%
+  ImageThresholds lenient;
+  lenient.fail_percent = 5.0;
+  EXPECT_EQ(judge(m, lenient), ImageVerdict::warn);
+  lenient.hard_fail = 0.3;
+  EXPECT_EQ(judge(m, lenient), ImageVerdict::fail);
+  EXPECT_GT(m.luminance_bias(), 0.0);
+}
+
+TEST(ImageCompare, SizeMismatchAndNonFiniteValuesFail) {
+  TempDir dir;
+  const ImageMetrics sized =
+      compare_images(make_image(dir, "a.exr", {}, 8), make_image(dir, "b.exr"), {});
+  EXPECT_TRUE(sized.size_mismatch);
+  EXPECT_EQ(judge(sized, {}), ImageVerdict::fail);
+  EXPECT_EQ(summarize(sized), "size 8x8 but expected 10x10");
+  const ImageMetrics nan =
+      compare_images(make_image(dir, "n.exr", {{0, 0, NAN, 0.5f, 0.5f}}), make_image(dir, "b.exr"), {});
+  EXPECT_EQ(nan.nonfinite_values, 1);
+  EXPECT_EQ(judge(nan, {}), ImageVerdict::fail);
+}
+
+TEST(ImageCompare, ReadsOtherFormatsAndRejectsUnreadableFiles) {
+  TempDir dir;
+  const auto png = make_image(dir, "a.png");
+  const auto ppm = make_image(dir, "a.ppm");
+  EXPECT_TRUE(compare_images(png, ppm, {}).identical());
+  write_file_atomically(dir.path() / "junk.png", "not an image");
+  EXPECT_THROW(compare_images(dir.path() / "junk.png", png, {}), UsageError);
+}
+
+TEST(ImageCompare, EvidenceImagesAreWritten) {
+  TempDir dir;
+  const auto a = make_image(dir, "a.exr", {{2, 2, 0.6f, 0.5f, 0.5f}});
+  const auto b = make_image(dir, "b.exr");
+  write_evidence(a, b, dir.path() / "evidence", "balls");
+  OIIO::ImageBuf diff((dir.path() / "evidence" / "balls.diff.png").string());
+  ASSERT_TRUE(diff.read());
+  float v[3];
+  diff.getpixel(2, 2, v, 3);
+  EXPECT_NEAR(v[0], 1.0, 1.0 / 255);  // |0.1| x 16 clamps to 1
+  diff.getpixel(0, 0, v, 3);
+  EXPECT_EQ(v[0], 0.0f);
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "evidence" / "balls.actual.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "evidence" / "balls.expected.png"));
+}
+
+TEST(GoldenManifest, RoundTripsAndRejectsOtherSchemas) {
+  TempDir dir;
+  GoldenManifest m;
+  m.suite = "ci";
+  m.baseline_version = "raygate-baseline 0.1.0 source-sha256:abc";
+  m.baseline_source_sha256 = "abc";
+  m.upsert({"tetra", "tetra", 3, 96, 96, "center", "none", "tetra.png", "ff"});
+  m.upsert({"balls", "balls", 2, 96, 96, "center", "none", "balls.png", "ee"});
+  m.upsert({"tetra", "tetra", 3, 96, 96, "center", "none", "tetra.png", "00"});
+  save_golden_manifest(m, dir.path());
+  const GoldenManifest loaded = load_golden_manifest(dir.path());
+  ASSERT_EQ(loaded.entries.size(), 2u);
+  EXPECT_EQ(loaded.entries[0].id, "balls");  // sorted
+  EXPECT_EQ(loaded.find("tetra")->sha256, "00");
+  EXPECT_EQ(loaded.baseline_source_sha256, "abc");
+  write_file_atomically(dir.path() / "manifest.json", R"({"schema_version": 99})");
+  EXPECT_THROW(load_golden_manifest(dir.path()), UsageError);
+  EXPECT_TRUE(load_golden_manifest(dir.path() / "empty").entries.empty());
+}
+
+}  // namespace
+}  // namespace raygate

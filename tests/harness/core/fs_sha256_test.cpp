@@ -1,0 +1,79 @@
+// Atomic writes and SHA-256 (FIPS 180-4 test vectors).
+#include <gtest/gtest.h>
+#include <sys/resource.h>
+
+#include <csignal>
+
+#include "core/error.h"
+#include "core/fs.h"
+#include "core/sha256.h"
+
+namespace raygate {
+namespace {
+
+TEST(Sha256, KnownVectors) {
+  EXPECT_EQ(sha256_hex(""), "e3b0c44298fc1c149afbf4c8996fb92427ae41e4649b934ca495991b7852b855");
+  EXPECT_EQ(sha256_hex("abc"), "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad");
+  EXPECT_EQ(sha256_hex("abcdbcdecdefdefgefghfghighijhijkijkljklmklmnlmnomnopnopq"),
+            "248d6a61d20638b8e5c026930c3e6039a33ce45964ff2167f6ecedd419db06c1");
+  EXPECT_EQ(sha256_hex(std::string(1000000, 'a')),
+            "cdc76e5c9914fb9281a1c7e284d73e67f1809a48a497200e046d39ccc7112cd0");
+}
+
+TEST(Fs, AtomicWriteCreatesParentsAndReplaces) {
+  TempDir dir;
+  const auto path = dir.path() / "a" / "b" / "result.json";
+  write_file_atomically(path, "first");
+  write_file_atomically(path, "second");
+  EXPECT_EQ(read_file(path), "second");
+  // No temp files are left behind.
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(path.parent_path())) {
+    ++entries;
+  }
+  EXPECT_EQ(entries, 1);
+}
+
+TEST(Fs, FailedWriteKeepsTheOldFileAndNamesThePath) {
+  TempDir dir;
+  const auto path = dir.path() / "keep.txt";
+  write_file_atomically(path, "precious");
+  // A regular file where the parent directory should be: nothing can be written there.
+  const auto blocked = dir.path() / "keep.txt" / "child.txt";
+  try {
+    write_file_atomically(blocked, "x");
+    FAIL() << "expected InfraError";
+  } catch (const InfraError& e) {
+    EXPECT_NE(std::string(e.what()).find("keep.txt"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(read_file(path), "precious");
+}
+
+TEST(Fs, WriteFailingMidwayKeepsTheOldFile) {
+  // A file-size limit makes write() fail part way (EFBIG), as a full disk does (ENOSPC): the
+  // old content must survive and no temp file may be left.
+  TempDir dir;
+  const auto path = dir.path() / "history.json";
+  write_file_atomically(path, "old");
+  rlimit saved{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+  signal(SIGXFSZ, SIG_IGN);
+  rlimit small = saved;
+  small.rlim_cur = 4096;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  EXPECT_THROW(write_file_atomically(path, std::string(100000, 'x')), InfraError);
+  setrlimit(RLIMIT_FSIZE, &saved);
+  EXPECT_EQ(read_file(path), "old");
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++entries;
+  EXPECT_EQ(entries, 1);
+}
+
+TEST(Fs, ReadingADirectoryOrMissingFileIsAUsageError) {
+  TempDir dir;
+  EXPECT_THROW(read_file(dir.path()), UsageError);
+  EXPECT_THROW(read_file(dir.path() / "missing"), UsageError);
+}
+
+}  // namespace
+}  // namespace raygate

@@ -38,7 +38,11 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   std::filesystem::create_directories(parent, ec);
   if (ec) throw InfraError("cannot create directory " + parent.string() + ": " + ec.message());
 
-  std::string temp = (parent / ("." + path.filename().string() + ".tmp-XXXXXX")).string();
+  // "." + name + ".tmp-XXXXXX", built step by step (GCC 12 warns falsely on the one-liner).
+  std::string temp_name = ".";
+  temp_name += path.filename().string();
+  temp_name += ".tmp-XXXXXX";
+  std::string temp = (parent / temp_name).string();
   const int fd = ::mkstemp(temp.data());
   if (fd < 0) throw InfraError("cannot write " + path.string() + ": " + system_reason());
   const bool written = write_all(fd, content) && ::fsync(fd) == 0;

@@ -1,0 +1,121 @@
+// Change between two revisions: the paired change and its CI, Mann-Whitney U against values
+// worked by hand, and the verdict table of docs/statistics.md.
+#include "measure/change.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "measure/mann_whitney.h"
+#include "synthetic.h"
+
+namespace raygate {
+namespace {
+
+using testing::compare_rounds;
+
+TEST(MeasureMannWhitney, SeparatedSamples) {
+  // U_a = 0; mean 4.5; var = 3*3/12 * 7 = 5.25; z = (4.5 - 0.5) / sqrt(5.25) = 1.74574.
+  const MannWhitneyResult r = mann_whitney_u(std::vector<double>{1, 2, 3}, std::vector<double>{4, 5, 6});
+  EXPECT_DOUBLE_EQ(r.u, 0.0);
+  EXPECT_NEAR(r.z, -1.7457431218879391, 1e-12);
+  EXPECT_NEAR(r.p_value, 0.0808555983700523, 1e-12);  // R: wilcox.test(exact = FALSE) 0.08086
+}
+
+TEST(MeasureMannWhitney, TiesUseMidranksAndCorrectedVariance) {
+  // Pooled ranks: 1 | 2 2 2 -> 3 | 3 3 -> 5.5 | 4 -> 7 | 5 -> 8. R_a = 1 + 3 + 3 + 5.5 = 12.5,
+  // U_a = 12.5 - 10 = 2.5. Ties: (27 - 3) + (8 - 2) = 30; var = 16/12 (9 - 30/56) = 11.2857;
+  // z = (5.5 - 0.5) / sqrt(var) = 1.48835; p = erfc(z / sqrt 2) = 0.13666.
+  const MannWhitneyResult r = mann_whitney_u(std::vector<double>{1, 2, 2, 3}, std::vector<double>{2, 3, 4, 5});
+  EXPECT_DOUBLE_EQ(r.u, 2.5);
+  EXPECT_NEAR(r.z, -1.4883513944689681, 1e-12);
+  EXPECT_NEAR(r.p_value, 0.13665824773814753, 1e-12);
+}
+
+TEST(MeasureMannWhitney, SymmetricAndDegenerate) {
+  const MannWhitneyResult swapped = mann_whitney_u(std::vector<double>{4, 5, 6}, std::vector<double>{1, 2, 3});
+  EXPECT_DOUBLE_EQ(swapped.u, 9.0);
+  EXPECT_NEAR(swapped.p_value, 0.0808555983700523, 1e-12);
+  const MannWhitneyResult tied = mann_whitney_u(std::vector<double>{1, 1}, std::vector<double>{1, 1, 1});
+  EXPECT_DOUBLE_EQ(tied.u, 3.0);
+  EXPECT_DOUBLE_EQ(tied.p_value, 1.0);
+  const MannWhitneyResult centred = mann_whitney_u(std::vector<double>{1, 4}, std::vector<double>{2, 3});
+  EXPECT_DOUBLE_EQ(centred.u, 2.0);  // exactly the mean: p = 1, z = 0
+  EXPECT_DOUBLE_EQ(centred.p_value, 1.0);
+  EXPECT_THROW(mann_whitney_u(std::vector<double>{}, std::vector<double>{1}), std::invalid_argument);
+}
+
+TEST(MeasureChange, BaselineCancelsWithinARound) {
+  // Baseline times are wild, head is exactly 10% slower than base in every round.
+  const std::vector<CompareRound> rounds{{1.0, 2.0, 2.2}, {3.0, 2.5, 2.75}, {0.5, 1.0, 1.1}};
+  const ChangeSummary s = summarize_change(rounds);
+  EXPECT_NEAR(s.change, 0.10, 1e-12);
+  EXPECT_NEAR(s.change_interval.lower, 0.10, 1e-12);
+  EXPECT_NEAR(s.change_interval.upper, 0.10, 1e-12);
+  EXPECT_NEAR(s.base.ratio, 2.0, 1e-12);  // median of 2, 0.833, 2
+  EXPECT_EQ(s.rounds, 3u);
+}
+
+TEST(MeasureChange, PairingCancelsRoundDrift) {
+  // +-20% drift across rounds, 1% noise per run: the paired CI is far tighter than the drift.
+  Xoshiro256 rng(3);
+  const ChangeSummary s = summarize_change(compare_rounds(rng, 30, 1.05, 0.01));
+  EXPECT_TRUE(s.change_interval.contains(s.change));
+  EXPECT_GT(s.change_interval.lower, 0.03);
+  EXPECT_LT(s.change_interval.upper, 0.07);
+  EXPECT_LT(s.mann_whitney.p_value, 0.05);
+  EXPECT_GT(s.mann_whitney.u, 30.0 * 30.0 / 2.0);  // head's ratios tend to be larger
+}
+
+ChangeVerdict verdict_for(std::uint64_t seed, int rounds, double true_factor, double log_sigma) {
+  Xoshiro256 rng(seed);
+  return classify_change(summarize_change(compare_rounds(rng, rounds, true_factor, log_sigma)));
+}
+
+TEST(MeasureVerdict, ClearRegression) {
+  EXPECT_EQ(verdict_for(1, 15, 1.10, 0.01), ChangeVerdict::regressed);
+}
+
+TEST(MeasureVerdict, ClearImprovement) {
+  EXPECT_EQ(verdict_for(2, 15, 0.90, 0.01), ChangeVerdict::improved);
+}
+
+TEST(MeasureVerdict, AaIsUnchanged) {
+  EXPECT_EQ(verdict_for(3, 20, 1.00, 0.005), ChangeVerdict::unchanged);
+}
+
+TEST(MeasureVerdict, NoisyIsInconclusive) {
+  EXPECT_EQ(verdict_for(4, 8, 1.03, 0.10), ChangeVerdict::inconclusive);
+}
+
+TEST(MeasureVerdict, SmallSignificantChangeUnderThresholdIsUnchanged) {
+  Xoshiro256 rng(5);
+  const ChangeSummary s = summarize_change(compare_rounds(rng, 40, 1.01, 0.003));
+  EXPECT_GT(s.change_interval.lower, 0.0);  // significant ...
+  EXPECT_EQ(classify_change(s), ChangeVerdict::unchanged);  // ... but practically nothing
+}
+
+TEST(MeasureVerdict, TableOnNumbers) {
+  const double t = kDefaultChangeThreshold;
+  EXPECT_EQ(classify_change(0.05, {0.04, 0.06}, t), ChangeVerdict::regressed);
+  EXPECT_EQ(classify_change(0.035, {0.001, 0.07}, t), ChangeVerdict::regressed);
+  EXPECT_EQ(classify_change(0.035, {-0.005, 0.07}, t), ChangeVerdict::inconclusive);
+  EXPECT_EQ(classify_change(0.02, {0.005, 0.035}, t), ChangeVerdict::inconclusive);
+  EXPECT_EQ(classify_change(0.01, {0.008, 0.012}, t), ChangeVerdict::unchanged);
+  EXPECT_EQ(classify_change(0.0, {-0.03, 0.03}, t), ChangeVerdict::unchanged);
+  EXPECT_EQ(classify_change(-0.05, {-0.06, -0.04}, t), ChangeVerdict::improved);
+  EXPECT_EQ(classify_change(-0.02, {-0.035, -0.005}, t), ChangeVerdict::inconclusive);
+  EXPECT_EQ(classify_change(0.0, {-0.2, 0.2}, t), ChangeVerdict::inconclusive);
+  EXPECT_EQ(classify_change(0.05, {0.04, 0.06}, 0.10), ChangeVerdict::unchanged);
+}
+
+TEST(MeasureVerdict, Names) {
+  EXPECT_EQ(to_string(ChangeVerdict::regressed), "REGRESSED");
+  EXPECT_EQ(to_string(ChangeVerdict::improved), "IMPROVED");
+  EXPECT_EQ(to_string(ChangeVerdict::unchanged), "UNCHANGED");
+  EXPECT_EQ(to_string(ChangeVerdict::inconclusive), "INCONCLUSIVE");
+}
+
+}  // namespace
+}  // namespace raygate

@@ -129,8 +129,6 @@ const BadInput kBadInputs[] = {
      "t.nff:7:1: expected polygon (p) with non-zero area, found collinear vertices"},
     {"PolygonFigureEight", kHead + "p 4\n0 0 0\n1 1 0\n1 0 0\n0 1 0\n",
      "t.nff:7:1: expected polygon (p) with non-zero area, found a net area of zero"},
-    {"PatchCollinear", kHead + "pp 3\n0 0 0 0 0 1\n1 0 0 0 0 1\n2 0 0 0 0 1\n",
-     "t.nff:7:1: expected patch (pp) with non-zero area, found collinear vertices"},
     {"PatchZeroNormal", kHead + "pp 3\n0 0 0 0 0 1\n1 0 0 0 0 0\n0 1 0 0 0 1\n",
      "t.nff:9:7: expected a non-zero normal of vertex 2 of 3 of patch (pp), found a zero vector"},
     // The view.

@@ -262,6 +262,17 @@ TEST(NffParser, ConcavePolygonWithManyVertices) {
   EXPECT_NEAR(scene.polygons[0].vertices[0].x, 0.995 * std::cos(-0.19 * a), 1e-15);
 }
 
+// The SPD writes `pp` uncleaned: its teapot at size 1 has zero-area triangles (spd-spec.md §8).
+// They are legal input, kept as written; the tracer never hits them.
+TEST(NffParser, DegeneratePatchesAreAccepted) {
+  const Scene scene = parse_nff(
+      "v from 0 0 5 at 0 0 0 up 0 1 0 angle 45\nf 1 1 1 1 0 1 0 1\n"
+      "pp 3\n2.7 0 2.4 -0.6 0 0.8\n3.3 0 2.4 0.38 0 -0.92\n3.2 0 2.4 -0.41 0 0.91\n"
+      "pp 3\n0 0 0 0 0 1\n0 0 0 0 0 1\n1 0 0 0 0 1\n",
+      "scene.nff");
+  EXPECT_EQ(scene.patches.size(), 2u);
+}
+
 // About the size of the teapot at size 12 (1.5 MB); prints the time so it can be watched.
 TEST(NffParser, LargeSceneIsFast) {
   std::string text =

@@ -9,5 +9,6 @@ namespace raygate::cli {
 void add_scenes_command(CLI::App& app, int& exit_code);
 void add_golden_command(CLI::App& app, int& exit_code);
 void add_validate_command(CLI::App& app, int& exit_code);
+void add_adapter_command(CLI::App& app, int& exit_code);
 
 }  // namespace raygate::cli

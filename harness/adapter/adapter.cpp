@@ -1,0 +1,329 @@
+// Loading an adapter: JSON text -> checked fields -> cross-field rules -> Adapter. Each reader
+// validates one key completely, so a message always names the key that is wrong.
+#include "adapter/adapter.h"
+
+#include <cmath>
+#include <nlohmann/json.hpp>
+#include <regex>
+
+#include "adapter/json_field.h"
+#include "adapter/placeholders.h"
+#include "adapter/reported_time.h"
+#include "adapter/suggest.h"
+#include "core/error.h"
+#include "core/fs.h"
+#include "core/sha256.h"
+
+namespace raygate {
+namespace {
+
+using nlohmann::json;
+
+const std::vector<std::string>& top_level_keys() {
+  static const std::vector<std::string> keys{
+      "name",  "description", "scene_format", "source_dir", "requires", "build",
+      "run",   "stdin",       "cwd",          "image",      "env",      "timing",
+      "threads", "pin_cpus",  "submodules",   "timeout_s"};
+  return keys;
+}
+
+std::string join(const std::vector<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+bool matches(const std::string& text, const char* pattern) {
+  return std::regex_match(text, std::regex(pattern));
+}
+
+// One of a fixed set of words; the index of the match.
+std::size_t read_choice(const JsonField& field, const std::vector<std::string>& choices) {
+  const std::string word = field.as_string();
+  for (std::size_t i = 0; i < choices.size(); ++i) {
+    if (choices[i] == word) return i;
+  }
+  std::string message = "expected one of " + join(choices) + ", found " + json(word).dump();
+  if (const auto guess = closest_match(word, choices)) {
+    message += " (did you mean '" + *guess + "'?)";
+  }
+  field.fail(message);
+}
+
+std::string read_template(const JsonField& field, TemplateField where) {
+  std::string text = field.as_string();
+  if (const auto error = template_error(text, where)) field.fail(*error);
+  return text;
+}
+
+std::vector<std::string> read_argv(const JsonField& field, TemplateField where) {
+  std::vector<std::string> argv;
+  for (const JsonField& element : field.elements()) argv.push_back(read_template(element, where));
+  if (argv.empty()) field.fail("a command needs at least the program to run");
+  if (argv[0].empty()) field.fail("the program name (first element) is empty");
+  return argv;
+}
+
+std::string read_name(const JsonField& field) {
+  std::string name = field.as_string();
+  // It names cache folders and result records, so it must be safe as a file name.
+  if (!matches(name, "[A-Za-z0-9][A-Za-z0-9._-]*")) {
+    field.fail("'" + name + "' must be letters, digits, '.', '_' or '-' (it names folders)");
+  }
+  return name;
+}
+
+std::string read_source_dir(const JsonField& field) {
+  std::string dir = field.as_string();
+  const std::filesystem::path path(dir);
+  bool escapes = path.is_absolute();
+  for (const auto& part : path) escapes = escapes || part == "..";
+  if (escapes) field.fail("must be a folder inside the repository, found " + json(dir).dump());
+  if (dir.find_first_of("{}") != std::string::npos) {
+    field.fail("is a plain folder name; placeholders are not expanded here");
+  }
+  std::string normal = path.lexically_normal().generic_string();
+  while (!normal.empty() && normal.back() == '/') normal.pop_back();
+  return normal == "." ? "" : normal;
+}
+
+// A relative cwd would be relative to wherever raygate was started: never what was meant.
+std::string read_cwd(const JsonField& field) {
+  std::string cwd = read_template(field, TemplateField::run);
+  for (const char* folder : {"{workdir}", "{build}", "{src}", "{repo_root}", "{raygate_source}"}) {
+    if (cwd.rfind(folder, 0) == 0) return cwd;
+  }
+  if (cwd.empty() || cwd[0] != '/') {
+    field.fail("must start with {workdir}, {build}, {src}, {repo_root}, {raygate_source} or "
+               "'/', found " + json(cwd).dump());
+  }
+  return cwd;
+}
+
+std::vector<std::string> read_packages(const JsonField& field) {
+  std::vector<std::string> packages;
+  for (const JsonField& element : field.elements()) {
+    std::string package = element.as_string();
+    // Debian policy §5.6.1, with an optional ":arch" qualifier.
+    if (!matches(package, "[a-z0-9][a-z0-9+.-]+(:[a-z0-9-]+)?")) {
+      element.fail("'" + package + "' is not a Debian package name (lower-case letters, " +
+                   "digits, '+', '-' and '.')");
+    }
+    packages.push_back(std::move(package));
+  }
+  return packages;
+}
+
+std::vector<std::vector<std::string>> read_build(const JsonField& field) {
+  std::vector<std::vector<std::string>> steps;
+  for (const JsonField& step : field.elements()) {
+    steps.push_back(read_argv(step, TemplateField::build));
+  }
+  return steps;
+}
+
+std::map<std::string, std::string> read_env(const JsonField& field) {
+  std::map<std::string, std::string> env;
+  for (const std::string& key : field.keys()) {
+    const JsonField value = field.member(key);
+    if (!matches(key, "[A-Za-z_][A-Za-z0-9_]*")) {
+      value.fail("'" + key + "' is not a valid environment variable name (letters, digits " +
+                 "and '_', not starting with a digit)");
+    }
+    env[key] = read_template(value, TemplateField::run);
+  }
+  return env;
+}
+
+Timing read_timing(const JsonField& field) {
+  field.expect_object({"source", "metric", "regex", "unit"});
+  Timing timing;
+  if (field.has("source")) {
+    timing.source = static_cast<TimingSource>(read_choice(field.member("source"),
+                                                          {"process", "reported"}));
+  }
+  const bool reported = timing.source == TimingSource::reported;
+  if (!reported) {
+    for (const char* key : {"regex", "unit"}) {
+      if (field.has(key)) field.member(key).fail("only used with \"source\": \"reported\"");
+    }
+    if (field.has("metric")) {
+      timing.metric = static_cast<TimingMetric>(read_choice(field.member("metric"),
+                                                            {"wall", "cpu"}));
+    }
+    return timing;
+  }
+  if (field.has("metric")) {
+    field.member("metric").fail("only used with \"source\": \"process\" (a reported time is "
+                                "whatever the tracer printed)");
+  }
+  const JsonField regex = field.member("regex");
+  timing.regex = regex.as_string();
+  if (const auto error = reported_regex_error(timing.regex)) regex.fail(*error);
+  if (field.has("unit")) {
+    timing.unit = static_cast<TimeUnit>(read_choice(field.member("unit"), {"s", "ms"}));
+  }
+  return timing;
+}
+
+double read_positive_seconds(const JsonField& field) {
+  const double seconds = field.as_number();
+  if (!(seconds > 0) || !std::isfinite(seconds)) {
+    field.fail("must be a positive number of seconds, found " + describe_json(field.value()));
+  }
+  return seconds;
+}
+
+Timeouts read_timeouts(const JsonField& field) {
+  field.expect_object({"build", "run"});
+  Timeouts timeouts;
+  if (field.has("build")) timeouts.build_seconds = read_positive_seconds(field.member("build"));
+  if (field.has("run")) timeouts.run_seconds = read_positive_seconds(field.member("run"));
+  return timeouts;
+}
+
+int read_threads(const JsonField& field) {
+  const long long threads = field.as_integer();
+  if (threads < 1 || threads > 4096) {
+    field.fail("must be between 1 and 4096, found " + describe_json(field.value()));
+  }
+  return static_cast<int>(threads);
+}
+
+bool any_uses(const std::vector<std::string>& templates, std::string_view name) {
+  for (const std::string& t : templates) {
+    if (uses_placeholder(t, name)) return true;
+  }
+  return false;
+}
+
+// Everything the tracer sees of its invocation: argv and environment values.
+std::vector<std::string> invocation(const Adapter& adapter) {
+  std::vector<std::string> out = adapter.run;
+  for (const auto& [key, value] : adapter.env) out.push_back(value);
+  return out;
+}
+
+void check_scene_reaches_tracer(const JsonField& root, const Adapter& adapter) {
+  const bool via_stdin =
+      adapter.stdin_template && uses_placeholder(*adapter.stdin_template, "scene");
+  if (via_stdin || any_uses(invocation(adapter), "scene")) return;
+  root.member("run").fail("the scene never reaches the tracer: put '{scene}' in run (or "
+                          "\"stdin\": \"{scene}\" for a tracer that reads standard input)");
+}
+
+// The image must be found where this run wrote it and nowhere an earlier run could have left
+// one: {image} and {workdir} both live in a directory created empty for each run.
+void check_image(const JsonField& root, const Adapter& adapter) {
+  const JsonField field = root.member("image");
+  const std::string& image = adapter.image;
+  const bool at_image = image.rfind("{image}", 0) == 0;
+  const bool in_workdir = image.rfind("{workdir}/", 0) == 0;
+  bool climbs = false;
+  for (const auto& part : std::filesystem::path(image)) climbs = climbs || part == "..";
+  if ((!at_image && !in_workdir) || climbs) {
+    field.fail("must be '{image}' or a path under '{workdir}/' (both are fresh for every run, so "
+               "an image left by an earlier run is never taken for this one), found " +
+               json(image).dump());
+  }
+  if (at_image && !any_uses(invocation(adapter), "image")) {
+    field.fail("'{image}' is never given to the tracer: put '{image}' in run or env, or name "
+               "the file the tracer writes, e.g. \"{workdir}/trace.ppm\"");
+  }
+  if (in_workdir && !uses_placeholder(adapter.cwd, "workdir") &&
+      !any_uses(invocation(adapter), "workdir")) {
+    field.fail("the tracer cannot know '{workdir}': run it there (\"cwd\": \"{workdir}\", the "
+               "default) or pass '{workdir}' in run or env");
+  }
+}
+
+Adapter read_fields(const JsonField& root) {
+  root.expect_object(top_level_keys());
+  Adapter a;
+  a.name = read_name(root.member("name"));
+  if (root.has("description")) a.description = root.member("description").as_string();
+  a.scene_format = static_cast<SceneFormat>(
+      read_choice(root.member("scene_format"), {"nff", "pov", "obj", "pbrt"}));
+  if (root.has("source_dir")) a.source_dir = read_source_dir(root.member("source_dir"));
+  if (root.has("requires")) a.packages = read_packages(root.member("requires"));
+  if (root.has("build")) a.build = read_build(root.member("build"));
+  a.run = read_argv(root.member("run"), TemplateField::run);
+  if (root.has("stdin")) a.stdin_template = read_template(root.member("stdin"), TemplateField::run);
+  if (root.has("cwd")) a.cwd = read_cwd(root.member("cwd"));
+  a.image = read_template(root.member("image"), TemplateField::run);
+  if (root.has("env")) a.env = read_env(root.member("env"));
+  if (root.has("timing")) a.timing = read_timing(root.member("timing"));
+  if (root.has("threads")) a.threads = read_threads(root.member("threads"));
+  if (root.has("pin_cpus")) a.pin_cpus = root.member("pin_cpus").as_bool();
+  if (root.has("submodules")) a.submodules = root.member("submodules").as_bool();
+  if (root.has("timeout_s")) a.timeouts = read_timeouts(root.member("timeout_s"));
+  check_scene_reaches_tracer(root, a);
+  check_image(root, a);
+  return a;
+}
+
+// nlohmann's message carries the position as "parse error at line L, column C: <detail>".
+[[noreturn]] void throw_parse_error(const json::parse_error& e, const std::string& origin) {
+  const std::string what = e.what();
+  std::smatch m;
+  if (std::regex_search(what, m, std::regex("at line ([0-9]+), column ([0-9]+): (.*)"))) {
+    throw UsageError(origin + ": line " + m[1].str() + ", column " + m[2].str() +
+                     ": invalid JSON: " + m[3].str());
+  }
+  throw UsageError(origin + ": invalid JSON (byte " + std::to_string(e.byte) + "): " + what);
+}
+
+}  // namespace
+
+Adapter parse_adapter(std::string_view text, const std::string& origin) {
+  if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
+    throw UsageError(origin + ": the file is empty (an adapter is a JSON object)");
+  }
+  json document;
+  try {
+    document = json::parse(text);
+  } catch (const json::parse_error& e) {
+    throw_parse_error(e, origin);
+  }
+  try {
+    Adapter adapter = read_fields(JsonField(document, "$"));
+    adapter.file = origin;
+    adapter.canonical = document.dump();  // nlohmann's objects are std::map: keys sorted
+    return adapter;
+  } catch (const FieldError& e) {
+    throw UsageError(origin + ": " + e.path() + ": " + e.what());
+  }
+}
+
+Adapter load_adapter(const std::filesystem::path& path) {
+  return parse_adapter(read_file(path), path.string());
+}
+
+std::string adapter_hash(const Adapter& adapter) { return sha256_hex(adapter.canonical); }
+
+std::filesystem::path source_directory(const Adapter& adapter,
+                                       const std::filesystem::path& repo_root) {
+  return adapter.source_dir.empty() ? repo_root : repo_root / adapter.source_dir;
+}
+
+std::string_view to_string(SceneFormat format) {
+  switch (format) {
+    case SceneFormat::nff: return "nff";
+    case SceneFormat::pov: return "pov";
+    case SceneFormat::obj: return "obj";
+    case SceneFormat::pbrt: return "pbrt";
+  }
+  return "?";
+}
+
+std::string_view to_string(TimingSource source) {
+  return source == TimingSource::process ? "process" : "reported";
+}
+
+std::string_view to_string(TimingMetric metric) {
+  return metric == TimingMetric::wall ? "wall" : "cpu";
+}
+
+std::string_view to_string(TimeUnit unit) { return unit == TimeUnit::seconds ? "s" : "ms"; }
+
+}  // namespace raygate

@@ -1,0 +1,152 @@
+#include "checkout/repository.h"
+
+#include <fmt/format.h>
+
+#include "checkout/atomic_dir.h"
+#include "checkout/describe.h"
+#include "checkout/file_lock.h"
+#include "checkout/remote_cache.h"
+#include "checkout/resolve.h"
+#include "checkout/submodules.h"
+#include "checkout/tree_writer.h"
+#include "core/error.h"
+
+namespace fs = std::filesystem;
+
+namespace raygate {
+namespace {
+
+std::string without_trailing_slash(std::string path) {
+  while (path.size() > 1 && path.back() == '/') path.pop_back();
+  return path;
+}
+
+git::RepositoryPtr open_local(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) {
+    throw UsageError(fmt::format(
+        "repository {} does not exist; give --repo a repository path or URL", path.string()));
+  }
+  git::RepositoryPtr repo;
+  const int rc = git_repository_open_ext(repo.out(), path.c_str(), 0, nullptr);
+  if (rc == GIT_ENOTFOUND) {
+    throw UsageError(fmt::format(
+        "{} is not in a git repository; give --repo a repository path or URL", path.string()));
+  }
+  git::check(rc, fmt::format("opening repository {}", path.string()));
+  return repo;
+}
+
+// Where the user's files are (or the git dir of a bare repository): what "../sub" is relative to.
+std::string local_base(git_repository* repo) {
+  const char* workdir = git_repository_workdir(repo);
+  return without_trailing_slash(workdir != nullptr ? workdir : git_repository_path(repo));
+}
+
+}  // namespace
+
+Repository Repository::open(const std::string& location, const fs::path& cache_dir) {
+  Repository out;
+  out.cache_dir_ = fs::absolute(cache_dir);
+  if (is_url(location)) {
+    out.repo_ = open_cached_clone(out.cache_dir_, location, Fetch::always);
+    out.where_ = location;
+    out.url_base_ = location;
+    out.fallback_prefix_ = "origin/";
+  } else {
+    out.repo_ = open_local(fs::absolute(location));
+    out.url_base_ = local_base(out.repo_.get());
+    out.where_ = out.url_base_;
+  }
+  return out;
+}
+
+Revision Repository::resolve(const std::string& revspec) const {
+  git::ResolvedCommit found = git::resolve_commit(repo_.get(), revspec, where_, fallback_prefix_);
+  return git::describe_commit(found.commit.get(), revspec, std::move(found.ref_name));
+}
+
+Worktree Repository::checkout(const std::string& revspec) const {
+  return materialize(resolve(revspec));
+}
+
+fs::path Repository::worktree_path(const std::string& sha) const {
+  return cache_dir_ / "worktrees" / sha;
+}
+
+git::CommitPtr Repository::commit_of(const Revision& revision) const {
+  git_oid id;
+  if (revision.sha.size() != GIT_OID_HEXSZ || git_oid_fromstr(&id, revision.sha.c_str()) < 0) {
+    throw UsageError(fmt::format("'{}' is not a full commit sha", revision.sha));
+  }
+  return git::lookup_commit(repo_.get(), id, where_);
+}
+
+Worktree Repository::materialize(const Revision& revision) const {
+  const fs::path final_path = worktree_path(revision.sha);
+  std::error_code ec;
+  if (!fs::is_directory(final_path, ec)) {
+    FileLock lock(lock_path_for(final_path));
+    if (!fs::is_directory(final_path, ec)) {  // another process may have built it meanwhile
+      git::CommitPtr commit = commit_of(revision);
+      build_directory_atomically(final_path, [&](const fs::path& temp) {
+        const auto gitlinks = git::write_commit_tree(repo_.get(), commit.get(), temp, where_);
+        git::populate_submodules({cache_dir_, url_base_, where_}, commit.get(), gitlinks, temp);
+      });
+    }
+  }
+  return worktree_of(final_path, revision);
+}
+
+std::optional<Revision> Repository::merge_base(const std::string& a, const std::string& b) const {
+  const Revision first = resolve(a);
+  const Revision second = resolve(b);
+  git_oid ids[2];
+  git_oid_fromstr(&ids[0], first.sha.c_str());
+  git_oid_fromstr(&ids[1], second.sha.c_str());
+  git_oid base;
+  const int rc = git_merge_base(&base, repo_.get(), &ids[0], &ids[1]);
+  if (rc == GIT_ENOTFOUND) {
+    git_error_clear();
+    return std::nullopt;
+  }
+  git::check(rc, fmt::format("finding the merge base of '{}' and '{}' in {}", a, b, where_));
+  git::CommitPtr commit = git::lookup_commit(repo_.get(), base, where_);
+  return git::describe_commit(commit.get(), git::to_hex(base), "");
+}
+
+std::vector<Revision> Repository::first_parent_history(const std::string& good,
+                                                       const std::string& bad) const {
+  const Revision from = resolve(good);
+  const Revision to = resolve(bad);
+  if (from.sha == to.sha) return {};
+  git_oid from_id, to_id;
+  git_oid_fromstr(&from_id, from.sha.c_str());
+  git_oid_fromstr(&to_id, to.sha.c_str());
+  const std::string doing =
+      fmt::format("walking history from '{}' to '{}' in {}", good, bad, where_);
+  if (git::check(git_graph_descendant_of(repo_.get(), &to_id, &from_id), doing) != 1) {
+    throw UsageError(
+        fmt::format("'{}' ({}) is not an ancestor of '{}' ({}) in {}; the good "
+                    "revision must be older than the bad one",
+                    good, from.short_sha, bad, to.short_sha, where_));
+  }
+  git::RevwalkPtr walk;
+  git::check(git_revwalk_new(walk.out(), repo_.get()), doing);
+  git::check(git_revwalk_sorting(walk.get(), GIT_SORT_TOPOLOGICAL | GIT_SORT_REVERSE), doing);
+  git::check(git_revwalk_simplify_first_parent(walk.get()), doing);
+  git::check(git_revwalk_push(walk.get(), &to_id), doing);
+  git::check(git_revwalk_hide(walk.get(), &from_id), doing);
+
+  std::vector<Revision> history;
+  git_oid id;
+  int rc = 0;
+  while ((rc = git_revwalk_next(&id, walk.get())) == 0) {
+    git::CommitPtr commit = git::lookup_commit(repo_.get(), id, where_);
+    history.push_back(git::describe_commit(commit.get(), git::to_hex(id), ""));
+  }
+  if (rc != GIT_ITEROVER) git::check(rc, doing);
+  return history;
+}
+
+}  // namespace raygate

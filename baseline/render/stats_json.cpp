@@ -26,6 +26,7 @@ nlohmann::json to_json(const RunReport& r) {
       {"refraction", rays.refraction},
       {"total", rays.eye + rays.shadow + rays.reflection + rays.refraction},
   };
+  doc["total_internal_reflections"] = rays.total_internal_reflections;
   doc["tests"] = {{"primitive", r.stats.tests.primitive_tests},
                   {"bbox", r.stats.tests.bbox_tests}};
   doc["parse_seconds"] = r.parse_seconds;

@@ -44,6 +44,7 @@ Vec3 Tracer::shade(const Ray& ray, const Hit& hit, int depth) {
     ++rays_.reflection;
     color += trace(next.reflected, 0.0, depth + 1) * next.reflection_weight;
   }
+  if (material.transmittance > 0.0 && !next.refracts) ++rays_.total_internal_reflections;
   if (next.refracts) {
     ++rays_.refraction;
     color += trace(next.refracted, 0.0, depth + 1) * material.transmittance;

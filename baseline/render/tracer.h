@@ -20,6 +20,9 @@ struct RayCounts {
   std::uint64_t shadow = 0;
   std::uint64_t reflection = 0;
   std::uint64_t refraction = 0;
+  // Transmitting hits below the depth limit where no refraction ray could be spawned (not rays;
+  // counted to explain differences from published refraction counts, docs/validation.md).
+  std::uint64_t total_internal_reflections = 0;
 };
 
 struct TraceSettings {

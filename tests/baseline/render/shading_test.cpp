@@ -295,9 +295,11 @@ TEST(Refraction, TirEnergyGoesToTheReflectedRay) {
     EXPECT_EQ(rays.reflection, 1u);
     if (degrees == 60.0) {
       EXPECT_EQ(rays.refraction, 0u);
+      EXPECT_EQ(rays.total_internal_reflections, 1u);
       expect_color_near(c, color * (2.0 * kAmbient), 1e-15);
     } else {
       EXPECT_EQ(rays.refraction, 1u);
+      EXPECT_EQ(rays.total_internal_reflections, 0u);
       expect_color_near(c, color * kAmbient + background, 1e-15);
     }
   }

@@ -15,6 +15,7 @@
 #include <cstring>
 #include <deque>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <utility>
 
@@ -101,7 +102,7 @@ std::string ProcessResult::describe() const {
       out << "killed by signal " << signal << " (" << sigabbrev_np(signal) << ")";
       break;
     case ProcessOutcome::timed_out:
-      out << "timed out after " << wall_seconds << " s";
+      out << "timed out after " << std::fixed << std::setprecision(1) << wall_seconds << " s";
       break;
     case ProcessOutcome::spawn_failed:
       out << "could not start: " << spawn_error;

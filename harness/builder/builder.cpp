@@ -1,0 +1,181 @@
+#include "builder/builder.h"
+
+#include <sched.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <string_view>
+#include <thread>
+
+#include "adapter/packages.h"
+#include "adapter/placeholders.h"
+#include "builder/build_cache.h"
+#include "builder/build_steps.h"
+#include "builder/compiler_identity.h"
+#include "checkout/file_lock.h"
+#include "core/error.h"
+
+namespace fs = std::filesystem;
+
+namespace raygate {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+void require_packages(const Adapter& adapter) {
+  std::vector<std::string> missing;
+  try {
+    missing = missing_packages(adapter);
+  } catch (const InfraError&) {
+    return;  // no dpkg: not a Debian system, the tools may be installed another way
+  }
+  if (missing.empty()) return;
+  std::string names;
+  for (const std::string& name : missing) names += (names.empty() ? "" : ", ") + name;
+  throw InfraError(fmt::format(
+      "{}: cannot build with adapter '{}': required Debian packages are not installed: {}\n"
+      "  install them with: {}",
+      adapter.file.string(), adapter.name, names, apt_get_line(missing)));
+}
+
+BuildKeyInputs key_inputs(const Worktree& worktree, const Adapter& adapter,
+                          const BuildOptions& options) {
+  BuildKeyInputs inputs;
+  inputs.sha = worktree.sha;
+  inputs.dirty = worktree.dirty;
+  inputs.adapter_name = adapter.name;
+  inputs.adapter_hash = adapter_hash(adapter);
+  inputs.compiler = options.compiler_identity ? *options.compiler_identity
+                                              : detect_compiler_identity();
+  inputs.extra = options.key_extra;
+  return inputs;
+}
+
+BuildRecord new_record(const BuildKeyInputs& inputs, const BuildCacheEntry& entry,
+                       const fs::path& src) {
+  BuildRecord record;
+  record.sha = inputs.sha;
+  record.dirty = inputs.dirty;
+  record.adapter_name = inputs.adapter_name;
+  record.adapter_hash = inputs.adapter_hash;
+  record.compiler = inputs.compiler;
+  record.key = entry.key;
+  record.build_dir = entry.build_dir;
+  record.src_dir = src;
+  return record;
+}
+
+std::vector<std::vector<std::string>> expanded_steps(const Adapter& adapter,
+                                                     const Worktree& worktree,
+                                                     const BuildOptions& options,
+                                                     const BuildRecord& record) {
+  Placeholders values;
+  values.src = record.src_dir.string();
+  values.repo_root = worktree.path.string();
+  values.build = record.build_dir.string();
+  values.jobs = std::to_string(options.jobs > 0 ? options.jobs : available_cpus());
+  values.raygate_source = options.raygate_source.string();
+  std::vector<std::vector<std::string>> steps;
+  for (const std::vector<std::string>& step : adapter.build) steps.push_back(expand(step, values));
+  return steps;
+}
+
+// Log paths in the record follow the folder to its <key>.failed-N name.
+void relocate_logs(BuildRecord& record, const fs::path& from, const fs::path& to) {
+  if (from == to) return;
+  for (BuildStepRecord& step : record.steps) {
+    if (!step.log.empty()) step.log = to / step.log.lexically_relative(from);
+  }
+}
+
+void run_steps(BuildRecord& record, const Worktree& worktree, const Adapter& adapter,
+               const BuildOptions& options, const BuildCacheEntry& entry) {
+  const auto started = Clock::now();
+  if (!fs::is_directory(record.src_dir)) {
+    record.failure = fmt::format("the source folder {} does not exist in this commit",
+                                 record.src_dir.string());
+    return;
+  }
+  StepSettings settings;
+  settings.working_directory = record.src_dir;
+  settings.logs_dir = entry.logs_dir;
+  settings.timeout_seconds = adapter.timeouts.build_seconds;
+  settings.deadline = started + std::chrono::duration_cast<Clock::duration>(
+                                    std::chrono::duration<double>(settings.timeout_seconds));
+  StepsResult result =
+      run_build_steps(expanded_steps(adapter, worktree, options, record), settings);
+  record.steps = std::move(result.steps);
+  record.success = result.success;
+  record.failure = std::move(result.failure);
+  record.log_tail = std::move(result.log_tail);
+  record.total_seconds = std::chrono::duration<double>(Clock::now() - started).count();
+}
+
+}  // namespace
+
+BuildRecord build(const Worktree& worktree, const Adapter& adapter, const BuildOptions& options) {
+  const BuildKeyInputs inputs = key_inputs(worktree, adapter, options);
+  const BuildCacheEntry entry = cache_entry(options.cache_dir, build_key(inputs));
+  const fs::path src = source_directory(adapter, worktree.path);
+  const FileLock lock(entry.lock);
+
+  if (!inputs.dirty) {
+    if (std::optional<BuildRecord> cached = read_cached_build(entry, inputs)) {
+      cached->src_dir = src;  // the tree the caller will run in; same commit, same files
+      return *cached;
+    }
+  }
+  require_packages(adapter);
+  prepare_fresh_entry(entry);
+  BuildRecord record = new_record(inputs, entry, src);
+  run_steps(record, worktree, adapter, options, entry);
+  if (record.success) {
+    if (!inputs.dirty) publish_build(entry, record);
+    return record;
+  }
+  const fs::path kept = set_aside_failed_build(entry);
+  relocate_logs(record, entry.dir, kept);
+  return record;
+}
+
+std::string failure_message(const BuildRecord& record) {
+  if (record.success) return "";
+  std::string message = fmt::format("build failed: adapter '{}', commit {}{}: {}",
+                                    record.adapter_name, record.sha.substr(0, 12),
+                                    record.dirty ? " (dirty)" : "", record.failure);
+  message += fmt::format("\n  source: {}", record.src_dir.string());
+  if (!record.steps.empty() && !record.steps.back().log.empty()) {
+    message += fmt::format("\n  log: {}", record.steps.back().log.string());
+    if (record.log_tail.empty()) {
+      message += "\n  (the log is empty)";
+    } else {
+      message += fmt::format("\n  last lines of the log:");
+      std::string_view tail = record.log_tail;
+      while (!tail.empty()) {
+        const std::size_t end = std::min(tail.find('\n'), tail.size());
+        message += fmt::format("\n    | {}", tail.substr(0, end));
+        tail.remove_prefix(std::min(end + 1, tail.size()));
+      }
+    }
+  }
+  message +=
+      "\n  fix the build of this commit or the adapter's build steps (`raygate adapter check`); "
+      "a commit that does not build is never measured";
+  return message;
+}
+
+void require_success(const BuildRecord& record) {
+  if (!record.success) throw InfraError(failure_message(record));
+}
+
+int available_cpus() {
+  cpu_set_t set;
+  CPU_ZERO(&set);
+  if (sched_getaffinity(0, sizeof set, &set) == 0 && CPU_COUNT(&set) > 0) return CPU_COUNT(&set);
+  const unsigned n = std::thread::hardware_concurrency();
+  return n > 0 ? static_cast<int>(n) : 1;
+}
+
+}  // namespace raygate

@@ -37,6 +37,7 @@ struct Options {
   Accel accel = Accel::none;
   Sampling sampling = Sampling::center;
   int max_depth = 5;
+  bool print_time = false;
 };
 
 double seconds_since(Clock::time_point start) {
@@ -66,6 +67,9 @@ void add_options(CLI::App& app, Options& options) {
                  "center: one ray per pixel centre; corners: SPD's (W+1)x(H+1) corner rays")
       ->transform(CLI::CheckedTransformer(samplings));
   app.add_option("--stats", options.stats_path, "write ray counts and timings as JSON");
+  app.add_flag("--print-time", options.print_time,
+               "print 'raygate-baseline: in-process seconds S' (parse + prepare + render) on "
+               "stdout, for harnesses that time the tracer by its own report");
   app.add_option("--depth", options.max_depth, "maximum ray-tree depth, eye ray = 1")
       ->check(CLI::Range(1, 64));
 }
@@ -128,6 +132,10 @@ int run(const Options& options) {
       (!options.stats_path.empty() && !write_stats(options.stats_path, report, error))) {
     fmt::print(stderr, "raygate-baseline: {}\n", error);
     return kExitOutputFailed;
+  }
+  if (options.print_time) {
+    fmt::print("raygate-baseline: in-process seconds {:.6f}\n",
+               report.parse_seconds + report.prepare_seconds + report.render_seconds);
   }
   return kExitOk;
 }

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   raygate::cli::add_golden_command(app, exit_code);
   raygate::cli::add_validate_command(app, exit_code);
   raygate::cli::add_adapter_command(app, exit_code);
+  raygate::cli::add_run_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -91,6 +91,9 @@ class Process {
 // Starts, waits, returns the result.
 ProcessResult run_process(const ProcessSpec& spec);
 
+// The CPUs this process may run on (its affinity mask), in ascending order.
+std::vector<int> allowed_cpu_list();
+
 // The last `max_lines` lines of a log file (for error messages); empty if unreadable.
 std::string log_tail(const std::filesystem::path& path, int max_lines = 20);
 

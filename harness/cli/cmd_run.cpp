@@ -1,0 +1,120 @@
+// `raygate run`: measure one revision of a tracer against the baseline on a suite and write the
+// results document. Reads as the pipeline: checkout -> build -> measure (per scene: runs,
+// ratios, image checks, document rewritten) -> summary. Exit 0 measured and images pass, 1 an
+// image check failed, 3 a scene could not be measured (the document says which and why).
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "checkout/repository.h"
+#include "cli/commands.h"
+#include "cli/measure_options.h"
+#include "cli/measure_session.h"
+#include "cli/revision_setup.h"
+#include "core/time_text.h"
+#include "measure/machine_context.h"
+#include "runner/baseline_contender.h"
+#include "runner/baseline_tool.h"
+#include "runner/tracer_contender.h"
+
+namespace raygate::cli {
+namespace {
+
+struct RunArgs {
+  MeasureArgs measure;
+  std::string rev = "HEAD";
+  std::string worktree;
+  std::string out;
+};
+
+// The commit to measure, or the user's own tree as it is (--worktree, recorded as dirty).
+std::pair<Worktree, std::string> locate_tree(const RunArgs& args, const MeasureContext& context) {
+  if (!args.worktree.empty()) {
+    const std::filesystem::path path = std::filesystem::absolute(args.worktree);
+    Worktree tree = describe_uncommitted_worktree(path);
+    tree.revision = "--worktree " + path.string();
+    return {tree, path.string()};
+  }
+  const Repository repository = Repository::open(args.measure.repo, context.cache_dir);
+  return {repository.checkout(args.rev), repository.location()};
+}
+
+ResultsDocument document_header(const MeasureContext& context, const BaselineTool& baseline,
+                                 const RevisionRecord& tracer) {
+  ResultsDocument document;
+  document.kind = "run";
+  document.raygate_version = RAYGATE_VERSION;
+  document.started_at = utc_timestamp();
+  document.machine = probe_machine_context();
+  document.baseline.version = baseline.version_line();
+  document.baseline.source_sha256 = baseline.source_hash();
+  document.baseline.sampling = context.suite.sampling;
+  document.suite = context.suite.name;
+  document.settings = measure_settings(context);
+  document.revisions.push_back(tracer);
+  return document;
+}
+
+int run_command(const RunArgs& args) {
+  const MeasureContext context = load_measure_context(args.measure);
+  const BaselineTool baseline(context.tools.baseline);
+  const auto [worktree, repository] = locate_tree(args, context);
+  const PreparedRevision tracer = prepare_revision("tracer", repository, worktree, context,
+                                                   baseline.source_hash(), args.measure.jobs);
+
+  const std::filesystem::path work_dir =
+      context.cache_dir / "runs" / (compact_utc_timestamp() + "-" + worktree.short_sha);
+  SuiteMeasurement m;
+  m.out = args.out.empty() ? work_dir / "results.json" : std::filesystem::absolute(args.out);
+  m.work_dir = work_dir;
+  m.scene_cache = context.cache_dir / "scenes" / context.suite.name;
+  m.golden_dir = context.golden_dir;
+  m.scenes = context.scenes;
+  m.schedule = context.schedule;
+  m.stop = ratio_stop_rule(context.stopping, "tracer");
+  m.tracer_roles = {"tracer"};
+  m.formats = {context.adapter.scene_format};
+
+  const BaselineContender baseline_runs(context.tools.baseline, context.suite.sampling);
+  const TracerContender tracer_runs(tracer.setup);
+  m.contenders = {&baseline_runs, &tracer_runs};
+
+  ResultsDocument document = document_header(context, baseline, tracer.record);
+  fmt::print("measuring {} {} ({}) against {} on suite {}: {} scenes\n", context.adapter.name,
+             worktree.short_sha, worktree.subject, baseline.version_line(), context.suite.name,
+             m.scenes.size());
+  SystemExecutor executor;
+  SteadyClock clock;
+  {
+    Progress progress(stdout, is_terminal(stdout));
+    measure_suite(document, m, executor, clock, progress);
+  }
+  document.finished_at = utc_timestamp();
+  write_results(document, m.out);
+  if (const auto score = document.scores.find("tracer"); score != document.scores.end()) {
+    fmt::print("suite score (geometric mean of normalized ratios): {:.3f} [{:.3f}, {:.3f}] over "
+               "{} scenes\n",
+               score->second.score, score->second.interval.lower, score->second.interval.upper,
+               score->second.scenes);
+  }
+  fmt::print("results: {}\n", m.out.string());
+  return run_exit_code(document);
+}
+
+}  // namespace
+
+void add_run_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<RunArgs>();
+  CLI::App* command = app.add_subcommand(
+      "run", "measure one revision against the baseline on a suite; writes a results document");
+  add_measure_options(*command, args->measure);
+  command->add_option("--rev", args->rev, "revision to measure (branch, tag, sha, HEAD~3, ...)")
+      ->capture_default_str();
+  command->add_option("--worktree", args->worktree,
+                      "measure this directory as it is, uncommitted changes included");
+  command->add_option("--out", args->out,
+                      "results document (default: <cache-dir>/runs/<time>-<sha>/results.json)");
+  command->callback([args, &exit_code] { exit_code = run_command(*args); });
+}
+
+}  // namespace raygate::cli

@@ -1,0 +1,119 @@
+#include "cli/measure_options.h"
+
+#include <fmt/core.h>
+
+#include "core/error.h"
+
+namespace raygate::cli {
+
+void add_measure_options(CLI::App& command, MeasureArgs& args) {
+  command.add_option("--repo", args.repo, "the tracer's git repository: a path or a URL")
+      ->capture_default_str();
+  command.add_option("--adapter", args.adapter,
+                     "adapter file, or the name of a shipped adapter (raygate-baseline-bbox, ...)")
+      ->required();
+  command.add_option("--suite", args.suite, "suite name or file")->capture_default_str();
+  command.add_option("--scene", args.scenes, "measure only these suite scene ids (repeatable)");
+  command.add_option("--cache-dir", args.cache_dir,
+                     "worktrees, builds, scenes and run files go here")
+      ->capture_default_str();
+  command.add_option("--golden-dir", args.golden_dir,
+                     "golden images (default: golden/<adapter name>/ if present, else golden/)");
+  command.add_option("--baseline", args.baseline, "raygate-baseline executable to use");
+  command.add_option("--schedule", args.schedule,
+                     "alternate: one program at a time, order alternating per round; duet: "
+                     "baseline and tracer at once, each on its own CPU")
+      ->check(CLI::IsMember({"alternate", "duet"}))
+      ->capture_default_str();
+  command.add_option("--pin", args.pin_cpus, "pin every run to these CPUs (alternate schedule)")
+      ->delimiter(',');
+  command.add_option("--duet-cpus", args.duet_cpus, "the two CPUs of the duet schedule")
+      ->delimiter(',')
+      ->capture_default_str();
+  command.add_option("--warmup", args.warmup, "untimed runs per program before the rounds")
+      ->check(CLI::Range(0, 10))
+      ->capture_default_str();
+  command.add_option("--target", args.target,
+                     "stop a scene once the ratio's 95% CI half-width is below this fraction")
+      ->check(CLI::Range(0.0001, 1.0))
+      ->capture_default_str();
+  command.add_option("--min-rounds", args.min_rounds, "rounds before the stopping rule applies")
+      ->check(CLI::Range(2, 1000))
+      ->capture_default_str();
+  command.add_option("--max-rounds", args.max_rounds, "round budget per scene")
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  command.add_option("--max-seconds", args.max_seconds, "time budget per scene, in seconds")
+      ->check(CLI::Range(0.0, 1e7))
+      ->capture_default_str();
+  command.add_option("--metric", args.metric,
+                     "time of a process-timed tracer: wall or cpu (default: the adapter's)")
+      ->check(CLI::IsMember({"wall", "cpu"}));
+  command.add_option("--jobs", args.jobs, "parallel build jobs (default: all allowed CPUs)");
+}
+
+namespace {
+
+std::filesystem::path find_adapter(const std::string& name, const std::filesystem::path& data_root) {
+  const std::filesystem::path direct(name);
+  if (std::filesystem::exists(direct)) return direct;
+  const std::filesystem::path shipped = data_root / "adapters" / (name + ".json");
+  if (name.find('/') == std::string::npos && std::filesystem::exists(shipped)) return shipped;
+  throw UsageError(fmt::format("adapter '{}' not found: not a file, and not a shipped adapter "
+                               "(see {}/adapters/)",
+                               name, data_root.string()));
+}
+
+std::filesystem::path pick_golden_dir(const MeasureArgs& args, const ToolPaths& tools,
+                                      const Adapter& adapter) {
+  if (!args.golden_dir.empty()) return args.golden_dir;
+  const std::filesystem::path own = tools.data_root / "golden" / adapter.name;
+  if (std::filesystem::exists(own / "manifest.json")) return own;
+  return tools.data_root / "golden";
+}
+
+}  // namespace
+
+MeasureContext load_measure_context(const MeasureArgs& args) {
+  MeasureContext c;
+  c.tools = locate_tools(args.baseline);
+  c.adapter = load_adapter(find_adapter(args.adapter, c.tools.data_root));
+  c.suite = load_suite(args.suite, c.tools.data_root);
+  c.scenes = select_scenes(c.suite, args.scenes);
+  c.cache_dir = std::filesystem::absolute(args.cache_dir);
+  c.golden_dir = pick_golden_dir(args, c.tools, c.adapter);
+  c.schedule.kind = args.schedule == "duet" ? ScheduleKind::duet : ScheduleKind::alternate;
+  c.schedule.warmup_runs = args.warmup;
+  c.schedule.pin_cpus = args.pin_cpus;
+  c.schedule.duet_cpus = args.duet_cpus;
+  if (c.schedule.kind == ScheduleKind::duet &&
+      (args.duet_cpus.size() != 2 || args.duet_cpus[0] == args.duet_cpus[1])) {
+    throw UsageError("--duet-cpus needs two different CPUs, e.g. --duet-cpus 0,1");
+  }
+  c.stopping.target_relative_half_width = args.target;
+  c.stopping.min_rounds = args.min_rounds;
+  c.stopping.max_rounds = std::max(args.max_rounds, std::size_t{1});
+  if (c.stopping.max_rounds < c.stopping.min_rounds) c.stopping.min_rounds = c.stopping.max_rounds;
+  c.stopping.max_seconds = args.max_seconds;
+  if (args.metric == "wall") c.metric = TimingMetric::wall;
+  if (args.metric == "cpu") c.metric = TimingMetric::cpu;
+  return c;
+}
+
+nlohmann::json measure_settings(const MeasureContext& c) {
+  return {{"schedule", std::string(to_string(c.schedule.kind))},
+          {"warmup_runs", c.schedule.warmup_runs},
+          {"pin_cpus", c.schedule.pin_cpus},
+          {"duet_cpus", c.schedule.duet_cpus},
+          {"target_relative_half_width", c.stopping.target_relative_half_width},
+          {"min_rounds", c.stopping.min_rounds},
+          {"max_rounds", c.stopping.max_rounds},
+          {"max_seconds_per_scene", c.stopping.max_seconds},
+          {"metric", c.metric ? std::string(to_string(*c.metric))
+                              : std::string(to_string(c.adapter.timing.metric))},
+          {"timing_source", std::string(to_string(c.adapter.timing.source))},
+          {"threads", c.adapter.threads},
+          {"golden_dir", c.golden_dir.string()}};
+}
+
+}  // namespace raygate::cli

@@ -1,0 +1,61 @@
+// Command-line options shared by the commands that measure (run, compare, bisect): where the
+// tracer is, how to build it, which scenes, and the schedule and stopping policy. One place, so
+// every measuring command spells its flags the same way.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "adapter/adapter.h"
+#include "core/paths.h"
+#include "measure/stopping.h"
+#include "runner/scheduler.h"
+#include "runner/suite.h"
+
+namespace raygate::cli {
+
+struct MeasureArgs {
+  std::string repo = ".";
+  std::string adapter;  // a file, or the name of a shipped adapter
+  std::string suite = "ci";
+  std::vector<std::string> scenes;
+  std::string cache_dir = ".raygate";
+  std::string golden_dir;  // default: golden/<adapter name>/ if it exists, else golden/
+  std::string baseline;    // raygate-baseline override
+  std::string schedule = "alternate";
+  std::vector<int> pin_cpus;
+  std::vector<int> duet_cpus{0, 1};
+  int warmup = 1;
+  double target = 0.01;
+  std::size_t min_rounds = 3;
+  std::size_t max_rounds = 30;
+  double max_seconds = 300;
+  std::string metric;  // "" (the adapter's), wall, cpu
+  int jobs = 0;
+};
+
+void add_measure_options(CLI::App& command, MeasureArgs& args);
+
+// Everything the options name, loaded and checked; UsageError for anything wrong.
+struct MeasureContext {
+  ToolPaths tools;
+  Adapter adapter;
+  Suite suite;
+  std::vector<SuiteScene> scenes;
+  std::filesystem::path cache_dir;
+  std::filesystem::path golden_dir;
+  ScheduleOptions schedule;
+  StoppingPolicy stopping;
+  std::optional<TimingMetric> metric;
+};
+
+MeasureContext load_measure_context(const MeasureArgs& args);
+
+// The settings object of a results document: how this measurement was made.
+nlohmann::json measure_settings(const MeasureContext& context);
+
+}  // namespace raygate::cli

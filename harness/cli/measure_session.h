@@ -1,0 +1,51 @@
+// The measuring part shared by `raygate run` and `raygate compare`: for every selected scene,
+// prepare its files, run the contenders through the scheduler, summarize the ratios, check the
+// tracers' images against the goldens, and rewrite the results document (atomically) before
+// moving to the next scene, so a killed job keeps every scene it finished.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "cli/progress.h"
+#include "compare/golden.h"
+#include "compare/image_compare.h"
+#include "runner/contender.h"
+#include "runner/executor.h"
+#include "runner/scheduler.h"
+#include "runner/suite.h"
+#include "store/results.h"
+
+namespace raygate::cli {
+
+struct SuiteMeasurement {
+  std::vector<SuiteScene> scenes;
+  std::vector<const Contender*> contenders;  // the baseline first
+  std::vector<std::string> tracer_roles;     // normalized against the baseline, image-checked
+  std::vector<SceneFormat> formats{SceneFormat::nff};  // scene files the contenders read
+  ScheduleOptions schedule;
+  StopRule stop;
+  ImageThresholds thresholds;
+  std::filesystem::path golden_dir;
+  std::filesystem::path scene_cache;  // generated scene files
+  std::filesystem::path work_dir;     // run directories and evidence images
+  std::filesystem::path out;          // the results document
+  // Extra per-scene summaries after the ratios and golden checks (compare adds its change).
+  std::function<void(SceneResult&)> finish_scene;
+};
+
+// Measures every scene into `document` (whose header the caller filled in), writing it to
+// m.out after each scene and once more, complete, at the end.
+void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
+                   Clock& clock, Progress& progress);
+
+// One line per scene for logs and the end-of-run table.
+std::string scene_line(const SceneResult& scene, const std::vector<std::string>& tracer_roles);
+
+// 0 all measured and images pass; 1 an image check failed; 3 a scene could not be measured or
+// an image could not be checked.
+int run_exit_code(const ResultsDocument& document);
+
+}  // namespace raygate::cli

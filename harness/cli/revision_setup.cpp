@@ -1,0 +1,72 @@
+#include "cli/revision_setup.h"
+
+#include <fmt/core.h>
+
+#include "adapter/placeholders.h"
+#include "builder/builder.h"
+
+namespace raygate::cli {
+
+namespace {
+
+bool builds_raygate_source(const Adapter& adapter) {
+  for (const auto& step : adapter.build) {
+    for (const std::string& arg : step) {
+      if (uses_placeholder(arg, "raygate_source")) return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+BuildRecord build_revision(const Worktree& worktree, const MeasureContext& context,
+                           const std::string& baseline_source_hash, int jobs) {
+  BuildOptions options;
+  options.cache_dir = context.cache_dir;
+  options.raygate_source = context.tools.data_root;
+  options.jobs = jobs;
+  // The commit does not cover files the adapter builds from raygate's own tree.
+  if (builds_raygate_source(context.adapter)) {
+    options.key_extra = "raygate-baseline-source:" + baseline_source_hash;
+  }
+  fmt::print(stderr, "building {} ({}) with adapter {} ...\n", worktree.short_sha,
+             worktree.revision, context.adapter.name);
+  BuildRecord record = build(worktree, context.adapter, options);
+  if (record.success) {
+    fmt::print(stderr, "  {} in {}\n", record.cached ? "cached build" : "built",
+               record.build_dir.string());
+  }
+  return record;
+}
+
+PreparedRevision prepare_revision(const std::string& role, const std::string& repository,
+                                  const Worktree& worktree, const MeasureContext& context,
+                                  const std::string& baseline_source_hash, int jobs) {
+  BuildRecord build_record = build_revision(worktree, context, baseline_source_hash, jobs);
+  require_success(build_record);
+  PreparedRevision prepared;
+  prepared.record.role = role;
+  prepared.record.repository = repository;
+  prepared.record.worktree = worktree;
+  prepared.record.adapter_name = context.adapter.name;
+  prepared.record.adapter_hash = adapter_hash(context.adapter);
+  prepared.record.adapter_file = context.adapter.file.string();
+  prepared.record.build = build_record;
+  prepared.setup.role = role;
+  prepared.setup.adapter = context.adapter;
+  prepared.setup.build = build_record;
+  prepared.setup.repo_root = worktree.path;
+  prepared.setup.raygate_source = context.tools.data_root;
+  prepared.setup.metric = context.metric;
+  if (context.adapter.pin_cpus && context.schedule.pin_cpus.empty()) {
+    // The adapter asks raygate to pin: the first `threads` CPUs this process may use.
+    const std::vector<int> allowed = allowed_cpu_list();
+    const std::size_t count =
+        std::min(allowed.size(), static_cast<std::size_t>(std::max(context.adapter.threads, 1)));
+    prepared.setup.cpus.assign(allowed.begin(), allowed.begin() + static_cast<long>(count));
+  }
+  return prepared;
+}
+
+}  // namespace raygate::cli

@@ -1,0 +1,29 @@
+// From a revision name to a tracer contender: check the commit out into the worktree cache (or
+// take the user's --worktree as it is), build it through the adapter (cached), and describe it
+// for the results document. Shared by run, compare and bisect.
+#pragma once
+
+#include <string>
+
+#include "checkout/repository.h"
+#include "cli/measure_options.h"
+#include "runner/tracer_contender.h"
+#include "store/results.h"
+
+namespace raygate::cli {
+
+struct PreparedRevision {
+  RevisionRecord record;
+  TracerSetup setup;
+};
+
+// Builds `worktree` for `role`; throws InfraError (exit 3) with the log tail if the build fails.
+PreparedRevision prepare_revision(const std::string& role, const std::string& repository,
+                                  const Worktree& worktree, const MeasureContext& context,
+                                  const std::string& baseline_source_hash, int jobs);
+
+// The build record for `worktree` without throwing on failure (bisect skips such commits).
+BuildRecord build_revision(const Worktree& worktree, const MeasureContext& context,
+                           const std::string& baseline_source_hash, int jobs);
+
+}  // namespace raygate::cli

@@ -1,0 +1,46 @@
+// One image checked against a reference (a golden, or the base revision's image): the metrics,
+// the verdict in idiff's terms, and evidence images when it fails. A check that cannot be made
+// (no golden, unreadable image) is a result with verdict "error", never an exception, so one
+// broken scene does not stop a suite.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compare/golden.h"
+#include "compare/image_compare.h"
+
+namespace raygate {
+
+struct ImageCheck {
+  std::string role;       // whose image ("tracer", "base", "head")
+  std::string reference;  // "golden" or the role of the reference image ("base")
+  std::filesystem::path actual;
+  std::filesystem::path expected;
+  // "pass", "warn", "fail"; "missing" when there is no reference to compare with (reported, not
+  // failed); "error" when an image could not be read.
+  std::string verdict;
+  std::string error;  // for "missing" and "error": what went wrong and what to do
+  std::optional<ImageMetrics> metrics;
+  std::vector<std::filesystem::path> evidence;  // actual, expected, |diff| x16 on failure
+
+  bool failed() const { return verdict == "fail"; }
+};
+
+// Compares `actual` with `expected`; on "fail" writes evidence into evidence_dir as <stem>.*.png.
+ImageCheck check_image(const std::string& role, const std::string& reference,
+                       const std::filesystem::path& actual, const std::filesystem::path& expected,
+                       const ImageThresholds& thresholds, const std::filesystem::path& evidence_dir,
+                       const std::string& stem);
+
+// The golden of suite scene `id` in `golden_dir` (per its manifest), checked as above. A missing
+// golden gives verdict "missing", saying how to create one.
+ImageCheck check_against_golden(const std::string& role, const std::filesystem::path& actual,
+                                const std::filesystem::path& golden_dir,
+                                const GoldenManifest& manifest, const std::string& id,
+                                const ImageThresholds& thresholds,
+                                const std::filesystem::path& evidence_dir);
+
+}  // namespace raygate

@@ -1,0 +1,53 @@
+// A contender is one program the scheduler times on a scene: the baseline (the normalizer) or a
+// tracer revision built through an adapter. It knows how to start one run in a fresh directory
+// and how to turn the finished process into a RunRecord; the scheduler decides when and in which
+// order runs happen.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+
+#include "adapter/adapter.h"
+#include "builder/build_record.h"
+#include "core/process.h"
+#include "runner/run_record.h"
+#include "runner/suite.h"
+
+namespace raygate {
+
+// A suite scene ready to render: its NFF file and, for adapters that read other formats, the
+// converted files.
+struct SceneInput {
+  SuiteScene entry;
+  std::filesystem::path nff;
+  std::map<SceneFormat, std::filesystem::path> files;  // always holds nff too
+
+  // The file in `format`; throws InfraError if it was not prepared.
+  const std::filesystem::path& file(SceneFormat format) const;
+};
+
+class Contender {
+ public:
+  explicit Contender(std::string role) : role_(std::move(role)) {}
+  virtual ~Contender() = default;
+
+  // "baseline", "tracer", "base", "head": names the contender in rounds and documents.
+  const std::string& role() const { return role_; }
+
+  // The process of one run whose files go in `run_dir` (created by the caller, empty).
+  virtual ProcessSpec command(const SceneInput& scene, const std::filesystem::path& run_dir) const = 0;
+
+  // The record of that run once its process ended.
+  virtual RunRecord interpret(const SceneInput& scene, const ProcessResult& result,
+                              const ProcessSpec& spec,
+                              const std::filesystem::path& run_dir) const = 0;
+
+ private:
+  std::string role_;
+};
+
+// The common part of interpret(): outcome, times, log; ok only if the process succeeded.
+RunRecord record_process(const ProcessResult& result, const ProcessSpec& spec);
+
+}  // namespace raygate

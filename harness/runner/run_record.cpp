@@ -1,0 +1,36 @@
+#include "runner/run_record.h"
+
+namespace raygate {
+
+void to_json(nlohmann::json& json, const RunRecord& run) {
+  json = nlohmann::json{{"ok", run.ok},
+                        {"outcome", run.outcome},
+                        {"seconds", run.seconds},
+                        {"wall_seconds", run.wall_seconds},
+                        {"user_seconds", run.user_seconds},
+                        {"system_seconds", run.system_seconds},
+                        {"max_rss_kib", run.max_rss_kib},
+                        {"reported_seconds", nullptr},
+                        {"image", run.image.string()},
+                        {"log", run.log.string()}};
+  if (run.reported_seconds) json["reported_seconds"] = *run.reported_seconds;
+  if (!run.failure.empty()) json["failure"] = run.failure;
+}
+
+void from_json(const nlohmann::json& json, RunRecord& run) {
+  run.ok = json.at("ok").get<bool>();
+  run.outcome = json.at("outcome").get<std::string>();
+  run.failure = json.value("failure", std::string());
+  run.seconds = json.at("seconds").get<double>();
+  run.wall_seconds = json.at("wall_seconds").get<double>();
+  run.user_seconds = json.at("user_seconds").get<double>();
+  run.system_seconds = json.at("system_seconds").get<double>();
+  run.max_rss_kib = json.at("max_rss_kib").get<long>();
+  const nlohmann::json& reported = json.at("reported_seconds");
+  run.reported_seconds =
+      reported.is_null() ? std::nullopt : std::optional<double>(reported.get<double>());
+  run.image = json.at("image").get<std::string>();
+  run.log = json.at("log").get<std::string>();
+}
+
+}  // namespace raygate

@@ -1,0 +1,36 @@
+// The record of one timed run of one contender (the baseline, or a tracer revision) on one scene:
+// how the process ended, its times, and where its image and log are. A run that failed is data
+// here (ok = false with the reason), exactly as a run that succeeded.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace raygate {
+
+struct RunRecord {
+  bool ok = false;
+  std::string outcome;   // ProcessResult::describe(): "exited with status 0", "killed by SIGSEGV"
+  std::string failure;   // why the run is unusable, one line; empty when ok
+  double seconds = 0.0;  // the time the ratio uses (see TimeSource in contender.h)
+  double wall_seconds = 0.0;
+  double user_seconds = 0.0;
+  double system_seconds = 0.0;
+  long max_rss_kib = 0;
+  // The contender's own account of its time, when it gives one: the baseline's parse + prepare +
+  // render seconds from --stats, or a tracer's time parsed with the adapter's regex.
+  std::optional<double> reported_seconds;
+  std::filesystem::path image;
+  std::filesystem::path log;  // stdout and stderr together
+
+  double cpu_seconds() const { return user_seconds + system_seconds; }
+  bool operator==(const RunRecord&) const = default;
+};
+
+void to_json(nlohmann::json& json, const RunRecord& run);
+void from_json(const nlohmann::json& json, RunRecord& run);
+
+}  // namespace raygate

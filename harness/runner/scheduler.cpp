@@ -1,0 +1,177 @@
+#include "runner/scheduler.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+
+#include "core/error.h"
+
+namespace raygate {
+
+const RunRecord* SceneRuns::first_run(const std::string& role) const {
+  if (const auto found = warmup.find(role); found != warmup.end()) {
+    for (const RunRecord& run : found->second) {
+      if (run.ok) return &run;
+    }
+  }
+  for (const Round& round : rounds) {
+    if (const auto found = round.runs.find(role); found != round.runs.end() && found->second.ok) {
+      return &found->second;
+    }
+  }
+  return nullptr;
+}
+
+namespace {
+
+// Runs one contender once; `label` names the run directory ("warmup-1", "round-007").
+class RunLauncher {
+ public:
+  RunLauncher(const SceneInput& scene, Executor& executor, const std::filesystem::path& scene_dir)
+      : scene_(scene), executor_(executor), scene_dir_(scene_dir) {}
+
+  std::filesystem::path prepare(const Contender& contender, const std::string& label) const {
+    const std::filesystem::path dir = scene_dir_ / contender.role() / label;
+    std::filesystem::remove_all(dir);  // a re-run of an interrupted measurement starts clean
+    std::filesystem::create_directories(dir);
+    return dir;
+  }
+
+  RunRecord run(const Contender& contender, const std::string& label,
+                const std::vector<int>& cpus) const {
+    const std::filesystem::path dir = prepare(contender, label);
+    ProcessSpec spec = contender.command(scene_, dir);
+    if (!cpus.empty()) spec.cpu_affinity = cpus;
+    return contender.interpret(scene_, executor_.run(spec), spec, dir);
+  }
+
+  // Starts all at once, contender i pinned to cpus[i].
+  std::vector<RunRecord> run_together(std::span<const Contender* const> contenders,
+                                      const std::string& label, const std::vector<int>& cpus) const {
+    std::vector<std::filesystem::path> dirs;
+    std::vector<ProcessSpec> specs;
+    for (std::size_t i = 0; i < contenders.size(); ++i) {
+      dirs.push_back(prepare(*contenders[i], label));
+      specs.push_back(contenders[i]->command(scene_, dirs.back()));
+      specs.back().cpu_affinity = {cpus[i]};
+    }
+    const std::vector<ProcessResult> results = executor_.run_together(specs);
+    std::vector<RunRecord> records;
+    for (std::size_t i = 0; i < contenders.size(); ++i) {
+      records.push_back(contenders[i]->interpret(scene_, results[i], specs[i], dirs[i]));
+    }
+    return records;
+  }
+
+ private:
+  const SceneInput& scene_;
+  Executor& executor_;
+  std::filesystem::path scene_dir_;
+};
+
+template <typename T>
+std::vector<T> rotated(const std::vector<T>& items, std::size_t by) {
+  std::vector<T> out(items);
+  if (!out.empty()) std::rotate(out.begin(), out.begin() + static_cast<long>(by % out.size()), out.end());
+  return out;
+}
+
+void check_options(std::span<const Contender* const> contenders, const ScheduleOptions& options) {
+  if (contenders.empty()) throw std::invalid_argument("measure_scene: no contenders");
+  if (options.kind != ScheduleKind::duet) return;
+  if (contenders.size() != 2) {
+    throw UsageError(fmt::format("the duet schedule runs two programs at once (baseline and "
+                                 "tracer); this measurement has {}",
+                                 contenders.size()));
+  }
+  if (options.duet_cpus.size() < 2 || options.duet_cpus[0] == options.duet_cpus[1]) {
+    throw UsageError("the duet schedule needs two different CPUs");
+  }
+}
+
+}  // namespace
+
+SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* const> contenders,
+                        const ScheduleOptions& options, const StopRule& stop, Executor& executor,
+                        Clock& clock, const std::filesystem::path& scene_dir,
+                        const RoundObserver& on_round) {
+  check_options(contenders, options);
+  const RunLauncher launcher(scene, executor, scene_dir);
+  const double started = clock.now_seconds();
+  SceneRuns out;
+  auto fail = [&](const std::string& role, const RunRecord& run) {
+    out.failed_role = role;
+    out.failed_run = run;
+    out.stop_reason = "failed";
+    out.seconds_spent = clock.now_seconds() - started;
+    return out;
+  };
+
+  for (int w = 1; w <= options.warmup_runs; ++w) {
+    for (const Contender* contender : contenders) {
+      RunRecord run = launcher.run(*contender, fmt::format("warmup-{}", w), options.pin_cpus);
+      out.warmup[contender->role()].push_back(run);
+      if (!run.ok) return fail(contender->role(), run);
+    }
+  }
+
+  const std::vector<const Contender*> roster(contenders.begin(), contenders.end());
+  for (std::size_t index = 0;; ++index) {
+    const std::string label = fmt::format("round-{:03}", index + 1);
+    Round round;
+    if (options.kind == ScheduleKind::duet) {
+      const std::vector<int> cpus = rotated(
+          std::vector<int>(options.duet_cpus.begin(), options.duet_cpus.begin() + 2), index);
+      const std::vector<RunRecord> runs = launcher.run_together(roster, label, cpus);
+      for (std::size_t i = 0; i < roster.size(); ++i) {
+        if (!runs[i].ok) return fail(roster[i]->role(), runs[i]);
+        round.runs[roster[i]->role()] = runs[i];
+      }
+      // Order by CPU, so the document says which contender had which CPU this round.
+      for (std::size_t c = 0; c < cpus.size(); ++c) {
+        const auto it = std::find(cpus.begin(), cpus.end(), options.duet_cpus[c]);
+        round.order.push_back(roster[static_cast<std::size_t>(it - cpus.begin())]->role());
+      }
+    } else {
+      for (const Contender* contender : rotated(roster, index)) {
+        RunRecord run = launcher.run(*contender, label, options.pin_cpus);
+        if (!run.ok) return fail(contender->role(), run);
+        round.order.push_back(contender->role());
+        round.runs[contender->role()] = std::move(run);
+      }
+    }
+    out.rounds.push_back(std::move(round));
+    out.seconds_spent = clock.now_seconds() - started;
+    if (on_round) on_round(out.rounds, out.seconds_spent);
+    const StopDecision decision = stop(out.rounds, out.seconds_spent);
+    if (decision != StopDecision::continue_measuring) {
+      out.stop_reason = std::string(to_string(decision));
+      return out;
+    }
+  }
+}
+
+std::vector<RoundSample> round_samples(const std::vector<Round>& rounds,
+                                       const std::string& tracer_role,
+                                       const std::string& baseline_role) {
+  std::vector<RoundSample> samples;
+  samples.reserve(rounds.size());
+  for (const Round& round : rounds) {
+    samples.push_back({round.runs.at(tracer_role).seconds, round.runs.at(baseline_role).seconds});
+  }
+  return samples;
+}
+
+StopRule ratio_stop_rule(const StoppingPolicy& policy, const std::string& tracer_role,
+                         const std::string& baseline_role) {
+  return [=](const std::vector<Round>& rounds, double seconds_spent) {
+    const std::vector<RoundSample> samples = round_samples(rounds, tracer_role, baseline_role);
+    return decide_stopping(samples, policy, seconds_spent);
+  };
+}
+
+std::string_view to_string(ScheduleKind kind) {
+  return kind == ScheduleKind::duet ? "duet" : "alternate";
+}
+
+}  // namespace raygate

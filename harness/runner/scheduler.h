@@ -1,0 +1,80 @@
+// The measuring loop of one scene (DESIGN.md §6): warm-up runs, then rounds in which every
+// contender runs once, in an order that rotates from round to round (baseline, tracer; then
+// tracer, baseline; with three contenders baseline, base, head; base, head, baseline; ...), so a
+// slow drift of the machine hits all of them alike. In the duet schedule the contenders of a
+// round start together, each pinned to its own CPU, and the CPUs rotate too. Rounds continue
+// until a stop rule (usually the stopping policy on the normalized ratio) says enough.
+//
+// Processes and time come through Executor and Clock, so the loop is tested with fakes.
+#pragma once
+
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "measure/ratio.h"
+#include "measure/stopping.h"
+#include "runner/contender.h"
+#include "runner/executor.h"
+#include "runner/run_record.h"
+
+namespace raygate {
+
+enum class ScheduleKind { alternate, duet };
+
+struct ScheduleOptions {
+  ScheduleKind kind = ScheduleKind::alternate;
+  int warmup_runs = 1;         // per contender, not counted
+  std::vector<int> pin_cpus;   // alternate: every run pinned to these CPUs; empty: no pinning
+  std::vector<int> duet_cpus{0, 1};  // duet: one CPU per contender, rotated each round
+};
+
+struct Round {
+  std::vector<std::string> order;         // roles in the order they ran (or CPU order in duet)
+  std::map<std::string, RunRecord> runs;  // by role
+};
+
+struct SceneRuns {
+  std::map<std::string, std::vector<RunRecord>> warmup;  // by role
+  std::vector<Round> rounds;                              // complete rounds only
+  std::string stop_reason;  // to_string(StopDecision), or "failed"
+  double seconds_spent = 0.0;
+  // When a run failed: whose, and that run (its failure, outcome and log). Measuring the scene
+  // stopped there; the rounds before it are kept.
+  std::string failed_role;
+  std::optional<RunRecord> failed_run;
+
+  bool failed() const { return failed_run.has_value(); }
+  // The first successful run of `role` (a warm-up if there was one): its image is the one
+  // compared with the golden. nullptr if there is none.
+  const RunRecord* first_run(const std::string& role) const;
+};
+
+using StopRule = std::function<StopDecision(const std::vector<Round>& rounds, double seconds_spent)>;
+// Called after each complete round (progress display).
+using RoundObserver = std::function<void(const std::vector<Round>& rounds, double seconds_spent)>;
+
+// Runs the scene's warm-ups and rounds. Run directories: <scene_dir>/<role>/warmup-N and
+// <scene_dir>/<role>/round-NNN. Throws UsageError for a duet with other than two contenders
+// or too few CPUs named; never throws for a contender that fails (see SceneRuns::failed_run).
+SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* const> contenders,
+                        const ScheduleOptions& options, const StopRule& stop, Executor& executor,
+                        Clock& clock, const std::filesystem::path& scene_dir,
+                        const RoundObserver& on_round = {});
+
+// The rounds as (tracer, baseline) pairs of their `seconds`.
+std::vector<RoundSample> round_samples(const std::vector<Round>& rounds,
+                                       const std::string& tracer_role,
+                                       const std::string& baseline_role = "baseline");
+
+// The usual rule for `raygate run`: the stopping policy on the tracer's normalized ratio.
+StopRule ratio_stop_rule(const StoppingPolicy& policy, const std::string& tracer_role,
+                         const std::string& baseline_role = "baseline");
+
+std::string_view to_string(ScheduleKind kind);
+
+}  // namespace raygate

@@ -1,0 +1,91 @@
+#include "runner/tracer_contender.h"
+
+#include <system_error>
+
+#include "core/fs.h"
+
+namespace raygate {
+
+TracerContender::TracerContender(TracerSetup setup)
+    : Contender(setup.role), setup_(std::move(setup)) {}
+
+Placeholders TracerContender::placeholders(const SceneInput& scene,
+                                           const std::filesystem::path& run_dir) const {
+  const std::filesystem::path& scene_file = scene.file(setup_.adapter.scene_format);
+  const std::filesystem::path workdir = run_dir / "work";
+  Placeholders values;
+  values.src = setup_.build.src_dir.string();
+  values.repo_root = setup_.repo_root.string();
+  values.build = setup_.build.build_dir.string();
+  values.threads = std::to_string(setup_.adapter.threads);
+  values.scene = scene_file.string();
+  values.image = (workdir / "image.png").string();
+  values.workdir = workdir.string();
+  values.raygate_source = setup_.raygate_source.string();
+  values.scene_stem = scene_file.stem().string();
+  return values;
+}
+
+ProcessSpec TracerContender::command(const SceneInput& scene,
+                                     const std::filesystem::path& run_dir) const {
+  const Adapter& adapter = setup_.adapter;
+  const Placeholders values = placeholders(scene, run_dir);
+  std::filesystem::create_directories(*values.workdir);
+  ProcessSpec spec;
+  spec.argv = expand(adapter.run, values);
+  spec.working_directory = expand(adapter.cwd, values);
+  for (const auto& [name, value] : adapter.env) spec.environment[name] = expand(value, values);
+  if (adapter.stdin_template) spec.stdin_path = expand(*adapter.stdin_template, values);
+  spec.stdout_path = run_dir / "log.txt";
+  spec.stderr_path = spec.stdout_path;
+  spec.timeout = std::chrono::milliseconds(static_cast<long long>(adapter.timeouts.run_seconds * 1000));
+  spec.cpu_affinity = setup_.cpus;
+  return spec;
+}
+
+namespace {
+
+std::string image_problem(const std::filesystem::path& image) {
+  std::error_code error;
+  const auto status = std::filesystem::status(image, error);
+  if (error || !std::filesystem::exists(status)) return "wrote no image at " + image.string();
+  if (!std::filesystem::is_regular_file(status)) return image.string() + " is not a regular file";
+  if (std::filesystem::file_size(image, error) == 0 || error) {
+    return "wrote an empty image at " + image.string();
+  }
+  return {};
+}
+
+}  // namespace
+
+RunRecord TracerContender::interpret(const SceneInput& scene, const ProcessResult& result,
+                                     const ProcessSpec& spec,
+                                     const std::filesystem::path& run_dir) const {
+  const Adapter& adapter = setup_.adapter;
+  RunRecord run = record_process(result, spec);
+  run.image = expand(adapter.image, placeholders(scene, run_dir));
+  if (!run.ok) return run;
+  if (const std::string problem = image_problem(run.image); !problem.empty()) {
+    run.ok = false;
+    run.failure = adapter.name + " " + problem;
+    return run;
+  }
+  const TimingMetric metric = setup_.metric.value_or(adapter.timing.metric);
+  if (adapter.timing.source == TimingSource::reported) {
+    const std::optional<double> reported =
+        parse_reported_seconds(adapter, read_file(spec.stdout_path));
+    if (!reported || *reported <= 0.0) {
+      run.ok = false;
+      run.failure = adapter.name + " printed no positive time matching timing.regex '" +
+                    adapter.timing.regex + "'";
+      return run;
+    }
+    run.reported_seconds = reported;
+    run.seconds = *reported;
+  } else {
+    run.seconds = metric == TimingMetric::cpu ? run.cpu_seconds() : run.wall_seconds;
+  }
+  return run;
+}
+
+}  // namespace raygate

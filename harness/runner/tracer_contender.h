@@ -1,0 +1,46 @@
+// A tracer revision as a contender: the adapter's run command with its placeholders filled in
+// for this build and scene, in a fresh working directory, timed the way the adapter says
+// (process wall or CPU seconds, or the time the tracer reports itself).
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "adapter/adapter.h"
+#include "adapter/placeholders.h"
+#include "builder/build_record.h"
+#include "runner/contender.h"
+
+namespace raygate {
+
+struct TracerSetup {
+  std::string role = "tracer";
+  Adapter adapter;
+  BuildRecord build;                     // build_dir and src_dir come from here
+  std::filesystem::path repo_root;       // the worktree
+  std::filesystem::path raygate_source;  // {raygate_source}
+  // Overrides the adapter's process metric (raygate run --metric); nullopt: the adapter's own.
+  std::optional<TimingMetric> metric;
+  std::vector<int> cpus;  // pin runs to these CPUs; empty: no pinning
+};
+
+class TracerContender final : public Contender {
+ public:
+  explicit TracerContender(TracerSetup setup);
+
+  ProcessSpec command(const SceneInput& scene, const std::filesystem::path& run_dir) const override;
+  RunRecord interpret(const SceneInput& scene, const ProcessResult& result,
+                              const ProcessSpec& spec,
+                      const std::filesystem::path& run_dir) const override;
+
+  const TracerSetup& setup() const { return setup_; }
+
+ private:
+  Placeholders placeholders(const SceneInput& scene, const std::filesystem::path& run_dir) const;
+
+  TracerSetup setup_;
+};
+
+}  // namespace raygate

@@ -1,0 +1,87 @@
+// The results document (DESIGN.md §8): everything one `raygate run` or `raygate compare`
+// measured, self-describing and versioned, so a document read back months later (history,
+// report, merge of CI shards) means exactly what it meant when written. Written atomically after
+// every scene, so a run that is killed keeps the scenes it finished (`complete` stays false).
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "builder/build_record.h"
+#include "checkout/worktree.h"
+#include "compare/image_check.h"
+#include "measure/change.h"
+#include "measure/ratio.h"
+#include "runner/scheduler.h"
+#include "runner/suite.h"
+
+namespace raygate {
+
+inline constexpr int kResultsSchemaVersion = 1;
+
+// One measured revision of the tracer and how it was built.
+struct RevisionRecord {
+  std::string role;  // "tracer" for run; "base" and "head" for compare
+  std::string repository;
+  Worktree worktree;
+  std::string adapter_name;
+  std::string adapter_hash;
+  std::string adapter_file;
+  BuildRecord build;
+};
+
+struct BaselineRecord {
+  std::string version;  // raygate-baseline --version
+  std::string source_sha256;
+  std::string accel = "none";
+  std::string sampling = "center";
+  std::string timing = "in-process";  // parse + prepare + render seconds from --stats
+};
+
+struct SceneResult {
+  SuiteScene entry;
+  std::string scene_sha256;  // of the NFF file measured
+  std::string status;        // "measured" or "failed"
+  SceneRuns runs;
+  std::map<std::string, RatioSummary> ratios;  // by role, each against the baseline
+  std::optional<ChangeSummary> change;        // compare: head against base
+  std::string change_verdict;                 // compare: to_string(ChangeVerdict)
+  std::vector<ImageCheck> images;
+
+  const RatioSummary* ratio(const std::string& role) const;
+};
+
+struct ResultsDocument {
+  int schema_version = kResultsSchemaVersion;
+  std::string kind = "run";  // "run" or "compare"
+  std::string raygate_version;
+  std::string started_at;   // ISO-8601 UTC
+  std::string finished_at;  // empty while running
+  bool complete = false;    // every selected scene has a result
+  nlohmann::json machine;   // MachineContext as JSON (machine_context.h)
+  BaselineRecord baseline;
+  std::string suite;
+  std::string shard;        // "K/N" when the suite was split across jobs, else empty
+  nlohmann::json settings;  // schedule, stopping policy, thresholds, metric, threads, pinning
+  std::vector<RevisionRecord> revisions;
+  std::vector<SceneResult> scenes;
+  std::map<std::string, SuiteScore> scores;  // by role: geometric mean over measured scenes
+
+  const RevisionRecord* revision(const std::string& role) const;
+};
+
+nlohmann::json to_json(const ResultsDocument& document);
+// Throws UsageError naming `origin` and the JSON path for a document raygate cannot read,
+// including one with a newer schema_version than this raygate knows.
+ResultsDocument results_from_json(const nlohmann::json& json, const std::string& origin);
+
+// Atomic (core/fs.h): a reader never sees half a document.
+void write_results(const ResultsDocument& document, const std::filesystem::path& path);
+ResultsDocument read_results(const std::filesystem::path& path);
+
+}  // namespace raygate

@@ -1,0 +1,336 @@
+// JSON form of the results document. Field names are the document's public schema
+// (docs/results-format.md); change them only with a schema_version bump and a migration.
+#include <fmt/core.h>
+
+#include <cmath>
+#include <limits>
+
+#include "core/error.h"
+#include "core/fs.h"
+#include "store/results.h"
+
+namespace raygate {
+
+namespace {
+
+using nlohmann::json;
+
+// Non-finite numbers have no JSON form: they are written as null and read back as `if_null`.
+json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+double number_at(const json& object, const char* key, double if_null = 0.0) {
+  const json& value = object.at(key);
+  return value.is_null() ? if_null : value.get<double>();
+}
+
+json path_list(const std::vector<std::filesystem::path>& paths) {
+  json out = json::array();
+  for (const auto& path : paths) out.push_back(path.string());
+  return out;
+}
+
+}  // namespace
+
+void to_json(json& j, const Interval& interval) {
+  j = json{{"lower", number(interval.lower)}, {"upper", number(interval.upper)}};
+}
+void from_json(const json& j, Interval& interval) {
+  interval.lower = number_at(j, "lower");
+  interval.upper = number_at(j, "upper");
+}
+
+void to_json(json& j, const RatioSummary& r) {
+  j = json{{"rounds", r.rounds},
+           {"normalized_ratio", number(r.ratio)},
+           {"ratio_interval", r.ratio_interval},
+           {"relative_half_width", number(r.relative_half_width)},
+           {"log_ratio_median", number(r.log_ratio_median)},
+           {"log_ratio_mad_scaled", number(r.log_ratio_mad_scaled)},
+           {"tracer_median_seconds", number(r.tracer_median_seconds)},
+           {"baseline_median_seconds", number(r.baseline_median_seconds)}};
+}
+void from_json(const json& j, RatioSummary& r) {
+  r.rounds = j.at("rounds").get<std::size_t>();
+  r.ratio = number_at(j, "normalized_ratio");
+  r.ratio_interval = j.at("ratio_interval").get<Interval>();
+  r.relative_half_width = number_at(j, "relative_half_width");
+  r.log_ratio_median = number_at(j, "log_ratio_median");
+  r.log_ratio_mad_scaled = number_at(j, "log_ratio_mad_scaled");
+  r.tracer_median_seconds = number_at(j, "tracer_median_seconds");
+  r.baseline_median_seconds = number_at(j, "baseline_median_seconds");
+}
+
+void to_json(json& j, const SuiteScore& s) {
+  j = json{{"scenes", s.scenes}, {"score", number(s.score)}, {"interval", s.interval}};
+}
+void from_json(const json& j, SuiteScore& s) {
+  s.scenes = j.at("scenes").get<std::size_t>();
+  s.score = number_at(j, "score");
+  s.interval = j.at("interval").get<Interval>();
+}
+
+void to_json(json& j, const ChangeSummary& c) {
+  j = json{{"rounds", c.rounds},
+           {"change", number(c.change)},
+           {"change_interval", c.change_interval},
+           {"log_change_median", number(c.log_change_median)},
+           {"log_change_mad_scaled", number(c.log_change_mad_scaled)},
+           {"base", c.base},
+           {"head", c.head},
+           {"mann_whitney",
+            {{"u", number(c.mann_whitney.u)},
+             {"z", number(c.mann_whitney.z)},
+             {"p_value", number(c.mann_whitney.p_value)}}}};
+}
+void from_json(const json& j, ChangeSummary& c) {
+  c.rounds = j.at("rounds").get<std::size_t>();
+  c.change = number_at(j, "change");
+  c.change_interval = j.at("change_interval").get<Interval>();
+  c.log_change_median = number_at(j, "log_change_median");
+  c.log_change_mad_scaled = number_at(j, "log_change_mad_scaled");
+  c.base = j.at("base").get<RatioSummary>();
+  c.head = j.at("head").get<RatioSummary>();
+  const json& mw = j.at("mann_whitney");
+  c.mann_whitney = {number_at(mw, "u"), number_at(mw, "z"), number_at(mw, "p_value", 1.0)};
+}
+
+void to_json(json& j, const ImageMetrics& m) {
+  j = json{{"size_mismatch", m.size_mismatch},
+           {"width", m.width},
+           {"height", m.height},
+           {"expected_width", m.expected_width},
+           {"expected_height", m.expected_height},
+           {"mean_error", number(m.mean_error)},
+           {"rms_error", number(m.rms_error)},
+           {"psnr_db", number(m.psnr_db)},  // null: identical images (infinite PSNR)
+           {"max_error", number(m.max_error)},
+           {"max_pixel", {m.max_x, m.max_y, m.max_channel}},
+           {"max_actual_value", number(m.max_actual_value)},
+           {"max_expected_value", number(m.max_expected_value)},
+           {"pixels_over_warn", m.pixels_over_warn},
+           {"pixels_over_fail", m.pixels_over_fail},
+           {"percent_over_fail", number(m.percent_over_fail)},
+           {"mean_luminance_actual", number(m.mean_luminance_actual)},
+           {"mean_luminance_expected", number(m.mean_luminance_expected)},
+           {"nonfinite_values", m.nonfinite_values}};
+}
+void from_json(const json& j, ImageMetrics& m) {
+  m.size_mismatch = j.at("size_mismatch").get<bool>();
+  m.width = j.at("width").get<int>();
+  m.height = j.at("height").get<int>();
+  m.expected_width = j.at("expected_width").get<int>();
+  m.expected_height = j.at("expected_height").get<int>();
+  m.mean_error = number_at(j, "mean_error");
+  m.rms_error = number_at(j, "rms_error");
+  m.psnr_db = number_at(j, "psnr_db", std::numeric_limits<double>::infinity());
+  m.max_error = number_at(j, "max_error");
+  const json& pixel = j.at("max_pixel");
+  m.max_x = pixel.at(0).get<int>();
+  m.max_y = pixel.at(1).get<int>();
+  m.max_channel = pixel.at(2).get<int>();
+  m.max_actual_value = number_at(j, "max_actual_value");
+  m.max_expected_value = number_at(j, "max_expected_value");
+  m.pixels_over_warn = j.at("pixels_over_warn").get<long>();
+  m.pixels_over_fail = j.at("pixels_over_fail").get<long>();
+  m.percent_over_fail = number_at(j, "percent_over_fail");
+  m.mean_luminance_actual = number_at(j, "mean_luminance_actual");
+  m.mean_luminance_expected = number_at(j, "mean_luminance_expected");
+  m.nonfinite_values = j.at("nonfinite_values").get<long>();
+}
+
+void to_json(json& j, const Worktree& w) {
+  j = json{{"path", w.path.string()},       {"revision", w.revision}, {"ref_name", w.ref_name},
+           {"sha", w.sha},                  {"short_sha", w.short_sha}, {"subject", w.subject},
+           {"author", w.author},            {"commit_time", w.commit_time}, {"dirty", w.dirty}};
+}
+void from_json(const json& j, Worktree& w) {
+  w.path = j.at("path").get<std::string>();
+  w.revision = j.at("revision").get<std::string>();
+  w.ref_name = j.at("ref_name").get<std::string>();
+  w.sha = j.at("sha").get<std::string>();
+  w.short_sha = j.at("short_sha").get<std::string>();
+  w.subject = j.at("subject").get<std::string>();
+  w.author = j.at("author").get<std::string>();
+  w.commit_time = j.at("commit_time").get<std::string>();
+  w.dirty = j.at("dirty").get<bool>();
+}
+
+void to_json(json& j, const SuiteScene& s) {
+  j = json{{"id", s.id}, {"scene", s.scene}, {"size", s.size}, {"width", s.width},
+           {"height", s.height}};
+}
+void from_json(const json& j, SuiteScene& s) {
+  s.id = j.at("id").get<std::string>();
+  s.scene = j.at("scene").get<std::string>();
+  s.size = j.at("size").get<int>();
+  s.width = j.at("width").get<int>();
+  s.height = j.at("height").get<int>();
+}
+
+void to_json(json& j, const Round& r) { j = json{{"order", r.order}, {"runs", r.runs}}; }
+void from_json(const json& j, Round& r) {
+  r.order = j.at("order").get<std::vector<std::string>>();
+  r.runs = j.at("runs").get<std::map<std::string, RunRecord>>();
+}
+
+void to_json(json& j, const ImageCheck& c) {
+  j = json{{"role", c.role},         {"reference", c.reference}, {"actual", c.actual.string()},
+           {"expected", c.expected.string()}, {"verdict", c.verdict},
+           {"metrics", nullptr},     {"evidence", path_list(c.evidence)}};
+  if (c.metrics) j["metrics"] = *c.metrics;
+  if (!c.error.empty()) j["error"] = c.error;
+}
+void from_json(const json& j, ImageCheck& c) {
+  c.role = j.at("role").get<std::string>();
+  c.reference = j.at("reference").get<std::string>();
+  c.actual = j.at("actual").get<std::string>();
+  c.expected = j.at("expected").get<std::string>();
+  c.verdict = j.at("verdict").get<std::string>();
+  c.error = j.value("error", std::string());
+  if (!j.at("metrics").is_null()) c.metrics = j.at("metrics").get<ImageMetrics>();
+  for (const json& path : j.at("evidence")) c.evidence.emplace_back(path.get<std::string>());
+}
+
+void to_json(json& j, const SceneResult& s) {
+  j = json{{"scene", s.entry},
+           {"scene_sha256", s.scene_sha256},
+           {"status", s.status},
+           {"stop_reason", s.runs.stop_reason},
+           {"seconds_spent", number(s.runs.seconds_spent)},
+           {"failure", nullptr},
+           {"warmup", s.runs.warmup},
+           {"rounds", s.runs.rounds},
+           {"ratios", s.ratios},
+           {"change", nullptr},
+           {"images", s.images}};
+  if (s.runs.failed_run) {
+    j["failure"] = {{"role", s.runs.failed_role}, {"run", *s.runs.failed_run}};
+  }
+  if (s.change) {
+    j["change"] = *s.change;
+    j["change"]["verdict"] = s.change_verdict;
+  }
+}
+void from_json(const json& j, SceneResult& s) {
+  s.entry = j.at("scene").get<SuiteScene>();
+  s.scene_sha256 = j.at("scene_sha256").get<std::string>();
+  s.status = j.at("status").get<std::string>();
+  s.runs.stop_reason = j.at("stop_reason").get<std::string>();
+  s.runs.seconds_spent = number_at(j, "seconds_spent");
+  if (const json& failure = j.at("failure"); !failure.is_null()) {
+    s.runs.failed_role = failure.at("role").get<std::string>();
+    s.runs.failed_run = failure.at("run").get<RunRecord>();
+  }
+  s.runs.warmup = j.at("warmup").get<std::map<std::string, std::vector<RunRecord>>>();
+  s.runs.rounds = j.at("rounds").get<std::vector<Round>>();
+  s.ratios = j.at("ratios").get<std::map<std::string, RatioSummary>>();
+  if (const json& change = j.at("change"); !change.is_null()) {
+    s.change = change.get<ChangeSummary>();
+    s.change_verdict = change.at("verdict").get<std::string>();
+  }
+  s.images = j.at("images").get<std::vector<ImageCheck>>();
+}
+
+void to_json(json& j, const RevisionRecord& r) {
+  j = json{{"role", r.role},
+           {"repository", r.repository},
+           {"worktree", r.worktree},
+           {"adapter", {{"name", r.adapter_name}, {"hash", r.adapter_hash}, {"file", r.adapter_file}}},
+           {"build", build_record_to_json(r.build)}};
+}
+void from_json(const json& j, RevisionRecord& r) {
+  r.role = j.at("role").get<std::string>();
+  r.repository = j.at("repository").get<std::string>();
+  r.worktree = j.at("worktree").get<Worktree>();
+  const json& adapter = j.at("adapter");
+  r.adapter_name = adapter.at("name").get<std::string>();
+  r.adapter_hash = adapter.at("hash").get<std::string>();
+  r.adapter_file = adapter.at("file").get<std::string>();
+  r.build = build_record_from_json(j.at("build"));
+}
+
+void to_json(json& j, const BaselineRecord& b) {
+  j = json{{"version", b.version}, {"source_sha256", b.source_sha256}, {"accel", b.accel},
+           {"sampling", b.sampling}, {"timing", b.timing}};
+}
+void from_json(const json& j, BaselineRecord& b) {
+  b.version = j.at("version").get<std::string>();
+  b.source_sha256 = j.at("source_sha256").get<std::string>();
+  b.accel = j.at("accel").get<std::string>();
+  b.sampling = j.at("sampling").get<std::string>();
+  b.timing = j.at("timing").get<std::string>();
+}
+
+const RatioSummary* SceneResult::ratio(const std::string& role) const {
+  const auto found = ratios.find(role);
+  return found == ratios.end() ? nullptr : &found->second;
+}
+
+const RevisionRecord* ResultsDocument::revision(const std::string& role) const {
+  for (const RevisionRecord& r : revisions) {
+    if (r.role == role) return &r;
+  }
+  return nullptr;
+}
+
+nlohmann::json to_json(const ResultsDocument& d) {
+  return json{{"schema_version", d.schema_version},
+              {"kind", d.kind},
+              {"raygate_version", d.raygate_version},
+              {"started_at", d.started_at},
+              {"finished_at", d.finished_at},
+              {"complete", d.complete},
+              {"machine", d.machine},
+              {"baseline", d.baseline},
+              {"suite", d.suite},
+              {"shard", d.shard},
+              {"settings", d.settings},
+              {"revisions", d.revisions},
+              {"scenes", d.scenes},
+              {"scores", d.scores}};
+}
+
+ResultsDocument results_from_json(const nlohmann::json& j, const std::string& origin) {
+  try {
+    const int version = j.at("schema_version").get<int>();
+    if (version > kResultsSchemaVersion) {
+      throw UsageError(fmt::format("{}: results schema_version {} is newer than this raygate "
+                                   "reads ({}); upgrade raygate",
+                                   origin, version, kResultsSchemaVersion));
+    }
+    ResultsDocument d;
+    d.schema_version = version;
+    d.kind = j.at("kind").get<std::string>();
+    d.raygate_version = j.at("raygate_version").get<std::string>();
+    d.started_at = j.at("started_at").get<std::string>();
+    d.finished_at = j.at("finished_at").get<std::string>();
+    d.complete = j.at("complete").get<bool>();
+    d.machine = j.at("machine");
+    d.baseline = j.at("baseline").get<BaselineRecord>();
+    d.suite = j.at("suite").get<std::string>();
+    d.shard = j.value("shard", std::string());
+    d.settings = j.at("settings");
+    d.revisions = j.at("revisions").get<std::vector<RevisionRecord>>();
+    d.scenes = j.at("scenes").get<std::vector<SceneResult>>();
+    d.scores = j.at("scores").get<std::map<std::string, SuiteScore>>();
+    return d;
+  } catch (const nlohmann::json::exception& e) {
+    throw UsageError(origin + ": not a raygate results document: " + e.what());
+  }
+}
+
+void write_results(const ResultsDocument& document, const std::filesystem::path& path) {
+  write_file_atomically(path, to_json(document).dump(1) + "\n");
+}
+
+ResultsDocument read_results(const std::filesystem::path& path) {
+  const std::string text = read_file(path);
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw UsageError(path.string() + ": not JSON: " + e.what());
+  }
+  return results_from_json(j, path.string());
+}
+
+}  // namespace raygate

@@ -12,7 +12,7 @@ namespace {
 
 using Member = std::optional<std::string> Placeholders::*;
 
-constexpr std::array<std::pair<std::string_view, Member>, 10> kMembers{{
+constexpr std::array<std::pair<std::string_view, Member>, 12> kMembers{{
     {"src", &Placeholders::src},
     {"repo_root", &Placeholders::repo_root},
     {"build", &Placeholders::build},
@@ -23,6 +23,8 @@ constexpr std::array<std::pair<std::string_view, Member>, 10> kMembers{{
     {"workdir", &Placeholders::workdir},
     {"raygate_source", &Placeholders::raygate_source},
     {"scene_stem", &Placeholders::scene_stem},
+    {"width", &Placeholders::width},
+    {"height", &Placeholders::height},
 }};
 
 // One piece of a template: literal text, or a placeholder name (without braces).
@@ -114,7 +116,8 @@ const std::vector<std::string>& placeholders_allowed_in(TemplateField field) {
   // Runs happen per scene; {jobs} is a build setting, {threads} is its run-time counterpart.
   static const std::vector<std::string> run{"src",     "repo_root",      "build",     "threads",
                                             "scene",   "image",          "workdir",
-                                            "raygate_source", "scene_stem"};
+                                            "raygate_source", "scene_stem", "width",
+                                            "height"};
   return field == TemplateField::build ? build : run;
 }
 

@@ -31,6 +31,8 @@ struct Placeholders {
   std::optional<std::string> workdir;         // fresh, empty working directory of this run
   std::optional<std::string> raygate_source;  // raygate's own source tree
   std::optional<std::string> scene_stem;      // scene file name without directory or extension
+  std::optional<std::string> width;           // the scene's image width in pixels (its NFF view)
+  std::optional<std::string> height;          // the scene's image height in pixels
 
   // The value for a placeholder name ("scene"), or nullptr if the name is unknown.
   const std::optional<std::string>* find(std::string_view name) const;

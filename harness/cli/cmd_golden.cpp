@@ -1,6 +1,9 @@
 // `raygate golden verify | bless`: the baseline's golden image of every suite scene. verify
 // re-renders and demands identical pixels (the baseline is deterministic); bless rewrites goldens
 // only for the scenes named (or all), never as a side effect of anything else.
+// `bless --from-run RESULTS.json` blesses a foreign tracer's images instead: the ones a run
+// already made and checked, copied into golden/<adapter>/ (docs/gate.md).
+#include <OpenImageIO/imagebuf.h>
 #include <fmt/core.h>
 
 #include <memory>
@@ -14,6 +17,7 @@
 #include "runner/baseline_tool.h"
 #include "runner/scene_files.h"
 #include "runner/suite.h"
+#include "store/results.h"
 
 namespace raygate::cli {
 namespace {
@@ -24,6 +28,8 @@ struct GoldenArgs {
   std::string golden_dir;  // default: <data root>/golden
   std::string work_dir = ".raygate/golden";
   std::string baseline;
+  std::string from_run;       // bless: a results document whose tracer images become goldens
+  std::string role = "tracer";  // bless --from-run: whose images ("tracer", "head", "base")
 };
 
 struct GoldenContext {
@@ -100,6 +106,11 @@ int run_bless(const GoldenArgs& args) {
     throw UsageError(ctx.golden_dir.string() + " holds goldens of suite '" + manifest.suite +
                      "', not '" + ctx.suite.name + "' (use --golden-dir)");
   }
+  if (manifest.tracer) {
+    throw UsageError(ctx.golden_dir.string() + " holds " + manifest.tracer->adapter +
+                     "'s goldens, blessed from a run; the baseline's belong elsewhere "
+                     "(use --golden-dir)");
+  }
   manifest.suite = ctx.suite.name;
   manifest.baseline_version = ctx.baseline.version_line();
   manifest.baseline_source_sha256 = ctx.baseline.source_hash();
@@ -115,6 +126,88 @@ int run_bless(const GoldenArgs& args) {
     save_golden_manifest(manifest, ctx.golden_dir);  // after each scene: an interrupted bless keeps its work
     fmt::print("blessed   {:<12} {} ({:.2f} s)\n", scene.id, (ctx.golden_dir / file).string(),
                render.process.wall_seconds);
+  }
+  return 0;
+}
+
+const SceneResult* find_scene(const ResultsDocument& document, const std::string& id) {
+  for (const SceneResult& scene : document.scenes) {
+    if (scene.entry.id == id) return &scene;
+  }
+  return nullptr;
+}
+
+// The foreign tracer's images of a run, as goldens of its adapter. Nothing is rendered: the
+// images are the ones the run made (each scene's first successful run of `role`, the image the
+// run compared), so what is blessed is exactly what was measured and looked at.
+int run_bless_from_run(const GoldenArgs& args) {
+  const std::filesystem::path results = std::filesystem::absolute(args.from_run);
+  const ResultsDocument document = read_results(results);
+  const RevisionRecord* revision = document.revision(args.role);
+  if (revision == nullptr) {
+    throw UsageError(results.string() + " has no revision with role '" + args.role +
+                     "' (use --role tracer, base or head)");
+  }
+  const std::filesystem::path golden_dir =
+      args.golden_dir.empty()
+          ? locate_tools(args.baseline).data_root / "golden" / revision->adapter_name
+          : std::filesystem::path(args.golden_dir);
+  std::vector<std::string> ids = args.scenes;
+  if (ids.empty()) {
+    for (const SceneResult& scene : document.scenes) ids.push_back(scene.entry.id);
+  }
+  if (ids.empty()) throw UsageError(results.string() + " holds no scenes");
+
+  GoldenManifest manifest = load_golden_manifest(golden_dir);
+  if (!manifest.suite.empty() && manifest.suite != document.suite) {
+    throw UsageError(golden_dir.string() + " holds goldens of suite '" + manifest.suite +
+                     "', not '" + document.suite + "' (use --golden-dir)");
+  }
+  if (manifest.tracer && manifest.tracer->adapter != revision->adapter_name) {
+    throw UsageError(golden_dir.string() + " holds goldens of adapter '" +
+                     manifest.tracer->adapter + "', not '" + revision->adapter_name +
+                     "' (use --golden-dir)");
+  }
+  // Check every scene first, so a bad id or a missing image blesses nothing.
+  std::vector<std::pair<const SceneResult*, std::filesystem::path>> chosen;
+  for (const std::string& id : ids) {
+    const SceneResult* scene = find_scene(document, id);
+    if (scene == nullptr) throw UsageError("scene '" + id + "' is not in " + results.string());
+    const RunRecord* run = scene->runs.first_run(args.role);
+    if (run == nullptr) {
+      throw UsageError(results.string() + ": no successful " + args.role + " run of '" + id +
+                       "', so no image to bless");
+    }
+    if (!std::filesystem::is_regular_file(run->image)) {
+      throw UsageError(results.string() + ": the " + args.role + " image of '" + id + "', " +
+                       run->image.string() + ", is gone (was the run directory removed?)");
+    }
+    chosen.emplace_back(scene, run->image);
+  }
+
+  manifest.suite = document.suite;
+  manifest.baseline_version = document.baseline.version;
+  manifest.baseline_source_sha256 = document.baseline.source_sha256;
+  manifest.tracer = GoldenProvenance{revision->adapter_name, revision->adapter_hash,
+                                     revision->worktree.revision, revision->worktree.sha,
+                                     revision->worktree.dirty, results.string(),
+                                     document.started_at};
+  std::filesystem::create_directories(golden_dir);
+  for (const auto& [scene, image] : chosen) {
+    const SuiteScene& e = scene->entry;
+    OIIO_NAMESPACE::ImageBuf decoded(image.string());
+    if (!decoded.init_spec(image.string(), 0, 0)) {
+      throw UsageError(image.string() + ": cannot read image: " + decoded.geterror());
+    }
+    const std::string file = e.id + image.extension().string();
+    std::filesystem::copy_file(image, golden_dir / file,
+                               std::filesystem::copy_options::overwrite_existing);
+    // The hash is provenance only: goldens are compared by decoded pixels, never by bytes.
+    manifest.upsert({e.id, e.scene, e.size, decoded.spec().width, decoded.spec().height,
+                     document.baseline.sampling, "", file, sha256_file_hex(golden_dir / file)});
+    save_golden_manifest(manifest, golden_dir);
+    fmt::print("blessed   {:<12} {} (from {})\n", e.id, (golden_dir / file).string(),
+               image.string());
   }
   return 0;
 }
@@ -143,7 +236,15 @@ void add_golden_command(CLI::App& app, int& exit_code) {
   CLI::App* bless = golden->add_subcommand("bless", "Re-render and overwrite goldens (on request only)");
   add_common_options(bless, *bless_args);
   bless->add_option("scenes", bless_args->scenes, "Suite scene ids (default: all)");
-  bless->callback([bless_args, &exit_code] { exit_code = run_bless(*bless_args); });
+  bless->add_option("--from-run", bless_args->from_run,
+                    "Bless a tracer's images from this results document instead of rendering "
+                    "the baseline (default golden dir: golden/<adapter>/)");
+  bless->add_option("--role", bless_args->role, "With --from-run: whose images (tracer, head, base)")
+      ->capture_default_str();
+  bless->callback([bless_args, &exit_code] {
+    exit_code = bless_args->from_run.empty() ? run_bless(*bless_args)
+                                             : run_bless_from_run(*bless_args);
+  });
 }
 
 }  // namespace raygate::cli

@@ -8,11 +8,13 @@
 
 #include "checkout/repository.h"
 #include "cli/commands.h"
+#include "cli/report_options.h"
 #include "cli/measure_options.h"
 #include "cli/measure_session.h"
 #include "cli/revision_setup.h"
+#include "cli/store_options.h"
 #include "core/time_text.h"
-#include "measure/machine_context.h"
+#include "gate/verdict.h"
 #include "runner/baseline_contender.h"
 #include "runner/baseline_tool.h"
 #include "runner/tracer_contender.h"
@@ -25,6 +27,8 @@ struct RunArgs {
   std::string rev = "HEAD";
   std::string worktree;
   std::string out;
+  RecordArgs record;  // --store, --no-store, --branch
+  std::vector<std::string> reports;  // --report FORMAT:PATH
 };
 
 // The commit to measure, or the user's own tree as it is (--worktree, recorded as dirty).
@@ -39,39 +43,25 @@ std::pair<Worktree, std::string> locate_tree(const RunArgs& args, const MeasureC
   return {repository.checkout(args.rev), repository.location()};
 }
 
-ResultsDocument document_header(const MeasureContext& context, const BaselineTool& baseline,
-                                 const RevisionRecord& tracer) {
-  ResultsDocument document;
-  document.kind = "run";
-  document.raygate_version = RAYGATE_VERSION;
-  document.started_at = utc_timestamp();
-  document.machine = probe_machine_context();
-  document.baseline.version = baseline.version_line();
-  document.baseline.source_sha256 = baseline.source_hash();
-  document.baseline.sampling = context.suite.sampling;
-  document.suite = context.suite.name;
-  document.settings = measure_settings(context);
-  document.revisions.push_back(tracer);
-  return document;
-}
-
 int run_command(const RunArgs& args) {
   const MeasureContext context = load_measure_context(args.measure);
+  check_report_specs(args.reports);
   const BaselineTool baseline(context.tools.baseline);
   const auto [worktree, repository] = locate_tree(args, context);
   const PreparedRevision tracer = prepare_revision("tracer", repository, worktree, context,
                                                    baseline.source_hash(), args.measure.jobs);
 
   const std::filesystem::path work_dir =
-      context.cache_dir / "runs" / (compact_utc_timestamp() + "-" + worktree.short_sha);
+      fresh_run_dir(context.cache_dir / "runs", compact_utc_timestamp() + "-" + worktree.short_sha);
   SuiteMeasurement m;
   m.out = args.out.empty() ? work_dir / "results.json" : std::filesystem::absolute(args.out);
   m.work_dir = work_dir;
   m.scene_cache = context.cache_dir / "scenes" / context.suite.name;
   m.golden_dir = context.golden_dir;
+  m.policy = context.policy;
   m.scenes = context.scenes;
   m.schedule = context.schedule;
-  m.stop = ratio_stop_rule(context.stopping, "tracer");
+  m.stop = [&](const SuiteScene&) { return ratio_stop_rule(context.stopping, "tracer"); };
   m.tracer_roles = {"tracer"};
   m.formats = {context.adapter.scene_format};
 
@@ -79,7 +69,8 @@ int run_command(const RunArgs& args) {
   const TracerContender tracer_runs(tracer.setup);
   m.contenders = {&baseline_runs, &tracer_runs};
 
-  ResultsDocument document = document_header(context, baseline, tracer.record);
+  ResultsDocument document = new_document("run", context, baseline);
+  document.revisions.push_back(tracer.record);
   fmt::print("measuring {} {} ({}) against {} on suite {}: {} scenes\n", context.adapter.name,
              worktree.short_sha, worktree.subject, baseline.version_line(), context.suite.name,
              m.scenes.size());
@@ -98,7 +89,10 @@ int run_command(const RunArgs& args) {
                score->second.scenes);
   }
   fmt::print("results: {}\n", m.out.string());
-  return run_exit_code(document);
+  record_results(document, args.record, context.cache_dir, m.out);
+  const GateResult gate = evaluate_gate(document, context.policy);
+  emit_reports(document, gate, context.policy, args.reports, m.out);
+  return gate.exit_code;
 }
 
 }  // namespace
@@ -114,6 +108,8 @@ void add_run_command(CLI::App& app, int& exit_code) {
                       "measure this directory as it is, uncommitted changes included");
   command->add_option("--out", args->out,
                       "results document (default: <cache-dir>/runs/<time>-<sha>/results.json)");
+  add_record_options(*command, args->record);
+  add_report_options(*command, args->reports);
   command->callback([args, &exit_code] { exit_code = run_command(*args); });
 }
 

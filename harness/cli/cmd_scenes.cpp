@@ -1,4 +1,5 @@
-// `raygate scenes list | generate`: the SPD generators from the command line.
+// `raygate scenes list | generate | convert`: the SPD generators from the command line, and
+// NFF scenes converted for other tracers (POV-Ray, OBJ, pbrt-v4; docs/scene-formats.md).
 #include <fmt/core.h>
 
 #include <fstream>
@@ -9,10 +10,19 @@
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "nff/parser.h"
 #include "spd.h"
+#include "writers/scene_writers.h"
 
 namespace raygate::cli {
 namespace {
+
+struct ConvertArgs {
+  std::string input;
+  std::string format;
+  std::string output;
+  int segments = writers::WriteOptions{}.segments;
+};
 
 struct GenerateArgs {
   std::string name;
@@ -66,10 +76,47 @@ void run_generate(const GenerateArgs& args) {
   }
 }
 
+void run_convert(const ConvertArgs& args) {
+  const std::optional<writers::OutputFormat> format = writers::parse_output_format(args.format);
+  if (!format) {
+    throw UsageError("--to: unknown format '" + args.format + "' (expected pov, obj or pbrt)");
+  }
+  try {
+    const nff::Scene scene = nff::read_nff_file(args.input);
+    const writers::WriteOptions options{args.segments};
+    for (const auto& path : writers::write_scene_files(scene, *format, args.output, options)) {
+      fmt::print("{}\n", path.string());
+    }
+  } catch (const nff::ParseError& e) {
+    throw UsageError(e.what());  // "path:line:col: expected ..., found ..."
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(args.input + ": " + e.what());
+  }
+}
+
+void add_convert_command(CLI::App& scenes, int& exit_code) {
+  auto args = std::make_shared<ConvertArgs>();
+  CLI::App* convert = scenes.add_subcommand(
+      "convert", "Convert an NFF scene for another tracer: POV-Ray, OBJ + MTL, or pbrt-v4");
+  convert->add_option("input", args->input, "NFF scene file")->required();
+  convert->add_option("--to", args->format, "Output format: pov, obj or pbrt")->required();
+  convert->add_option("-o,--output", args->output, "Output file (OBJ also writes OUT.mtl)")
+      ->required();
+  convert->add_option("--segments", args->segments,
+                      "Facets around tessellated spheres and cones (OBJ; pbrt cones)")
+      ->default_val(args->segments)
+      ->check(CLI::Range(3, 1024));
+  convert->callback([args, &exit_code] {
+    run_convert(*args);
+    exit_code = 0;
+  });
+}
+
 }  // namespace
 
 void add_scenes_command(CLI::App& app, int& exit_code) {
-  CLI::App* scenes = app.add_subcommand("scenes", "List and generate the SPD scenes (NFF)");
+  CLI::App* scenes = app.add_subcommand(
+      "scenes", "List, generate and convert SPD scenes (NFF; POV-Ray, OBJ, pbrt-v4)");
   scenes->require_subcommand(1);
 
   scenes->add_subcommand("list", "The 13 SPD scenes with default and largest size factors")
@@ -93,6 +140,7 @@ void add_scenes_command(CLI::App& app, int& exit_code) {
     run_generate(*args);
     exit_code = 0;
   });
+  add_convert_command(*scenes, exit_code);
 }
 
 }  // namespace raygate::cli

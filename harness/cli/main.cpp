@@ -19,6 +19,11 @@ int main(int argc, char** argv) {
   raygate::cli::add_validate_command(app, exit_code);
   raygate::cli::add_adapter_command(app, exit_code);
   raygate::cli::add_run_command(app, exit_code);
+  raygate::cli::add_history_commands(app, exit_code);
+  raygate::cli::add_compare_command(app, exit_code);
+  raygate::cli::add_gate_command(app, exit_code);
+  raygate::cli::add_bisect_command(app, exit_code);
+  raygate::cli::add_report_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -46,10 +46,13 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
   command.add_option("--max-seconds", args.max_seconds, "time budget per scene, in seconds")
       ->check(CLI::Range(0.0, 1e7))
       ->capture_default_str();
-  command.add_option("--metric", args.metric,
+  command.add_option("--timing", args.metric,
                      "time of a process-timed tracer: wall or cpu (default: the adapter's)")
       ->check(CLI::IsMember({"wall", "cpu"}));
   command.add_option("--jobs", args.jobs, "parallel build jobs (default: all allowed CPUs)");
+  command.add_option("--policy", args.policy,
+                     "gate policy file: slowdown limit, significance, image thresholds "
+                     "(docs/gate.md)");
 }
 
 namespace {
@@ -97,6 +100,8 @@ MeasureContext load_measure_context(const MeasureArgs& args) {
   c.stopping.max_seconds = args.max_seconds;
   if (args.metric == "wall") c.metric = TimingMetric::wall;
   if (args.metric == "cpu") c.metric = TimingMetric::cpu;
+  if (!args.policy.empty()) c.policy = load_policy(args.policy);
+  c.jobs = args.jobs;
   return c;
 }
 
@@ -113,7 +118,10 @@ nlohmann::json measure_settings(const MeasureContext& c) {
                               : std::string(to_string(c.adapter.timing.metric))},
           {"timing_source", std::string(to_string(c.adapter.timing.source))},
           {"threads", c.adapter.threads},
-          {"golden_dir", c.golden_dir.string()}};
+          {"golden_dir", c.golden_dir.string()},
+          {"policy_file", c.policy.file.string()},
+          {"max_slowdown", c.policy.defaults.max_slowdown},
+          {"significance", c.policy.defaults.significance}};
 }
 
 }  // namespace raygate::cli

@@ -12,6 +12,7 @@
 
 #include "adapter/adapter.h"
 #include "core/paths.h"
+#include "gate/policy.h"
 #include "measure/stopping.h"
 #include "runner/scheduler.h"
 #include "runner/suite.h"
@@ -36,6 +37,7 @@ struct MeasureArgs {
   double max_seconds = 300;
   std::string metric;  // "" (the adapter's), wall, cpu
   int jobs = 0;
+  std::string policy;  // gate policy file; "" = the defaults
 };
 
 void add_measure_options(CLI::App& command, MeasureArgs& args);
@@ -51,6 +53,8 @@ struct MeasureContext {
   ScheduleOptions schedule;
   StoppingPolicy stopping;
   std::optional<TimingMetric> metric;
+  GatePolicy policy;
+  int jobs = 0;  // parallel build jobs; 0 = every allowed CPU
 };
 
 MeasureContext load_measure_context(const MeasureArgs& args);

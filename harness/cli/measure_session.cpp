@@ -5,8 +5,9 @@
 #include <algorithm>
 
 #include "core/error.h"
-#include "core/exit_codes.h"
 #include "core/sha256.h"
+#include "core/time_text.h"
+#include "measure/machine_context.h"
 #include "runner/scene_files.h"
 
 namespace raygate::cli {
@@ -20,7 +21,7 @@ SceneInput prepare_input(const SuiteScene& entry, const SuiteMeasurement& m) {
   input.files[SceneFormat::nff] = input.nff;
   for (const SceneFormat format : m.formats) {
     if (format != SceneFormat::nff) {
-      throw UsageError(fmt::format("scene format '{}' cannot be prepared yet", to_string(format)));
+      input.files[format] = prepare_converted_scene(input.nff, format, m.scene_cache);
     }
   }
   return input;
@@ -33,12 +34,16 @@ void summarize_ratios(SceneResult& result, const SuiteMeasurement& m) {
   }
 }
 
-void check_images(SceneResult& result, const SuiteMeasurement& m, const GoldenManifest& manifest) {
+void check_images(SceneResult& result, const SuiteMeasurement& m, const GoldenManifest& manifest,
+                  const std::string& sampling) {
+  const SuiteScene& e = result.entry;
+  const GoldenEntry rendered{e.id, e.scene, e.size, e.width, e.height, sampling, {}, {}, {}};
   for (const std::string& role : m.tracer_roles) {
     const RunRecord* run = result.runs.first_run(role);
     if (run == nullptr) continue;  // failed before producing an image; the failure says why
     result.images.push_back(check_against_golden(role, run->image, m.golden_dir, manifest,
-                                                 result.entry.id, m.thresholds,
+                                                 rendered,
+                                                 m.policy.for_scene(result.entry.id).image,
                                                  m.work_dir / "evidence"));
   }
 }
@@ -62,6 +67,29 @@ double eta_seconds(double elapsed_done, std::size_t done, std::size_t total, dou
 }
 
 }  // namespace
+
+std::filesystem::path fresh_run_dir(const std::filesystem::path& parent, const std::string& stem) {
+  std::filesystem::create_directories(parent);
+  for (int n = 1;; ++n) {
+    const std::filesystem::path dir = parent / (n == 1 ? stem : fmt::format("{}-{}", stem, n));
+    if (std::filesystem::create_directory(dir)) return dir;  // false: it exists (another run's)
+  }
+}
+
+ResultsDocument new_document(const std::string& kind, const MeasureContext& context,
+                             const BaselineTool& baseline) {
+  ResultsDocument document;
+  document.kind = kind;
+  document.raygate_version = RAYGATE_VERSION;
+  document.started_at = utc_timestamp();
+  document.machine = probe_machine_context();
+  document.baseline.version = baseline.version_line();
+  document.baseline.source_sha256 = baseline.source_hash();
+  document.baseline.sampling = context.suite.sampling;
+  document.suite = context.suite.name;
+  document.settings = measure_settings(context);
+  return document;
+}
 
 void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
                    Clock& clock, Progress& progress) {
@@ -88,11 +116,11 @@ void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Executo
       state.eta_seconds = eta_seconds(elapsed_done, index, m.scenes.size(), spent);
       progress.update(state);
     };
-    result.runs = measure_scene(input, m.contenders, m.schedule, m.stop, executor, clock,
+    result.runs = measure_scene(input, m.contenders, m.schedule, m.stop(entry), executor, clock,
                                 m.work_dir / "scenes" / entry.id, observe);
     result.status = result.runs.failed() ? "failed" : "measured";
     summarize_ratios(result, m);
-    check_images(result, m, manifest);
+    check_images(result, m, manifest, document.baseline.sampling);
     if (m.finish_scene && !result.runs.failed()) m.finish_scene(result);
 
     document.scenes.push_back(std::move(result));
@@ -120,27 +148,15 @@ std::string scene_line(const SceneResult& scene, const std::vector<std::string>&
                         run.log.string());
   }
   for (const ImageCheck& check : scene.images) {
-    text += fmt::format("  image {}{}", check.verdict,
-                        check.metrics ? " (" + (check.metrics->identical() ? std::string("identical")
-                                                                          : summarize(*check.metrics)) + ")"
-                                      : " (" + check.error + ")");
+    const std::string what = check.reference == "golden" ? check.role
+                                                         : check.role + "-vs-" + check.reference;
+    std::string detail = check.error;
+    if (check.metrics) {
+      detail = check.metrics->identical() ? "identical" : summarize(*check.metrics);
+    }
+    text += fmt::format("  image {} {} ({})", what, check.verdict, detail);
   }
   return text;
-}
-
-int run_exit_code(const ResultsDocument& document) {
-  bool unmeasured = !document.complete;
-  bool image_failed = false;
-  for (const SceneResult& scene : document.scenes) {
-    unmeasured = unmeasured || scene.status != "measured";
-    for (const ImageCheck& check : scene.images) {
-      unmeasured = unmeasured || check.verdict == "error";
-      image_failed = image_failed || check.failed();
-    }
-  }
-  if (unmeasured) return to_int(ExitCode::infrastructure);
-  if (image_failed) return to_int(ExitCode::regression);
-  return to_int(ExitCode::pass);
 }
 
 }  // namespace raygate::cli

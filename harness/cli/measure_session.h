@@ -9,9 +9,12 @@
 #include <string>
 #include <vector>
 
+#include "cli/measure_options.h"
 #include "cli/progress.h"
 #include "compare/golden.h"
 #include "compare/image_compare.h"
+#include "gate/policy.h"
+#include "runner/baseline_tool.h"
 #include "runner/contender.h"
 #include "runner/executor.h"
 #include "runner/scheduler.h"
@@ -26,8 +29,8 @@ struct SuiteMeasurement {
   std::vector<std::string> tracer_roles;     // normalized against the baseline, image-checked
   std::vector<SceneFormat> formats{SceneFormat::nff};  // scene files the contenders read
   ScheduleOptions schedule;
-  StopRule stop;
-  ImageThresholds thresholds;
+  std::function<StopRule(const SuiteScene&)> stop;  // the stopping rule of each scene
+  GatePolicy policy;  // image thresholds per scene
   std::filesystem::path golden_dir;
   std::filesystem::path scene_cache;  // generated scene files
   std::filesystem::path work_dir;     // run directories and evidence images
@@ -35,6 +38,14 @@ struct SuiteMeasurement {
   // Extra per-scene summaries after the ratios and golden checks (compare adds its change).
   std::function<void(SceneResult&)> finish_scene;
 };
+
+// A new, empty directory <parent>/<stem>, or <stem>-2, -3, ... if that exists: two runs started
+// in the same second (shards of a CI matrix on one machine) never share run files or documents.
+std::filesystem::path fresh_run_dir(const std::filesystem::path& parent, const std::string& stem);
+
+// A document's header: kind, versions, start time, machine, baseline, suite, settings.
+ResultsDocument new_document(const std::string& kind, const MeasureContext& context,
+                             const BaselineTool& baseline);
 
 // Measures every scene into `document` (whose header the caller filled in), writing it to
 // m.out after each scene and once more, complete, at the end.
@@ -44,8 +55,5 @@ void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Executo
 // One line per scene for logs and the end-of-run table.
 std::string scene_line(const SceneResult& scene, const std::vector<std::string>& tracer_roles);
 
-// 0 all measured and images pass; 1 an image check failed; 3 a scene could not be measured or
-// an image could not be checked.
-int run_exit_code(const ResultsDocument& document);
 
 }  // namespace raygate::cli

@@ -53,6 +53,13 @@ GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir) {
                                   e.at("height"), e.at("sampling"), e.at("accel"), e.at("file"),
                                   e.at("sha256")});
     }
+    if (doc.contains("tracer")) {
+      const json& t = doc.at("tracer");
+      manifest.tracer = GoldenProvenance{t.at("adapter"),    t.at("adapter_sha256"),
+                                         t.at("revision"),   t.at("sha"),
+                                         t.at("dirty"),      t.at("results"),
+                                         t.at("started_at")};
+    }
   } catch (const json::exception& e) {
     throw UsageError(path.string() + ": malformed golden manifest: " + e.what());
   }
@@ -70,12 +77,19 @@ void save_golden_manifest(const GoldenManifest& manifest,
                       {"height", e.height}, {"sampling", e.sampling}, {"accel", e.accel},
                       {"file", e.file}, {"sha256", e.sha256}});
   }
-  const json doc = {{"schema_version", GoldenManifest::kSchemaVersion},
+  json doc = {{"schema_version", GoldenManifest::kSchemaVersion},
                     {"suite", manifest.suite},
                     {"baseline",
                      {{"version", manifest.baseline_version},
                       {"source_sha256", manifest.baseline_source_sha256}}},
                     {"images", images}};
+  if (manifest.tracer) {
+    const GoldenProvenance& t = *manifest.tracer;
+    doc["tracer"] = {{"adapter", t.adapter},   {"adapter_sha256", t.adapter_hash},
+                     {"revision", t.revision}, {"sha", t.sha},
+                     {"dirty", t.dirty},       {"results", t.results},
+                     {"started_at", t.started_at}};
+  }
   write_file_atomically(golden_dir / kManifestName, doc.dump(2) + "\n");
 }
 

@@ -21,12 +21,27 @@ struct GoldenEntry {
   std::string sha256;  // of the image file's bytes
 };
 
+// Where a foreign tracer's goldens came from (`golden bless --from-run`): the run that rendered
+// them. Absent for the baseline's own goldens, which `golden bless` renders itself.
+struct GoldenProvenance {
+  std::string adapter;       // adapter name; the goldens live in golden/<adapter>/
+  std::string adapter_hash;  // SHA-256 of the adapter document (adapters/README.md)
+  std::string revision;      // as asked for ("HEAD", "v1.2", "--worktree PATH")
+  std::string sha;           // the commit measured
+  bool dirty = false;
+  std::string results;    // the results document the images were taken from
+  std::string started_at;  // when that run started
+
+  bool operator==(const GoldenProvenance&) const = default;
+};
+
 struct GoldenManifest {
   static constexpr int kSchemaVersion = 1;
   std::string suite;
   std::string baseline_version;  // the baseline's --version line when blessed
   std::string baseline_source_sha256;
   std::vector<GoldenEntry> entries;
+  std::optional<GoldenProvenance> tracer;  // set for goldens blessed from a run
 
   const GoldenEntry* find(const std::string& id) const;
   void upsert(const GoldenEntry& entry);  // replaces the entry with the same id

@@ -35,11 +35,14 @@ ImageCheck check_image(const std::string& role, const std::string& reference,
                        const ImageThresholds& thresholds, const std::filesystem::path& evidence_dir,
                        const std::string& stem);
 
-// The golden of suite scene `id` in `golden_dir` (per its manifest), checked as above. A missing
-// golden gives verdict "missing", saying how to create one.
+// The golden of suite scene `rendered.id` in `golden_dir` (per its manifest), checked as above.
+// `rendered` says what `actual` is a picture of (scene, size; width and height unless 0, the
+// scene's own; sampling unless empty): a golden made from other settings, such as another
+// suite's scene under the same id, is no golden for it. A missing golden, or one of other
+// settings, gives verdict "missing", saying how to create one.
 ImageCheck check_against_golden(const std::string& role, const std::filesystem::path& actual,
                                 const std::filesystem::path& golden_dir,
-                                const GoldenManifest& manifest, const std::string& id,
+                                const GoldenManifest& manifest, const GoldenEntry& rendered,
                                 const ImageThresholds& thresholds,
                                 const std::filesystem::path& evidence_dir);
 

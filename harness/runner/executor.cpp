@@ -1,6 +1,8 @@
 #include "runner/executor.h"
 
 #include <chrono>
+#include <exception>
+#include <thread>
 
 namespace raygate {
 
@@ -10,9 +12,25 @@ std::vector<ProcessResult> SystemExecutor::run_together(const std::vector<Proces
   std::vector<Process> running;
   running.reserve(specs.size());
   for (const ProcessSpec& spec : specs) running.push_back(Process::start(spec));
-  std::vector<ProcessResult> results;
-  results.reserve(running.size());
-  for (Process& process : running) results.push_back(process.wait());
+  // Each process is waited for in its own thread. Waiting for them one after the other would
+  // reap (and so time) a process that ended first only when the one before it in the list
+  // ends, and leave its output pipe undrained meanwhile, blocking a chatty tracer.
+  std::vector<ProcessResult> results(running.size());
+  std::vector<std::exception_ptr> errors(running.size());
+  std::vector<std::thread> waiters;
+  for (std::size_t i = 0; i < running.size(); ++i) {
+    waiters.emplace_back([&, i] {
+      try {
+        results[i] = running[i].wait();
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    });
+  }
+  for (std::thread& waiter : waiters) waiter.join();
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
   return results;
 }
 

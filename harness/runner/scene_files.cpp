@@ -5,7 +5,9 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "nff/parser.h"
 #include "spd.h"
+#include "writers/scene_writers.h"
 
 namespace raygate {
 
@@ -32,6 +34,24 @@ std::filesystem::path prepare_scene(const SuiteScene& scene,
   }
   write_file_atomically(path, text.str());
   return path;
+}
+
+std::filesystem::path prepare_converted_scene(const std::filesystem::path& nff, SceneFormat format,
+                                              const std::filesystem::path& cache_dir) {
+  const std::optional<writers::OutputFormat> output =
+      writers::parse_output_format(std::string(to_string(format)));
+  if (!output) throw UsageError("no scene writer for format '" + std::string(to_string(format)) + "'");
+  const std::filesystem::path out =
+      cache_dir / (nff.stem().string() + "." + std::string(to_string(format)));
+  try {
+    const nff::Scene scene = nff::read_nff_file(nff.string());
+    return writers::write_scene_files(scene, *output, out).front();
+  } catch (const nff::ParseError& e) {
+    throw UsageError(e.what());
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(nff.string() + ": cannot convert to " + std::string(to_string(format)) + ": " +
+                     e.what());
+  }
 }
 
 }  // namespace raygate

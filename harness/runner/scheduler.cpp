@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "core/error.h"
 
@@ -24,6 +25,19 @@ const RunRecord* SceneRuns::first_run(const std::string& role) const {
 
 namespace {
 
+// A run that succeeded in no measurable time (say a CPU-timed tracer whose work is done by a
+// process it does not wait for) cannot be normalized: it fails, for its scene only, instead of
+// throwing from the statistics and ending the whole suite.
+RunRecord require_positive_time(RunRecord run, const std::string& role) {
+  if (run.ok && !(run.seconds > 0.0 && std::isfinite(run.seconds))) {
+    run.ok = false;
+    run.failure = fmt::format("{} run took {} s by its timing metric; a ratio needs a positive "
+                              "time",
+                              role, run.seconds);
+  }
+  return run;
+}
+
 // Runs one contender once; `label` names the run directory ("warmup-1", "round-007").
 class RunLauncher {
  public:
@@ -42,7 +56,8 @@ class RunLauncher {
     const std::filesystem::path dir = prepare(contender, label);
     ProcessSpec spec = contender.command(scene_, dir);
     if (!cpus.empty()) spec.cpu_affinity = cpus;
-    return contender.interpret(scene_, executor_.run(spec), spec, dir);
+    return require_positive_time(contender.interpret(scene_, executor_.run(spec), spec, dir),
+                                 contender.role());
   }
 
   // Starts all at once, contender i pinned to cpus[i].
@@ -58,7 +73,8 @@ class RunLauncher {
     const std::vector<ProcessResult> results = executor_.run_together(specs);
     std::vector<RunRecord> records;
     for (std::size_t i = 0; i < contenders.size(); ++i) {
-      records.push_back(contenders[i]->interpret(scene_, results[i], specs[i], dirs[i]));
+      records.push_back(require_positive_time(
+          contenders[i]->interpret(scene_, results[i], specs[i], dirs[i]), contenders[i]->role()));
     }
     return records;
   }
@@ -162,11 +178,25 @@ std::vector<RoundSample> round_samples(const std::vector<Round>& rounds,
   return samples;
 }
 
+std::vector<CompareRound> compare_samples(const std::vector<Round>& rounds) {
+  std::vector<CompareRound> samples;
+  samples.reserve(rounds.size());
+  for (const Round& round : rounds) {
+    samples.push_back({round.runs.at("baseline").seconds, round.runs.at("base").seconds,
+                       round.runs.at("head").seconds});
+  }
+  return samples;
+}
+
 StopRule ratio_stop_rule(const StoppingPolicy& policy, const std::string& tracer_role,
                          const std::string& baseline_role) {
+  // One round's CI is a point: it says nothing, so it never counts as converged (with
+  // --max-rounds 1 the scene stops on its round budget, not as "converged").
+  StoppingPolicy rule = policy;
+  rule.min_rounds = std::max<std::size_t>(rule.min_rounds, 2);
   return [=](const std::vector<Round>& rounds, double seconds_spent) {
     const std::vector<RoundSample> samples = round_samples(rounds, tracer_role, baseline_role);
-    return decide_stopping(samples, policy, seconds_spent);
+    return decide_stopping(samples, rule, seconds_spent);
   };
 }
 

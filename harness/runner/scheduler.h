@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "measure/change.h"
 #include "measure/ratio.h"
 #include "measure/stopping.h"
 #include "runner/contender.h"
@@ -70,6 +71,9 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
 std::vector<RoundSample> round_samples(const std::vector<Round>& rounds,
                                        const std::string& tracer_role,
                                        const std::string& baseline_role = "baseline");
+
+// The rounds as (baseline, base, head) triples of their `seconds`, for compare.
+std::vector<CompareRound> compare_samples(const std::vector<Round>& rounds);
 
 // The usual rule for `raygate run`: the stopping policy on the tracer's normalized ratio.
 StopRule ratio_stop_rule(const StoppingPolicy& policy, const std::string& tracer_role,

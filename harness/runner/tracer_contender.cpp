@@ -2,9 +2,29 @@
 
 #include <system_error>
 
+#include "core/error.h"
 #include "core/fs.h"
+#include "nff/parser.h"
 
 namespace raygate {
+
+namespace {
+
+// The image size the scene asks for: the suite entry's resolution, or else the one its NFF view
+// was generated with (the SPD default), read from the file only in that case.
+std::pair<int, int> image_size(const SceneInput& scene) {
+  if (scene.entry.width > 0 && scene.entry.height > 0) {
+    return {scene.entry.width, scene.entry.height};
+  }
+  try {
+    const nff::Scene parsed = nff::read_nff_file(scene.nff.string());
+    return {parsed.view.width, parsed.view.height};
+  } catch (const nff::ParseError& e) {
+    throw UsageError(e.what());
+  }
+}
+
+}  // namespace
 
 TracerContender::TracerContender(TracerSetup setup)
     : Contender(setup.role), setup_(std::move(setup)) {}
@@ -23,6 +43,9 @@ Placeholders TracerContender::placeholders(const SceneInput& scene,
   values.workdir = workdir.string();
   values.raygate_source = setup_.raygate_source.string();
   values.scene_stem = scene_file.stem().string();
+  const auto [width, height] = image_size(scene);
+  values.width = std::to_string(width);
+  values.height = std::to_string(height);
   return values;
 }
 

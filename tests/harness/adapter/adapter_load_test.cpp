@@ -195,7 +195,8 @@ INSTANTIATE_TEST_SUITE_P(
                "$.run[3]: unknown placeholder '{scen}' (did you mean '{scene}'?)"},
         Broken{"unknown_placeholder_far", with("", R"(["t", "{scene}", "{image}", "{colour}"])"),
                "$.run[3]: unknown placeholder '{colour}' (known: {src}, {repo_root}, {build}, "
-               "{jobs}, {threads}, {scene}, {image}, {workdir}, {raygate_source}, {scene_stem})"},
+               "{jobs}, {threads}, {scene}, {image}, {workdir}, {raygate_source}, {scene_stem}, "
+               "{width}, {height})"},
         Broken{"unmatched_brace", with("", R"(["t", "{scene}", "{image", "{image}"])"),
                "$.run[2]: unmatched '{' (write '{{' for a literal brace)"},
         Broken{"scene_in_build", with(R"("build": [["make", "{scene}"]])"),
@@ -204,7 +205,7 @@ INSTANTIATE_TEST_SUITE_P(
         Broken{"jobs_in_run", with("", R"(["t", "{scene}", "{image}", "-j{jobs}"])"),
                "$.run[3]: placeholder '{jobs}' is not available in run settings (available: "
                "{src}, {repo_root}, {build}, {threads}, {scene}, {image}, {workdir}, "
-               "{raygate_source}, {scene_stem})"},
+               "{raygate_source}, {scene_stem}, {width}, {height})"},
         Broken{"placeholder_in_env", with(R"("env": {"N": "{job}"})"),
                "$.env.N: unknown placeholder '{job}' (did you mean '{jobs}'?)"},
         Broken{"missing_scene", with("", R"(["t", "-o", "{image}"])"),

@@ -20,6 +20,8 @@ Placeholders run_values() {
   p.image = "/w/out.png";
   p.workdir = "/w";
   p.threads = "4";
+  p.width = "160";
+  p.height = "120";
   return p;
 }
 
@@ -33,6 +35,16 @@ TEST(Placeholders, SeveralInOneElement) {
   EXPECT_EQ(expand("--out={workdir}/{scene_stem}-{threads}t.ppm", run_values()),
             "--out=/w/balls-4t.ppm");
   EXPECT_EQ(expand("+I{scene}+O{image}", run_values()), "+I/s/balls.nff+O/w/out.png");
+}
+
+TEST(Placeholders, ImageSizeForTracersThatTakeItOnTheCommandLine) {
+  // POV-Ray reads the size only from its options (adapters/povray.json).
+  EXPECT_EQ(expand(std::vector<std::string>{"+W{width}", "+H{height}", "--size={width}x{height}"},
+                   run_values()),
+            (std::vector<std::string>{"+W160", "+H120", "--size=160x120"}));
+  EXPECT_EQ(template_error("{width}", TemplateField::build),
+            "placeholder '{width}' is not available in build steps (available: {src}, "
+            "{repo_root}, {build}, {jobs}, {raygate_source})");
 }
 
 TEST(Placeholders, DoubledBracesAreLiteral) {
@@ -82,17 +94,17 @@ TEST(Placeholders, WhereEachIsAllowed) {
     EXPECT_EQ(template_error(std::string("{") + name + "}", TemplateField::build), std::nullopt)
         << name;
   }
-  for (const char* name : {"threads", "scene", "image", "workdir", "scene_stem"}) {
+  for (const char* name : {"threads", "scene", "image", "workdir", "scene_stem", "width", "height"}) {
     EXPECT_NE(template_error(std::string("{") + name + "}", TemplateField::build), std::nullopt)
         << name;
   }
   for (const char* name : {"src", "repo_root", "build", "threads", "scene", "image", "workdir",
-                           "raygate_source", "scene_stem"}) {
+                           "raygate_source", "scene_stem", "width", "height"}) {
     EXPECT_EQ(template_error(std::string("{") + name + "}", TemplateField::run), std::nullopt)
         << name;
   }
   EXPECT_NE(template_error("{jobs}", TemplateField::run), std::nullopt);
-  EXPECT_EQ(placeholder_names().size(), 10u);
+  EXPECT_EQ(placeholder_names().size(), 12u);
 }
 
 TEST(Placeholders, BraceErrors) {
@@ -100,7 +112,8 @@ TEST(Placeholders, BraceErrors) {
             "unmatched '}' (write '}}' for a literal brace)");
   EXPECT_EQ(template_error("{}", TemplateField::run),
             "unknown placeholder '{}' (known: {src}, {repo_root}, {build}, {jobs}, {threads}, "
-            "{scene}, {image}, {workdir}, {raygate_source}, {scene_stem})");
+            "{scene}, {image}, {workdir}, {raygate_source}, {scene_stem}, {width}, "
+            "{height})");
   EXPECT_EQ(template_error("{Scene}", TemplateField::run),
             "unknown placeholder '{Scene}' (did you mean '{scene}'?)");
 }

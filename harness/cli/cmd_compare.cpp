@@ -1,0 +1,87 @@
+// `raygate compare`: base and head of a tracer measured in the same job, in rounds that rotate
+// (baseline, base, head), so drift hits all three alike; per scene the change of the normalized
+// ratio with its CI and a verdict, images against the goldens and head's against base's; then
+// the gate. Exit 0 pass, 1 regression, 2 usage, 3 could not measure.
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "checkout/repository.h"
+#include "cli/commands.h"
+#include "cli/report_options.h"
+#include "cli/store_options.h"
+#include "cli/measure_options.h"
+#include "cli/compare_session.h"
+#include "core/error.h"
+#include "gate/verdict.h"
+
+namespace raygate::cli {
+namespace {
+
+struct CompareArgs {
+  MeasureArgs measure;
+  std::string base;
+  std::string base_branch;
+  std::string head = "HEAD";
+  std::string out;
+  bool fail_on_inconclusive = false;
+  RecordArgs record;                 // --store, --no-store, --branch
+  std::vector<std::string> reports;  // --report FORMAT:PATH
+};
+
+// --base REV, or the merge base of head and --base-branch (what a pull request changes).
+Worktree base_worktree(const CompareArgs& args, const Repository& repository) {
+  if (!args.base.empty()) return repository.checkout(args.base);
+  const std::optional<Revision> base = repository.merge_base(args.head, args.base_branch);
+  if (!base) {
+    throw UsageError(fmt::format("{} and {} have no common ancestor; pass --base REV",
+                                 args.head, args.base_branch));
+  }
+  Revision named = *base;
+  named.revision = "merge-base(" + args.head + ", " + args.base_branch + ")";
+  return repository.materialize(named);
+}
+
+int compare_command(const CompareArgs& args) {
+  if (args.base.empty() == args.base_branch.empty()) {
+    throw UsageError("name the base: --base REV or --base-branch BRANCH (exactly one)");
+  }
+  const MeasureContext context = load_measure_context(args.measure);
+  check_report_specs(args.reports);
+  const BaselineTool baseline(context.tools.baseline);
+  const Repository repository = Repository::open(args.measure.repo, context.cache_dir);
+  const Worktree head = repository.checkout(args.head);
+  const Worktree base = base_worktree(args, repository);
+  std::filesystem::path document_path;
+  const ResultsDocument document = measure_compare(
+      {context, baseline, repository.location(), base, head, args.out}, &document_path);
+  fmt::print("results: {}\n", document_path.string());
+  record_results(document, args.record, context.cache_dir, document_path);
+  GatePolicy policy = context.policy;
+  policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
+  const GateResult gate = evaluate_gate(document, policy);
+  emit_reports(document, gate, policy, args.reports, document_path);
+  return gate.exit_code;
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<CompareArgs>();
+  CLI::App* command = app.add_subcommand(
+      "compare", "measure base and head in the same job and gate the change");
+  add_measure_options(*command, args->measure);
+  command->add_option("--base", args->base, "base revision");
+  command->add_option("--base-branch", args->base_branch,
+                      "use the merge base of head and this branch as the base");
+  command->add_option("--head", args->head, "head revision")->capture_default_str();
+  command->add_option("--out", args->out,
+                      "results document (default: <cache-dir>/runs/<time>-<base>-<head>/results.json)");
+  command->add_flag("--fail-on-inconclusive", args->fail_on_inconclusive,
+                    "an INCONCLUSIVE change fails the gate instead of warning");
+  add_record_options(*command, args->record);
+  add_report_options(*command, args->reports);
+  command->callback([args, &exit_code] { exit_code = compare_command(*args); });
+}
+
+}  // namespace raygate::cli

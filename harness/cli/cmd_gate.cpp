@@ -1,0 +1,46 @@
+// `raygate gate RESULTS.json [--policy FILE]`: the verdict on a results document that was
+// measured earlier (or on another machine, or merged from shards), under a policy. The exit code
+// is the gate's: 0 pass, 1 regression, 2 usage, 3 the document says something was not measured.
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/gate_summary.h"
+#include "gate/policy.h"
+#include "gate/verdict.h"
+#include "store/results.h"
+
+namespace raygate::cli {
+namespace {
+
+struct GateArgs {
+  std::string results;
+  std::string policy;
+  bool fail_on_inconclusive = false;
+};
+
+int gate_command(const GateArgs& args) {
+  const ResultsDocument document = read_results(args.results);
+  GatePolicy policy = args.policy.empty() ? GatePolicy{} : load_policy(args.policy);
+  policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
+  const GateResult gate = evaluate_gate(document, policy);
+  print_gate_summary(gate, stdout);
+  return gate.exit_code;
+}
+
+}  // namespace
+
+void add_gate_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<GateArgs>();
+  CLI::App* command =
+      app.add_subcommand("gate", "judge a results document under a policy; the exit code says");
+  command->add_option("results", args->results, "results document (from run or compare)")
+      ->required();
+  command->add_option("--policy", args->policy, "gate policy file (docs/gate.md)");
+  command->add_flag("--fail-on-inconclusive", args->fail_on_inconclusive,
+                    "an INCONCLUSIVE change fails the gate instead of warning");
+  command->callback([args, &exit_code] { exit_code = gate_command(*args); });
+}
+
+}  // namespace raygate::cli

@@ -1,0 +1,71 @@
+// `raygate report RESULTS.json`: the gate's verdict on a stored results document, written in
+// one of the report formats (console, markdown, junit, json, html) to standard output or a
+// file. Exits 0 once the report is written, whatever the verdict (a report step should not fail
+// a CI job by itself); --exit-code makes it exit with the gate's code instead.
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/progress.h"
+#include "core/error.h"
+#include "gate/policy.h"
+#include "gate/verdict.h"
+#include "report/reporter.h"
+#include "store/results.h"
+
+namespace raygate::cli {
+namespace {
+
+struct ReportArgs {
+  std::string results;
+  std::string format = "console";
+  std::string output = "-";
+  std::string policy;
+  std::string colour = "auto";
+  bool exit_code = false;
+};
+
+bool use_colour(const ReportArgs& args) {
+  if (args.colour == "always") return true;
+  if (args.colour == "never") return false;
+  return (args.output.empty() || args.output == "-") && is_terminal(stdout);
+}
+
+int report_command(const ReportArgs& args) {
+  const ReportFormat format = parse_report_format(args.format);
+  const std::filesystem::path results = std::filesystem::absolute(args.results);
+  const ResultsDocument document = read_results(results);
+  const GatePolicy policy = args.policy.empty() ? GatePolicy{} : load_policy(args.policy);
+  const GateResult gate = evaluate_gate(document, policy);
+  ReportInput input{document, gate, policy, {}, results.parent_path()};
+  ReportOptions options;
+  options.colour = use_colour(args);
+  write_reports(input, {{format, args.output}}, options);
+  return args.exit_code ? gate.exit_code : 0;
+}
+
+}  // namespace
+
+void add_report_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<ReportArgs>();
+  CLI::App* command = app.add_subcommand(
+      "report", "write the gate's verdict on a results document as console, markdown, junit, "
+                "json or html");
+  command->add_option("results", args->results, "results document (raygate run/compare --out)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  command->add_option("--format", args->format, "console, markdown, junit, json or html")
+      ->check(CLI::IsMember({"console", "markdown", "junit", "json", "html"}))
+      ->capture_default_str();
+  command->add_option("-o,--output", args->output, "file to write; '-' for standard output")
+      ->capture_default_str();
+  command->add_option("--policy", args->policy, "gate policy file (default: built-in defaults)")
+      ->check(CLI::ExistingFile);
+  command->add_option("--color", args->colour, "console colours: auto (on a terminal), always, never")
+      ->check(CLI::IsMember({"auto", "always", "never"}))
+      ->capture_default_str();
+  command->add_flag("--exit-code", args->exit_code,
+                    "exit with the gate's code (0 pass, 1 regression, 3 not measured)");
+  command->callback([args, &exit_code] { exit_code = report_command(*args); });
+}
+
+}  // namespace raygate::cli

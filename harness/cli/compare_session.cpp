@@ -1,0 +1,101 @@
+#include "cli/compare_session.h"
+
+#include <fmt/core.h>
+
+#include "cli/measure_session.h"
+#include "cli/revision_setup.h"
+#include "core/time_text.h"
+#include "runner/baseline_contender.h"
+#include "runner/tracer_contender.h"
+
+namespace raygate::cli {
+
+namespace {
+
+BootstrapOptions bootstrap_for(const ScenePolicy& policy) {
+  BootstrapOptions options;
+  options.confidence = 1.0 - policy.significance;
+  return options;
+}
+
+// The change head vs base, and head's image against base's.
+void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy,
+                          const std::filesystem::path& evidence_dir) {
+  const ScenePolicy& policy = gate_policy.for_scene(scene.entry.id);
+  scene.change = summarize_change(compare_samples(scene.runs.rounds), bootstrap_for(policy));
+  scene.change_verdict = std::string(to_string(classify_change(*scene.change, policy.max_slowdown)));
+  const RunRecord* base = scene.runs.first_run("base");
+  const RunRecord* head = scene.runs.first_run("head");
+  if (base != nullptr && head != nullptr) {
+    scene.images.push_back(check_image("head", "base", head->image, base->image, policy.image,
+                                       evidence_dir, scene.entry.id + ".head-vs-base"));
+  }
+}
+
+}  // namespace
+
+StopRule change_stop_rule(const StoppingPolicy& stopping, const ScenePolicy& policy) {
+  return [=](const std::vector<Round>& rounds, double seconds_spent) {
+    if (rounds.size() >= stopping.min_rounds) {
+      const ChangeSummary change = summarize_change(compare_samples(rounds), bootstrap_for(policy));
+      if (classify_change(change, policy.max_slowdown) != ChangeVerdict::inconclusive) {
+        return StopDecision::stop_converged;
+      }
+    }
+    if (rounds.size() >= stopping.max_rounds) return StopDecision::stop_budget_rounds;
+    if (seconds_spent >= stopping.max_seconds) return StopDecision::stop_budget_time;
+    return StopDecision::continue_measuring;
+  };
+}
+
+ResultsDocument measure_compare(const CompareSetup& setup, std::filesystem::path* document_path) {
+  const MeasureContext& context = setup.context;
+  const std::string source_hash = setup.baseline.source_hash();
+  const int jobs = context.jobs;
+  const PreparedRevision base =
+      prepare_revision("base", setup.repository, setup.base, context, source_hash, jobs);
+  const PreparedRevision head =
+      prepare_revision("head", setup.repository, setup.head, context, source_hash, jobs);
+
+  const std::filesystem::path work_dir =
+      context.cache_dir / "runs" /
+      (compact_utc_timestamp() + "-" + setup.base.short_sha + "-" + setup.head.short_sha);
+  SuiteMeasurement m;
+  m.out = setup.out.empty() ? work_dir / "results.json" : std::filesystem::absolute(setup.out);
+  m.work_dir = work_dir;
+  m.scene_cache = context.cache_dir / "scenes" / context.suite.name;
+  m.golden_dir = context.golden_dir;
+  m.policy = context.policy;
+  m.scenes = context.scenes;
+  m.schedule = context.schedule;
+  m.tracer_roles = {"base", "head"};
+  m.formats = {context.adapter.scene_format};
+  m.stop = [&](const SuiteScene& scene) {
+    return change_stop_rule(context.stopping, context.policy.for_scene(scene.id));
+  };
+  m.finish_scene = [&](SceneResult& scene) {
+    finish_compare_scene(scene, context.policy, work_dir / "evidence");
+  };
+  const BaselineContender baseline_runs(context.tools.baseline, context.suite.sampling);
+  const TracerContender base_runs(base.setup);
+  const TracerContender head_runs(head.setup);
+  m.contenders = {&baseline_runs, &base_runs, &head_runs};
+
+  ResultsDocument document = new_document("compare", context, setup.baseline);
+  document.revisions = {base.record, head.record};
+  fmt::print("comparing {} {} (base) with {} (head) against {} on suite {}: {} scenes\n",
+             context.adapter.name, setup.base.short_sha, setup.head.short_sha,
+             setup.baseline.version_line(), context.suite.name, m.scenes.size());
+  SystemExecutor executor;
+  SteadyClock clock;
+  {
+    Progress progress(stdout, is_terminal(stdout));
+    measure_suite(document, m, executor, clock, progress);
+  }
+  document.finished_at = utc_timestamp();
+  write_results(document, m.out);
+  if (document_path != nullptr) *document_path = m.out;
+  return document;
+}
+
+}  // namespace raygate::cli

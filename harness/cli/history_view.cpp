@@ -1,0 +1,234 @@
+// The history table and its JSON form.
+#include "cli/history_view.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <set>
+
+namespace raygate::cli {
+
+namespace {
+
+constexpr std::size_t kSubjectWidth = 32;
+constexpr std::size_t kRatioWidth = 12;
+constexpr std::size_t kImageWidth = 11;
+
+// Table rows are padded column by column; the last column's padding is not wanted.
+std::string trimmed_line(std::string line) {
+  while (!line.empty() && line.back() == ' ') line.pop_back();
+  return line + "\n";
+}
+
+bool is_continuation_byte(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
+
+std::size_t code_points(const std::string& text) {
+  return static_cast<std::size_t>(
+      std::count_if(text.begin(), text.end(), [](char c) { return !is_continuation_byte(c); }));
+}
+
+std::string date_of(const HistoryRow& row) {
+  const std::string& when = row.commit_time.empty() ? row.measured_at : row.commit_time;
+  return when.substr(0, 10);
+}
+
+std::string ratio_cell(const HistoryRow& row) {
+  if (!row.ratio) return row.status == "failed" ? "failed" : "-";
+  if (!row.ratio_lower || !row.ratio_upper) return fmt::format("{:.3f}", *row.ratio);
+  const double half_width = (*row.ratio_upper - *row.ratio_lower) / 2.0 / *row.ratio;
+  return fmt::format("{:.3f} ±{:.1f}%", *row.ratio, half_width * 100.0);
+}
+
+std::string image_cell(const HistoryRow& row) {
+  if (row.image_verdict.empty()) return "-";
+  if (!row.image_max_error) return row.image_verdict;
+  const std::string error =
+      *row.image_max_error == 0.0 ? "0" : fmt::format("{:.4f}", *row.image_max_error);
+  return row.image_verdict == "pass" ? error : error + " " + row.image_verdict;
+}
+
+bool any_incomplete(const CommitLine& line) {
+  return std::any_of(line.scenes.begin(), line.scenes.end(),
+                     [](const auto& scene) { return !scene.second.complete; });
+}
+
+std::size_t sha_width(const HistoryView& view) {
+  std::size_t width = 7;
+  for (const CommitLine& line : view.lines) {
+    width = std::max(width, code_points(line.commit.short_sha) + 1);
+  }
+  return width;
+}
+
+std::string header_lines(const HistoryView& view, std::size_t sha_w) {
+  std::string first = pad_right("date", 10) + "  " + pad_right("commit", sha_w) + "  " +
+                      pad_right("subject", kSubjectWidth);
+  std::string second(first.size(), ' ');
+  for (const std::string& scene : view.scenes) {
+    first += "  " + pad_right(scene, kRatioWidth + 2 + kImageWidth);
+    second += "  " + pad_right("ratio", kRatioWidth) + "  " + pad_right("image", kImageWidth);
+  }
+  return trimmed_line(first) + trimmed_line(second);
+}
+
+std::string commit_row(const HistoryView& view, const CommitLine& line, std::size_t sha_w) {
+  const HistoryRow& c = line.commit;
+  const std::string sha = c.short_sha + (any_incomplete(line) ? "*" : "");
+  std::string out = pad_right(date_of(c), 10) + "  " + pad_right(sha, sha_w) + "  " +
+                    pad_right(truncate_text(c.subject, kSubjectWidth), kSubjectWidth);
+  for (const std::string& scene : view.scenes) {
+    const auto found = line.scenes.find(scene);
+    const bool has = found != line.scenes.end();
+    out += "  " + pad_right(has ? ratio_cell(found->second) : "", kRatioWidth) + "  " +
+           pad_right(has ? image_cell(found->second) : "", kImageWidth);
+  }
+  return trimmed_line(out);
+}
+
+std::string trend_line(const SceneTrend& trend, std::size_t scene_w, std::size_t spark_w) {
+  std::string out =
+      "  " + pad_right(trend.scene_id, scene_w) + "  " + pad_right(trend.sparkline, spark_w) + "  ";
+  if (!trend.latest) return out + "no ratio measured\n";
+  out += fmt::format("{:.3f}", *trend.latest);
+  if (!trend.change) return out + "  first measurement\n";
+  return out + fmt::format("  {:+.1f}% {} vs {}\n", *trend.change * 100.0, trend.arrow,
+                           trend.previous_short_sha);
+}
+
+std::string trend_section(const HistoryView& view) {
+  std::size_t scene_w = 5;
+  std::size_t spark_w = 1;
+  for (const SceneTrend& t : view.trends) {
+    scene_w = std::max(scene_w, code_points(t.scene_id));
+    spark_w = std::max(spark_w, code_points(t.sparkline));
+  }
+  std::string out = "trend (oldest -> newest; a ratio going up is the tracer getting slower):\n";
+  for (const SceneTrend& t : view.trends) out += trend_line(t, scene_w, spark_w);
+  return out;
+}
+
+nlohmann::json optional_number(const std::optional<double>& value) {
+  return value ? nlohmann::json(*value) : nlohmann::json(nullptr);
+}
+
+nlohmann::json scene_json(const HistoryRow& row) {
+  return {{"status", row.status},
+          {"normalized_ratio", optional_number(row.ratio)},
+          {"ratio_interval", {optional_number(row.ratio_lower), optional_number(row.ratio_upper)}},
+          {"baseline_median_seconds", optional_number(row.baseline_median_seconds)},
+          {"image",
+           {{"verdict", row.image_verdict},
+            {"max_error", optional_number(row.image_max_error)},
+            {"rms_error", optional_number(row.image_rms_error)}}},
+          {"machine", {{"hostname", row.machine_hostname}, {"cpu_model", row.machine_cpu_model}}},
+          {"baseline_sha256", row.baseline_sha256},
+          {"document_id", row.document_id},
+          {"complete", row.complete},
+          {"measured_at", row.measured_at},
+          {"stored_at", row.stored_at}};
+}
+
+nlohmann::json commit_json(const CommitLine& line) {
+  const HistoryRow& c = line.commit;
+  nlohmann::json scenes = nlohmann::json::object();
+  for (const auto& [id, row] : line.scenes) scenes[id] = scene_json(row);
+  return {{"sha", c.sha},       {"short_sha", c.short_sha},     {"subject", c.subject},
+          {"branch", c.branch}, {"commit_time", c.commit_time}, {"dirty", c.dirty},
+          {"scenes", scenes}};
+}
+
+nlohmann::json trend_json(const SceneTrend& t) {
+  return {{"ratios", t.ratios},
+          {"latest", optional_number(t.latest)},
+          {"change_vs_previous", optional_number(t.change)},
+          {"previous_short_sha", t.previous_short_sha},
+          {"sparkline", t.sparkline}};
+}
+
+nlohmann::json drift_json(const std::optional<MachineDrift>& drift) {
+  if (!drift) return nullptr;
+  return {{"hostname", drift->hostname},
+          {"cpu_model", drift->cpu_model},
+          {"document_id", drift->document_id},
+          {"scenes_compared", drift->scenes_compared},
+          {"scenes_drifted", drift->scenes_drifted},
+          {"median_baseline_change", drift->median_baseline_change},
+          {"machine_got", drift->faster() ? "faster" : "slower"},
+          {"note", describe_drift(*drift)}};
+}
+
+}  // namespace
+
+HistoryView make_history_view(const std::vector<HistoryRow>& rows,
+                              const std::vector<HistoryRow>& machine_rows) {
+  HistoryView view;
+  view.lines = group_by_commit(rows);
+  view.scenes = scene_ids(rows);
+  for (const std::string& scene : view.scenes)
+    view.trends.push_back(scene_trend(view.lines, scene));
+  view.drift = detect_machine_drift(machine_rows);
+  std::set<std::string> baselines;
+  for (const HistoryRow& row : rows) baselines.insert(row.baseline_sha256);
+  view.baseline_versions = baselines.size();
+  return view;
+}
+
+std::string history_table(const HistoryView& view) {
+  if (view.lines.empty()) {
+    return fmt::format("no results in {} match (role {}{})\n", view.store, view.role,
+                       view.branch.empty() ? "" : ", branch " + view.branch);
+  }
+  const std::size_t sha_w = sha_width(view);
+  std::string out = fmt::format(
+      "{} commit{} from {} (role {}{}), newest first; ratio = time(tracer) / time(baseline) with "
+      "its 95% CI half-width; image = max error against the golden\n\n",
+      view.lines.size(), view.lines.size() == 1 ? "" : "s", view.store, view.role,
+      view.branch.empty() ? "" : ", branch " + view.branch);
+  out += header_lines(view, sha_w);
+  for (const CommitLine& line : view.lines) out += commit_row(view, line, sha_w);
+  if (std::any_of(view.lines.begin(), view.lines.end(), any_incomplete)) {
+    out += "* from a results document that did not finish every scene\n";
+  }
+  out += "\n";
+  out += trend_section(view);
+  if (view.baseline_versions > 1) {
+    out += fmt::format(
+        "\nnote: these commits were measured with {} different baseline sources; "
+        "ratios compare only within one baseline\n",
+        view.baseline_versions);
+  }
+  if (view.drift) out += fmt::format("\n{}\n", describe_drift(*view.drift));
+  return out;
+}
+
+nlohmann::json history_json(const HistoryView& view) {
+  nlohmann::json commits = nlohmann::json::array();
+  for (const CommitLine& line : view.lines) commits.push_back(commit_json(line));
+  nlohmann::json trends = nlohmann::json::object();
+  for (const SceneTrend& t : view.trends) trends[t.scene_id] = trend_json(t);
+  return {{"store", view.store},
+          {"role", view.role},
+          {"branch", view.branch},
+          {"commits", commits},
+          {"trends", trends},
+          {"machine_drift", drift_json(view.drift)},
+          {"baseline_versions", view.baseline_versions}};
+}
+
+std::string pad_right(const std::string& text, std::size_t width) {
+  const std::size_t length = code_points(text);
+  return length >= width ? text : text + std::string(width - length, ' ');
+}
+
+std::string truncate_text(const std::string& text, std::size_t max_code_points) {
+  if (code_points(text) <= max_code_points || max_code_points == 0) return text;
+  std::size_t kept = 0;
+  std::size_t end = 0;
+  while (end < text.size()) {
+    if (!is_continuation_byte(text[end]) && kept++ == max_code_points - 1) break;
+    ++end;
+  }
+  return text.substr(0, end) + "…";
+}
+
+}  // namespace raygate::cli

@@ -1,0 +1,61 @@
+#include "cli/store_options.h"
+
+#include <fmt/core.h>
+
+#include "store/store.h"
+
+namespace raygate::cli {
+
+namespace {
+
+// Only what can be told without opening anything: the kind of location.
+std::string check_store_location(const std::string& location) {
+  if (location.starts_with("postgresql://") || location.starts_with("postgres://")) {
+    return "the PostgreSQL backend is not available in this build of raygate; give an SQLite "
+           "file path";
+  }
+  if (location.find("://") != std::string::npos) {
+    return "unknown kind of URL; give a file path for an SQLite store";
+  }
+  return {};
+}
+
+}  // namespace
+
+CLI::Option* add_store_option(CLI::App& command, std::string& store,
+                              const std::string& default_text) {
+  return command
+      .add_option("--store", store, "results store: an SQLite file (default " + default_text + ")")
+      ->check(CLI::Validator(check_store_location, "PATH", "store location"));
+}
+
+void add_record_options(CLI::App& command, RecordArgs& args) {
+  CLI::Option* store = add_store_option(command, args.store, "<cache-dir>/results.db");
+  command.add_flag("--no-store", args.no_store, "do not record the results in the store")
+      ->excludes(store);
+  command.add_option("--branch", args.branch,
+                     "branch to record the results under when the revision names none");
+}
+
+void record_results(const ResultsDocument& document, const RecordArgs& args,
+                    const std::filesystem::path& cache_dir,
+                    const std::filesystem::path& document_path) {
+  if (args.no_store) return;
+  const std::string location =
+      args.store.empty() ? (cache_dir / "results.db").string() : args.store;
+  try {
+    const auto store = open_store(location, StoreOpen::create_if_missing);
+    const std::string branch = branch_of(document, args.branch);
+    const AddOutcome outcome = store->add(document, branch);
+    fmt::print("{} {} as document {}{}\n", outcome.duplicate ? "already stored in" : "stored in",
+               store->location(), outcome.document_id,
+               branch.empty() ? "" : " (branch " + branch + ")");
+  } catch (const std::exception& e) {  // raygate's errors and the file system's
+    fmt::print(stderr,
+               "raygate: warning: results not stored: {}\n  the document is kept at {}; store it "
+               "later with: raygate import {} --store {}\n",
+               e.what(), document_path.string(), document_path.string(), location);
+  }
+}
+
+}  // namespace raygate::cli

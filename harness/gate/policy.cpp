@@ -1,0 +1,86 @@
+#include "gate/policy.h"
+
+#include <fmt/core.h>
+
+#include "adapter/json_field.h"
+#include "core/error.h"
+#include "core/fs.h"
+
+namespace raygate {
+
+namespace {
+
+const std::vector<std::string> kSceneKeys = {"max_slowdown", "significance", "image", "reason"};
+const std::vector<std::string> kImageKeys = {"fail", "failpercent", "hardfail", "warn"};
+
+double fraction(const JsonField& field, double low, double high) {
+  const double value = field.as_number();
+  if (!(value >= low && value <= high)) {
+    field.fail(fmt::format("must be between {} and {}, found {}", low, high, value));
+  }
+  return value;
+}
+
+void read_image(const JsonField& field, ImageThresholds& image) {
+  field.expect_object(kImageKeys);
+  if (field.has("fail")) image.fail_threshold = fraction(field.member("fail"), 0.0, 1e30);
+  if (field.has("failpercent")) image.fail_percent = fraction(field.member("failpercent"), 0.0, 100.0);
+  if (field.has("hardfail")) image.hard_fail = fraction(field.member("hardfail"), 0.0, 1e30);
+  if (field.has("warn")) image.warn_threshold = fraction(field.member("warn"), 0.0, 1e30);
+}
+
+// Reads the keys a scene override and the defaults share into `policy`.
+void read_scene_keys(const JsonField& field, ScenePolicy& policy) {
+  if (field.has("max_slowdown")) policy.max_slowdown = fraction(field.member("max_slowdown"), 0.0, 10.0);
+  if (field.has("significance")) policy.significance = fraction(field.member("significance"), 0.0001, 0.5);
+  if (field.has("image")) read_image(field.member("image"), policy.image);
+}
+
+}  // namespace
+
+const ScenePolicy& GatePolicy::for_scene(const std::string& id) const {
+  const auto found = scenes.find(id);
+  return found == scenes.end() ? defaults : found->second;
+}
+
+GatePolicy parse_policy(std::string_view text, const std::string& origin) {
+  nlohmann::json document;
+  try {
+    document = nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw UsageError(fmt::format("{}: not valid JSON: {}", origin, e.what()));
+  }
+  GatePolicy policy;
+  try {
+    const JsonField root(document, "$");
+    root.expect_object({"max_slowdown", "significance", "image", "fail_on_inconclusive", "scenes"});
+    read_scene_keys(root, policy.defaults);
+    if (root.has("fail_on_inconclusive")) {
+      policy.fail_on_inconclusive = root.member("fail_on_inconclusive").as_bool();
+    }
+    if (root.has("scenes")) {
+      const JsonField scenes = root.member("scenes");
+      scenes.expect_object(scenes.keys());
+      for (const std::string& id : scenes.keys()) {
+        const JsonField entry = scenes.member(id);
+        entry.expect_object(kSceneKeys);
+        ScenePolicy scene = policy.defaults;
+        read_scene_keys(entry, scene);
+        scene.reason = entry.member("reason").as_string();
+        if (scene.reason.empty()) entry.member("reason").fail("must say why this scene differs");
+        policy.scenes[id] = scene;
+      }
+    }
+  } catch (const FieldError& e) {
+    throw UsageError(fmt::format("{}: {}: {}", origin, e.path(), e.what()));
+  }
+  return policy;
+}
+
+GatePolicy load_policy(const std::filesystem::path& path) {
+  GatePolicy policy = parse_policy(read_file(path), path.string());
+  policy.file = path;
+  return policy;
+}
+
+}  // namespace raygate

@@ -1,0 +1,37 @@
+// The gate's policy (DESIGN.md §6-§7): how much slowdown a scene may show, at which confidence,
+// and how far its image may drift, in idiff's terms. Defaults apply to every scene; a scene may
+// override any of them, and every override must say why (`reason`), because a loosened gate
+// nobody can explain is how regressions get waved through.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <string>
+#include <string_view>
+
+#include "compare/image_compare.h"
+
+namespace raygate {
+
+struct ScenePolicy {
+  double max_slowdown = 0.03;  // REGRESSED beyond +3% (and significant)
+  double significance = 0.05;  // the change's CI is the (1 - significance) bootstrap interval
+  ImageThresholds image;       // against the golden and against the base revision's image
+  std::string reason;          // why this scene differs from the defaults (overrides only)
+};
+
+struct GatePolicy {
+  ScenePolicy defaults;
+  std::map<std::string, ScenePolicy> scenes;  // by suite scene id, defaults already applied
+  bool fail_on_inconclusive = false;
+  std::filesystem::path file;  // where it came from; empty for the built-in defaults
+
+  const ScenePolicy& for_scene(const std::string& id) const;
+};
+
+// Parses a policy document. Unknown keys (with "did you mean"), wrong types and out-of-range
+// values are UsageErrors naming origin and JSON path; an override without a reason too.
+GatePolicy parse_policy(std::string_view text, const std::string& origin);
+GatePolicy load_policy(const std::filesystem::path& path);
+
+}  // namespace raygate

@@ -1,0 +1,41 @@
+// The gate (DESIGN.md §6-§9): a results document and a policy in, one verdict per scene and the
+// exit code out. Each scene that fails gets one line that says why in numbers, so a CI log
+// reader knows what broke without opening anything else.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "gate/policy.h"
+#include "store/results.h"
+
+namespace raygate {
+
+enum class GateOutcome {
+  pass,          // measured; nothing wrong
+  warn,          // an image over the warn threshold, a missing golden, an inconclusive change
+  unmeasured,    // raygate could not measure it (the baseline or base failed, a run crashed): exit 3
+  fail,          // slower beyond the policy, an image over the fail thresholds, or head crashing
+                 // where base ran: exit 1 (a found regression outranks what could not be measured)
+};
+
+struct SceneGate {
+  std::string id;
+  std::string speed;  // REGRESSED, IMPROVED, UNCHANGED, INCONCLUSIVE; MEASURED for a run; FAILED
+  std::string image;  // the worst image verdict: pass, warn, fail, missing, error; "" when none
+  GateOutcome outcome = GateOutcome::pass;
+  std::vector<std::string> reasons;  // for anything but pass: what, in numbers
+};
+
+struct GateResult {
+  std::vector<SceneGate> scenes;
+  int exit_code = 0;  // 0 pass (warnings allowed), 1 regression, 3 could not measure
+
+  std::size_t count(GateOutcome outcome) const;
+};
+
+GateResult evaluate_gate(const ResultsDocument& document, const GatePolicy& policy);
+
+std::string_view to_string(GateOutcome outcome);
+
+}  // namespace raygate

@@ -1,0 +1,54 @@
+// The pieces of the HTML report (html_reporter.cpp puts them together): text escaping and
+// embedded images, inline SVG plots, the per-scene section, the page's style and script. The
+// page is one self-contained file: images are data: URIs, CSS and JS are inline, nothing is
+// fetched, so it can be archived as a CI artifact and opened years later, offline.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "report/report_model.h"
+
+namespace raygate::report::html {
+
+// Text and attribute values: & < > " ' escaped.
+std::string escape(std::string_view text);
+std::string base64(std::string_view bytes);
+// A data: URI for an image file. PNG, JPEG, GIF and WebP are embedded as they are; any other
+// format OpenImageIO reads (PPM, EXR, TGA, HDR...) is converted to PNG first. nullopt when the
+// file is missing or unreadable.
+std::optional<std::string> image_data_uri(const std::filesystem::path& path);
+// "gate-pass", "gate-fail", ... (CSS classes).
+std::string outcome_class(GateOutcome outcome);
+// A pill with the outcome in capitals.
+std::string badge(GateOutcome outcome);
+// An identifier usable as an HTML id: letters, digits and '-' only.
+std::string anchor(std::string_view scene_id);
+
+// One labelled interval on a horizontal axis.
+struct IntervalRow {
+  std::string label;
+  double value = 0.0;
+  double lower = 0.0;
+  double upper = 0.0;
+  std::string css_class;  // colour of the mark
+};
+
+// The ratios' CIs of one scene on a shared axis (one row per revision).
+std::string ratio_bars_svg(const std::vector<IntervalRow>& rows);
+// The change and its CI against the ±threshold band, in percent.
+std::string change_bar_svg(double change, const Interval& interval, double threshold,
+                           const std::string& css_class);
+// The normalized ratio over commits: CI band, line, points with tooltips.
+std::string trend_svg(const TrendSeries& series);
+
+// <section> of one scene: badge, reasons, numbers, plots, images, metrics.
+std::string scene_section(const ReportInput& input, const SceneView& view);
+
+std::string_view page_style();
+std::string_view page_script();
+
+}  // namespace raygate::report::html

@@ -1,0 +1,230 @@
+// One scene's section of the HTML report: verdict badge and reasons, the ratio and change with
+// their confidence intervals, the trend over commits, the images (golden, base, head; hovering
+// one shows what it was compared with) with the |Δ|×16 evidence, and the image metrics.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "report/html_parts.h"
+
+namespace raygate::report::html {
+namespace {
+
+struct Shot {
+  std::string id;
+  std::string label;
+  std::filesystem::path path;
+  std::string swap_id;  // hovering shows this shot's image instead
+  std::string swap_label;
+  bool evidence = false;
+};
+
+std::string shot_id(const SceneView& view, const std::string& what) {
+  return anchor(view.gate.id) + "-" + what;
+}
+
+// The reference a role's image is best compared with: that of its worst check.
+std::string reference_of(const SceneResult& scene, const std::string& role) {
+  std::string reference = "golden";
+  int worst = -1;
+  for (const ImageCheck& check : scene.images) {
+    if (check.role != role) continue;
+    const int rank = check.verdict == "fail" ? 2 : check.verdict == "warn" ? 1 : 0;
+    if (rank > worst) {
+      worst = rank;
+      reference = check.reference;
+    }
+  }
+  return reference;
+}
+
+std::filesystem::path diff_of(const ImageCheck& check) {
+  for (const std::filesystem::path& path : check.evidence) {
+    if (path.string().ends_with(".diff.png")) return path;
+  }
+  return check.evidence.size() >= 3 ? check.evidence[2] : std::filesystem::path();
+}
+
+std::vector<Shot> shots_of(const ReportInput& input, const SceneView& view) {
+  const SceneResult& scene = *view.result;
+  std::vector<Shot> shots;
+  if (const auto golden = golden_image(scene); !golden.empty()) {
+    shots.push_back({shot_id(view, "golden"), "golden", golden, "", "", false});
+  }
+  for (const std::string& role : ratio_roles(input.document)) {
+    const std::filesystem::path image = role_image(scene, role);
+    if (image.empty()) continue;
+    shots.push_back({shot_id(view, role), role, image, "", "", false});
+  }
+  for (Shot& shot : shots) {
+    if (shot.label == "golden") continue;
+    const std::string reference = reference_of(scene, shot.label);
+    for (const Shot& other : shots) {
+      if (other.label == reference && other.id != shot.id) {
+        shot.swap_id = other.id;
+        shot.swap_label = other.label;
+      }
+    }
+  }
+  for (const ImageCheck& check : scene.images) {
+    if (const auto diff = diff_of(check); !diff.empty()) {
+      shots.push_back({shot_id(view, "diff-" + check.role + "-" + check.reference),
+                       fmt::format("|Δ|×16 {} vs {}", check.role, check.reference), diff, "", "",
+                       true});
+    }
+  }
+  return shots;
+}
+
+std::string figure(const ReportInput& input, const Shot& shot) {
+  const auto uri = image_data_uri(resolve(input, shot.path));
+  std::string picture;
+  if (uri) {
+    picture = fmt::format(R"(<img id="{}" src="{}" alt="{}")", shot.id, *uri, escape(shot.label));
+    if (!shot.swap_id.empty()) {
+      picture += fmt::format(R"( data-swap="{}" data-swap-label="{}")", shot.swap_id,
+                             escape(shot.swap_label));
+    }
+    picture += ">";
+  } else {
+    picture = fmt::format(R"(<div class="no-image">image not found<br><code>{}</code></div>)",
+                          escape(shot.path.string()));
+  }
+  std::string caption = fmt::format(R"(<span class="who">{}</span>)", escape(shot.label));
+  if (!shot.swap_id.empty() && uri) {
+    caption += fmt::format(R"(<span class="hint">hover: {}</span>)", escape(shot.swap_label));
+  }
+  return fmt::format(R"(<figure class="shot{}"><div class="frame">{}</div><figcaption>{}</figcaption></figure>)",
+                     shot.evidence ? " evidence" : "", picture, caption);
+}
+
+std::string gallery(const ReportInput& input, const SceneView& view) {
+  const std::vector<Shot> shots = shots_of(input, view);
+  if (shots.empty()) return R"(<p class="muted">No images were recorded for this scene.</p>)";
+  std::string out = R"(<div class="gallery">)";
+  for (const Shot& shot : shots) out += figure(input, shot);
+  return out + "</div>";
+}
+
+std::string metric_row(const ImageCheck& check) {
+  const std::string who = fmt::format("{} vs {}", escape(check.role), escape(check.reference));
+  const std::string verdict = fmt::format(R"(<span class="verdict v-{0}">{0}</span>)",
+                                          escape(check.verdict));
+  if (!check.metrics) {
+    return fmt::format(R"(<tr><td>{}</td><td>{}</td><td colspan="5" class="muted">{}</td></tr>)",
+                       who, verdict, escape(check.error));
+  }
+  const ImageMetrics& m = *check.metrics;
+  if (m.size_mismatch) {
+    return fmt::format(R"(<tr><td>{}</td><td>{}</td><td colspan="5">{}</td></tr>)", who, verdict,
+                       escape(summarize(m)));
+  }
+  if (m.identical()) {
+    return fmt::format(R"(<tr><td>{}</td><td>{}</td><td colspan="5" class="muted">identical pixels</td></tr>)",
+                       who, verdict);
+  }
+  const std::string psnr = std::isfinite(m.psnr_db) ? fmt::format("{:.1f} dB", m.psnr_db) : "∞";
+  return fmt::format(
+      "<tr><td>{}</td><td>{}</td><td class=\"num\">{:.4g} <span class=\"muted\">at ({},{}) ch {}"
+      "</span></td><td class=\"num\">{:.3g}%</td><td class=\"num\">{:.3g}</td>"
+      "<td class=\"num\">{}</td><td class=\"num\">{:+.4f}</td></tr>",
+      who, verdict, m.max_error, m.max_x, m.max_y, m.max_channel, m.percent_over_fail,
+      m.rms_error, psnr, m.luminance_bias());
+}
+
+std::string metrics_table(const SceneResult& scene) {
+  if (scene.images.empty()) return "";
+  std::string out =
+      R"(<table class="metrics"><thead><tr><th>image check</th><th>verdict</th><th>max error</th>)"
+      R"(<th>pixels over fail</th><th>RMS</th><th>PSNR</th><th>luminance bias</th></tr></thead><tbody>)";
+  for (const ImageCheck& check : scene.images) out += metric_row(check);
+  return out + "</tbody></table>";
+}
+
+std::string mark_class(const std::string& role, const SceneView& view) {
+  if (role == "base") return "role-base";
+  if (role == "head") return outcome_class(view.speed_outcome);
+  return "role-tracer";
+}
+
+std::string speed_plots(const ReportInput& input, const SceneView& view) {
+  const SceneResult& scene = *view.result;
+  std::vector<IntervalRow> rows;
+  for (const std::string& role : ratio_roles(input.document)) {
+    if (const RatioSummary* r = scene.ratio(role)) {
+      rows.push_back({role, r->ratio, r->ratio_interval.lower, r->ratio_interval.upper,
+                      mark_class(role, view)});
+    }
+  }
+  std::string out = ratio_bars_svg(rows);
+  if (scene.change && !scene.runs.failed()) {
+    const double limit = input.policy.for_scene(scene.entry.id).max_slowdown;
+    out += change_bar_svg(scene.change->change, scene.change->change_interval, limit,
+                          outcome_class(view.speed_outcome));
+  }
+  return out;
+}
+
+std::string run_facts(const ReportInput& input, const SceneResult& scene) {
+  std::vector<std::string> facts;
+  const RatioSummary* r = scene.ratio(primary_role(input.document));
+  if (r != nullptr) {
+    facts.push_back(fmt::format("{} rounds", r->rounds));
+    facts.push_back(fmt::format("baseline {:.3f} s, {} {:.3f} s (medians)",
+                                r->baseline_median_seconds, primary_role(input.document),
+                                r->tracer_median_seconds));
+  }
+  if (!scene.runs.stop_reason.empty()) facts.push_back("stopped: " + scene.runs.stop_reason);
+  facts.push_back(fmt::format("{:.1f} s spent", scene.runs.seconds_spent));
+  return fmt::format(R"(<p class="facts">{}</p>)", escape(fmt::format("{}", fmt::join(facts, " · "))));
+}
+
+// The reasons above already say what failed and where its log is; this says what it costs.
+std::string failure_note(const SceneResult& scene) {
+  if (!scene.runs.failed_run) return "";
+  return fmt::format(R"(<div class="failure">No ratio: the {} run {}.</div>)",
+                     escape(scene.runs.failed_role), escape(scene.runs.failed_run->outcome));
+}
+
+std::string head_line(const SceneView& view) {
+  const SuiteScene& entry = view.result->entry;
+  std::string spec = entry.scene;
+  if (entry.size > 0) spec += fmt::format(" · size {}", entry.size);
+  if (entry.width > 0) spec += fmt::format(" · {}×{}", entry.width, entry.height);
+  std::string tags = fmt::format(R"(<span class="tag speed-{0}">{0}</span>)", escape(view.gate.speed));
+  if (!view.gate.image.empty()) {
+    tags += fmt::format(R"(<span class="tag v-{0}">image {0}</span>)", escape(view.gate.image));
+  }
+  return fmt::format(
+      R"(<header class="scene-head"><h2><a href="#{}">{}</a></h2>{}{}<span class="spec">{}</span></header>)",
+      anchor(view.gate.id), escape(view.gate.id), badge(view.gate.outcome), tags, escape(spec));
+}
+
+std::string reasons_list(const SceneView& view) {
+  if (view.gate.reasons.empty()) return "";
+  std::string out = R"(<ul class="reasons">)";
+  for (const std::string& reason : view.gate.reasons) out += "<li>" + escape(reason) + "</li>";
+  return out + "</ul>";
+}
+
+}  // namespace
+
+std::string scene_section(const ReportInput& input, const SceneView& view) {
+  const SceneResult& scene = *view.result;
+  std::string numbers = "<h3>Speed</h3>" + failure_note(scene) + speed_plots(input, view) +
+                        run_facts(input, scene);
+  if (const TrendSeries* trend = input.trend(scene.entry.id)) {
+    numbers += fmt::format("<h3>Trend over {} commits</h3>", trend->points.size()) +
+               trend_svg(*trend) +
+               R"(<p class="facts">normalized ratio per commit, oldest first; the band is its )"
+               R"(95% CI; point at a commit for its subject</p>)";
+  }
+  return fmt::format(
+      R"(<section class="scene card {}" id="{}">{}{}<div class="scene-body">)"
+      R"(<div class="scene-numbers">{}</div><div class="scene-images"><h3>Images</h3>{}</div>)"
+      R"(</div>{}</section>)",
+      outcome_class(view.gate.outcome), anchor(view.gate.id), head_line(view),
+      reasons_list(view), numbers, gallery(input, view), metrics_table(scene));
+}
+
+}  // namespace raygate::report::html

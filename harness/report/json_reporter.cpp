@@ -1,0 +1,133 @@
+// The JSON report, for bots: the gate's verdict and the numbers that decided it, per scene, in
+// a small stable shape (docs/reports.md), without the raw samples of the results document.
+// Numbers that have no JSON form (an infinite PSNR) are written as null.
+#include <cmath>
+
+#include "report/report_model.h"
+#include "report/reporters.h"
+
+namespace raygate::report {
+namespace {
+
+using nlohmann::json;
+
+json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+
+json interval(const Interval& i) { return json{{"lower", number(i.lower)}, {"upper", number(i.upper)}}; }
+
+json revisions(const ResultsDocument& d) {
+  json out = json::object();
+  for (const RevisionRecord& r : d.revisions) {
+    out[r.role] = {{"sha", r.worktree.sha},
+                   {"short_sha", r.worktree.short_sha},
+                   {"subject", r.worktree.subject},
+                   {"revision", r.worktree.revision},
+                   {"dirty", r.worktree.dirty},
+                   {"repository", r.repository}};
+  }
+  return out;
+}
+
+json ratios(const SceneResult& scene) {
+  json out = json::object();
+  for (const auto& [role, r] : scene.ratios) {
+    out[role] = {{"ratio", number(r.ratio)},
+                 {"interval", interval(r.ratio_interval)},
+                 {"relative_half_width", number(r.relative_half_width)},
+                 {"rounds", r.rounds}};
+  }
+  return out;
+}
+
+json change(const SceneResult& scene) {
+  if (!scene.change) return nullptr;
+  const ChangeSummary& c = *scene.change;
+  return {{"change", number(c.change)},
+          {"interval", interval(c.change_interval)},
+          {"rounds", c.rounds},
+          {"verdict", scene.change_verdict}};
+}
+
+json images(const SceneResult& scene) {
+  json out = json::array();
+  for (const ImageCheck& check : scene.images) {
+    json item = {{"role", check.role}, {"reference", check.reference}, {"verdict", check.verdict}};
+    if (check.metrics) {
+      const ImageMetrics& m = *check.metrics;
+      item["max_error"] = number(m.max_error);
+      item["percent_over_fail"] = number(m.percent_over_fail);
+      item["rms_error"] = number(m.rms_error);
+      item["psnr_db"] = number(m.psnr_db);
+      item["summary"] = summarize(m);
+    }
+    if (!check.error.empty()) item["error"] = check.error;
+    out.push_back(item);
+  }
+  return out;
+}
+
+json scene_json(const SceneView& view) {
+  return {{"id", view.gate.id},
+          {"outcome", to_string(view.gate.outcome)},
+          {"speed", view.gate.speed},
+          {"speed_outcome", to_string(view.speed_outcome)},
+          {"image", view.gate.image},
+          {"image_outcome", to_string(view.image_outcome)},
+          {"reasons", view.gate.reasons},
+          {"ratios", ratios(*view.result)},
+          {"change", change(*view.result)}, {"images", images(*view.result)}};
+}
+
+json counts(const GateResult& gate) {
+  json out = json::object();
+  for (GateOutcome o : {GateOutcome::pass, GateOutcome::warn, GateOutcome::unmeasured,
+                        GateOutcome::fail}) {
+    out[std::string(to_string(o))] = gate.count(o);
+  }
+  return out;
+}
+
+json policy_json(const GatePolicy& policy) {
+  const ScenePolicy& d = policy.defaults;
+  return {{"file", policy.file.string()},
+          {"max_slowdown", d.max_slowdown},
+          {"significance", d.significance},
+          {"fail_on_inconclusive", policy.fail_on_inconclusive},
+          {"image", {{"fail_threshold", d.image.fail_threshold},
+                     {"fail_percent", d.image.fail_percent},
+                     {"warn_threshold", d.image.warn_threshold},
+                     {"hard_fail", number(d.image.hard_fail)}}}};
+}
+
+class JsonReporter final : public Reporter {
+ public:
+  void write(const ReportInput& input, std::ostream& out) const override {
+    const ResultsDocument& d = input.document;
+    const std::vector<SceneView> views = scene_views(input);
+    const Headline line = headline(input, views);
+    json scenes = json::array();
+    for (const SceneView& view : views) scenes.push_back(scene_json(view));
+    const auto suite = suite_change(d);
+    json report = {{"raygate_report", 1},
+                   {"kind", d.kind},
+                   {"suite", d.suite},
+                   {"verdict", verdict_word(input.gate.exit_code)},
+                   {"exit_code", input.gate.exit_code},
+                   {"headline", line.title + " (" + line.detail + ")"},
+                   {"counts", counts(input.gate)},
+                   {"complete", d.complete},
+                   {"revisions", revisions(d)},
+                   {"suite_change", suite ? number(*suite) : json(nullptr)},
+                   {"policy", policy_json(input.policy)},
+                   {"scenes", scenes}};
+    out << report.dump(2, ' ', false, json::error_handler_t::replace) << '\n';
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Reporter> make_json_reporter(const ReportOptions&) {
+  return std::make_unique<JsonReporter>();
+}
+
+}  // namespace raygate::report

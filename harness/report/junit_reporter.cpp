@@ -1,0 +1,150 @@
+// The JUnit XML report, for the test tab of CI systems (GitLab, Jenkins, GitHub test-report
+// actions): one <testsuite> for the document, a <testcase> per scene and part (speed, image),
+// <failure> with the numbers for what the gate failed, <skipped> for what could not be measured,
+// and the revisions, machine and policy as <properties>. pugixml writes it, so subjects and
+// reasons with <, & or quotes come out as well-formed XML.
+#include <fmt/format.h>
+#include <pugixml.hpp>
+
+#include "report/report_model.h"
+#include "report/reporters.h"
+
+namespace raygate::report {
+namespace {
+
+struct Tally {
+  std::size_t tests = 0, failures = 0, skipped = 0;
+};
+
+void add_property(pugi::xml_node properties, const std::string& name, const std::string& value) {
+  pugi::xml_node property = properties.append_child("property");
+  property.append_attribute("name") = name.c_str();
+  property.append_attribute("value") = value.c_str();
+}
+
+void add_properties(pugi::xml_node suite, const ReportInput& input) {
+  const ResultsDocument& d = input.document;
+  pugi::xml_node properties = suite.append_child("properties");
+  add_property(properties, "kind", d.kind);
+  add_property(properties, "suite", d.suite);
+  add_property(properties, "exit_code", std::to_string(input.gate.exit_code));
+  add_property(properties, "raygate_version", d.raygate_version);
+  add_property(properties, "baseline", d.baseline.version);
+  for (const RevisionRecord& revision : d.revisions) {
+    add_property(properties, "revision." + revision.role, revision_line(d, revision.role));
+    add_property(properties, "sha." + revision.role, revision.worktree.sha);
+    if (!revision.repository.empty()) add_property(properties, "repository", revision.repository);
+  }
+  if (d.machine.is_object()) {
+    for (const auto& [key, value] : d.machine.items()) {
+      add_property(properties, "machine." + key, value_text(value));
+    }
+  }
+  add_property(properties, "policy", policy_line(input.policy));
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+  return fmt::format("{}", fmt::join(lines, "\n"));
+}
+
+// One testcase: passed (with notes in system-out), failed, or skipped.
+void add_case(pugi::xml_node suite, Tally& tally, const std::string& classname,
+              const std::string& name, double seconds, GateOutcome outcome,
+              const std::vector<std::string>& reasons, const std::string& numbers) {
+  pugi::xml_node testcase = suite.append_child("testcase");
+  testcase.append_attribute("classname") = classname.c_str();
+  testcase.append_attribute("name") = name.c_str();
+  testcase.append_attribute("time") = fmt::format("{:.3f}", seconds).c_str();
+  ++tally.tests;
+  const std::string message = reasons.empty() ? std::string(to_string(outcome)) : reasons.front();
+  if (outcome == GateOutcome::fail) {
+    ++tally.failures;
+    pugi::xml_node failure = testcase.append_child("failure");
+    failure.append_attribute("message") = message.c_str();
+    failure.append_attribute("type") = name.c_str();
+    failure.text().set(joined(reasons).c_str());
+  } else if (outcome == GateOutcome::unmeasured) {
+    ++tally.skipped;
+    testcase.append_child("skipped").append_attribute("message") = message.c_str();
+  }
+  std::string out = numbers;
+  if (outcome == GateOutcome::warn) out += "\nwarning: " + joined(reasons);
+  if (!out.empty()) testcase.append_child("system-out").text().set(out.c_str());
+}
+
+std::string speed_numbers(const ResultsDocument& d, const SceneView& view) {
+  std::string text = fmt::format("speed {}; normalized ratio {}", view.gate.speed,
+                                 ratio_text(d, *view.result));
+  if (const std::string change = change_text(*view.result); !change.empty()) {
+    text += "; change " + change;
+  }
+  return text;
+}
+
+std::string image_numbers(const SceneView& view) {
+  std::vector<std::string> lines;
+  for (const ImageCheck& check : view.result->images) {
+    std::string line = fmt::format("{} vs {}: {}", check.role, check.reference, check.verdict);
+    if (check.metrics) line += ": " + summarize(*check.metrics);
+    if (!check.error.empty()) line += ": " + check.error;
+    lines.push_back(line);
+  }
+  return joined(lines);
+}
+
+void add_scene(pugi::xml_node suite, Tally& tally, const ReportInput& input,
+               const SceneView& view) {
+  const ResultsDocument& d = input.document;
+  const std::string classname = fmt::format("raygate.{}.{}", d.suite, view.gate.id);
+  add_case(suite, tally, classname, "speed", view.result->runs.seconds_spent, view.speed_outcome,
+           view.speed_reasons, speed_numbers(d, view));
+  if (view.has_images()) {
+    add_case(suite, tally, classname, "image", 0.0, view.image_outcome, view.image_reasons,
+             image_numbers(view));
+  } else {
+    add_case(suite, tally, classname, "image", 0.0, GateOutcome::unmeasured,
+             {"no image was checked"}, "");
+  }
+}
+
+void set_counts(pugi::xml_node node, const Tally& tally) {
+  node.append_attribute("tests") = tally.tests;
+  node.append_attribute("failures") = tally.failures;
+  node.append_attribute("errors") = 0;
+  node.append_attribute("skipped") = tally.skipped;
+}
+
+class JunitReporter final : public Reporter {
+ public:
+  void write(const ReportInput& input, std::ostream& out) const override {
+    const ResultsDocument& d = input.document;
+    pugi::xml_document xml;
+    pugi::xml_node decl = xml.append_child(pugi::node_declaration);
+    decl.append_attribute("version") = "1.0";
+    decl.append_attribute("encoding") = "UTF-8";
+    pugi::xml_node suites = xml.append_child("testsuites");
+    suites.append_attribute("name") = "raygate";
+    pugi::xml_node suite = suites.append_child("testsuite");
+    suite.append_attribute("name") = fmt::format("raygate {} {}", d.kind, d.suite).c_str();
+    if (!d.started_at.empty()) suite.append_attribute("timestamp") = d.started_at.c_str();
+    add_properties(suite, input);
+    Tally tally;
+    double seconds = 0.0;
+    for (const SceneView& view : scene_views(input)) {
+      add_scene(suite, tally, input, view);
+      seconds += view.result->runs.seconds_spent;
+    }
+    set_counts(suites, tally);
+    set_counts(suite, tally);
+    suite.append_attribute("time") = fmt::format("{:.3f}", seconds).c_str();
+    xml.save(out, "  ", pugi::format_default, pugi::encoding_utf8);
+  }
+};
+
+}  // namespace
+
+std::unique_ptr<Reporter> make_junit_reporter(const ReportOptions&) {
+  return std::make_unique<JunitReporter>();
+}
+
+}  // namespace raygate::report

@@ -1,0 +1,158 @@
+// The Markdown report: a pull-request comment and $GITHUB_STEP_SUMMARY. A bold headline a
+// reviewer reads in the notification, a table with failures first, the reasons, and the setup
+// folded away in <details>. GitHub refuses comments over 65536 characters, so when the report
+// would be longer, passing scenes are left out from the end with a note saying how many.
+#include <fmt/format.h>
+
+#include <cctype>
+
+#include "report/report_model.h"
+#include "report/reporters.h"
+
+namespace raygate::report {
+namespace {
+
+// Text in a table cell or list item: nothing in it may end the cell or open HTML or emphasis.
+std::string md(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    switch (c) {
+      case '|': out += "\\|"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '&': out += "&amp;"; break;
+      case '*': case '_': case '`': case '\\':
+        out += '\\';
+        out += c;
+        break;
+      case '\n': case '\r': out += ' '; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string upper(std::string_view text) {
+  std::string out(text);
+  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+std::string intro(const ResultsDocument& d) {
+  if (d.kind == "compare") {
+    return fmt::format("Compare on suite `{}`: base {} → head {}.\n", md(d.suite),
+                       md(revision_line(d, "base")), md(revision_line(d, "head")));
+  }
+  return fmt::format("Run on suite `{}`: {}.\n", md(d.suite), md(revision_line(d, "tracer")));
+}
+
+std::string table_head(const ResultsDocument& d) {
+  if (d.kind == "compare") {
+    return "| verdict | scene | ratio base → head | change [95% CI] | speed | image |\n"
+           "|---|---|---|---|---|---|\n";
+  }
+  return "| verdict | scene | ratio [95% CI] | speed | image |\n|---|---|---|---|---|\n";
+}
+
+std::string table_row(const ResultsDocument& d, const SceneView& view) {
+  const std::string image = view.gate.image.empty() ? "–" : view.gate.image;
+  std::string row = fmt::format("| **{}** | {} | {} |", upper(to_string(view.gate.outcome)),
+                                md(view.gate.id), md(ratio_text(d, *view.result, "→")));
+  if (d.kind == "compare") row += fmt::format(" {} |", md(change_text(*view.result)));
+  return row + fmt::format(" {} | {} |\n", md(view.gate.speed), md(image));
+}
+
+std::string reasons_of(const SceneView& view) {
+  std::string text;
+  for (const std::string& reason : view.gate.reasons) {
+    text += fmt::format("- **{}** ({}): {}\n", md(view.gate.id), to_string(view.gate.outcome),
+                        md(reason));
+  }
+  return text;
+}
+
+std::string key_values(const nlohmann::json& object) {
+  std::string text;
+  if (!object.is_object()) return text;
+  for (const auto& [key, value] : object.items()) {
+    const std::string shown = value_text(value);
+    if (value.is_null() || shown.empty()) continue;
+    text += fmt::format("- {}: `{}`\n", md(key), shown);
+  }
+  return text;
+}
+
+std::string details(const ReportInput& input) {
+  const ResultsDocument& d = input.document;
+  std::string text = "<details><summary>Settings, machine and policy</summary>\n\n";
+  text += fmt::format("- raygate {}, baseline {} (accel {}, {} timing)\n", md(d.raygate_version),
+                      md(d.baseline.version), md(d.baseline.accel), md(d.baseline.timing));
+  text += fmt::format("- started {}, finished {}\n", md(d.started_at), md(d.finished_at));
+  text += fmt::format("- policy: {}\n", md(policy_line(input.policy)));
+  for (const auto& [id, scene] : input.policy.scenes) {
+    text += fmt::format("  - override {}: {}\n", md(id), md(scene.reason));
+  }
+  text.append("\n**Machine**\n\n").append(key_values(d.machine));
+  text.append("\n**Settings**\n\n").append(key_values(d.settings));
+  return text + "\n</details>\n";
+}
+
+class MarkdownReporter final : public Reporter {
+ public:
+  explicit MarkdownReporter(std::size_t limit) : limit_(limit) {}
+  void write(const ReportInput& input, std::ostream& out) const override;
+
+ private:
+  std::string compose(const ReportInput& input, const std::vector<SceneView>& views,
+                      std::size_t shown, bool with_details) const;
+  std::size_t limit_;
+};
+
+std::string MarkdownReporter::compose(const ReportInput& input,
+                                      const std::vector<SceneView>& views, std::size_t shown,
+                                      bool with_details) const {
+  const ResultsDocument& d = input.document;
+  const Headline line = headline(input, views);
+  std::string text = fmt::format("**{}** ({})\n\n", md(line.title), md(line.detail));
+  text += intro(d) + "\n" + table_head(d);
+  std::string reasons;
+  for (std::size_t i = 0; i < shown; ++i) {
+    text += table_row(d, views[i]);
+    reasons += reasons_of(views[i]);
+  }
+  if (shown < views.size()) {
+    text += fmt::format("\n_{} more scenes not shown: the full report would exceed GitHub's "
+                        "comment limit. See the HTML or JSON report._\n",
+                        views.size() - shown);
+  }
+  if (!reasons.empty()) text.append("\n").append(reasons);
+  if (with_details) text.append("\n").append(details(input));
+  return text;
+}
+
+// Cuts at a character boundary so the result stays valid UTF-8.
+std::string cut(std::string text, std::size_t limit) {
+  if (text.size() <= limit) return text;
+  std::size_t end = limit;
+  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;
+  text.resize(end);
+  return text;
+}
+
+void MarkdownReporter::write(const ReportInput& input, std::ostream& out) const {
+  const std::vector<SceneView> views = scene_views(input);
+  std::string text = compose(input, views, views.size(), true);
+  if (text.size() > limit_) text = compose(input, views, views.size(), false);
+  for (std::size_t shown = views.size(); text.size() > limit_ && shown > 0;) {
+    text = compose(input, views, --shown, false);
+  }
+  out << cut(std::move(text), limit_);
+}
+
+}  // namespace
+
+std::unique_ptr<Reporter> make_markdown_reporter(const ReportOptions& options) {
+  return std::make_unique<MarkdownReporter>(options.markdown_limit);
+}
+
+}  // namespace raygate::report

@@ -1,0 +1,264 @@
+#include "report/report_model.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace raygate::report {
+namespace {
+
+int reading_rank(GateOutcome outcome) {
+  switch (outcome) {
+    case GateOutcome::fail: return 0;
+    case GateOutcome::unmeasured: return 1;
+    case GateOutcome::warn: return 2;
+    case GateOutcome::pass: return 3;
+  }
+  return 3;
+}
+
+SceneGate gate_of(const GateResult& gate, const std::string& id) {
+  for (const SceneGate& scene : gate.scenes) {
+    if (scene.id == id) return scene;
+  }
+  SceneGate unjudged;
+  unjudged.id = id;
+  unjudged.outcome = GateOutcome::unmeasured;
+  unjudged.reasons.push_back("not judged by the gate");
+  return unjudged;
+}
+
+// The gate judges a scene as a whole; JUnit and the tables also need the two parts apart.
+// A crash of head where base ran is the change's fault (as in gate/verdict.cpp); other crashes
+// mean the scene could not be measured.
+GateOutcome speed_outcome_of(const ResultsDocument& document, const SceneResult& scene,
+                             const SceneGate& gate, const GatePolicy& policy) {
+  if (gate.speed == "REGRESSED") return GateOutcome::fail;
+  if (gate.speed == "INCONCLUSIVE") {
+    return policy.fail_on_inconclusive ? GateOutcome::fail : GateOutcome::warn;
+  }
+  if (gate.speed == "FAILED" || scene.runs.failed()) {
+    const bool head_only = document.kind == "compare" && scene.runs.failed_role == "head" &&
+                           scene.runs.first_run("base") != nullptr;
+    return head_only ? GateOutcome::fail : GateOutcome::unmeasured;
+  }
+  return GateOutcome::pass;
+}
+
+GateOutcome image_outcome_of(const SceneResult& scene) {
+  GateOutcome worst = GateOutcome::pass;
+  for (const ImageCheck& check : scene.images) {
+    GateOutcome outcome = GateOutcome::pass;
+    if (check.verdict == "fail") outcome = GateOutcome::fail;
+    if (check.verdict == "error") outcome = GateOutcome::unmeasured;
+    if (check.verdict == "warn" || check.verdict == "missing") outcome = GateOutcome::warn;
+    worst = std::max(worst, outcome);
+  }
+  return worst;
+}
+
+SceneView make_view(const ReportInput& input, const SceneResult& scene) {
+  SceneView view;
+  view.result = &scene;
+  view.gate = gate_of(input.gate, scene.entry.id);
+  view.speed_outcome = speed_outcome_of(input.document, scene, view.gate, input.policy);
+  view.image_outcome = image_outcome_of(scene);
+  for (const std::string& reason : view.gate.reasons) {
+    (reason.starts_with("image ") ? view.image_reasons : view.speed_reasons).push_back(reason);
+  }
+  return view;
+}
+
+std::string plural(std::size_t n, const char* one, const char* many) {
+  return fmt::format("{} {}", n, n == 1 ? one : many);
+}
+
+// What went wrong with a failing scene, in a few words: "mount +7.9%", "gears image".
+std::string failure_words(const SceneView& view) {
+  std::vector<std::string> what;
+  if (view.speed_outcome == GateOutcome::fail) {
+    if (view.result->change && view.gate.speed != "FAILED") {
+      what.push_back(percent(view.result->change->change));
+    } else {
+      what.push_back(view.result->runs.failed() ? "crashed" : view.gate.speed);
+    }
+  }
+  if (view.image_outcome == GateOutcome::fail) what.push_back("image");
+  if (what.empty()) what.push_back("failed");
+  return fmt::format("{} {}", view.gate.id, fmt::join(what, ", "));
+}
+
+std::string ids_of(const std::vector<SceneView>& views, GateOutcome outcome, bool words) {
+  std::vector<std::string> parts;
+  for (const SceneView& view : views) {
+    if (view.gate.outcome == outcome) parts.push_back(words ? failure_words(view) : view.gate.id);
+  }
+  return fmt::format("{}", fmt::join(parts, ", "));
+}
+
+std::string json_text(const nlohmann::json& machine, const char* key) {
+  const auto found = machine.find(key);
+  if (found == machine.end() || found->is_null()) return "";
+  return value_text(*found);
+}
+
+}  // namespace
+
+std::vector<SceneView> scene_views(const ReportInput& input) {
+  std::vector<SceneView> views;
+  for (const SceneResult& scene : input.document.scenes) views.push_back(make_view(input, scene));
+  std::stable_sort(views.begin(), views.end(), [](const SceneView& a, const SceneView& b) {
+    return reading_rank(a.gate.outcome) < reading_rank(b.gate.outcome);
+  });
+  return views;
+}
+
+std::vector<std::string> ratio_roles(const ResultsDocument& document) {
+  if (document.kind == "compare") return {"base", "head"};
+  return {"tracer"};
+}
+
+std::string primary_role(const ResultsDocument& document) {
+  return document.kind == "compare" ? "head" : "tracer";
+}
+
+Headline headline(const ReportInput& input, const std::vector<SceneView>& views) {
+  const GateResult& gate = input.gate;
+  const std::size_t failed = gate.count(GateOutcome::fail);
+  const std::size_t unmeasured = gate.count(GateOutcome::unmeasured);
+  const std::size_t warned = gate.count(GateOutcome::warn);
+  Headline line;
+  if (failed > 0) {
+    line.title = "raygate: " + plural(failed, "regression", "regressions");
+    line.detail = ids_of(views, GateOutcome::fail, true);
+    if (unmeasured > 0) line.detail += "; not measured: " + ids_of(views, GateOutcome::unmeasured, false);
+  } else if (unmeasured > 0) {
+    line.title = "raygate: could not measure " + plural(unmeasured, "scene", "scenes");
+    line.detail = ids_of(views, GateOutcome::unmeasured, false);
+  } else if (gate.exit_code != 0) {
+    line.title = "raygate: incomplete";
+    line.detail = fmt::format("the run stopped after {}", plural(views.size(), "scene", "scenes"));
+  } else {
+    line.title = "raygate: pass";
+    line.detail = plural(views.size(), "scene", "scenes");
+    if (warned > 0) line.detail += ", " + plural(warned, "warning", "warnings");
+  }
+  if (const auto change = suite_change(input.document)) {
+    line.detail += fmt::format("; suite {}", percent(*change));
+  } else if (const auto score = input.document.scores.find("tracer");
+             score != input.document.scores.end() && score->second.score > 0.0) {
+    line.detail += fmt::format("; suite score {:.3f}", score->second.score);
+  }
+  return line;
+}
+
+std::string verdict_word(int exit_code) {
+  if (exit_code == 0) return "pass";
+  if (exit_code == 1) return "fail";
+  return "could not measure";
+}
+
+std::string percent(double fraction, int decimals) {
+  if (!std::isfinite(fraction)) return "n/a";
+  return fmt::format("{:+.{}f}%", 100.0 * fraction, decimals);
+}
+
+std::string change_text(const SceneResult& scene) {
+  if (!scene.change || scene.runs.failed()) return "";
+  const ChangeSummary& c = *scene.change;
+  return fmt::format("{} [{}, {}]", percent(c.change), percent(c.change_interval.lower),
+                     percent(c.change_interval.upper));
+}
+
+std::string ratio_text(const ResultsDocument& document, const SceneResult& scene,
+                       const std::string& arrow) {
+  if (document.kind == "compare") {
+    const RatioSummary* base = scene.ratio("base");
+    const RatioSummary* head = scene.ratio("head");
+    if (base == nullptr || head == nullptr) return "";
+    return fmt::format("{:.3f} {} {:.3f}", base->ratio, arrow, head->ratio);
+  }
+  const RatioSummary* tracer = scene.ratio("tracer");
+  if (tracer == nullptr) return "";
+  return fmt::format("{:.3f} [{:.3f}, {:.3f}]", tracer->ratio, tracer->ratio_interval.lower,
+                     tracer->ratio_interval.upper);
+}
+
+std::optional<double> suite_change(const ResultsDocument& document) {
+  const auto base = document.scores.find("base");
+  const auto head = document.scores.find("head");
+  if (base == document.scores.end() || head == document.scores.end()) return std::nullopt;
+  if (!(base->second.score > 0.0) || !(head->second.score > 0.0)) return std::nullopt;
+  return head->second.score / base->second.score - 1.0;
+}
+
+std::string value_text(const nlohmann::json& value) {
+  if (value.is_string()) return value.get<std::string>();
+  return value.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+std::string machine_line(const nlohmann::json& machine) {
+  if (!machine.is_object()) return "";
+  std::vector<std::string> parts;
+  std::string cpu = json_text(machine, "cpu_model");
+  if (const std::string cores = json_text(machine, "logical_cores"); !cores.empty()) {
+    cpu += fmt::format(" ({} cores)", cores);
+  }
+  for (std::string part : {cpu, json_text(machine, "kernel")}) {
+    if (!part.empty()) parts.push_back(part);
+  }
+  if (const std::string host = json_text(machine, "hostname"); !host.empty()) {
+    parts.push_back("host " + host);
+  }
+  return fmt::format("{}", fmt::join(parts, ", "));
+}
+
+std::string revision_line(const ResultsDocument& document, const std::string& role) {
+  const RevisionRecord* revision = document.revision(role);
+  if (revision == nullptr) return "";
+  const Worktree& tree = revision->worktree;
+  std::string line = fmt::format("{} {}", tree.short_sha, tree.subject);
+  if (!tree.revision.empty() && tree.revision != tree.sha) line += fmt::format(" ({})", tree.revision);
+  if (tree.dirty) line += " [dirty]";
+  return line;
+}
+
+std::string policy_line(const GatePolicy& policy) {
+  const ScenePolicy& d = policy.defaults;
+  std::string line = fmt::format(
+      "max slowdown {} at {:.0f}% confidence; image fail over {:.4g} on more than {:.4g}% of "
+      "pixels, warn over {:.4g}",
+      percent(d.max_slowdown), 100.0 * (1.0 - d.significance), d.image.fail_threshold,
+      d.image.fail_percent, d.image.warn_threshold);
+  if (d.image.hard_fail < 1e29) line += fmt::format(", hard fail over {:.4g}", d.image.hard_fail);
+  if (policy.fail_on_inconclusive) line += "; inconclusive fails";
+  if (!policy.scenes.empty()) {
+    line += fmt::format("; {}", plural(policy.scenes.size(), "scene override", "scene overrides"));
+  }
+  return line;
+}
+
+std::filesystem::path role_image(const SceneResult& scene, const std::string& role) {
+  for (const ImageCheck& check : scene.images) {
+    if (check.role == role && !check.actual.empty()) return check.actual;
+  }
+  if (const RunRecord* run = scene.runs.first_run(role)) return run->image;
+  return {};
+}
+
+std::filesystem::path golden_image(const SceneResult& scene) {
+  for (const ImageCheck& check : scene.images) {
+    if (check.reference == "golden" && check.verdict != "missing" && !check.expected.empty()) {
+      return check.expected;
+    }
+  }
+  return {};
+}
+
+std::filesystem::path resolve(const ReportInput& input, const std::filesystem::path& path) {
+  if (path.empty() || path.is_absolute() || input.base_dir.empty()) return path;
+  return input.base_dir / path;
+}
+
+}  // namespace raygate::report

@@ -1,0 +1,67 @@
+// What every reporter says, computed once: the scenes in reading order (failures first), the
+// outcome of each scene's speed and image parts, the headline, and the numbers as text. The
+// formats differ in layout only; the words and numbers come from here, so a Markdown comment
+// and an HTML page can never disagree.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "report/reporter.h"
+
+namespace raygate::report {
+
+struct SceneView {
+  const SceneResult* result = nullptr;
+  SceneGate gate;
+  GateOutcome speed_outcome = GateOutcome::pass;
+  GateOutcome image_outcome = GateOutcome::pass;
+  std::vector<std::string> speed_reasons;  // the gate's reasons about time or a crash
+  std::vector<std::string> image_reasons;  // the gate's reasons starting "image "
+  bool has_images() const { return !result->images.empty(); }
+};
+
+// Scenes ordered fail, unmeasured, warn, pass; document order within each.
+std::vector<SceneView> scene_views(const ReportInput& input);
+
+// The revision roles measured against the baseline: {"tracer"} or {"base", "head"}.
+std::vector<std::string> ratio_roles(const ResultsDocument& document);
+// The role whose image and ratio a reader cares about: "head" for compare, else "tracer".
+std::string primary_role(const ResultsDocument& document);
+
+struct Headline {
+  std::string title;   // "raygate: 1 regression", "raygate: pass"
+  std::string detail;  // "mount +7.9%", "4 scenes, 1 warning"
+};
+Headline headline(const ReportInput& input, const std::vector<SceneView>& views);
+// "pass", "fail" or "could not measure", from the gate's exit code.
+std::string verdict_word(int exit_code);
+
+// "+7.9%" (sign always shown).
+std::string percent(double fraction, int decimals = 1);
+// "+7.9% [+6.1%, +9.8%]"; "" when the scene has no change (a run, or a failed scene).
+std::string change_text(const SceneResult& scene);
+// A run: "0.512 [0.507, 0.518]"; a compare: "0.512 -> 0.553" (arrow as given).
+std::string ratio_text(const ResultsDocument& document, const SceneResult& scene,
+                       const std::string& arrow = "->");
+// Geometric-mean change of the suite, head against base; nullopt for a run.
+std::optional<double> suite_change(const ResultsDocument& document);
+
+// A JSON value as text: strings bare, anything else as compact JSON.
+std::string value_text(const nlohmann::json& value);
+// "Intel Xeon (2 cores), Linux 6.1.0 x86_64, host ci-runner-3": whatever the machine JSON has.
+std::string machine_line(const nlohmann::json& machine);
+// "abc1234 Fix the BVH split (main)"; "" for a role not in the document.
+std::string revision_line(const ResultsDocument& document, const std::string& role);
+// "max slowdown +3.0% at 95%; image fail 0.004 over 0.02% of pixels, warn 0.004".
+std::string policy_line(const GatePolicy& policy);
+
+// The image of `role` per the document's image checks, or its first successful run.
+std::filesystem::path role_image(const SceneResult& scene, const std::string& role);
+// The golden image the checks compared with, or "".
+std::filesystem::path golden_image(const SceneResult& scene);
+std::filesystem::path resolve(const ReportInput& input, const std::filesystem::path& path);
+
+}  // namespace raygate::report

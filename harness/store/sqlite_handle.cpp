@@ -1,0 +1,162 @@
+// SQLite connections, statements and transactions, with errors that say where and what.
+#include "store/sqlite_handle.h"
+
+#include <fmt/core.h>
+#include <sqlite3.h>
+
+#include "core/error.h"
+
+namespace raygate {
+
+namespace {
+
+// The SQL as one short line, for messages.
+std::string sql_context(const std::string& sql) {
+  std::string line;
+  bool space = false;
+  for (const char c : sql) {
+    if (c == '\n' || c == '\t' || c == ' ') {
+      space = !line.empty();
+      continue;
+    }
+    if (space) line += ' ';
+    space = false;
+    line += c;
+  }
+  return line.size() > 72 ? line.substr(0, 69) + "..." : line;
+}
+
+[[noreturn]] void throw_sqlite_error(int code, const std::string& message,
+                                     const std::filesystem::path& path, const std::string& sql,
+                                     std::chrono::milliseconds busy_timeout) {
+  const int primary = code & 0xff;
+  const std::string where =
+      sql.empty() ? std::string("opening it") : "running: " + sql_context(sql);
+  if (primary == SQLITE_BUSY || primary == SQLITE_LOCKED) {
+    throw InfraError(fmt::format(
+        "results store {}: database is locked ({}; waited {} ms while {}): another raygate is "
+        "writing to it; retry when it has finished",
+        path.string(), message, busy_timeout.count(), where));
+  }
+  if (primary == SQLITE_NOTADB) {
+    throw UsageError(
+        fmt::format("results store {}: not an SQLite database ({}); --store must "
+                    "name a raygate results database",
+                    path.string(), message));
+  }
+  throw InfraError(fmt::format("results store {}: SQLite error {} ({}) while {}", path.string(),
+                               code, message, where));
+}
+
+}  // namespace
+
+SqliteDb SqliteDb::open(const std::filesystem::path& path, bool create,
+                        std::chrono::milliseconds busy_timeout) {
+  sqlite3* db = nullptr;
+  const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0);
+  const int code = sqlite3_open_v2(path.c_str(), &db, flags, nullptr);
+  if (code != SQLITE_OK) {
+    const std::string message = db ? sqlite3_errmsg(db) : sqlite3_errstr(code);
+    sqlite3_close(db);
+    throw_sqlite_error(code, message, path, "", busy_timeout);
+  }
+  sqlite3_extended_result_codes(db, 1);
+  sqlite3_busy_timeout(db, static_cast<int>(busy_timeout.count()));
+  return SqliteDb(db, path, busy_timeout);
+}
+
+SqliteDb::SqliteDb(SqliteDb&& other) noexcept
+    : db_(other.db_), path_(std::move(other.path_)), busy_timeout_(other.busy_timeout_) {
+  other.db_ = nullptr;
+}
+
+SqliteDb::~SqliteDb() { sqlite3_close_v2(db_); }
+
+void SqliteDb::exec(const std::string& sql) {
+  const int code = sqlite3_exec(db_, sql.c_str(), nullptr, nullptr, nullptr);
+  if (code != SQLITE_OK) fail(code, sql);
+}
+
+void SqliteDb::fail(int code, const std::string& sql) const {
+  throw_sqlite_error(code, sqlite3_errmsg(db_), path_, sql, busy_timeout_);
+}
+
+SqliteStatement::SqliteStatement(SqliteDb& db, std::string sql) : db_(db), sql_(std::move(sql)) {
+  const int code = sqlite3_prepare_v2(db_.get(), sql_.c_str(), -1, &statement_, nullptr);
+  if (code != SQLITE_OK) db_.fail(code, sql_);
+}
+
+SqliteStatement::~SqliteStatement() { sqlite3_finalize(statement_); }
+
+void SqliteStatement::check_bind(int code) {
+  if (code != SQLITE_OK) db_.fail(code, sql_);
+}
+
+SqliteStatement& SqliteStatement::bind_text(int index, const std::string& value) {
+  check_bind(sqlite3_bind_text(statement_, index, value.data(), static_cast<int>(value.size()),
+                               SQLITE_TRANSIENT));
+  return *this;
+}
+
+SqliteStatement& SqliteStatement::bind_int(int index, std::optional<std::int64_t> value) {
+  check_bind(value ? sqlite3_bind_int64(statement_, index, *value)
+                   : sqlite3_bind_null(statement_, index));
+  return *this;
+}
+
+SqliteStatement& SqliteStatement::bind_flag(int index, bool value) {
+  return bind_int(index, value ? 1 : 0);
+}
+
+SqliteStatement& SqliteStatement::bind_real(int index, std::optional<double> value) {
+  check_bind(value ? sqlite3_bind_double(statement_, index, *value)
+                   : sqlite3_bind_null(statement_, index));
+  return *this;
+}
+
+bool SqliteStatement::step() {
+  const int code = sqlite3_step(statement_);
+  if (code == SQLITE_ROW) return true;
+  if (code == SQLITE_DONE) return false;
+  db_.fail(code, sql_);
+}
+
+void SqliteStatement::run() {
+  while (step()) {
+  }
+}
+
+std::string SqliteStatement::text(int column) const {
+  const unsigned char* value = sqlite3_column_text(statement_, column);
+  if (value == nullptr) return {};
+  return std::string(reinterpret_cast<const char*>(value),
+                     static_cast<std::size_t>(sqlite3_column_bytes(statement_, column)));
+}
+
+std::int64_t SqliteStatement::integer(int column) const {
+  return sqlite3_column_int64(statement_, column);
+}
+
+std::optional<std::int64_t> SqliteStatement::optional_integer(int column) const {
+  if (sqlite3_column_type(statement_, column) == SQLITE_NULL) return std::nullopt;
+  return sqlite3_column_int64(statement_, column);
+}
+
+std::optional<double> SqliteStatement::real(int column) const {
+  if (sqlite3_column_type(statement_, column) == SQLITE_NULL) return std::nullopt;
+  return sqlite3_column_double(statement_, column);
+}
+
+SqliteTransaction::SqliteTransaction(SqliteDb& db) : db_(db) { db_.exec("BEGIN IMMEDIATE"); }
+
+SqliteTransaction::~SqliteTransaction() {
+  // A failed ROLLBACK leaves SQLite to roll back when the connection closes; never throw here.
+  if (open_) sqlite3_exec(db_.get(), "ROLLBACK", nullptr, nullptr, nullptr);
+}
+
+void SqliteTransaction::commit() {
+  db_.exec("COMMIT");
+  open_ = false;
+}
+
+}  // namespace raygate

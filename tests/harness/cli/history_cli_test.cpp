@@ -1,0 +1,224 @@
+// `raygate import`, `history` and `export` as a user runs them: hand-made results documents go
+// in, the table, its JSON, the drift note and the HTML page come out, exports equal the files
+// imported byte for byte, and parallel imports into one store lose and duplicate nothing.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <fmt/core.h>
+
+#include <set>
+
+#include "cli_support.h"
+#include "results_fixture.h"
+#include "store/store.h"
+
+namespace raygate::test {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+DocumentSpec commit(int seed, int day, double balls_ratio, double baseline_seconds = 1.0) {
+  DocumentSpec spec;
+  spec.sha = fake_sha(seed);
+  spec.subject = seed == 3 ? "speed up the BVH build by sorting primitives along the longest axis"
+                           : "commit number " + std::to_string(seed);
+  spec.commit_time = fmt::format("2026-05-{:02}T09:00:00+00:00", day);
+  spec.started_at = fmt::format("2026-05-{:02}T10:00:00Z", day);
+  spec.scenes = {{"balls", balls_ratio, 0.01, baseline_seconds},
+                 {"gears", 1.5, 0.02, 2.0 * baseline_seconds, 0.0123, "warn"}};
+  return spec;
+}
+
+class HistoryCli : public ::testing::Test {
+ protected:
+  std::string write(const std::string& name, const DocumentSpec& spec) {
+    const std::filesystem::path path = dir.path() / "docs" / name;
+    write_results(make_document(spec), path);
+    return "docs/" + name;
+  }
+  // Three commits on days 1, 2, 3; balls gets slower at the last one.
+  std::vector<std::string> three_commits() {
+    return {write("c1.json", commit(1, 1, 0.80)), write("c2.json", commit(2, 2, 0.80)),
+            write("c3.json", commit(3, 3, 0.88))};
+  }
+  CliRun import(const std::vector<std::string>& files) {
+    std::vector<std::string> args{"import", "--store", "store.db"};
+    args.insert(args.end(), files.begin(), files.end());
+    return run_raygate(args, dir);
+  }
+  TempDir dir;
+};
+
+TEST_F(HistoryCli, ImportStoresEachDocumentOnce) {
+  const auto files = three_commits();
+  const CliRun first = import(files);
+  ASSERT_EQ(first.exit_code, 0) << first.out;
+  EXPECT_THAT(first.out, HasSubstr("imported 3 of 3 documents"));
+  EXPECT_THAT(first.out, HasSubstr("(branch main)"));
+  const CliRun again = import({files[0]});
+  ASSERT_EQ(again.exit_code, 0) << again.out;
+  EXPECT_THAT(again.out, HasSubstr("already stored as document 1"));
+  EXPECT_THAT(again.out, HasSubstr("imported 0 of 1 documents"));
+}
+
+TEST_F(HistoryCli, ImportRefusesWhatIsNotAResultsDocument) {
+  write_file_atomically(dir.path() / "adapter.json", R"({"name": "x", "build": []})");
+  write_file_atomically(dir.path() / "notes.json", "this is not json");
+  const auto files = three_commits();
+  const CliRun adapter = import({files[0], "adapter.json"});
+  EXPECT_EQ(adapter.exit_code, 2) << adapter.out;
+  EXPECT_THAT(adapter.out, HasSubstr("adapter.json: not a raygate results document"));
+  const CliRun text = import({"notes.json"});
+  EXPECT_EQ(text.exit_code, 2) << text.out;
+  EXPECT_THAT(text.out, HasSubstr("notes.json: not JSON"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "store.db"));  // checked before storing
+}
+
+TEST_F(HistoryCli, TableNewestFirstWithRatiosImageErrorsAndTrend) {
+  ASSERT_EQ(import(three_commits()).exit_code, 0);
+  const CliRun r = run_raygate({"history", "--store", "store.db"}, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const auto at = [&](int seed) { return r.out.find(fake_sha(seed).substr(0, 7)); };
+  ASSERT_NE(at(1), std::string::npos) << r.out;
+  EXPECT_LT(at(3), at(2)) << r.out;
+  EXPECT_LT(at(2), at(1)) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("2026-05-03"));
+  EXPECT_THAT(r.out, HasSubstr("speed up the BVH build by sorti…"));
+  EXPECT_THAT(r.out, HasSubstr("0.880 ±1.0%"));
+  EXPECT_THAT(r.out, HasSubstr("0.0123 warn"));
+  EXPECT_THAT(r.out, HasSubstr("▁▁█"));
+  EXPECT_THAT(r.out, HasSubstr("+10.0% ↑ vs " + fake_sha(2).substr(0, 7)));
+  EXPECT_THAT(r.out, Not(HasSubstr("machine drift")));
+
+  const CliRun last = run_raygate({"history", "--store", "store.db", "--last", "1"}, dir);
+  EXPECT_EQ(last.out.find(fake_sha(2).substr(0, 7)), std::string::npos) << last.out;
+}
+
+TEST_F(HistoryCli, JsonForMachines) {
+  ASSERT_EQ(import(three_commits()).exit_code, 0);
+  const CliRun r =
+      run_raygate({"history", "--store", "store.db", "--json", "--scene", "balls"}, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const nlohmann::json j = nlohmann::json::parse(r.out);
+  ASSERT_EQ(j["commits"].size(), 3u);
+  EXPECT_EQ(j["commits"][0]["sha"], fake_sha(3));
+  EXPECT_EQ(j["commits"][0]["branch"], "main");
+  const nlohmann::json& balls = j["commits"][0]["scenes"]["balls"];
+  EXPECT_DOUBLE_EQ(balls["normalized_ratio"].get<double>(), 0.88);
+  EXPECT_DOUBLE_EQ(balls["baseline_median_seconds"].get<double>(), 1.0);
+  EXPECT_EQ(balls["image"]["verdict"], "pass");
+  EXPECT_EQ(balls["machine"]["hostname"], "ci-runner-1");
+  EXPECT_FALSE(j["commits"][0]["scenes"].contains("gears"));
+  EXPECT_NEAR(j["trends"]["balls"]["change_vs_previous"].get<double>(), 0.1, 1e-12);
+  EXPECT_TRUE(j["machine_drift"].is_null());
+}
+
+TEST_F(HistoryCli, SaysWhenTheMachineMovedAndTheCodeDidNot) {
+  std::vector<std::string> files = three_commits();
+  files.push_back(write("c4.json", commit(4, 4, 0.80, 0.8)));  // baseline 20% faster, ratio held
+  ASSERT_EQ(import(files).exit_code, 0);
+  const CliRun r = run_raygate({"history", "--store", "store.db"}, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("machine drift: on ci-runner-1 (Test CPU 3000) the baseline took "
+                               "20.0% less time"));
+  EXPECT_THAT(r.out, HasSubstr("the machine got faster, not the code"));
+  const CliRun j = run_raygate({"history", "--store", "store.db", "--json"}, dir);
+  EXPECT_EQ(nlohmann::json::parse(j.out)["machine_drift"]["machine_got"], "faster");
+}
+
+TEST_F(HistoryCli, HtmlPageWithOnePlotPerScene) {
+  ASSERT_EQ(import(three_commits()).exit_code, 0);
+  const CliRun r = run_raygate({"history", "--store", "store.db", "--html", "page"}, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const std::string html = read_file(dir.path() / "page" / "history.html");
+  EXPECT_TRUE(html.starts_with("<!DOCTYPE html>"));
+  std::size_t svgs = 0;
+  for (std::size_t at = html.find("<svg "); at != std::string::npos;
+       at = html.find("<svg ", at + 1)) {
+    ++svgs;
+  }
+  EXPECT_EQ(svgs, 2u);
+  std::size_t closes = 0;
+  for (std::size_t at = html.find("</svg>"); at != std::string::npos;
+       at = html.find("</svg>", at + 1)) {
+    ++closes;
+  }
+  EXPECT_EQ(closes, 2u);
+  EXPECT_THAT(html, HasSubstr("xmlns=\"http://www.w3.org/2000/svg\""));
+  EXPECT_THAT(html, HasSubstr("<polygon class=\"ci\" points=\""));
+  EXPECT_THAT(html, HasSubstr("<polyline class=\"ratio\" points=\""));
+  EXPECT_THAT(html, HasSubstr("<title>" + fake_sha(3).substr(0, 7) + " speed up the BVH"));
+  EXPECT_THAT(html, HasSubstr("ratio 0.8800 [0.8712, 0.8888]"));
+  EXPECT_THAT(html, Not(HasSubstr("<script")));
+  EXPECT_THAT(html, Not(HasSubstr("https://")));
+}
+
+TEST_F(HistoryCli, ExportGivesBackTheImportedFilesByteForByte) {
+  const auto files = three_commits();
+  ASSERT_EQ(import(files).exit_code, 0);
+  const CliRun one = run_raygate(
+      {"export", "--store", "store.db", "--sha", fake_sha(2).substr(0, 10), "-o", "one.json"}, dir);
+  ASSERT_EQ(one.exit_code, 0) << one.out;
+  EXPECT_EQ(read_file(dir.path() / "one.json"), read_file(dir.path() / files[1]));
+
+  const CliRun all = run_raygate({"export", "--store", "store.db", "-o", "out"}, dir);
+  ASSERT_EQ(all.exit_code, 0) << all.out;
+  EXPECT_THAT(all.out, HasSubstr("wrote 3 documents"));
+  std::set<std::string> exported;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path() / "out")) {
+    exported.insert(read_file(entry.path()));
+  }
+  std::set<std::string> imported;
+  for (const std::string& file : files) imported.insert(read_file(dir.path() / file));
+  EXPECT_EQ(exported, imported);
+
+  const CliRun many = run_raygate({"export", "--store", "store.db", "-o", "all.json"}, dir);
+  EXPECT_EQ(many.exit_code, 2) << many.out;
+  const CliRun none =
+      run_raygate({"export", "--store", "store.db", "--sha", "ffff", "-o", "x"}, dir);
+  EXPECT_EQ(none.exit_code, 2) << none.out;
+  EXPECT_THAT(none.out, HasSubstr("no document"));
+}
+
+TEST_F(HistoryCli, MissingStoreAndPostgresqlUrlAreUsageErrors) {
+  const CliRun missing = run_raygate({"history", "--store", "nope.db"}, dir);
+  EXPECT_EQ(missing.exit_code, 2) << missing.out;
+  EXPECT_THAT(missing.out, HasSubstr("does not exist"));
+  const CliRun pg = run_raygate({"history", "--store", "postgresql://ci:s3cret@db/raygate"}, dir);
+  EXPECT_EQ(pg.exit_code, 2) << pg.out;
+  EXPECT_THAT(pg.out, HasSubstr("PostgreSQL backend is not available"));
+  const CliRun run_help = run_raygate({"run", "--help"}, dir);
+  EXPECT_THAT(run_help.out, HasSubstr("--no-store"));
+  EXPECT_THAT(run_help.out, HasSubstr("<cache-dir>/results.db"));
+}
+
+TEST_F(HistoryCli, ParallelImportsLoseAndDuplicateNothing) {
+  constexpr int kImporters = 5;
+  constexpr int kEach = 4;
+  const std::string shared = write("shared.json", commit(999, 20, 0.7));
+  std::vector<Process> importers;
+  for (int i = 0; i < kImporters; ++i) {
+    ProcessSpec spec;
+    spec.argv = {RAYGATE_EXE, "import", "--store", "store.db", shared};
+    for (int k = 0; k < kEach; ++k) {
+      const int seed = 10 * (i + 1) + k;
+      spec.argv.push_back(write(fmt::format("p{}.json", seed), commit(seed, 1 + k, 0.9)));
+    }
+    spec.working_directory = dir.path();
+    spec.stdout_path = dir.path() / fmt::format("import-{}.log", i);
+    spec.stderr_path = spec.stdout_path;
+    spec.timeout = std::chrono::minutes(2);
+    importers.push_back(Process::start(spec));
+  }
+  for (std::size_t i = 0; i < importers.size(); ++i) {
+    const ProcessResult result = importers[i].wait();
+    EXPECT_TRUE(result.succeeded()) << result.describe() << "\n"
+                                    << read_file(dir.path() / fmt::format("import-{}.log", i));
+  }
+  const auto store = open_store((dir.path() / "store.db").string(), StoreOpen::must_exist);
+  EXPECT_EQ(store->documents({}).size(), static_cast<std::size_t>(kImporters * kEach + 1));
+}
+
+}  // namespace
+}  // namespace raygate::test

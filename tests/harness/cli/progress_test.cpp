@@ -1,0 +1,79 @@
+// cli/progress.cpp: durations as people read them, one rewritten line on a terminal, and only
+// plain per-scene lines in CI logs.
+#include "cli/progress.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+namespace raygate::cli {
+namespace {
+
+TEST(FormatDuration, SecondsMinutesAndHours) {
+  EXPECT_EQ(format_duration(0), "0s");
+  EXPECT_EQ(format_duration(12.4), "12s");
+  EXPECT_EQ(format_duration(59.4), "59s");
+  EXPECT_EQ(format_duration(59.6), "1m00s");  // rounded before it is split
+  EXPECT_EQ(format_duration(100), "1m40s");
+  EXPECT_EQ(format_duration(3599.6), "1h00m");
+  EXPECT_EQ(format_duration(7380), "2h03m");
+}
+
+TEST(FormatDuration, NegativeIsZero) { EXPECT_EQ(format_duration(-5), "0s"); }
+
+// Everything written to a Progress, as text.
+class ProgressOutput {
+ public:
+  ProgressOutput() : file_(std::tmpfile(), &std::fclose) {}
+  std::FILE* stream() const { return file_.get(); }
+  std::string text() const {
+    std::fflush(file_.get());
+    std::rewind(file_.get());
+    std::string out;
+    for (int c = std::fgetc(file_.get()); c != EOF; c = std::fgetc(file_.get())) {
+      out += static_cast<char>(c);
+    }
+    return out;
+  }
+
+ private:
+  std::unique_ptr<std::FILE, int (*)(std::FILE*)> file_;
+};
+
+ProgressState state_of_round_7() { return {3, 13, "mount", 7, 0.512, 0.008, 100}; }
+
+TEST(Progress, PlainLogsGetOnlyTheFinishedSceneLines) {
+  ProgressOutput out;
+  {
+    Progress progress(out.stream(), false);
+    progress.update(state_of_round_7());
+    progress.line("[3/13] mount  done");
+  }
+  EXPECT_EQ(out.text(), "[3/13] mount  done\n");
+}
+
+TEST(Progress, TerminalLineIsRewrittenInPlaceAndClearedForSceneLines) {
+  ProgressOutput out;
+  {
+    Progress progress(out.stream(), true);
+    progress.update(state_of_round_7());
+    progress.line("[3/13] mount  done");
+  }
+  EXPECT_EQ(out.text(),
+            "\r\033[K[3/13] mount      round  7  ratio 0.512 ±0.8%  ETA 1m40s"
+            "\r\033[K[3/13] mount  done\n");
+}
+
+TEST(Progress, UnknownRatioAndEtaAreLeftOut) {
+  ProgressOutput out;
+  {
+    Progress progress(out.stream(), true);
+    progress.update({1, 2, "balls", 0, 0.0, 0.0, -1.0});
+  }  // the destructor clears the line it left
+  EXPECT_EQ(out.text(), "\r\033[K[1/2] balls      round  0\r\033[K");
+}
+
+}  // namespace
+}  // namespace raygate::cli

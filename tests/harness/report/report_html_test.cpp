@@ -1,0 +1,105 @@
+// The HTML report is one self-contained page: no network references, every image embedded as a
+// data: URI (a PPM converted to PNG), failures first, the hover swap wired, text escaped, and
+// plots drawn as inline SVG.
+#include <gtest/gtest.h>
+
+#include "report_fixture.h"
+
+namespace raygate::test {
+namespace {
+
+std::size_t count(const std::string& text, const std::string& needle) {
+  std::size_t n = 0;
+  for (std::size_t pos = text.find(needle); pos != std::string::npos;
+       pos = text.find(needle, pos + 1)) {
+    ++n;
+  }
+  return n;
+}
+
+TEST(HtmlReport, IsSelfContained) {
+  const Fixture f(true);
+  const std::string html = f.render("html");
+  EXPECT_EQ(html.rfind("<!DOCTYPE html>", 0), 0u);
+  EXPECT_EQ(count(html, "http://"), 0u);
+  EXPECT_EQ(count(html, "https://"), 1u) << "only the repository's own URL, as text";
+  EXPECT_NE(html.find("<code>https://example.org/tracer.git</code>"), std::string::npos);
+  EXPECT_EQ(count(html, "<link"), 0u);
+  EXPECT_EQ(count(html, "<script src"), 0u);
+  for (std::size_t pos = html.find("src=\""); pos != std::string::npos;
+       pos = html.find("src=\"", pos + 1)) {
+    EXPECT_EQ(html.compare(pos + 5, 5, "data:"), 0) << html.substr(pos, 60);
+  }
+  EXPECT_EQ(count(html, "<script>"), 1u);
+  EXPECT_EQ(count(html, "<style>"), 1u);
+}
+
+TEST(HtmlReport, EmbedsEveryImage) {
+  const Fixture f(true);
+  const std::string html = f.render("html");
+  // balls: golden, base, head; mount: golden, head; gears: golden, base, head (PPM converted)
+  // and two |diff|x16 evidence images; tetra: none.
+  EXPECT_EQ(count(html, "src=\"data:image/png;base64,"), 10u);
+  EXPECT_NE(html.find(R"(id="scene-gears-head" src="data:image/png;base64,)"), std::string::npos);
+  EXPECT_NE(html.find(R"(data-swap="scene-gears-golden")"), std::string::npos);
+  EXPECT_NE(html.find("|Δ|×16 head vs golden"), std::string::npos);
+  EXPECT_NE(html.find("|Δ|×16 head vs base"), std::string::npos);
+  EXPECT_EQ(count(html, "image not found"), 0u);
+}
+
+TEST(HtmlReport, FailuresFirstWithBadgesAndReasons) {
+  const Fixture f(true);
+  const std::string html = f.render("html");
+  const std::size_t mount = html.find(R"(id="scene-mount")");
+  const std::size_t gears = html.find(R"(id="scene-gears")");
+  const std::size_t tetra = html.find(R"(id="scene-tetra")");
+  const std::size_t balls = html.find(R"(id="scene-balls")");
+  ASSERT_NE(balls, std::string::npos);
+  EXPECT_LT(mount, gears);
+  EXPECT_LT(gears, tetra);
+  EXPECT_LT(tetra, balls);
+  EXPECT_NE(html.find(R"(<section class="scene card gate-fail" id="scene-mount">)"), std::string::npos);
+  EXPECT_NE(html.find(R"(<span class="badge gate-unmeasured">not measured</span>)"), std::string::npos);
+  EXPECT_NE(html.find("slower: head vs base +7.9%"), std::string::npos);
+  EXPECT_NE(html.find("raygate: 2 regressions"), std::string::npos);
+  EXPECT_NE(html.find("Test CPU @ 3.0GHz (2 cores)"), std::string::npos);
+  EXPECT_NE(html.find("max slowdown +3.0%"), std::string::npos);
+}
+
+TEST(HtmlReport, EscapesText) {
+  const Fixture f(true);
+  const std::string html = f.render("html");
+  EXPECT_NE(html.find("Use &lt;fast&gt; BVH &amp; &quot;SAH&quot; split"), std::string::npos);
+  EXPECT_EQ(html.find("<fast>"), std::string::npos);
+}
+
+TEST(HtmlReport, DrawsIntervalsAndTrendAsSvg) {
+  Fixture f(true);
+  std::string html = f.render("html");
+  EXPECT_EQ(count(html, R"(<svg class="plot ratio-plot")"), 3u);  // tetra has no ratio
+  EXPECT_EQ(count(html, R"(<svg class="plot change-plot")"), 3u);
+  EXPECT_EQ(count(html, "trend-plot"), 0u);
+  f.input->trends.push_back(make_trend("mount", 20));
+  html = f.render("html");
+  EXPECT_EQ(count(html, R"(<svg class="plot trend-plot")"), 1u);
+  EXPECT_EQ(count(html, R"(<circle class="trend-point)"), 20u);
+  EXPECT_NE(html.find("Trend over 20 commits"), std::string::npos);
+}
+
+TEST(HtmlReport, MissingImageIsShownNotFatal) {
+  Fixture f(true);
+  f.document.scenes[1].images[0].actual = f.dir.path() / "gone.png";
+  const std::string html = f.render("html");
+  EXPECT_EQ(count(html, "image not found"), 1u);
+}
+
+TEST(HtmlReport, RunReport) {
+  const Fixture f(false);
+  const std::string html = f.render("html");
+  EXPECT_NE(html.find("raygate run · 1111111 · suite ci"), std::string::npos);
+  EXPECT_EQ(count(html, R"(<svg class="plot change-plot")"), 0u);
+  EXPECT_EQ(count(html, "src=\"data:image/png;base64,"), 4u);  // golden + tracer, two scenes
+}
+
+}  // namespace
+}  // namespace raygate::test

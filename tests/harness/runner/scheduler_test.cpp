@@ -1,0 +1,482 @@
+// The scheduler of one scene (measure_scene) driven by a fake process table and a fake clock:
+// warm-ups, rotating order, stop rules, failures, the duet schedule, and first_run.
+#include "runner/scheduler.h"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+#include <map>
+#include <utility>
+
+#include "core/error.h"
+#include "core/fs.h"
+
+namespace raygate {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Time stands still unless a fake process runs.
+class FakeClock final : public Clock {
+ public:
+  double now_seconds() override { return now_; }
+  void advance(double seconds) { now_ += seconds; }
+
+ private:
+  double now_ = 1000.0;
+};
+
+// One process the fake executor was asked to run.
+struct Call {
+  std::string role;       // argv[0]
+  std::vector<int> cpus;  // its cpu_affinity
+  int batch = 0;          // executor call it came in; specs of one run_together share it
+  fs::path log;           // its stdout_path, which names the run directory
+};
+
+ProcessResult exited_with(int code, double wall_seconds) {
+  ProcessResult result;
+  result.outcome = ProcessOutcome::exited;
+  result.exit_code = code;
+  result.wall_seconds = wall_seconds;
+  result.user_seconds = wall_seconds * 0.75;
+  result.system_seconds = wall_seconds * 0.25;
+  return result;
+}
+
+ProcessResult killed_by(int signal) {
+  ProcessResult result;
+  result.outcome = ProcessOutcome::signaled;
+  result.signal = signal;
+  result.wall_seconds = 0.5;
+  return result;
+}
+
+// A process table keyed by argv[0] (the fake contenders put their role there): every run of a
+// role succeeds in its scripted wall seconds (cycled), except runs scripted to end otherwise.
+// Each run advances the clock by its wall time; a run_together by the longest of its runs.
+class FakeExecutor final : public Executor {
+ public:
+  explicit FakeExecutor(FakeClock& clock) : clock_(clock) {}
+
+  void set_seconds(const std::string& role, std::vector<double> seconds) {
+    seconds_[role] = std::move(seconds);
+  }
+  // The nth (1-based) run of `role` ends with `result`.
+  void script(const std::string& role, int nth, ProcessResult result) {
+    scripted_[{role, nth}] = std::move(result);
+  }
+
+  ProcessResult run(const ProcessSpec& spec) override {
+    ProcessResult result = next(spec, batches_++);
+    clock_.advance(result.wall_seconds);
+    return result;
+  }
+
+  std::vector<ProcessResult> run_together(const std::vector<ProcessSpec>& specs) override {
+    const int batch = batches_++;
+    std::vector<ProcessResult> results;
+    double longest = 0.0;
+    for (const ProcessSpec& spec : specs) {
+      results.push_back(next(spec, batch));
+      longest = std::max(longest, results.back().wall_seconds);
+    }
+    clock_.advance(longest);
+    return results;
+  }
+
+  const std::vector<Call>& calls() const { return calls_; }
+  std::vector<std::string> roles() const {
+    std::vector<std::string> out;
+    for (const Call& call : calls_) out.push_back(call.role);
+    return out;
+  }
+
+ private:
+  ProcessResult next(const ProcessSpec& spec, int batch) {
+    const std::string& role = spec.argv.at(0);
+    const int nth = ++runs_[role];
+    calls_.push_back({role, spec.cpu_affinity, batch, spec.stdout_path});
+    if (const auto found = scripted_.find({role, nth}); found != scripted_.end()) {
+      return found->second;
+    }
+    const std::vector<double>& seconds = seconds_[role];
+    const double wall = seconds.empty() ? 1.0 : seconds[static_cast<std::size_t>(nth - 1) % seconds.size()];
+    return exited_with(0, wall);
+  }
+
+  FakeClock& clock_;
+  std::map<std::string, std::vector<double>> seconds_;
+  std::map<std::pair<std::string, int>, ProcessResult> scripted_;
+  std::map<std::string, int> runs_;
+  std::vector<Call> calls_;
+  int batches_ = 0;
+};
+
+// Runs "<role>" and is timed by the process's wall seconds.
+class FakeContender final : public Contender {
+ public:
+  using Contender::Contender;
+
+  ProcessSpec command(const SceneInput& /*scene*/, const fs::path& run_dir) const override {
+    ProcessSpec spec;
+    spec.argv = {role()};
+    spec.stdout_path = run_dir / "log.txt";
+    return spec;
+  }
+
+  RunRecord interpret(const SceneInput& /*scene*/, const ProcessResult& result,
+                      const ProcessSpec& spec, const fs::path& run_dir) const override {
+    RunRecord run = record_process(result, spec);
+    run.image = run_dir / "image.png";
+    if (run.ok) run.seconds = run.wall_seconds;
+    return run;
+  }
+};
+
+// Stops (as a round budget would) once `rounds` rounds are complete.
+StopRule stop_after(std::size_t rounds) {
+  return [rounds](const std::vector<Round>& done, double /*seconds*/) {
+    return done.size() >= rounds ? StopDecision::stop_budget_rounds
+                                 : StopDecision::continue_measuring;
+  };
+}
+
+class SchedulerTest : public ::testing::Test {
+ protected:
+  SceneRuns measure(const std::vector<const Contender*>& contenders, const StopRule& stop,
+                    const RoundObserver& observer = {}) {
+    return measure_scene(scene_, contenders, options_, stop, executor_, clock_,
+                         dir_.path() / "scene", observer);
+  }
+  SceneRuns measure_pair(const StopRule& stop) { return measure({&baseline_, &tracer_}, stop); }
+
+  TempDir dir_;
+  FakeClock clock_;
+  FakeExecutor executor_{clock_};
+  ScheduleOptions options_;
+  SceneInput scene_{SuiteScene{"balls", "balls", 1, 32, 32}, "balls.nff", {}};
+  FakeContender baseline_{"baseline"};
+  FakeContender tracer_{"tracer"};
+  FakeContender base_{"base"};
+  FakeContender head_{"head"};
+};
+
+using Roles = std::vector<std::string>;
+
+// --- order -------------------------------------------------------------------------------------
+
+TEST_F(SchedulerTest, WarmupsRunFirstAndAreNotCountedAsRounds) {
+  options_.warmup_runs = 2;
+  const SceneRuns runs = measure_pair(stop_after(1));
+  EXPECT_EQ(executor_.roles(), (Roles{"baseline", "tracer", "baseline", "tracer",  // warm-ups
+                                      "baseline", "tracer"}));
+  EXPECT_EQ(runs.warmup.at("baseline").size(), 2u);
+  EXPECT_EQ(runs.warmup.at("tracer").size(), 2u);
+  ASSERT_EQ(runs.rounds.size(), 1u);
+  EXPECT_NE(runs.warmup.at("tracer")[1].log.string().find("warmup-2"), std::string::npos);
+}
+
+TEST_F(SchedulerTest, NoWarmupWhenAskedForNone) {
+  options_.warmup_runs = 0;
+  const SceneRuns runs = measure_pair(stop_after(1));
+  EXPECT_TRUE(runs.warmup.empty());
+  EXPECT_EQ(executor_.roles(), (Roles{"baseline", "tracer"}));
+}
+
+TEST_F(SchedulerTest, OrderAlternatesFromRoundToRound) {
+  options_.warmup_runs = 0;
+  const SceneRuns runs = measure_pair(stop_after(4));
+  ASSERT_EQ(runs.rounds.size(), 4u);
+  EXPECT_EQ(runs.rounds[0].order, (Roles{"baseline", "tracer"}));
+  EXPECT_EQ(runs.rounds[1].order, (Roles{"tracer", "baseline"}));
+  EXPECT_EQ(runs.rounds[2].order, (Roles{"baseline", "tracer"}));
+  EXPECT_EQ(runs.rounds[3].order, (Roles{"tracer", "baseline"}));
+  // The order recorded is the order the processes really ran in.
+  EXPECT_EQ(executor_.roles(), (Roles{"baseline", "tracer", "tracer", "baseline", "baseline",
+                                      "tracer", "tracer", "baseline"}));
+}
+
+TEST_F(SchedulerTest, OrderRotatesWithThreeContenders) {
+  options_.warmup_runs = 1;
+  const SceneRuns runs = measure({&baseline_, &base_, &head_}, stop_after(4));
+  ASSERT_EQ(runs.rounds.size(), 4u);
+  EXPECT_EQ(runs.rounds[0].order, (Roles{"baseline", "base", "head"}));
+  EXPECT_EQ(runs.rounds[1].order, (Roles{"base", "head", "baseline"}));
+  EXPECT_EQ(runs.rounds[2].order, (Roles{"head", "baseline", "base"}));
+  EXPECT_EQ(runs.rounds[3].order, (Roles{"baseline", "base", "head"}));
+  EXPECT_EQ(runs.warmup.size(), 3u);
+}
+
+TEST_F(SchedulerTest, EveryRoundHoldsEveryContendersRun) {
+  executor_.set_seconds("baseline", {2.0});
+  executor_.set_seconds("tracer", {0.5});
+  const SceneRuns runs = measure_pair(stop_after(3));
+  for (const Round& round : runs.rounds) {
+    ASSERT_EQ(round.runs.size(), 2u);
+    EXPECT_DOUBLE_EQ(round.runs.at("baseline").seconds, 2.0);
+    EXPECT_DOUBLE_EQ(round.runs.at("tracer").seconds, 0.5);
+  }
+}
+
+TEST_F(SchedulerTest, RunDirectoriesNameRoleAndRound) {
+  const SceneRuns runs = measure_pair(stop_after(2));
+  const fs::path scene_dir = dir_.path() / "scene";
+  EXPECT_EQ(runs.warmup.at("tracer")[0].log, scene_dir / "tracer" / "warmup-1" / "log.txt");
+  EXPECT_EQ(runs.rounds[1].runs.at("baseline").log,
+            scene_dir / "baseline" / "round-002" / "log.txt");
+  EXPECT_TRUE(fs::is_directory(scene_dir / "tracer" / "round-002"));
+}
+
+TEST_F(SchedulerTest, PinCpusApplyToEveryRunOfTheAlternateSchedule) {
+  options_.pin_cpus = {3};
+  measure_pair(stop_after(2));
+  for (const Call& call : executor_.calls()) EXPECT_EQ(call.cpus, std::vector<int>{3}) << call.role;
+}
+
+// --- stopping ----------------------------------------------------------------------------------
+
+TEST_F(SchedulerTest, StopRuleSeesCompleteRoundsAndTheSecondsSpent) {
+  executor_.set_seconds("baseline", {2.0});
+  executor_.set_seconds("tracer", {1.0});
+  std::vector<std::pair<std::size_t, double>> seen;
+  const StopRule rule = [&](const std::vector<Round>& rounds, double seconds) {
+    seen.emplace_back(rounds.size(), seconds);
+    return rounds.size() == 3 ? StopDecision::stop_budget_time : StopDecision::continue_measuring;
+  };
+  const SceneRuns runs = measure_pair(rule);
+  // One warm-up each (3 s), then 3 s per round: the warm-ups count against the time budget.
+  const std::vector<std::pair<std::size_t, double>> expected{{1, 6.0}, {2, 9.0}, {3, 12.0}};
+  EXPECT_EQ(seen, expected);
+  EXPECT_EQ(runs.stop_reason, "stop_budget_time");
+  EXPECT_DOUBLE_EQ(runs.seconds_spent, 12.0);
+  EXPECT_FALSE(runs.failed());
+}
+
+TEST_F(SchedulerTest, ObserverSeesEveryRoundBeforeTheStopRule) {
+  std::vector<std::size_t> observed;
+  const RoundObserver observer = [&](const std::vector<Round>& rounds, double /*seconds*/) {
+    observed.push_back(rounds.size());
+  };
+  measure({&baseline_, &tracer_}, stop_after(3), observer);
+  EXPECT_EQ(observed, (std::vector<std::size_t>{1, 2, 3}));
+}
+
+TEST_F(SchedulerTest, RatioStopRuleConvergesAtMinRoundsOnConstantTimes) {
+  executor_.set_seconds("baseline", {2.0});
+  executor_.set_seconds("tracer", {1.0});
+  StoppingPolicy policy;
+  policy.min_rounds = 4;
+  const SceneRuns runs = measure_pair(ratio_stop_rule(policy, "tracer"));
+  EXPECT_EQ(runs.rounds.size(), 4u);
+  EXPECT_EQ(runs.stop_reason, "stop_converged");
+}
+
+TEST_F(SchedulerTest, RatioStopRuleStopsAtTheRoundBudgetOnNoisyTimes) {
+  executor_.set_seconds("baseline", {1.0, 1.3, 0.8, 1.1, 0.9});
+  executor_.set_seconds("tracer", {0.5, 0.9, 0.6, 0.4, 0.7, 0.8});
+  StoppingPolicy policy;
+  policy.min_rounds = 3;
+  policy.max_rounds = 7;
+  const SceneRuns runs = measure_pair(ratio_stop_rule(policy, "tracer"));
+  EXPECT_EQ(runs.rounds.size(), 7u);
+  EXPECT_EQ(runs.stop_reason, "stop_budget_rounds");
+}
+
+TEST_F(SchedulerTest, RatioStopRuleNeverCallsASingleRoundConverged) {
+  StoppingPolicy policy;
+  policy.min_rounds = 1;  // what --max-rounds 1 leaves
+  policy.max_rounds = 1;
+  const SceneRuns runs = measure_pair(ratio_stop_rule(policy, "tracer"));
+  EXPECT_EQ(runs.rounds.size(), 1u);
+  EXPECT_EQ(runs.stop_reason, "stop_budget_rounds");
+}
+
+TEST_F(SchedulerTest, RatioStopRuleStopsAtTheTimeBudget) {
+  executor_.set_seconds("baseline", {1.0, 1.3, 0.8, 1.1, 0.9});
+  executor_.set_seconds("tracer", {0.5, 0.9, 0.6, 0.4, 0.7, 0.8});
+  StoppingPolicy policy;
+  policy.max_seconds = 10.0;  // warm-ups ~1.5 s, rounds ~1.7 s each
+  const SceneRuns runs = measure_pair(ratio_stop_rule(policy, "tracer"));
+  EXPECT_EQ(runs.stop_reason, "stop_budget_time");
+  EXPECT_GE(runs.seconds_spent, 10.0);
+  EXPECT_LT(runs.seconds_spent - 10.0, 2.5);  // stopped in the round that crossed the budget
+}
+
+TEST(RoundSamples, PairTheTracerWithTheBaselineOfTheSameRound) {
+  std::vector<Round> rounds(2);
+  rounds[0].runs["baseline"].seconds = 2.0;
+  rounds[0].runs["tracer"].seconds = 1.0;
+  rounds[1].runs["baseline"].seconds = 4.0;
+  rounds[1].runs["tracer"].seconds = 3.0;
+  const std::vector<RoundSample> samples = round_samples(rounds, "tracer");
+  ASSERT_EQ(samples.size(), 2u);
+  EXPECT_DOUBLE_EQ(samples[1].tracer_seconds, 3.0);
+  EXPECT_DOUBLE_EQ(samples[1].baseline_seconds, 4.0);
+}
+
+// --- failures ----------------------------------------------------------------------------------
+
+TEST_F(SchedulerTest, CrashStopsTheSceneAndKeepsTheRoundsBefore) {
+  executor_.script("tracer", 4, killed_by(SIGSEGV));  // warm-up, rounds 1-2, then round 3
+  const SceneRuns runs = measure_pair(stop_after(10));
+  ASSERT_TRUE(runs.failed());
+  EXPECT_EQ(runs.failed_role, "tracer");
+  EXPECT_EQ(runs.stop_reason, "failed");
+  EXPECT_EQ(runs.rounds.size(), 2u);  // the incomplete third round is not kept
+  EXPECT_FALSE(runs.failed_run->ok);
+  EXPECT_NE(runs.failed_run->outcome.find("signal 11"), std::string::npos)
+      << runs.failed_run->outcome;
+  EXPECT_NE(runs.failed_run->failure.find("tracer killed by signal"), std::string::npos)
+      << runs.failed_run->failure;
+  EXPECT_EQ(runs.failed_run->log, dir_.path() / "scene" / "tracer" / "round-003" / "log.txt");
+  // Round 3 ran the baseline, then the tracer crashed, and nothing ran after it.
+  EXPECT_EQ(executor_.calls().size(), 2u + 4u + 2u);
+  EXPECT_EQ(executor_.calls().back().role, "tracer");
+}
+
+TEST_F(SchedulerTest, NonZeroExitIsAFailureOfThatRole) {
+  executor_.script("baseline", 3, exited_with(2, 0.1));
+  const SceneRuns runs = measure_pair(stop_after(10));
+  ASSERT_TRUE(runs.failed());
+  EXPECT_EQ(runs.failed_role, "baseline");
+  EXPECT_EQ(runs.failed_run->outcome, "exited with status 2");
+  EXPECT_EQ(runs.rounds.size(), 1u);
+  EXPECT_GT(runs.seconds_spent, 0.0);
+}
+
+TEST_F(SchedulerTest, FailureInWarmupLeavesNoRounds) {
+  executor_.script("tracer", 1, killed_by(SIGABRT));
+  const SceneRuns runs = measure_pair(stop_after(10));
+  ASSERT_TRUE(runs.failed());
+  EXPECT_EQ(runs.failed_role, "tracer");
+  EXPECT_TRUE(runs.rounds.empty());
+  ASSERT_EQ(runs.warmup.at("tracer").size(), 1u);
+  EXPECT_FALSE(runs.warmup.at("tracer")[0].ok);
+  EXPECT_EQ(executor_.roles(), (Roles{"baseline", "tracer"}));
+  EXPECT_EQ(runs.first_run("tracer"), nullptr);
+}
+
+TEST_F(SchedulerTest, StopRuleIsNotAskedAfterAFailure) {
+  executor_.script("tracer", 2, killed_by(SIGKILL));
+  int asked = 0;
+  const SceneRuns runs = measure_pair([&](const std::vector<Round>&, double) {
+    ++asked;
+    return StopDecision::continue_measuring;
+  });
+  EXPECT_TRUE(runs.failed());
+  EXPECT_EQ(asked, 0);
+}
+
+TEST_F(SchedulerTest, SuccessInNoMeasurableTimeIsAFailureOfThatSceneOnly) {
+  executor_.script("tracer", 3, exited_with(0, 0.0));  // round 2
+  StoppingPolicy policy;
+  policy.min_rounds = 2;
+  SceneRuns runs;
+  EXPECT_NO_THROW(runs = measure_pair(ratio_stop_rule(policy, "tracer")));
+  ASSERT_TRUE(runs.failed());
+  EXPECT_EQ(runs.failed_role, "tracer");
+  EXPECT_EQ(runs.failed_run->failure, "tracer run took 0 s by its timing metric; a ratio needs a "
+                                      "positive time");
+  EXPECT_EQ(runs.rounds.size(), 1u);
+}
+
+// --- duet --------------------------------------------------------------------------------------
+
+class DuetTest : public SchedulerTest {
+ protected:
+  void SetUp() override {
+    options_.kind = ScheduleKind::duet;
+    options_.warmup_runs = 0;
+    options_.duet_cpus = {2, 5};
+  }
+};
+
+TEST_F(DuetTest, ContendersOfARoundStartTogether) {
+  measure_pair(stop_after(3));
+  const std::vector<Call>& calls = executor_.calls();
+  ASSERT_EQ(calls.size(), 6u);
+  for (std::size_t i = 0; i < calls.size(); i += 2) {
+    EXPECT_EQ(calls[i].batch, calls[i + 1].batch) << "round " << i / 2 + 1;
+    EXPECT_NE(calls[i].role, calls[i + 1].role);
+  }
+  EXPECT_NE(calls[0].batch, calls[2].batch);
+}
+
+TEST_F(DuetTest, EachContenderIsPinnedToItsOwnCpuAndTheCpusSwapEachRound) {
+  const SceneRuns runs = measure_pair(stop_after(3));
+  std::map<std::string, std::vector<std::vector<int>>> cpus;  // role -> per round
+  for (const Call& call : executor_.calls()) cpus[call.role].push_back(call.cpus);
+  using Cpus = std::vector<std::vector<int>>;
+  EXPECT_EQ(cpus["baseline"], (Cpus{{2}, {5}, {2}}));
+  EXPECT_EQ(cpus["tracer"], (Cpus{{5}, {2}, {5}}));
+  // The order names who had the first duet CPU, then the second.
+  EXPECT_EQ(runs.rounds[0].order, (Roles{"baseline", "tracer"}));
+  EXPECT_EQ(runs.rounds[1].order, (Roles{"tracer", "baseline"}));
+}
+
+TEST_F(DuetTest, ElapsedTimeIsTheLongerRunOfEachRound) {
+  executor_.set_seconds("baseline", {2.0});
+  executor_.set_seconds("tracer", {3.0});
+  const SceneRuns runs = measure_pair(stop_after(2));
+  EXPECT_DOUBLE_EQ(runs.seconds_spent, 6.0);
+  EXPECT_DOUBLE_EQ(runs.rounds[0].runs.at("tracer").seconds, 3.0);
+}
+
+TEST_F(DuetTest, WarmupsRunOneAtATimeBeforeTheDuets) {
+  options_.warmup_runs = 1;
+  const SceneRuns runs = measure_pair(stop_after(1));
+  const std::vector<Call>& calls = executor_.calls();
+  ASSERT_EQ(calls.size(), 4u);
+  EXPECT_NE(calls[0].batch, calls[1].batch);
+  EXPECT_EQ(calls[2].batch, calls[3].batch);
+  EXPECT_EQ(runs.rounds.size(), 1u);
+}
+
+TEST_F(DuetTest, FailureOfEitherStopsTheSceneAndKeepsEarlierRounds) {
+  executor_.script("tracer", 2, exited_with(1, 0.2));
+  const SceneRuns runs = measure_pair(stop_after(5));
+  ASSERT_TRUE(runs.failed());
+  EXPECT_EQ(runs.failed_role, "tracer");
+  EXPECT_EQ(runs.rounds.size(), 1u);
+}
+
+TEST_F(DuetTest, SuccessInNoMeasurableTimeFailsInADuetToo) {
+  executor_.script("baseline", 2, exited_with(0, 0.0));
+  const SceneRuns runs = measure_pair(stop_after(3));
+  ASSERT_TRUE(runs.failed());
+  EXPECT_EQ(runs.failed_role, "baseline");
+  EXPECT_EQ(runs.rounds.size(), 1u);
+  EXPECT_EQ(executor_.calls()[2].batch, executor_.calls()[3].batch);  // it was a duet round
+}
+
+TEST_F(DuetTest, ThreeContendersAreAUsageError) {
+  EXPECT_THROW(measure({&baseline_, &base_, &head_}, stop_after(1)), UsageError);
+  EXPECT_TRUE(executor_.calls().empty());
+}
+
+TEST_F(DuetTest, TheSameCpuTwiceIsAUsageError) {
+  options_.duet_cpus = {1, 1};
+  EXPECT_THROW(measure_pair(stop_after(1)), UsageError);
+}
+
+// --- first_run ---------------------------------------------------------------------------------
+
+TEST_F(SchedulerTest, FirstRunIsTheWarmupWhoseImageIsChecked) {
+  const SceneRuns runs = measure_pair(stop_after(2));
+  const RunRecord* first = runs.first_run("tracer");
+  ASSERT_NE(first, nullptr);
+  EXPECT_EQ(first->image, dir_.path() / "scene" / "tracer" / "warmup-1" / "image.png");
+}
+
+TEST_F(SchedulerTest, FirstRunWithoutWarmupIsTheFirstRound) {
+  options_.warmup_runs = 0;
+  const SceneRuns runs = measure_pair(stop_after(2));
+  const RunRecord* first = runs.first_run("tracer");
+  ASSERT_NE(first, nullptr);
+  EXPECT_EQ(first->image, dir_.path() / "scene" / "tracer" / "round-001" / "image.png");
+  EXPECT_EQ(runs.first_run("head"), nullptr);
+}
+
+}  // namespace
+}  // namespace raygate

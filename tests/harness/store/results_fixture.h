@@ -1,0 +1,45 @@
+// Hand-made results documents for the store and history tests: a few commits, scenes with a
+// chosen ratio, baseline seconds and image error, on a chosen machine. Every document also has
+// a round of runs, so the JSON round trip covers the nested records.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "store/results.h"
+
+namespace raygate::test {
+
+struct SceneSpec {
+  std::string id;
+  double ratio = 1.0;
+  double half_width = 0.01;  // relative half-width of the ratio's CI
+  double baseline_seconds = 1.0;
+  double max_error = 0.0;
+  std::string verdict = "pass";
+  std::string status = "measured";
+};
+
+struct DocumentSpec {
+  std::string sha;  // 40 hex digits (fake_sha)
+  std::string subject = "a commit";
+  std::string commit_time = "2026-01-01T12:00:00+00:00";
+  std::string ref_name = "refs/heads/main";
+  std::string started_at = "2026-01-02T00:00:00Z";
+  std::string hostname = "ci-runner-1";
+  std::string cpu_model = "Test CPU 3000";
+  std::string baseline_sha256 = std::string(64, 'b');
+  std::string kind = "run";
+  std::string shard;                         // "K/N"
+  std::vector<std::string> roles{"tracer"};  // compare: {"base", "head"}
+  bool dirty = false;
+  bool complete = true;
+  std::vector<SceneSpec> scenes;
+};
+
+// A sha that looks real and differs per `seed`.
+std::string fake_sha(int seed);
+
+ResultsDocument make_document(const DocumentSpec& spec);
+
+}  // namespace raygate::test

@@ -1,0 +1,411 @@
+// The results document's JSON form: a full document (rounds, a failure, image checks with an
+// infinite PSNR, ratios, a change, scores) survives to_json -> results_from_json field by field;
+// newer or broken documents are UsageErrors naming the file; write_results replaces atomically.
+#include <gtest/gtest.h>
+
+#include <limits>
+
+#include "core/error.h"
+#include "core/fs.h"
+#include "store/results.h"
+
+namespace raygate {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+RunRecord make_run(double seconds, const std::string& dir) {
+  RunRecord run;
+  run.ok = true;
+  run.outcome = "exited with status 0";
+  run.seconds = seconds;
+  run.wall_seconds = seconds + 0.25;
+  run.user_seconds = seconds * 0.75;
+  run.system_seconds = 0.125;
+  run.max_rss_kib = 123456;
+  run.image = dir + "/image.png";
+  run.log = dir + "/log.txt";
+  return run;
+}
+
+RatioSummary make_ratio(double ratio) {
+  RatioSummary r;
+  r.rounds = 3;
+  r.ratio = ratio;
+  r.ratio_interval = {ratio * 0.97, ratio * 1.04};
+  r.relative_half_width = 0.035;
+  r.log_ratio_median = std::log(ratio);
+  r.log_ratio_mad_scaled = 0.0125;
+  r.tracer_median_seconds = 0.75;
+  r.baseline_median_seconds = 1.5;
+  return r;
+}
+
+ImageMetrics make_metrics(bool identical) {
+  ImageMetrics m;
+  m.width = m.expected_width = 64;
+  m.height = m.expected_height = 48;
+  if (identical) {
+    m.psnr_db = std::numeric_limits<double>::infinity();
+    return m;
+  }
+  m.mean_error = 0.002;
+  m.rms_error = 0.01;
+  m.psnr_db = 41.5;
+  m.max_error = 0.25;
+  m.max_x = 12;
+  m.max_y = 40;
+  m.max_channel = 1;
+  m.max_actual_value = 0.75;
+  m.max_expected_value = 0.5;
+  m.pixels_over_warn = 9;
+  m.pixels_over_fail = 7;
+  m.percent_over_fail = 0.228;
+  m.mean_luminance_actual = 0.4;
+  m.mean_luminance_expected = 0.375;
+  m.nonfinite_values = 2;
+  return m;
+}
+
+// A measured scene with a warm-up, two rounds and a golden check that passed identically.
+SceneResult measured_scene() {
+  SceneResult s;
+  s.entry = SuiteScene{"balls", "balls", 2, 64, 48};
+  s.scene_sha256 = std::string(64, 'a');
+  s.status = "measured";
+  s.runs.warmup["baseline"] = {make_run(1.5, "/w/b/warmup-1")};
+  s.runs.warmup["tracer"] = {make_run(0.75, "/w/t/warmup-1")};
+  for (int i = 0; i < 2; ++i) {
+    Round round;
+    round.order = i == 0 ? std::vector<std::string>{"baseline", "tracer"}
+                         : std::vector<std::string>{"tracer", "baseline"};
+    round.runs["baseline"] = make_run(1.5 + i, "/w/b/round-00" + std::to_string(i + 1));
+    round.runs["tracer"] = make_run(0.75 + i, "/w/t/round-00" + std::to_string(i + 1));
+    s.runs.rounds.push_back(round);
+  }
+  s.runs.rounds[1].runs["tracer"].reported_seconds = 1.625;
+  s.runs.stop_reason = "stop_converged";
+  s.runs.seconds_spent = 9.5;
+  s.ratios["tracer"] = make_ratio(0.5);
+  s.images.push_back(ImageCheck{"tracer", "golden", "/w/t/warmup-1/image.png", "/g/balls.png",
+                                "pass", "", make_metrics(true), {}});
+  return s;
+}
+
+// A scene that failed in round 2, kept its first round, and whose image failed with evidence.
+SceneResult failed_scene() {
+  SceneResult s = measured_scene();
+  s.entry.id = "tetra-small";
+  s.entry.scene = "tetra";
+  s.status = "failed";
+  s.runs.rounds.resize(1);
+  s.runs.stop_reason = "failed";
+  s.runs.failed_role = "tracer";
+  RunRecord crash = make_run(0.0, "/w/t/round-002");
+  crash.ok = false;
+  crash.outcome = "killed by signal 6 (ABRT)";
+  crash.failure = "/b/tracer killed by signal 6 (ABRT)";
+  s.runs.failed_run = crash;
+  s.images[0].verdict = "fail";
+  s.images[0].metrics = make_metrics(false);
+  s.images[0].evidence = {"/e/tetra.actual.png", "/e/tetra.expected.png", "/e/tetra.diff.png"};
+  s.images.push_back(ImageCheck{"head", "base", "/h.png", "/b.png", "error",
+                                "cannot read /h.png", std::nullopt, {}});
+  return s;
+}
+
+// A compare scene: three roles and the change of head against base.
+SceneResult compared_scene() {
+  SceneResult s = measured_scene();
+  s.entry.id = "gears";
+  ChangeSummary c;
+  c.rounds = 2;
+  c.change = 0.0625;
+  c.change_interval = {0.03125, 0.09375};
+  c.log_change_median = 0.06;
+  c.log_change_mad_scaled = 0.01;
+  c.base = make_ratio(0.5);
+  c.head = make_ratio(0.53125);
+  c.mann_whitney = {3.0, 1.5, 0.125};
+  s.change = c;
+  s.change_verdict = "regressed";
+  return s;
+}
+
+BuildRecord make_build() {
+  BuildRecord b;
+  b.sha = std::string(40, 'c');
+  b.adapter_name = "make-nff";
+  b.adapter_hash = std::string(64, 'd');
+  b.compiler = "g++ (Debian 12.2.0-14) 12.2.0";
+  b.key = "ccccccc-ddddddd-eeee";
+  b.build_dir = "/cache/builds/x";
+  b.src_dir = "/cache/worktrees/y";
+  b.steps.push_back({{"make", "-C", "/src"}, "exited with status 0", true, 1.5, 1.25, "/l/1.log"});
+  b.total_seconds = 1.5;
+  b.success = true;
+  return b;
+}
+
+ResultsDocument full_document() {
+  ResultsDocument d;
+  d.kind = "run";
+  d.raygate_version = "0.1.0";
+  d.started_at = "2024-01-02T03:04:05Z";
+  d.finished_at = "2024-01-02T03:14:05Z";
+  d.complete = true;
+  d.machine = {{"cpu_model", "Test CPU"}, {"cores", 2}, {"load", {0.5, 0.25, 0.125}}};
+  d.baseline = {"raygate-baseline 0.1.0", std::string(64, 'b'), "none", "center", "in-process"};
+  d.suite = "ci";
+  d.shard = "1/2";
+  d.settings = {{"schedule", "alternate"}, {"min_rounds", 3}, {"pin_cpus", json::array()}};
+  RevisionRecord r;
+  r.role = "tracer";
+  r.repository = "/repos/tracer";
+  r.worktree = {"/cache/worktrees/y", "v1", "refs/tags/v1", std::string(40, 'c'), "ccccccc",
+                "first", "Ada Tester", "2023-11-14T22:14:20+00:00", false};
+  r.adapter_name = "make-nff";
+  r.adapter_hash = std::string(64, 'd');
+  r.adapter_file = "/adapters/make-nff.json";
+  r.build = make_build();
+  d.revisions.push_back(r);
+  d.scenes = {measured_scene(), failed_scene(), compared_scene()};
+  d.scores["tracer"] = SuiteScore{2, 0.5, {0.48, 0.52}};
+  return d;
+}
+
+// --- field-by-field comparison -----------------------------------------------------------------
+
+void expect_same(const Interval& a, const Interval& b) {
+  EXPECT_DOUBLE_EQ(a.lower, b.lower);
+  EXPECT_DOUBLE_EQ(a.upper, b.upper);
+}
+
+void expect_same(const RatioSummary& a, const RatioSummary& b) {
+  EXPECT_EQ(a.rounds, b.rounds);
+  EXPECT_DOUBLE_EQ(a.ratio, b.ratio);
+  expect_same(a.ratio_interval, b.ratio_interval);
+  EXPECT_DOUBLE_EQ(a.relative_half_width, b.relative_half_width);
+  EXPECT_DOUBLE_EQ(a.log_ratio_median, b.log_ratio_median);
+  EXPECT_DOUBLE_EQ(a.log_ratio_mad_scaled, b.log_ratio_mad_scaled);
+  EXPECT_DOUBLE_EQ(a.tracer_median_seconds, b.tracer_median_seconds);
+  EXPECT_DOUBLE_EQ(a.baseline_median_seconds, b.baseline_median_seconds);
+}
+
+void expect_same(const ImageMetrics& a, const ImageMetrics& b) {
+  EXPECT_EQ(a.size_mismatch, b.size_mismatch);
+  EXPECT_EQ(a.width, b.width);
+  EXPECT_EQ(a.height, b.height);
+  EXPECT_EQ(a.expected_width, b.expected_width);
+  EXPECT_EQ(a.expected_height, b.expected_height);
+  EXPECT_DOUBLE_EQ(a.mean_error, b.mean_error);
+  EXPECT_DOUBLE_EQ(a.rms_error, b.rms_error);
+  EXPECT_EQ(a.psnr_db, b.psnr_db);  // also infinity == infinity
+  EXPECT_DOUBLE_EQ(a.max_error, b.max_error);
+  EXPECT_EQ(a.max_x, b.max_x);
+  EXPECT_EQ(a.max_y, b.max_y);
+  EXPECT_EQ(a.max_channel, b.max_channel);
+  EXPECT_DOUBLE_EQ(a.max_actual_value, b.max_actual_value);
+  EXPECT_DOUBLE_EQ(a.max_expected_value, b.max_expected_value);
+  EXPECT_EQ(a.pixels_over_warn, b.pixels_over_warn);
+  EXPECT_EQ(a.pixels_over_fail, b.pixels_over_fail);
+  EXPECT_DOUBLE_EQ(a.percent_over_fail, b.percent_over_fail);
+  EXPECT_DOUBLE_EQ(a.mean_luminance_actual, b.mean_luminance_actual);
+  EXPECT_DOUBLE_EQ(a.mean_luminance_expected, b.mean_luminance_expected);
+  EXPECT_EQ(a.nonfinite_values, b.nonfinite_values);
+}
+
+void expect_same(const ImageCheck& a, const ImageCheck& b) {
+  EXPECT_EQ(a.role, b.role);
+  EXPECT_EQ(a.reference, b.reference);
+  EXPECT_EQ(a.actual, b.actual);
+  EXPECT_EQ(a.expected, b.expected);
+  EXPECT_EQ(a.verdict, b.verdict);
+  EXPECT_EQ(a.error, b.error);
+  EXPECT_EQ(a.evidence, b.evidence);
+  ASSERT_EQ(a.metrics.has_value(), b.metrics.has_value());
+  if (a.metrics) expect_same(*a.metrics, *b.metrics);
+}
+
+void expect_same(const ChangeSummary& a, const ChangeSummary& b) {
+  EXPECT_EQ(a.rounds, b.rounds);
+  EXPECT_DOUBLE_EQ(a.change, b.change);
+  expect_same(a.change_interval, b.change_interval);
+  EXPECT_DOUBLE_EQ(a.log_change_median, b.log_change_median);
+  EXPECT_DOUBLE_EQ(a.log_change_mad_scaled, b.log_change_mad_scaled);
+  expect_same(a.base, b.base);
+  expect_same(a.head, b.head);
+  EXPECT_DOUBLE_EQ(a.mann_whitney.u, b.mann_whitney.u);
+  EXPECT_DOUBLE_EQ(a.mann_whitney.z, b.mann_whitney.z);
+  EXPECT_DOUBLE_EQ(a.mann_whitney.p_value, b.mann_whitney.p_value);
+}
+
+void expect_same(const SceneRuns& a, const SceneRuns& b) {
+  EXPECT_EQ(a.warmup, b.warmup);
+  ASSERT_EQ(a.rounds.size(), b.rounds.size());
+  for (std::size_t i = 0; i < a.rounds.size(); ++i) {
+    EXPECT_EQ(a.rounds[i].order, b.rounds[i].order);
+    EXPECT_EQ(a.rounds[i].runs, b.rounds[i].runs);
+  }
+  EXPECT_EQ(a.stop_reason, b.stop_reason);
+  EXPECT_DOUBLE_EQ(a.seconds_spent, b.seconds_spent);
+  EXPECT_EQ(a.failed_role, b.failed_role);
+  EXPECT_EQ(a.failed_run, b.failed_run);
+}
+
+void expect_same(const SceneResult& a, const SceneResult& b) {
+  SCOPED_TRACE("scene " + a.entry.id);
+  EXPECT_EQ(a.entry.id, b.entry.id);
+  EXPECT_EQ(a.entry.scene, b.entry.scene);
+  EXPECT_EQ(a.entry.size, b.entry.size);
+  EXPECT_EQ(a.entry.width, b.entry.width);
+  EXPECT_EQ(a.entry.height, b.entry.height);
+  EXPECT_EQ(a.scene_sha256, b.scene_sha256);
+  EXPECT_EQ(a.status, b.status);
+  expect_same(a.runs, b.runs);
+  ASSERT_EQ(a.ratios.size(), b.ratios.size());
+  for (const auto& [role, ratio] : a.ratios) expect_same(ratio, b.ratios.at(role));
+  ASSERT_EQ(a.change.has_value(), b.change.has_value());
+  if (a.change) expect_same(*a.change, *b.change);
+  EXPECT_EQ(a.change_verdict, b.change_verdict);
+  ASSERT_EQ(a.images.size(), b.images.size());
+  for (std::size_t i = 0; i < a.images.size(); ++i) expect_same(a.images[i], b.images[i]);
+}
+
+void expect_same(const RevisionRecord& a, const RevisionRecord& b) {
+  EXPECT_EQ(a.role, b.role);
+  EXPECT_EQ(a.repository, b.repository);
+  EXPECT_EQ(a.worktree, b.worktree);
+  EXPECT_EQ(a.adapter_name, b.adapter_name);
+  EXPECT_EQ(a.adapter_hash, b.adapter_hash);
+  EXPECT_EQ(a.adapter_file, b.adapter_file);
+  EXPECT_EQ(a.build, b.build);
+}
+
+void expect_same(const ResultsDocument& a, const ResultsDocument& b) {
+  EXPECT_EQ(a.schema_version, b.schema_version);
+  EXPECT_EQ(a.kind, b.kind);
+  EXPECT_EQ(a.raygate_version, b.raygate_version);
+  EXPECT_EQ(a.started_at, b.started_at);
+  EXPECT_EQ(a.finished_at, b.finished_at);
+  EXPECT_EQ(a.complete, b.complete);
+  EXPECT_EQ(a.machine, b.machine);
+  EXPECT_EQ(a.baseline.version, b.baseline.version);
+  EXPECT_EQ(a.baseline.source_sha256, b.baseline.source_sha256);
+  EXPECT_EQ(a.baseline.accel, b.baseline.accel);
+  EXPECT_EQ(a.baseline.sampling, b.baseline.sampling);
+  EXPECT_EQ(a.baseline.timing, b.baseline.timing);
+  EXPECT_EQ(a.suite, b.suite);
+  EXPECT_EQ(a.shard, b.shard);
+  EXPECT_EQ(a.settings, b.settings);
+  ASSERT_EQ(a.revisions.size(), b.revisions.size());
+  for (std::size_t i = 0; i < a.revisions.size(); ++i) expect_same(a.revisions[i], b.revisions[i]);
+  ASSERT_EQ(a.scenes.size(), b.scenes.size());
+  for (std::size_t i = 0; i < a.scenes.size(); ++i) expect_same(a.scenes[i], b.scenes[i]);
+  ASSERT_EQ(a.scores.size(), b.scores.size());
+  for (const auto& [role, score] : a.scores) {
+    EXPECT_EQ(score.scenes, b.scores.at(role).scenes);
+    EXPECT_DOUBLE_EQ(score.score, b.scores.at(role).score);
+    expect_same(score.interval, b.scores.at(role).interval);
+  }
+}
+
+std::string usage_error(const json& document) {
+  try {
+    results_from_json(document, "shard-7.json");
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+// --- tests -------------------------------------------------------------------------------------
+
+TEST(ResultsJson, FullDocumentSurvivesTheRoundTrip) {
+  const ResultsDocument original = full_document();
+  expect_same(original, results_from_json(to_json(original), "memory"));
+}
+
+TEST(ResultsJson, RoundTripThroughTextIsExact) {
+  const ResultsDocument original = full_document();
+  const std::string text = to_json(original).dump(1);
+  const ResultsDocument back = results_from_json(json::parse(text), "memory");
+  expect_same(original, back);
+  EXPECT_EQ(to_json(back).dump(1), text);
+}
+
+TEST(ResultsJson, InfinitePsnrIsWrittenAsNullAndReadBackAsInfinity) {
+  const json j = to_json(full_document());
+  const json& metrics = j["scenes"][0]["images"][0]["metrics"];
+  EXPECT_TRUE(metrics["psnr_db"].is_null());
+  EXPECT_TRUE(std::isinf(results_from_json(j, "memory").scenes[0].images[0].metrics->psnr_db));
+}
+
+TEST(ResultsJson, FailureIsStoredWithItsRoleAndRun) {
+  const json j = to_json(full_document());
+  const json& failure = j["scenes"][1]["failure"];
+  EXPECT_EQ(failure["role"], "tracer");
+  EXPECT_EQ(failure["run"]["outcome"], "killed by signal 6 (ABRT)");
+  EXPECT_EQ(failure["run"]["log"], "/w/t/round-002/log.txt");
+  EXPECT_TRUE(j["scenes"][0]["failure"].is_null());
+}
+
+TEST(ResultsJson, NewerSchemaVersionAsksForAnUpgrade) {
+  json j = to_json(full_document());
+  j["schema_version"] = kResultsSchemaVersion + 1;
+  const std::string message = usage_error(j);
+  EXPECT_NE(message.find("shard-7.json"), std::string::npos) << message;
+  EXPECT_NE(message.find("upgrade raygate"), std::string::npos) << message;
+}
+
+TEST(ResultsJson, MissingKeyIsAUsageErrorNamingTheFileAndKey) {
+  json j = to_json(full_document());
+  j["scenes"][1].erase("rounds");
+  const std::string message = usage_error(j);
+  EXPECT_NE(message.find("shard-7.json: not a raygate results document"), std::string::npos)
+      << message;
+  EXPECT_NE(message.find("'rounds'"), std::string::npos) << message;
+}
+
+TEST(ResultsJson, WrongTypesAndNonObjectsAreUsageErrors) {
+  json j = to_json(full_document());
+  j["complete"] = "yes";
+  EXPECT_NE(usage_error(j).find("shard-7.json"), std::string::npos);
+  EXPECT_NE(usage_error(json::array()).find("shard-7.json"), std::string::npos);
+  EXPECT_NE(usage_error(json{{"schema_version", "1"}}).find("shard-7.json"), std::string::npos);
+}
+
+TEST(ResultsJson, WriteResultsReplacesTheFileAtomically) {
+  TempDir dir;
+  const fs::path path = dir.path() / "out" / "results.json";
+  ResultsDocument first = full_document();
+  first.complete = false;
+  first.scenes.resize(1);
+  write_results(first, path);
+  EXPECT_EQ(read_results(path).scenes.size(), 1u);
+
+  const ResultsDocument second = full_document();
+  write_results(second, path);
+  EXPECT_EQ(read_file(path), to_json(second).dump(1) + "\n");
+  expect_same(second, read_results(path));
+  // Only the document is left in its folder: no temporary file beside it.
+  std::vector<fs::path> entries(fs::directory_iterator(path.parent_path()), {});
+  EXPECT_EQ(entries, std::vector<fs::path>{path});
+}
+
+TEST(ResultsJson, ReadResultsOfNonJsonNamesTheFile) {
+  TempDir dir;
+  const fs::path path = dir.path() / "results.json";
+  write_file_atomically(path, "{\"schema_version\": 1,");
+  try {
+    read_results(path);
+    FAIL() << "no error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find(path.string() + ": not JSON"), std::string::npos)
+        << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace raygate

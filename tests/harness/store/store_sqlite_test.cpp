@@ -1,0 +1,240 @@
+// The SQLite store: documents kept whole and once, the schema versioned and migrated, one
+// transaction per document (a failure halfway leaves nothing), and errors that say what failed.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+#include <sqlite3.h>
+
+#include "core/error.h"
+#include "core/fs.h"
+#include "results_fixture.h"
+#include "store/sqlite_schema.h"
+#include "store/sqlite_store.h"
+#include "store/store.h"
+
+namespace raygate::test {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::Not;
+
+DocumentSpec two_scenes(int seed) {
+  DocumentSpec spec;
+  spec.sha = fake_sha(seed);
+  spec.subject = "commit " + std::to_string(seed);
+  spec.scenes = {{"balls", 0.8}, {"gears", 1.2, 0.02, 2.0, 0.004, "warn"}};
+  return spec;
+}
+
+// A query with one field set (designated initializers warn under -Wextra on GCC 12).
+template <typename Set>
+DocumentQuery query(Set set) {
+  DocumentQuery q;
+  set(q);
+  return q;
+}
+
+// A raw connection for looking inside the file, or for sabotaging it.
+struct Raw {
+  explicit Raw(const std::filesystem::path& path) { sqlite3_open(path.c_str(), &db); }
+  ~Raw() { sqlite3_close(db); }
+  std::string text(const std::string& sql) const {
+    sqlite3_stmt* s = nullptr;
+    sqlite3_prepare_v2(db, sql.c_str(), -1, &s, nullptr);
+    std::string out;
+    if (sqlite3_step(s) == SQLITE_ROW && sqlite3_column_text(s, 0)) {
+      out = reinterpret_cast<const char*>(sqlite3_column_text(s, 0));
+    }
+    sqlite3_finalize(s);
+    return out;
+  }
+  int exec(const std::string& sql) const { return sqlite3_exec(db, sql.c_str(), 0, 0, 0); }
+  sqlite3* db = nullptr;
+};
+
+TEST(StoreSqlite, StoresTheWholeDocumentAndReadsItBack) {
+  TempDir dir;
+  const auto store = open_store((dir.path() / "results.db").string());
+  const ResultsDocument document = make_document(two_scenes(1));
+  const AddOutcome added = store->add(document, "main");
+  EXPECT_FALSE(added.duplicate);
+  const std::vector<StoredDocument> stored = store->documents({});
+  ASSERT_EQ(stored.size(), 1u);
+  EXPECT_EQ(stored[0].id, added.document_id);
+  EXPECT_EQ(stored[0].branch, "main");
+  EXPECT_EQ(stored[0].content_sha256.size(), 64u);
+  // Export reproduces what write_results writes, byte for byte.
+  EXPECT_EQ(stored[0].document.dump(1), to_json(document).dump(1));
+  EXPECT_EQ(to_json(results_from_json(stored[0].document, "stored")), to_json(document));
+}
+
+TEST(StoreSqlite, TheSameDocumentTwiceIsStoredOnce) {
+  TempDir dir;
+  const auto store = open_store((dir.path() / "results.db").string());
+  const ResultsDocument document = make_document(two_scenes(1));
+  const AddOutcome first = store->add(document, "main");
+  const AddOutcome again = store->add(document, "other-branch");
+  EXPECT_TRUE(again.duplicate);
+  EXPECT_EQ(again.document_id, first.document_id);
+  EXPECT_FALSE(store->add(make_document(two_scenes(2)), "main").duplicate);
+  EXPECT_EQ(store->documents({}).size(), 2u);
+}
+
+TEST(StoreSqlite, SchemaIsVersionedInWalModeAndMigratedOnce) {
+  TempDir dir;
+  const auto path = dir.path() / "results.db";
+  open_store(path.string());
+  open_store(path.string());  // reopening applies nothing again
+  Raw raw(path);
+  EXPECT_EQ(raw.text("PRAGMA user_version"), "1");
+  EXPECT_EQ(raw.text("PRAGMA journal_mode"), "wal");
+  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "1");
+  EXPECT_EQ(raw.text("SELECT description FROM schema_migrations WHERE version = 1"),
+            "documents, revisions, scene_results");
+}
+
+TEST(StoreSqlite, ASecondMigrationAppliesOnceOnTopOfTheFirst) {
+  TempDir dir;
+  const auto path = dir.path() / "results.db";
+  open_store(path.string());
+  std::vector<Migration> migrations(sqlite_migrations().begin(), sqlite_migrations().end());
+  migrations.push_back({2, "documents.note", "ALTER TABLE documents ADD COLUMN note TEXT"});
+  SqliteDb db = SqliteDb::open(path, false);
+  EXPECT_EQ(migrate(db, migrations), 2);
+  EXPECT_EQ(migrate(db, migrations), 2);
+  Raw raw(path);
+  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "2");
+  EXPECT_EQ(raw.exec("SELECT note FROM documents"), SQLITE_OK);
+}
+
+TEST(StoreSqlite, AFailingMigrationLeavesTheVersionBefore) {
+  TempDir dir;
+  const auto path = dir.path() / "results.db";
+  open_store(path.string());
+  std::vector<Migration> migrations(sqlite_migrations().begin(), sqlite_migrations().end());
+  migrations.push_back(
+      {2, "broken", "CREATE TABLE extra (x); INSERT INTO no_such_table VALUES (1)"});
+  SqliteDb db = SqliteDb::open(path, false);
+  EXPECT_THROW(migrate(db, migrations), InfraError);
+  EXPECT_EQ(schema_version(db), 1);
+  Raw raw(path);
+  EXPECT_EQ(raw.text("SELECT count(*) FROM sqlite_master WHERE name = 'extra'"), "0");
+}
+
+TEST(StoreSqlite, AStoreFromANewerRaygateIsRefused) {
+  TempDir dir;
+  const auto path = dir.path() / "results.db";
+  open_store(path.string());
+  Raw(path).exec("PRAGMA user_version = 99");
+  try {
+    open_store(path.string());
+    FAIL() << "expected UsageError";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("schema version 99 is newer"));
+  }
+}
+
+TEST(StoreSqlite, AFailureHalfwayThroughADocumentStoresNothingOfIt) {
+  TempDir dir;
+  const auto path = dir.path() / "results.db";
+  const auto store = open_store(path.string());
+  DocumentSpec spec = two_scenes(1);
+  spec.scenes.push_back({"balls", 0.9});  // the same scene twice: its second row cannot go in
+  try {
+    store->add(make_document(spec), "main");
+    FAIL() << "expected InfraError";
+  } catch (const InfraError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("UNIQUE constraint failed: scene_results"));
+    EXPECT_THAT(e.what(), HasSubstr("INSERT INTO scene_results"));
+    EXPECT_THAT(e.what(), HasSubstr(path.string()));
+  }
+  Raw raw(path);
+  EXPECT_EQ(raw.text("SELECT count(*) FROM documents"), "0");
+  EXPECT_EQ(raw.text("SELECT count(*) FROM revisions"), "0");
+  EXPECT_EQ(raw.text("SELECT count(*) FROM scene_results"), "0");
+  EXPECT_FALSE(store->add(make_document(two_scenes(1)), "main").duplicate);  // still usable
+}
+
+TEST(StoreSqlite, AnInjectedFailureRollsBackAndKeepsEarlierDocuments) {
+  TempDir dir;
+  const auto path = dir.path() / "results.db";
+  const auto store = open_store(path.string());
+  store->add(make_document(two_scenes(1)), "main");
+  Raw raw(path);
+  ASSERT_EQ(raw.exec("CREATE TRIGGER boom BEFORE INSERT ON scene_results WHEN NEW.scene_id = "
+                     "'gears' BEGIN SELECT RAISE(ABORT, 'injected failure'); END"),
+            SQLITE_OK);
+  EXPECT_THROW(store->add(make_document(two_scenes(2)), "main"), InfraError);
+  EXPECT_EQ(raw.text("SELECT count(*) FROM documents"), "1");
+  EXPECT_EQ(raw.text("SELECT count(*) FROM scene_results"), "2");
+  ASSERT_EQ(raw.exec("DROP TRIGGER boom"), SQLITE_OK);
+  EXPECT_FALSE(store->add(make_document(two_scenes(2)), "main").duplicate);
+  EXPECT_EQ(store->documents({}).size(), 2u);
+}
+
+TEST(StoreSqlite, ALockedDatabaseIsAnInfrastructureError) {
+  TempDir dir;
+  const auto path = dir.path() / "results.db";
+  open_store(path.string());
+  Raw holder(path);
+  ASSERT_EQ(holder.exec("BEGIN IMMEDIATE"), SQLITE_OK);
+  SqliteStore store(path, StoreOpen::must_exist, std::chrono::milliseconds(200));
+  try {
+    store.add(make_document(two_scenes(1)), "main");
+    FAIL() << "expected InfraError";
+  } catch (const InfraError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("database is locked"));
+    EXPECT_THAT(e.what(), HasSubstr("BEGIN IMMEDIATE"));
+  }
+  holder.exec("ROLLBACK");
+}
+
+TEST(StoreSqlite, AFileThatIsNotADatabaseIsAUsageError) {
+  TempDir dir;
+  write_file_atomically(dir.path() / "notes.db", std::string(4096, 'x'));
+  EXPECT_THROW(open_store((dir.path() / "notes.db").string()), UsageError);
+}
+
+TEST(StoreSqlite, AMissingStoreIsAnErrorWhenItMustExist) {
+  TempDir dir;
+  try {
+    open_store((dir.path() / "none.db").string(), StoreOpen::must_exist);
+    FAIL() << "expected UsageError";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("does not exist"));
+  }
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "none.db"));
+}
+
+TEST(StoreSqlite, PostgresqlUrlsAreRefusedWithoutEchoingThePassword) {
+  try {
+    open_store("postgresql://ci:s3cret@db.example/raygate");
+    FAIL() << "expected UsageError";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("PostgreSQL backend is not available in this build"));
+    EXPECT_THAT(e.what(), Not(HasSubstr("s3cret")));
+  }
+}
+
+TEST(StoreSqlite, DocumentsFilterBySha) {
+  TempDir dir;
+  const auto store = open_store((dir.path() / "results.db").string());
+  for (int seed = 1; seed <= 3; ++seed) store->add(make_document(two_scenes(seed)), "main");
+  const auto by_sha =
+      store->documents(query([](DocumentQuery& q) { q.sha_prefix = fake_sha(2).substr(0, 8); }));
+  ASSERT_EQ(by_sha.size(), 1u);
+  EXPECT_EQ(by_sha[0].document["revisions"][0]["worktree"]["sha"], fake_sha(2));
+  const auto last_two = store->documents(query([](DocumentQuery& q) { q.last = 2; }));
+  ASSERT_EQ(last_two.size(), 2u);
+  EXPECT_GT(last_two[0].id, last_two[1].id);  // newest stored first
+  EXPECT_TRUE(store->documents(query([](DocumentQuery& q) { q.branch = "nope"; })).empty());
+}
+
+TEST(StoreSqlite, BranchComesFromTheRevisionsRef) {
+  ResultsDocument document = make_document(two_scenes(1));
+  EXPECT_EQ(branch_of(document, "fallback"), "main");
+  document.revisions[0].worktree.ref_name.clear();
+  EXPECT_EQ(branch_of(document, "fallback"), "fallback");
+}
+
+}  // namespace
+}  // namespace raygate::test

@@ -60,7 +60,8 @@ int compare_command(const CompareArgs& args) {
   GatePolicy policy = context.policy;
   policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
   const GateResult gate = evaluate_gate(document, policy);
-  emit_reports(document, gate, policy, args.reports, document_path);
+  emit_reports(document, gate, policy, args.reports, document_path,
+               trends_from_store(record_store_path(args.record, context.cache_dir), document));
   return gate.exit_code;
 }
 

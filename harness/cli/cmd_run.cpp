@@ -91,7 +91,8 @@ int run_command(const RunArgs& args) {
   fmt::print("results: {}\n", m.out.string());
   record_results(document, args.record, context.cache_dir, m.out);
   const GateResult gate = evaluate_gate(document, context.policy);
-  emit_reports(document, gate, context.policy, args.reports, m.out);
+  emit_reports(document, gate, context.policy, args.reports, m.out,
+               trends_from_store(record_store_path(args.record, context.cache_dir), document));
   return gate.exit_code;
 }
 

@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+
 #include "cli/measure_session.h"
 #include "cli/revision_setup.h"
 #include "core/time_text.h"
@@ -36,7 +38,8 @@ void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy,
 
 StopRule change_stop_rule(const StoppingPolicy& stopping, const ScenePolicy& policy) {
   return [=](const std::vector<Round>& rounds, double seconds_spent) {
-    if (rounds.size() >= stopping.min_rounds) {
+    // One round's interval is a point: never call that decided.
+    if (rounds.size() >= std::max<std::size_t>(stopping.min_rounds, 2)) {
       const ChangeSummary change = summarize_change(compare_samples(rounds), bootstrap_for(policy));
       if (classify_change(change, policy.max_slowdown) != ChangeVerdict::inconclusive) {
         return StopDecision::stop_converged;
@@ -57,9 +60,9 @@ ResultsDocument measure_compare(const CompareSetup& setup, std::filesystem::path
   const PreparedRevision head =
       prepare_revision("head", setup.repository, setup.head, context, source_hash, jobs);
 
-  const std::filesystem::path work_dir =
-      context.cache_dir / "runs" /
-      (compact_utc_timestamp() + "-" + setup.base.short_sha + "-" + setup.head.short_sha);
+  const std::filesystem::path work_dir = fresh_run_dir(
+      context.cache_dir / "runs",
+      compact_utc_timestamp() + "-" + setup.base.short_sha + "-" + setup.head.short_sha);
   SuiteMeasurement m;
   m.out = setup.out.empty() ? work_dir / "results.json" : std::filesystem::absolute(setup.out);
   m.work_dir = work_dir;

@@ -5,6 +5,10 @@
 #include "cli/progress.h"
 #include "core/error.h"
 #include "report/reporter.h"
+#include "store/store.h"
+
+#include <algorithm>
+#include <map>
 
 namespace raygate::cli {
 
@@ -32,12 +36,44 @@ void add_report_options(CLI::App& command, std::vector<std::string>& reports) {
 
 void check_report_specs(const std::vector<std::string>& reports) { (void)parse_specs(reports); }
 
+std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
+                                           const ResultsDocument& document, std::size_t commits) {
+  if (store.empty() || !std::filesystem::exists(store)) return {};
+  std::vector<HistoryRow> rows;
+  try {
+    HistoryQuery query;
+    query.role = "any";
+    query.last_commits = commits;
+    rows = open_store(store.string(), StoreOpen::must_exist)->history(query);
+  } catch (const Error& e) {
+    fmt::print(stderr, "warning: no trends from {}: {}\n", store.string(), e.what());
+    return {};
+  }
+  std::sort(rows.begin(), rows.end(), [](const HistoryRow& a, const HistoryRow& b) {
+    return a.commit_unix.value_or(0) < b.commit_unix.value_or(0);
+  });
+  std::map<std::string, TrendSeries> by_scene;
+  for (const HistoryRow& row : rows) {
+    if (!row.ratio || row.baseline_sha256 != document.baseline.source_sha256) continue;
+    TrendSeries& series = by_scene[row.scene_id];
+    series.scene = row.scene_id;
+    series.points.push_back({row.short_sha, row.subject, row.commit_time, *row.ratio,
+                             row.ratio_lower.value_or(*row.ratio),
+                             row.ratio_upper.value_or(*row.ratio)});
+  }
+  std::vector<TrendSeries> trends;
+  for (auto& [scene, series] : by_scene) {
+    if (series.points.size() >= 2) trends.push_back(std::move(series));
+  }
+  return trends;
+}
+
 void emit_reports(const ResultsDocument& document, const GateResult& gate,
                   const GatePolicy& policy, const std::vector<std::string>& reports,
-                  const std::filesystem::path& document_path) {
+                  const std::filesystem::path& document_path, std::vector<TrendSeries> trends) {
   std::vector<ReportTarget> targets = parse_specs(reports);
   targets.insert(targets.begin(), ReportTarget{ReportFormat::console, "-"});
-  ReportInput input{document, gate, policy, {}, document_path.parent_path()};
+  ReportInput input{document, gate, policy, std::move(trends), document_path.parent_path()};
   ReportOptions options;
   options.colour = is_terminal(stdout);
   std::fflush(stdout);

@@ -10,6 +10,7 @@
 
 #include "gate/policy.h"
 #include "gate/verdict.h"
+#include "report/reporter.h"
 #include "store/results.h"
 
 namespace raygate::cli {
@@ -20,8 +21,15 @@ void add_report_options(CLI::App& command, std::vector<std::string>& reports);
 // before measuring (parse_report_specs) so a typo does not cost a whole run.
 void check_report_specs(const std::vector<std::string>& reports);
 
+// The normalized ratio of each of the document's scenes over the last `commits` commits in the
+// store (oldest first), measured with the same baseline; empty when there is no store.
+std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
+                                           const ResultsDocument& document,
+                                           std::size_t commits = 20);
+
 void emit_reports(const ResultsDocument& document, const GateResult& gate,
                   const GatePolicy& policy, const std::vector<std::string>& reports,
-                  const std::filesystem::path& document_path);
+                  const std::filesystem::path& document_path,
+                  std::vector<TrendSeries> trends = {});
 
 }  // namespace raygate::cli

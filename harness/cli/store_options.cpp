@@ -37,12 +37,17 @@ void add_record_options(CLI::App& command, RecordArgs& args) {
                      "branch to record the results under when the revision names none");
 }
 
+std::filesystem::path record_store_path(const RecordArgs& args,
+                                        const std::filesystem::path& cache_dir) {
+  if (args.no_store) return {};
+  return args.store.empty() ? cache_dir / "results.db" : std::filesystem::path(args.store);
+}
+
 void record_results(const ResultsDocument& document, const RecordArgs& args,
                     const std::filesystem::path& cache_dir,
                     const std::filesystem::path& document_path) {
   if (args.no_store) return;
-  const std::string location =
-      args.store.empty() ? (cache_dir / "results.db").string() : args.store;
+  const std::string location = record_store_path(args, cache_dir).string();
   try {
     const auto store = open_store(location, StoreOpen::create_if_missing);
     const std::string branch = branch_of(document, args.branch);

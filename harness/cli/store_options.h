@@ -25,6 +25,10 @@ struct RecordArgs {
 // --store, --no-store, --branch for run and compare.
 void add_record_options(CLI::App& command, RecordArgs& args);
 
+// Where run and compare record: --store, else <cache_dir>/results.db; "" with --no-store.
+std::filesystem::path record_store_path(const RecordArgs& args,
+                                        const std::filesystem::path& cache_dir);
+
 // Stores the finished document (complete or not: the store keeps the flag) and prints where.
 // A store that cannot be written is a warning on stderr, not a failure of the measurement: the
 // document file stays, and the warning says how to import it later.

@@ -30,7 +30,8 @@ constexpr const char* kEveryPlaceholder = R"({
   "name": "fancy",
   "scene_format": "nff",
   "run": ["{build}/bin/rt", "{scene}", "--out={image}", "--threads", "{threads}",
-          "--name", "{scene_stem}", "--assets", "{repo_root}/assets", "--src", "{src}"],
+          "--name", "{scene_stem}", "--assets", "{repo_root}/assets", "--src", "{src}",
+          "--size", "{width}x{height}"],
   "stdin": "{scene}",
   "cwd": "{build}",
   "image": "{image}",
@@ -65,7 +66,7 @@ constexpr const char* kReported = R"({
 class ContenderTest : public ::testing::Test {
  protected:
   ContenderTest() {
-    scene_.entry = SuiteScene{"balls", "balls", 1, 32, 32};
+    scene_.entry = SuiteScene{"balls", "balls", 1, 32, 24};
     scene_.nff = dir_.path() / "scenes" / "balls-s1.nff";
     scene_.files[SceneFormat::nff] = scene_.nff;
     run_dir_ = dir_.path() / "run";
@@ -119,7 +120,9 @@ TEST_F(ContenderTest, TracerArgvGetsEveryPlaceholderFilledIn) {
                                           "--assets",
                                           root + "/tree/assets",
                                           "--src",
-                                          root + "/tree/src"};
+                                          root + "/tree/src",
+                                          "--size",
+                                          "32x24"};
   EXPECT_EQ(spec.argv, expected);
 }
 

@@ -51,19 +51,10 @@ int run_command(const RunArgs& args) {
   const PreparedRevision tracer = prepare_revision("tracer", repository, worktree, context,
                                                    baseline.source_hash(), args.measure.jobs);
 
-  const std::filesystem::path work_dir =
-      fresh_run_dir(context.cache_dir / "runs", compact_utc_timestamp() + "-" + worktree.short_sha);
-  SuiteMeasurement m;
-  m.out = args.out.empty() ? work_dir / "results.json" : std::filesystem::absolute(args.out);
-  m.work_dir = work_dir;
-  m.scene_cache = context.cache_dir / "scenes" / context.suite.name;
-  m.golden_dir = context.golden_dir;
-  m.policy = context.policy;
-  m.scenes = context.scenes;
-  m.schedule = context.schedule;
+  SuiteMeasurement m = suite_measurement(
+      context, compact_utc_timestamp() + "-" + worktree.short_sha, args.out);
   m.stop = [&](const SuiteScene&) { return ratio_stop_rule(context.stopping, "tracer"); };
   m.tracer_roles = {"tracer"};
-  m.formats = {context.adapter.scene_format};
 
   const BaselineContender baseline_runs(context.tools.baseline, context.suite.sampling);
   const TracerContender tracer_runs(tracer.setup);

@@ -60,19 +60,11 @@ ResultsDocument measure_compare(const CompareSetup& setup, std::filesystem::path
   const PreparedRevision head =
       prepare_revision("head", setup.repository, setup.head, context, source_hash, jobs);
 
-  const std::filesystem::path work_dir = fresh_run_dir(
-      context.cache_dir / "runs",
-      compact_utc_timestamp() + "-" + setup.base.short_sha + "-" + setup.head.short_sha);
-  SuiteMeasurement m;
-  m.out = setup.out.empty() ? work_dir / "results.json" : std::filesystem::absolute(setup.out);
-  m.work_dir = work_dir;
-  m.scene_cache = context.cache_dir / "scenes" / context.suite.name;
-  m.golden_dir = context.golden_dir;
-  m.policy = context.policy;
-  m.scenes = context.scenes;
-  m.schedule = context.schedule;
+  SuiteMeasurement m = suite_measurement(
+      context, compact_utc_timestamp() + "-" + setup.base.short_sha + "-" + setup.head.short_sha,
+      setup.out);
+  const std::filesystem::path work_dir = m.work_dir;
   m.tracer_roles = {"base", "head"};
-  m.formats = {context.adapter.scene_format};
   m.stop = [&](const SuiteScene& scene) {
     return change_stop_rule(context.stopping, context.policy.for_scene(scene.id));
   };

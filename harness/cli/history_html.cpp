@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "report/html_parts.h"
 #include "cli/history_view.h"
 
 namespace raygate::cli {
@@ -20,20 +21,7 @@ constexpr double kTop = 14;
 constexpr double kBottom = 40;
 constexpr double kInset = 28;  // first and last commit this far inside the axes
 
-std::string escape(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&#39;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
+using report::html::escape;  // one HTML escaping for every page raygate writes
 
 struct Point {
   std::size_t commit = 0;  // index oldest first

@@ -76,6 +76,20 @@ std::filesystem::path fresh_run_dir(const std::filesystem::path& parent, const s
   }
 }
 
+SuiteMeasurement suite_measurement(const MeasureContext& context, const std::string& run_name,
+                                   const std::filesystem::path& out) {
+  SuiteMeasurement m;
+  m.work_dir = fresh_run_dir(context.cache_dir / "runs", run_name);
+  m.out = out.empty() ? m.work_dir / "results.json" : std::filesystem::absolute(out);
+  m.scene_cache = context.cache_dir / "scenes" / context.suite.name;
+  m.golden_dir = context.golden_dir;
+  m.policy = context.policy;
+  m.scenes = context.scenes;
+  m.schedule = context.schedule;
+  m.formats = {context.adapter.scene_format};
+  return m;
+}
+
 ResultsDocument new_document(const std::string& kind, const MeasureContext& context,
                              const BaselineTool& baseline) {
   ResultsDocument document;

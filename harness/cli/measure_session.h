@@ -43,6 +43,12 @@ struct SuiteMeasurement {
 // in the same second (shards of a CI matrix on one machine) never share run files or documents.
 std::filesystem::path fresh_run_dir(const std::filesystem::path& parent, const std::string& stem);
 
+// The parts of a measurement every measuring command shares: the context's scenes, schedule,
+// policy, goldens and scene cache, a fresh run directory named `run_name` under
+// <cache>/runs/, and the document at `out` (or results.json in the run directory).
+SuiteMeasurement suite_measurement(const MeasureContext& context, const std::string& run_name,
+                                   const std::filesystem::path& out);
+
 // A document's header: kind, versions, start time, machine, baseline, suite, settings.
 ResultsDocument new_document(const std::string& kind, const MeasureContext& context,
                              const BaselineTool& baseline);

@@ -35,8 +35,10 @@ std::string patched(std::string source, const std::string& from, const std::stri
 // The tracer at each commit of the fixture history.
 struct TracerSources {
   std::string fast = read_file(kFixture / "tracer.cpp");
-  // Every pixel traced twice: the same image, about twice the time.
-  std::string slow = patched(fast, "constexpr int kPasses = 1;", "constexpr int kPasses = 2;");
+  // Every pixel traced four times: the same image, about four times the time. A margin this wide
+  // keeps the check about behaviour (the ratio follows the tracer), not about timing noise on a
+  // loaded CI runner, where two separate runs' ratios of a 0.1 s tracer can differ by 30%.
+  std::string slow = patched(fast, "constexpr int kPasses = 1;", "constexpr int kPasses = 4;");
   // Aborts on any scene with spheres (balls), renders the others (tetra).
   std::string crashing = patched(fast, "  const std::vector<unsigned char> pixels = render(scene);",
                                  "  if (!scene.spheres.empty()) std::abort();\n"
@@ -218,7 +220,7 @@ TEST_F(RunCli, MeasuresARevisionIntoACompleteDocument) {
 
 TEST_F(RunCli, SlowerCommitHasAClearlyHigherRatio) {
   const std::string fast = commit(sources_.fast, "tracer");
-  const std::string slow = commit(sources_.slow, "trace every pixel twice");
+  const std::string slow = commit(sources_.slow, "trace every pixel four times");
   ASSERT_EQ(run(fast, dir_.path() / "fast.json").exit_code, 0);
   const CliRun r = run(slow, dir_.path() / "slow.json");
   ASSERT_EQ(r.exit_code, 0) << r.out;
@@ -226,7 +228,7 @@ TEST_F(RunCli, SlowerCommitHasAClearlyHigherRatio) {
   const ResultsDocument after = read_results(dir_.path() / "slow.json");
   EXPECT_EQ(after.revisions[0].worktree.sha, slow);
   for (const std::string id : {"tetra", "balls"}) {
-    EXPECT_GT(ratio(after, id), 1.3 * ratio(before, id))
+    EXPECT_GT(ratio(after, id), 1.8 * ratio(before, id))
         << id << ": fast " << ratio(before, id) << ", slow " << ratio(after, id);
   }
 }

@@ -5,6 +5,7 @@
 #include <fmt/core.h>
 
 #include <chrono>
+#include <ctime>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -39,6 +40,13 @@ struct Options {
   int max_depth = 5;
   bool print_time = false;
 };
+
+// CPU seconds (user + system) this process has used so far.
+double process_cpu_seconds() {
+  timespec now{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &now);
+  return static_cast<double>(now.tv_sec) + 1e-9 * static_cast<double>(now.tv_nsec);
+}
 
 double seconds_since(Clock::time_point start) {
   return std::chrono::duration<double>(Clock::now() - start).count();
@@ -108,6 +116,7 @@ int run(const Options& options) {
   report.accel = options.accel;
   report.max_depth = options.max_depth;
 
+  const double cpu_start = process_cpu_seconds();
   const Clock::time_point parse_start = Clock::now();
   const raygate::nff::Scene scene = read_scene(options.scene_path);
   report.parse_seconds = seconds_since(parse_start);
@@ -126,6 +135,7 @@ int run(const Options& options) {
   const raygate::Image image = raygate::render::render(
       world, camera, {options.accel, options.sampling, options.max_depth}, report.stats);
   report.render_seconds = seconds_since(render_start);
+  report.cpu_seconds = process_cpu_seconds() - cpu_start;
 
   std::string error;
   if (!raygate::write_image(options.output_path, image, error) ||

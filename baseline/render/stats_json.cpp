@@ -32,6 +32,7 @@ nlohmann::json to_json(const RunReport& r) {
   doc["parse_seconds"] = r.parse_seconds;
   doc["prepare_seconds"] = r.prepare_seconds;
   doc["render_seconds"] = r.render_seconds;
+  doc["cpu_seconds"] = r.cpu_seconds;
   const double rays_total =
       double(rays.eye + rays.shadow + rays.reflection + rays.refraction);
   doc["rays_per_second"] = r.render_seconds > 0.0 ? rays_total / r.render_seconds : 0.0;

@@ -24,6 +24,9 @@ struct RunReport {
   double parse_seconds = 0.0;   // reading and parsing the NFF
   double prepare_seconds = 0.0; // building primitives and boxes
   double render_seconds = 0.0;  // tracing every ray
+  // CPU time (user + system) of this process over parse, prepare and render together: what a
+  // harness compares with a tracer it times by CPU seconds (wall time inflates under load).
+  double cpu_seconds = 0.0;
   RenderStats stats;
 };
 

@@ -56,7 +56,9 @@ int run_command(const RunArgs& args) {
   m.stop = [&](const SuiteScene&) { return ratio_stop_rule(context.stopping, "tracer"); };
   m.tracer_roles = {"tracer"};
 
-  const BaselineContender baseline_runs(context.tools.baseline, context.suite.sampling);
+  const BaselineContender baseline_runs(context.tools.baseline, context.suite.sampling,
+                                        std::chrono::minutes(30), "none",
+                                        baseline_metric(context));
   const TracerContender tracer_runs(tracer.setup);
   m.contenders = {&baseline_runs, &tracer_runs};
 

@@ -71,7 +71,9 @@ ResultsDocument measure_compare(const CompareSetup& setup, std::filesystem::path
   m.finish_scene = [&](SceneResult& scene) {
     finish_compare_scene(scene, context.policy, work_dir / "evidence");
   };
-  const BaselineContender baseline_runs(context.tools.baseline, context.suite.sampling);
+  const BaselineContender baseline_runs(context.tools.baseline, context.suite.sampling,
+                                        std::chrono::minutes(30), "none",
+                                        baseline_metric(context));
   const TracerContender base_runs(base.setup);
   const TracerContender head_runs(head.setup);
   m.contenders = {&baseline_runs, &base_runs, &head_runs};

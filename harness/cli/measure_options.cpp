@@ -105,6 +105,11 @@ MeasureContext load_measure_context(const MeasureArgs& args) {
   return c;
 }
 
+TimingMetric baseline_metric(const MeasureContext& context) {
+  if (context.adapter.timing.source != TimingSource::process) return TimingMetric::wall;
+  return context.metric.value_or(context.adapter.timing.metric);
+}
+
 nlohmann::json measure_settings(const MeasureContext& c) {
   return {{"schedule", std::string(to_string(c.schedule.kind))},
           {"warmup_runs", c.schedule.warmup_runs},
@@ -117,6 +122,7 @@ nlohmann::json measure_settings(const MeasureContext& c) {
           {"metric", c.metric ? std::string(to_string(*c.metric))
                               : std::string(to_string(c.adapter.timing.metric))},
           {"timing_source", std::string(to_string(c.adapter.timing.source))},
+          {"baseline_metric", std::string(to_string(baseline_metric(c)))},
           {"threads", c.adapter.threads},
           {"golden_dir", c.golden_dir.string()},
           {"policy_file", c.policy.file.string()},

@@ -59,6 +59,10 @@ struct MeasureContext {
 
 MeasureContext load_measure_context(const MeasureArgs& args);
 
+// How the baseline is timed in this measurement: by in-process CPU seconds when the tracer is
+// timed by process CPU seconds, else by in-process wall seconds (the same clock on both sides).
+TimingMetric baseline_metric(const MeasureContext& context);
+
 // The settings object of a results document: how this measurement was made.
 nlohmann::json measure_settings(const MeasureContext& context);
 

@@ -100,6 +100,8 @@ ResultsDocument new_document(const std::string& kind, const MeasureContext& cont
   document.baseline.version = baseline.version_line();
   document.baseline.source_sha256 = baseline.source_hash();
   document.baseline.sampling = context.suite.sampling;
+  document.baseline.timing =
+      baseline_metric(context) == TimingMetric::cpu ? "in-process-cpu" : "in-process";
   document.suite = context.suite.name;
   document.settings = measure_settings(context);
   return document;

@@ -7,12 +7,14 @@
 namespace raygate {
 
 BaselineContender::BaselineContender(std::filesystem::path executable, std::string sampling,
-                                     std::chrono::milliseconds timeout, std::string accel)
+                                     std::chrono::milliseconds timeout, std::string accel,
+                                     TimingMetric metric)
     : Contender("baseline"),
       executable_(std::move(executable)),
       sampling_(std::move(sampling)),
       timeout_(timeout),
-      accel_(std::move(accel)) {}
+      accel_(std::move(accel)),
+      metric_(metric) {}
 
 ProcessSpec BaselineContender::command(const SceneInput& scene,
                                        const std::filesystem::path& run_dir) const {
@@ -36,9 +38,11 @@ RunRecord BaselineContender::interpret(const SceneInput& /*scene*/, const Proces
   if (!run.ok) return run;
   try {
     const nlohmann::json stats = nlohmann::json::parse(read_file(run_dir / "stats.json"));
-    const double seconds = stats.at("parse_seconds").get<double>() +
-                           stats.at("prepare_seconds").get<double>() +
-                           stats.at("render_seconds").get<double>();
+    const double seconds = metric_ == TimingMetric::cpu
+                               ? stats.at("cpu_seconds").get<double>()
+                               : stats.at("parse_seconds").get<double>() +
+                                     stats.at("prepare_seconds").get<double>() +
+                                     stats.at("render_seconds").get<double>();
     if (!(seconds > 0.0) || !std::isfinite(seconds)) throw std::runtime_error("no positive time");
     run.reported_seconds = seconds;
     run.seconds = seconds;

@@ -15,7 +15,7 @@ class BaselineContender final : public Contender {
  public:
   BaselineContender(std::filesystem::path executable, std::string sampling,
                     std::chrono::milliseconds timeout = std::chrono::minutes(30),
-                    std::string accel = "none");
+                    std::string accel = "none", TimingMetric metric = TimingMetric::wall);
 
   ProcessSpec command(const SceneInput& scene, const std::filesystem::path& run_dir) const override;
   RunRecord interpret(const SceneInput& scene, const ProcessResult& result,
@@ -27,6 +27,7 @@ class BaselineContender final : public Contender {
   std::string sampling_;
   std::chrono::milliseconds timeout_;
   std::string accel_;
+  TimingMetric metric_;  // wall: parse + prepare + render seconds; cpu: their CPU seconds
 };
 
 }  // namespace raygate

@@ -40,7 +40,9 @@ struct BaselineRecord {
   std::string source_sha256;
   std::string accel = "none";
   std::string sampling = "center";
-  std::string timing = "in-process";  // parse + prepare + render seconds from --stats
+  // "in-process": parse + prepare + render seconds from --stats; "in-process-cpu": their CPU
+  // seconds (when the tracer is timed by CPU seconds)
+  std::string timing = "in-process";
 };
 
 struct SceneResult {

@@ -217,6 +217,7 @@ TEST_F(BaselineCli, StatsJsonIsCompleteAndConsistent) {
   EXPECT_GT(doc["tests"]["primitive"].get<long>(), 0);
   EXPECT_GE(doc["parse_seconds"].get<double>(), 0.0);
   EXPECT_GT(doc["render_seconds"].get<double>(), 0.0);
+  EXPECT_GT(doc["cpu_seconds"].get<double>(), 0.0);  // CPU of parse + prepare + render
   const std::string version = run({"--version"}).out;
   EXPECT_NE(version.find(doc["source_sha256"].get<std::string>()), std::string::npos);
 }

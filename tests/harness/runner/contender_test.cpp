@@ -276,6 +276,17 @@ TEST_F(BaselineContenderTest, TimedByParsePreparePlusRenderSeconds) {
   EXPECT_EQ(r.image, run_dir_ / "image.png");
 }
 
+// Against a tracer timed by CPU seconds, the baseline uses its in-process CPU seconds too.
+TEST_F(BaselineContenderTest, CpuMetricTimesByInProcessCpuSeconds) {
+  const std::string stats = R"({"parse_seconds": 0.25, "prepare_seconds": 0.125,
+                                "render_seconds": 1.5, "cpu_seconds": 1.25})";
+  baseline_ = BaselineContender{"/opt/raygate-baseline", "center", std::chrono::seconds(9), "none",
+                                TimingMetric::cpu};
+  const RunRecord r = interpret(exited_with(0, 2.0, 1.9, 0.05), &stats);
+  ASSERT_TRUE(r.ok) << r.failure;
+  EXPECT_DOUBLE_EQ(r.seconds, 1.25);
+}
+
 TEST_F(BaselineContenderTest, MissingStatsIsAFailedRunNotAnException) {
   RunRecord r;
   EXPECT_NO_THROW(r = interpret(exited_with(0, 2.0), nullptr));

@@ -12,6 +12,7 @@
 #include "adapter/adapter.h"
 #include "checkout/git_fixture.h"
 #include "cli_support.h"
+#include "tracer_fixture.h"
 #include "store/results.h"
 
 namespace raygate::test {
@@ -19,53 +20,6 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-const fs::path kSource(RAYGATE_SOURCE_DIR);
-const fs::path kFixture = kSource / "tests" / "fixtures" / "nff_tracer";
-
-// The tracer's source with the one occurrence of `from` replaced by `to`.
-std::string patched(std::string source, const std::string& from, const std::string& to) {
-  const std::size_t at = source.find(from);
-  EXPECT_NE(at, std::string::npos) << "fixture tracer.cpp has no '" << from << "'";
-  EXPECT_EQ(source.find(from, at + 1), std::string::npos) << "'" << from << "' twice";
-  if (at != std::string::npos) source.replace(at, from.size(), to);
-  return source;
-}
-
-// The tracer at each commit of the fixture history.
-struct TracerSources {
-  std::string fast = read_file(kFixture / "tracer.cpp");
-  // Every pixel traced four times: the same image, about four times the time. A margin this wide
-  // keeps the check about behaviour (the ratio follows the tracer), not about timing noise on a
-  // loaded CI runner, where two separate runs' ratios of a 0.1 s tracer can differ by 30%.
-  std::string slow = patched(fast, "constexpr int kPasses = 1;", "constexpr int kPasses = 4;");
-  // Aborts on any scene with spheres (balls), renders the others (tetra).
-  std::string crashing = patched(fast, "  const std::vector<unsigned char> pixels = render(scene);",
-                                 "  if (!scene.spheres.empty()) std::abort();\n"
-                                 "  const std::vector<unsigned char> pixels = render(scene);");
-  // Renders, exits 0, and never writes the image.
-  std::string imageless = patched(fast, "!write_ppm(argv[3], scene, pixels)", "argv[3] == nullptr");
-  // Writes text where the image belongs.
-  std::string garbling = patched(fast, "!write_ppm(argv[3], scene, pixels)",
-                                 "!(std::ofstream(argv[3]) << \"not an image\\n\")");
-  // Sleeps for an hour before rendering.
-  std::string hanging = patched(patched(fast, "#include <cmath>\n",
-                                        "#include <chrono>\n#include <cmath>\n#include <thread>\n"),
-                                "  const Scene scene = parse(in);\n",
-                                "  const Scene scene = parse(in);\n"
-                                "  std::this_thread::sleep_for(std::chrono::hours(1));\n");
-};
-
-// Two scenes small enough for a test (tens of milliseconds each), under the ids of the ci suite
-// but with other sizes: the shipped ci goldens are not pictures of them.
-constexpr const char* kTinySuite = R"({
-  "name": "tiny",
-  "description": "raygate run's integration test: two small scenes",
-  "scenes": [
-    {"id": "tetra", "scene": "tetra", "size": 4, "resolution": [128, 128]},
-    {"id": "balls", "scene": "balls", "size": 2, "resolution": [128, 128]}
-  ]
-})";
 
 class RunCli : public ::testing::Test {
  protected:

@@ -1,0 +1,148 @@
+// `raygate compare` and `raygate bisect` end to end on a throwaway repository of the fixture
+// tracer (tracer_fixture.h), built with the shipped make-nff adapter: a slower head regresses
+// and says why in numbers, a head with wrong shading fails on its image against base's, the
+// same commit twice does not regress, a head that crashes where base ran fails the gate, and
+// bisect names the commit that made the tracer slower.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "checkout/git_fixture.h"
+#include "cli_support.h"
+#include "store/results.h"
+#include "tracer_fixture.h"
+
+namespace raygate::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+class CompareCli : public ::testing::Test {
+ protected:
+  CompareCli() : repo_(dir_.path() / "tracer-repo") {
+    write_file_atomically(suite_, kTinySuite);
+    fs::create_directories(dir_.path() / "no-goldens");
+  }
+
+  std::string commit(const std::string& source, const std::string& message) {
+    repo_.write("tracer.cpp", source);
+    repo_.write("Makefile", read_file(kFixture / "Makefile"));
+    return repo_.commit(message);
+  }
+
+  // The options every measuring command here shares: the tiny suite, make-nff, no goldens.
+  std::vector<std::string> common(const std::vector<std::string>& scenes) const {
+    std::vector<std::string> args{"--repo",       repo_.path().string(), "--adapter", "make-nff",
+                                  "--suite",      suite_.string(),       "--cache-dir",
+                                  cache_.string(), "--golden-dir",       "no-goldens",
+                                  "--max-rounds", "6"};
+    for (const std::string& id : scenes) args.insert(args.end(), {"--scene", id});
+    return args;
+  }
+
+  CliRun compare(const std::string& base, const std::string& head,
+                 const std::vector<std::string>& scenes, std::vector<std::string> extra = {}) {
+    std::vector<std::string> args{"compare", "--base", base, "--head", head, "--no-store",
+                                  "--out",   (dir_.path() / "c.json").string()};
+    const std::vector<std::string> shared = common(scenes);
+    args.insert(args.end(), shared.begin(), shared.end());
+    args.insert(args.end(), extra.begin(), extra.end());
+    return run_raygate(args, dir_);
+  }
+
+  ResultsDocument document() const { return read_results(dir_.path() / "c.json"); }
+
+  TempDir dir_;
+  testing::GitFixture repo_;
+  TracerSources sources_;
+  fs::path suite_ = dir_.path() / "tiny.json";
+  fs::path cache_ = dir_.path() / ".raygate";
+};
+
+TEST_F(CompareCli, SlowerHeadRegressesWithItsNumbersInEveryReport) {
+  const std::string base = commit(sources_.fast, "tracer");
+  const std::string head = commit(sources_.slow, "trace every pixel four times");
+  const fs::path junit = dir_.path() / "junit.xml";
+  const CliRun r = compare(base, head, {"tetra"}, {"--report", "junit:" + junit.string()});
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_TRUE(has(r.out, "slower: head vs base +")) << r.out;
+  const ResultsDocument d = document();
+  EXPECT_EQ(d.kind, "compare");
+  ASSERT_EQ(d.revisions.size(), 2u);
+  EXPECT_EQ(d.revisions[0].worktree.sha, base);
+  EXPECT_EQ(d.revisions[1].worktree.sha, head);
+  ASSERT_EQ(d.scenes.size(), 1u);
+  EXPECT_EQ(d.scenes[0].change_verdict, "REGRESSED");
+  ASSERT_TRUE(d.scenes[0].change);
+  EXPECT_GT(d.scenes[0].change->change, 1.0);  // four passes: far more than +100%
+  for (const Round& round : d.scenes[0].runs.rounds) EXPECT_EQ(round.runs.size(), 3u);
+  EXPECT_TRUE(has(read_file(junit), "<failure")) << read_file(junit);
+}
+
+TEST_F(CompareCli, WrongShadingFailsOnTheImageAgainstBase) {
+  const std::string base = commit(sources_.fast, "tracer");
+  const std::string head =
+      commit(patched(sources_.fast, "double light = 0.1;", "double light = 0.4;"), "brighter");
+  const CliRun ok = compare(base, head, {"tetra"});
+  EXPECT_EQ(ok.exit_code, 1) << ok.out;
+  EXPECT_TRUE(has(ok.out, "image head vs base: max ")) << ok.out;
+  bool base_check_failed = false;
+  for (const ImageCheck& check : document().scenes.at(0).images) {
+    if (check.reference == "base") base_check_failed = check.verdict == "fail";
+  }
+  EXPECT_TRUE(base_check_failed);
+}
+
+TEST_F(CompareCli, TheSameCommitTwiceDoesNotRegress) {
+  const std::string sha = commit(sources_.fast, "tracer");
+  const fs::path policy = dir_.path() / "policy.json";
+  // A wide limit: the test is about the verdict logic on equal programs, not timing precision.
+  write_file_atomically(policy, R"({"max_slowdown": 0.5})");
+  const CliRun r = compare(sha, sha, {"tetra"}, {"--policy", policy.string()});
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(document().scenes.at(0).change_verdict, "UNCHANGED") << r.out;
+}
+
+TEST_F(CompareCli, HeadCrashingWhereBaseRanFailsTheGate) {
+  const std::string base = commit(sources_.fast, "tracer");
+  const std::string head = commit(sources_.crashing, "abort on spheres");
+  const CliRun r = compare(base, head, {"balls"}, {"--warmup", "1"});
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_TRUE(has(r.out, "head failed where base ran")) << r.out;
+  EXPECT_EQ(document().scenes.at(0).status, "failed");
+}
+
+TEST_F(CompareCli, BaseMustBeNamedExactlyOnce) {
+  commit(sources_.fast, "tracer");
+  std::vector<std::string> args{"compare", "--head", "HEAD"};
+  const std::vector<std::string> shared = common({"tetra"});
+  args.insert(args.end(), shared.begin(), shared.end());
+  const CliRun r = run_raygate(args, dir_);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_TRUE(has(r.out, "--base REV or --base-branch BRANCH")) << r.out;
+}
+
+TEST_F(CompareCli, BisectNamesTheCommitThatMadeTheTracerSlower) {
+  const std::string good = commit(sources_.fast, "tracer");
+  repo_.write("README", "1\n");
+  commit(sources_.fast, "readme");
+  const std::string culprit = commit(sources_.slow, "trace every pixel four times");
+  repo_.write("README", "2\n");
+  commit(sources_.slow, "readme again");
+  repo_.write("README", "3\n");
+  const std::string bad = commit(sources_.slow, "readme once more");
+  std::vector<std::string> args{"bisect", "--good", good, "--bad", bad};
+  const std::vector<std::string> shared = common({"tetra"});
+  args.insert(args.end(), shared.begin(), shared.end());
+  const CliRun r = run_raygate(args, dir_);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_TRUE(has(r.out, "first bad commit: " + culprit)) << r.out;
+}
+
+}  // namespace
+}  // namespace raygate::test

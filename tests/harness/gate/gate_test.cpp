@@ -1,0 +1,195 @@
+// The gate: policy files (defaults, per-scene overrides that must give a reason, errors that
+// name the JSON path) and the verdict on a document (which scene fails, warns or could not be
+// measured, the reason lines, and the exit code 0 / 1 / 3).
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "gate/policy.h"
+#include "gate/verdict.h"
+
+namespace raygate {
+namespace {
+
+std::string error_of(const std::string& text) {
+  try {
+    parse_policy(text, "policy.json");
+  } catch (const UsageError& e) {
+    return e.what();
+  }
+  return "no error";
+}
+
+TEST(GatePolicy, DefaultsWithoutAFile) {
+  const GatePolicy policy = parse_policy("{}", "policy.json");
+  EXPECT_DOUBLE_EQ(policy.defaults.max_slowdown, 0.03);
+  EXPECT_DOUBLE_EQ(policy.defaults.significance, 0.05);
+  EXPECT_DOUBLE_EQ(policy.defaults.image.fail_threshold, 0.004);
+  EXPECT_FALSE(policy.fail_on_inconclusive);
+}
+
+TEST(GatePolicy, SceneOverridesInheritTheDefaultsTheyDoNotSet) {
+  const GatePolicy policy = parse_policy(R"({
+    "max_slowdown": 0.05, "image": {"fail": 0.01},
+    "scenes": {"mount": {"image": {"failpercent": 0.5}, "reason": "terrain noise"}}})",
+                                         "policy.json");
+  const ScenePolicy& mount = policy.for_scene("mount");
+  EXPECT_DOUBLE_EQ(mount.max_slowdown, 0.05);
+  EXPECT_DOUBLE_EQ(mount.image.fail_threshold, 0.01);
+  EXPECT_DOUBLE_EQ(mount.image.fail_percent, 0.5);
+  EXPECT_EQ(mount.reason, "terrain noise");
+  EXPECT_DOUBLE_EQ(policy.for_scene("balls").image.fail_percent, 0.02);
+}
+
+TEST(GatePolicy, MistakesNameTheJsonPath) {
+  EXPECT_EQ(error_of(R"({"max_slowdwn": 0.1})"),
+            "policy.json: $.max_slowdwn: unknown key 'max_slowdwn' (did you mean "
+            "'max_slowdown'?)");
+  EXPECT_EQ(error_of(R"({"max_slowdown": -1})"),
+            "policy.json: $.max_slowdown: must be between 0 and 10, found -1");
+  EXPECT_EQ(error_of(R"({"scenes": {"mount": {"max_slowdown": 0.06}}})"),
+            "policy.json: $.scenes.mount: missing required key 'reason'");
+  EXPECT_EQ(error_of(R"({"scenes": {"mount": {"max_slowdown": 0.06, "reason": ""}}})"),
+            "policy.json: $.scenes.mount.reason: must say why this scene differs");
+  EXPECT_NE(error_of("{bad").find("policy.json: not valid JSON"), std::string::npos);
+}
+
+// A compare scene whose head changed by `change` with the CI [lower, upper].
+SceneResult compared(const std::string& id, double change, double lower, double upper) {
+  SceneResult scene;
+  scene.entry.id = id;
+  scene.status = "measured";
+  scene.change = ChangeSummary{};
+  scene.change->change = change;
+  scene.change->change_interval = {lower, upper};
+  return scene;
+}
+
+ResultsDocument compare_document(std::vector<SceneResult> scenes) {
+  ResultsDocument document;
+  document.kind = "compare";
+  document.complete = true;
+  document.scenes = std::move(scenes);
+  return document;
+}
+
+TEST(GateVerdict, RegressionFailsWithItsNumbers) {
+  const GateResult gate = evaluate_gate(
+      compare_document({compared("mount", 0.079, 0.061, 0.098), compared("balls", 0.004, -0.006, 0.013)}),
+      GatePolicy{});
+  EXPECT_EQ(gate.exit_code, 1);
+  ASSERT_EQ(gate.scenes.size(), 2u);
+  EXPECT_EQ(gate.scenes[0].speed, "REGRESSED");
+  EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::fail);
+  ASSERT_EQ(gate.scenes[0].reasons.size(), 1u);
+  EXPECT_NE(gate.scenes[0].reasons[0].find("+7.9% (95% CI +6.1% to +9.8%)"), std::string::npos)
+      << gate.scenes[0].reasons[0];
+  EXPECT_EQ(gate.scenes[1].speed, "UNCHANGED");
+  EXPECT_EQ(gate.scenes[1].outcome, GateOutcome::pass);
+}
+
+TEST(GateVerdict, APerSceneLimitDecides) {
+  GatePolicy policy;
+  policy.scenes["mount"] = policy.defaults;
+  policy.scenes["mount"].max_slowdown = 0.10;
+  policy.scenes["mount"].reason = "noisy";
+  const GateResult gate = evaluate_gate(compare_document({compared("mount", 0.079, 0.061, 0.098)}), policy);
+  EXPECT_EQ(gate.exit_code, 0);
+  EXPECT_EQ(gate.scenes[0].speed, "UNCHANGED");
+}
+
+TEST(GateVerdict, InconclusiveWarnsUnlessTheFlagSaysFail) {
+  const ResultsDocument document = compare_document({compared("tetra", 0.02, -0.01, 0.05)});
+  GatePolicy policy;
+  GateResult gate = evaluate_gate(document, policy);
+  EXPECT_EQ(gate.scenes[0].speed, "INCONCLUSIVE");
+  EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::warn);
+  EXPECT_EQ(gate.exit_code, 0);
+  policy.fail_on_inconclusive = true;
+  gate = evaluate_gate(document, policy);
+  EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::fail);
+  EXPECT_EQ(gate.exit_code, 1);
+}
+
+SceneResult failed(const std::string& id, const std::string& role, bool base_ran) {
+  SceneResult scene;
+  scene.entry.id = id;
+  scene.status = "failed";
+  RunRecord crash;
+  crash.outcome = "killed by signal 6 (ABRT)";
+  crash.failure = "tracer killed by signal 6 (ABRT)";
+  scene.runs.failed_role = role;
+  scene.runs.failed_run = crash;
+  if (base_ran) {
+    RunRecord ok;
+    ok.ok = true;
+    scene.runs.warmup["base"].push_back(ok);
+  }
+  return scene;
+}
+
+TEST(GateVerdict, HeadCrashingWhereBaseRanIsTheChangesFault) {
+  const GateResult gate = evaluate_gate(compare_document({failed("balls", "head", true)}), GatePolicy{});
+  EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::fail);
+  EXPECT_NE(gate.scenes[0].reasons[0].find("head failed where base ran"), std::string::npos);
+  EXPECT_EQ(gate.exit_code, 1);
+}
+
+TEST(GateVerdict, BaseOrBaselineFailingMeansNotMeasured) {
+  for (const std::string role : {"base", "baseline"}) {
+    const GateResult gate = evaluate_gate(compare_document({failed("balls", role, false)}), GatePolicy{});
+    EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::unmeasured) << role;
+    EXPECT_EQ(gate.exit_code, 3) << role;
+  }
+}
+
+TEST(GateVerdict, ARegressionOutranksAnUnmeasuredScene) {
+  const GateResult gate = evaluate_gate(
+      compare_document({failed("balls", "base", false), compared("mount", 0.2, 0.15, 0.25)}),
+      GatePolicy{});
+  EXPECT_EQ(gate.exit_code, 1);
+  EXPECT_EQ(gate.count(GateOutcome::unmeasured), 1u);
+  EXPECT_EQ(gate.count(GateOutcome::fail), 1u);
+}
+
+TEST(GateVerdict, ImagesFailWarnOrCannotBeChecked) {
+  SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
+  ImageMetrics metrics;
+  metrics.max_error = 0.6;
+  scene.images.push_back({"head", "golden", "a.png", "g.png", "fail", "", metrics, {}});
+  scene.images.push_back({"head", "base", "a.png", "b.png", "pass", "", ImageMetrics{}, {}});
+  GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
+  EXPECT_EQ(gate.scenes[0].image, "fail");
+  EXPECT_EQ(gate.exit_code, 1);
+
+  scene.images = {{"tracer", "golden", "a.png", "g.png", "missing", "no golden image", {}, {}}};
+  gate = evaluate_gate(compare_document({scene}), GatePolicy{});
+  EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::warn);
+  EXPECT_EQ(gate.exit_code, 0);
+
+  scene.images = {{"tracer", "golden", "a.png", "g.png", "error", "cannot read a.png", {}, {}}};
+  gate = evaluate_gate(compare_document({scene}), GatePolicy{});
+  EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::unmeasured);
+  EXPECT_EQ(gate.exit_code, 3);
+}
+
+TEST(GateVerdict, AnIncompleteDocumentCannotPass) {
+  ResultsDocument document = compare_document({compared("tetra", 0.0, -0.01, 0.01)});
+  document.complete = false;
+  EXPECT_EQ(evaluate_gate(document, GatePolicy{}).exit_code, 3);
+}
+
+TEST(GateVerdict, ARunIsJudgedOnFailuresAndImagesOnly) {
+  ResultsDocument document;
+  document.kind = "run";
+  document.complete = true;
+  SceneResult scene;
+  scene.entry.id = "tetra";
+  scene.status = "measured";
+  document.scenes.push_back(scene);
+  const GateResult gate = evaluate_gate(document, GatePolicy{});
+  EXPECT_EQ(gate.scenes[0].speed, "MEASURED");
+  EXPECT_EQ(gate.exit_code, 0);
+}
+
+}  // namespace
+}  // namespace raygate

@@ -1,10 +1,10 @@
-# raygate_add_test(NAME <name> LABEL unit|integration SOURCES ... [LIBS ...] [TIMEOUT s])
+# raygate_add_test(NAME <name> LABEL unit|integration SOURCES ... [LIBS ...] [TIMEOUT s] [SERIAL])
 # One GoogleTest executable; its tests are registered with CTest individually and labelled,
 # so `ctest -L unit` runs the fast ones.
 include(GoogleTest)
 
 function(raygate_add_test)
-  cmake_parse_arguments(T "" "NAME;LABEL;TIMEOUT" "SOURCES;LIBS" ${ARGN})
+  cmake_parse_arguments(T "SERIAL" "NAME;LABEL;TIMEOUT" "SOURCES;LIBS" ${ARGN})
   if(NOT T_LABEL MATCHES "^(unit|integration)$")
     message(FATAL_ERROR "raygate_add_test(${T_NAME}): LABEL must be unit or integration")
   endif()
@@ -18,6 +18,11 @@ function(raygate_add_test)
     RAYGATE_SOURCE_DIR="${PROJECT_SOURCE_DIR}"
     RAYGATE_BINARY_DIR="${PROJECT_BINARY_DIR}"
     RAYGATE_SHARED_DIR="${PROJECT_SOURCE_DIR}/../shared")
+  # SERIAL: the test judges real timings, so no other test may share the CPUs with it.
+  set(serial FALSE)
+  if(T_SERIAL)
+    set(serial TRUE)
+  endif()
   gtest_discover_tests(${T_NAME} PROPERTIES LABELS ${T_LABEL} TIMEOUT ${T_TIMEOUT}
-                       DISCOVERY_TIMEOUT 60)
+                       RUN_SERIAL ${serial} DISCOVERY_TIMEOUT 60)
 endfunction()

@@ -15,7 +15,7 @@ namespace raygate {
 
 struct ScenePolicy {
   double max_slowdown = 0.03;  // REGRESSED beyond +3% (and significant)
-  double significance = 0.05;  // the change's CI is the (1 - significance) bootstrap interval
+  double significance = 0.05;  // the change's CI is the (1 - significance) order-statistic interval
   ImageThresholds image;       // against the golden and against the base revision's image
   std::string reason;          // why this scene differs from the defaults (overrides only)
 };

@@ -37,8 +37,7 @@ void judge_speed(const SceneResult& scene, const ScenePolicy& policy, bool fail_
     return;
   }
   const ChangeSummary& change = *scene.change;
-  const ChangeVerdict verdict =
-      classify_change(change.change, change.change_interval, policy.max_slowdown);
+  const ChangeVerdict verdict = classify_change(change, policy.max_slowdown);
   gate.speed = std::string(to_string(verdict));
   const std::string numbers = fmt::format(
       "head vs base {} (95% CI {} to {}), ratio {:.3f} -> {:.3f}, {} rounds, limit {}",

@@ -1,10 +1,13 @@
 #include "measure/change.h"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
 #include "measure/descriptive.h"
+#include "measure/median_interval.h"
 
 namespace raygate {
 namespace {
@@ -35,7 +38,12 @@ ChangeSummary summarize_change(std::span<const CompareRound> rounds,
   summary.rounds = rounds.size();
   summary.log_change_median = median(log_changes);
   summary.change = std::expm1(summary.log_change_median);
-  const Interval log_interval = bootstrap_median_interval(log_changes, options);
+  summary.confidence = options.confidence;
+  // Too few rounds for the interval: report the observed range, which classify_change will not
+  // decide on.
+  const std::optional<Interval> at_confidence = median_interval(log_changes, options.confidence);
+  const auto [lowest, highest] = std::minmax_element(log_changes.begin(), log_changes.end());
+  const Interval log_interval = at_confidence.value_or(Interval{*lowest, *highest});
   summary.change_interval = {std::expm1(log_interval.lower), std::expm1(log_interval.upper)};
   summary.log_change_mad_scaled = mad_scaled(log_changes);
   summary.base = summarize_ratio(base_rounds, options);
@@ -57,8 +65,17 @@ std::string_view to_string(ChangeVerdict verdict) {
 
 ChangeVerdict classify_change(double change, const Interval& change_interval, double threshold) {
   if (!(threshold >= 0.0)) throw std::invalid_argument("classify_change: negative threshold");
-  if (change_interval.lower > 0.0 && change > threshold) return ChangeVerdict::regressed;
-  if (change_interval.upper < 0.0 && change < -threshold) return ChangeVerdict::improved;
+  // The point estimate is trusted against the limit only when it is precise to within the
+  // limit; a wider interval decides only when it clears the limit entirely.
+  const bool precise = change_interval.upper - change_interval.lower <= 2.0 * threshold;
+  if (change_interval.lower > 0.0 && change > threshold &&
+      (precise || change_interval.lower > threshold)) {
+    return ChangeVerdict::regressed;
+  }
+  if (change_interval.upper < 0.0 && change < -threshold &&
+      (precise || change_interval.upper < -threshold)) {
+    return ChangeVerdict::improved;
+  }
   if (change_interval.lower >= -threshold && change_interval.upper <= threshold) {
     return ChangeVerdict::unchanged;
   }
@@ -66,6 +83,9 @@ ChangeVerdict classify_change(double change, const Interval& change_interval, do
 }
 
 ChangeVerdict classify_change(const ChangeSummary& summary, double threshold) {
+  if (summary.rounds < min_values_for_median_interval(summary.confidence)) {
+    return ChangeVerdict::inconclusive;
+  }
   return classify_change(summary.change, summary.change_interval, threshold);
 }
 

@@ -23,8 +23,12 @@ struct CompareRound {
 
 struct ChangeSummary {
   std::size_t rounds = 0;
-  double change = 0.0;       // exp(median of per-round ln(t_head / t_base)) - 1; +0.05 = 5% slower
-  Interval change_interval;  // percentile bootstrap over rounds, same units as `change`
+  double change = 0.0;  // exp(median of per-round ln(t_head / t_base)) - 1; +0.05 = 5% slower
+  // The distribution-free order-statistic interval of the median (measure/median_interval.h) at
+  // `confidence`, same units as `change`. With too few rounds to reach that confidence it is the
+  // whole observed range, and no verdict but INCONCLUSIVE may be drawn from it.
+  Interval change_interval;
+  double confidence = 0.95;
   double log_change_median = 0.0;
   double log_change_mad_scaled = 0.0;
   RatioSummary base;  // each revision's normalized ratio against the baseline
@@ -42,12 +46,15 @@ std::string_view to_string(ChangeVerdict verdict);
 
 inline constexpr double kDefaultChangeThreshold = 0.03;
 
-// The rule (docs/statistics.md): REGRESSED when the CI lies above 0 and the point estimate is
-// above +threshold; IMPROVED when the CI lies below 0 and the estimate is below -threshold;
-// UNCHANGED when the whole CI lies within [-threshold, +threshold]; otherwise INCONCLUSIVE.
+// The rule (docs/statistics.md §6): REGRESSED when the CI lies above 0, the point estimate is
+// above +threshold, and either the CI is no wider than 2 x threshold or it lies wholly above
+// +threshold; IMPROVED mirrors it; UNCHANGED when the whole CI lies within [-threshold,
+// +threshold]; otherwise INCONCLUSIVE.
 ChangeVerdict classify_change(double change, const Interval& change_interval,
                               double threshold = kDefaultChangeThreshold);
 
+// The rule above, and INCONCLUSIVE whatever the numbers while there are fewer rounds than an
+// interval at the summary's confidence needs (6 at 95%).
 ChangeVerdict classify_change(const ChangeSummary& summary,
                               double threshold = kDefaultChangeThreshold);
 

@@ -72,6 +72,7 @@ void to_json(json& j, const ChangeSummary& c) {
   j = json{{"rounds", c.rounds},
            {"change", number(c.change)},
            {"change_interval", c.change_interval},
+           {"confidence", number(c.confidence)},
            {"log_change_median", number(c.log_change_median)},
            {"log_change_mad_scaled", number(c.log_change_mad_scaled)},
            {"base", c.base},
@@ -85,6 +86,7 @@ void from_json(const json& j, ChangeSummary& c) {
   c.rounds = j.at("rounds").get<std::size_t>();
   c.change = number_at(j, "change");
   c.change_interval = j.at("change_interval").get<Interval>();
+  c.confidence = j.value("confidence", 0.95);  // documents before it was recorded: 95%
   c.log_change_median = number_at(j, "log_change_median");
   c.log_change_mad_scaled = number_at(j, "log_change_mad_scaled");
   c.base = j.at("base").get<RatioSummary>();

@@ -53,14 +53,16 @@ TEST(GatePolicy, MistakesNameTheJsonPath) {
   EXPECT_NE(error_of("{bad").find("policy.json: not valid JSON"), std::string::npos);
 }
 
-// A compare scene whose head changed by `change` with the CI [lower, upper].
-SceneResult compared(const std::string& id, double change, double lower, double upper) {
+// A compare scene whose head changed by `change` with the CI [lower, upper] over `rounds`.
+SceneResult compared(const std::string& id, double change, double lower, double upper,
+                     std::size_t rounds = 10) {
   SceneResult scene;
   scene.entry.id = id;
   scene.status = "measured";
   scene.change = ChangeSummary{};
   scene.change->change = change;
   scene.change->change_interval = {lower, upper};
+  scene.change->rounds = rounds;
   return scene;
 }
 
@@ -70,6 +72,15 @@ ResultsDocument compare_document(std::vector<SceneResult> scenes) {
   document.complete = true;
   document.scenes = std::move(scenes);
   return document;
+}
+
+TEST(GateVerdict, TooFewRoundsDecideNothing) {
+  // Five rounds cannot give a 95% interval for a median: whatever the numbers, INCONCLUSIVE.
+  const GateResult gate = evaluate_gate(
+      compare_document({compared("tetra", 0.40, 0.002, 0.45, 5)}), GatePolicy{});
+  EXPECT_EQ(gate.scenes[0].speed, "INCONCLUSIVE");
+  EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::warn);
+  EXPECT_EQ(gate.exit_code, 0);
 }
 
 TEST(GateVerdict, RegressionFailsWithItsNumbers) {

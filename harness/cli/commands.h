@@ -16,5 +16,7 @@ void add_compare_command(CLI::App& app, int& exit_code);
 void add_gate_command(CLI::App& app, int& exit_code);
 void add_bisect_command(CLI::App& app, int& exit_code);
 void add_report_command(CLI::App& app, int& exit_code);
+void add_consistency_command(CLI::App& app, int& exit_code);  // ratios across machines
+void add_doctor_command(CLI::App& app, int& exit_code);       // is this machine fit to measure
 
 }  // namespace raygate::cli

@@ -1,0 +1,88 @@
+// `raygate consistency A.json B.json ...`: are this tracer's normalized ratios the same on
+// different machines (the paper's claim, checked for your tracer)? Reads results documents of
+// one tracer revision measured with one baseline on several machines and reports r² per pair of
+// documents and the scenes whose ratio is not machine-stable (harness/consistency/).
+// Exit 0 machine-independent, 1 not, 2 usage (fewer than 2 documents, mixed baselines or
+// revisions without --allow-mixed), 3 a document could not be read.
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "cli/commands.h"
+#include "consistency/consistency.h"
+#include "consistency/consistency_report.h"
+#include "core/error.h"
+#include "core/fs.h"
+#include "store/results.h"
+
+namespace raygate::cli {
+namespace {
+
+struct ConsistencyArgs {
+  std::vector<std::string> documents;
+  ConsistencyOptions options;
+  bool json = false;
+  std::string markdown;
+};
+
+// Any document raygate cannot read is "could not check" (exit 3), not a usage error: the
+// command line was right, the file was not.
+ResultsDocument read_document(const std::string& path) {
+  try {
+    return read_results(path);
+  } catch (const UsageError& e) {
+    throw InfraError(std::string(e.what()) +
+                     " (consistency needs results documents written by "
+                     "raygate run or compare --out)");
+  }
+}
+
+int consistency_command(const ConsistencyArgs& args) {
+  if (args.documents.size() < 2) {
+    throw UsageError(
+        fmt::format("consistency needs at least 2 results documents (one per "
+                    "machine), got {}",
+                    args.documents.size()));
+  }
+  std::vector<DocumentRatios> documents;
+  for (std::size_t i = 0; i < args.documents.size(); ++i) {
+    documents.push_back(
+        document_ratios(read_document(args.documents[i]), args.documents[i], document_label(i)));
+  }
+  const ConsistencyResult result = analyse_consistency(std::move(documents), args.options);
+  if (!args.markdown.empty()) write_file_atomically(args.markdown, consistency_markdown(result));
+  if (args.json) {
+    fmt::print("{}\n", consistency_json(result).dump(1));
+  } else {
+    fmt::print("{}", consistency_table(result));
+  }
+  return result.exit_code();
+}
+
+}  // namespace
+
+void add_consistency_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<ConsistencyArgs>();
+  CLI::App* command =
+      app.add_subcommand("consistency",
+                         "are the tracer's ratios the same on different machines? r² and per-scene "
+                         "deviation over results documents of one tracer revision");
+  command->add_option("documents", args->documents,
+                      "results documents (raygate run/compare --out), one per machine or run");
+  command
+      ->add_option("--min-r2", args->options.min_r2,
+                   "every pair of documents needs at least this r² of per-scene ratios")
+      ->capture_default_str();
+  command
+      ->add_option("--max-deviation", args->options.max_deviation,
+                   "a scene whose ratio strays further than this fraction from its mean "
+                   "over documents is not machine-stable")
+      ->capture_default_str();
+  command->add_flag("--allow-mixed", args->options.allow_mixed,
+                    "compare documents of different baselines or tracer revisions anyway");
+  command->add_flag("--json", args->json, "machine-readable output on standard output");
+  command->add_option("--markdown", args->markdown, "also write the result as Markdown to PATH");
+  command->callback([args, &exit_code] { exit_code = consistency_command(*args); });
+}
+
+}  // namespace raygate::cli

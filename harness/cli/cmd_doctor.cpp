@@ -1,0 +1,80 @@
+// `raygate doctor`: is this machine fit to measure, and what should change? Checks the CPU
+// governor, turbo, load, usable CPUs, SMT, perf counters, ASLR, swap and virtualization
+// (harness/doctor/), then measures a noise score with raygate-baseline in A/A pairs. Advice
+// only: exit 0 whenever it could check, 3 when the baseline could not run, 2 for bad options.
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "cli/commands.h"
+#include "core/error.h"
+#include "core/fs.h"
+#include "core/paths.h"
+#include "doctor/doctor_report.h"
+#include "runner/baseline_tool.h"
+
+namespace raygate::cli {
+namespace {
+
+struct DoctorArgs {
+  bool json = false;
+  int rounds = kDefaultNoiseRounds;
+  std::string baseline;
+};
+
+// Fills the noise score, or the reason it could not be measured.
+void measure(const DoctorArgs& args, DoctorReport& report) {
+  try {
+    const ToolPaths tools = locate_tools(args.baseline);
+    report.baseline_version = BaselineTool(tools.baseline).version_line();
+    TempDir work("raygate-doctor");
+    NoiseOptions options;
+    options.baseline = tools.baseline;
+    options.rounds = args.rounds;
+    options.work_dir = work.path();
+    if (!args.json) {
+      fmt::print(stderr, "measuring noise: {} rounds of two raygate-baseline runs...\n",
+                 args.rounds);
+    }
+    report.noise = measure_noise(options);
+  } catch (const InfraError& e) {
+    report.noise_error = e.what();
+  }
+}
+
+int doctor_command(const DoctorArgs& args) {
+  if (args.rounds < 2) {
+    throw UsageError(
+        fmt::format("--rounds {}: a noise score needs at least 2 rounds", args.rounds));
+  }
+  DoctorReport report;
+  report.facts = probe_system_facts();  // before measuring: the load must not be our own
+  report.findings = diagnose(report.facts);
+  measure(args, report);
+  if (args.json) {
+    fmt::print("{}\n", doctor_json(report).dump(1));
+  } else {
+    fmt::print("{}", doctor_text(report));
+  }
+  return report.noise ? to_int(ExitCode::pass) : to_int(ExitCode::infrastructure);
+}
+
+}  // namespace
+
+void add_doctor_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<DoctorArgs>();
+  CLI::App* command = app.add_subcommand(
+      "doctor",
+      "is this machine fit to measure? checks governor, turbo, load, CPUs, SMT, perf, "
+      "ASLR, swap, virtualization, and measures a noise score");
+  command->add_flag("--json", args->json, "machine-readable output on standard output");
+  command
+      ->add_option("--rounds", args->rounds,
+                   "A/A pairs of raygate-baseline runs for the noise score")
+      ->capture_default_str();
+  command->add_option("--baseline", args->baseline,
+                      "raygate-baseline executable (default: beside raygate)");
+  command->callback([args, &exit_code] { exit_code = doctor_command(*args); });
+}
+
+}  // namespace raygate::cli

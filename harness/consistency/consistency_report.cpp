@@ -1,0 +1,215 @@
+#include "consistency/consistency_report.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+
+namespace raygate {
+namespace {
+
+using nlohmann::json;
+
+std::string percent(double fraction) { return fmt::format("{:.1f}%", 100.0 * fraction); }
+
+std::string r2_text(double r2) { return std::isfinite(r2) ? fmt::format("{:.4f}", r2) : "n/a"; }
+
+json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
+
+std::string labels(const ConsistencyResult& result, const std::vector<std::size_t>& indices) {
+  std::string text;
+  for (std::size_t i : indices) text += (text.empty() ? "" : ", ") + result.documents[i].label;
+  return text;
+}
+
+std::string document_line(const DocumentRatios& d) {
+  return fmt::format("{}  {}  {} ({})  tracer {} {}  baseline {} ({})", d.path, d.hostname,
+                     d.cpu_model, d.kind == "compare" ? "compare, head" : "run", d.adapter_name,
+                     d.tracer_short_sha, d.baseline_version,
+                     d.baseline_source_sha256.substr(0, 12));
+}
+
+std::string verdict_line(const ConsistencyResult& result) {
+  const std::size_t unstable = result.unstable_scenes().size();
+  if (result.machine_independent()) {
+    return fmt::format("machine-independent: every pair r² >= {:.2f} and no unstable scene",
+                       result.options.min_r2);
+  }
+  std::size_t failing_pairs = 0;
+  for (const PairFit& p : result.pairs) failing_pairs += p.passes ? 0 : 1;
+  return fmt::format(
+      "NOT machine-independent for this tracer: {} of {} pair(s) with r² < {:.2f}, "
+      "{} unstable scene(s)",
+      failing_pairs, result.pairs.size(), result.options.min_r2, unstable);
+}
+
+void table_scenes(const ConsistencyResult& result, std::string& out) {
+  out += fmt::format("\n{:<12}", "scene");
+  for (const DocumentRatios& d : result.documents) out += fmt::format(" {:>8}", d.label);
+  out += fmt::format(" {:>8} {:>6} {:>8} {:>12}  {}\n", "mean", "CV", "mean dev", "max dev", "CIs");
+  for (const SceneConsistency& s : result.scenes) {
+    out += fmt::format("{:<12}", s.id);
+    for (double ratio : s.ratios) out += fmt::format(" {:>8.4f}", ratio);
+    const std::string max_dev = fmt::format("{} ({})", percent(s.max_deviation),
+                                            result.documents[s.max_deviation_document].label);
+    out += fmt::format(" {:>8.4f} {:>6} {:>8} {:>12}  {}{}\n", s.mean_ratio, percent(s.cv),
+                       percent(s.mean_deviation), max_dev,
+                       s.intervals_overlap ? "overlap" : "apart", s.unstable ? "  UNSTABLE" : "");
+  }
+}
+
+}  // namespace
+
+std::string consistency_table(const ConsistencyResult& result) {
+  std::string out = fmt::format("raygate consistency: {} documents, {} scenes in all of them\n",
+                                result.documents.size(), result.scenes.size());
+  for (const DocumentRatios& d : result.documents) {
+    out += fmt::format("  {}  {}\n", d.label, document_line(d));
+  }
+  for (const std::string& m : result.mixed) out += "  mixed (--allow-mixed): " + m + "\n";
+  for (const std::string& note : result.notes) out += "  note: " + note + "\n";
+  out +=
+      "\nr² of the per-scene ratios (linear fit of one document's ratios against the other's):\n";
+  for (const PairFit& p : result.pairs) {
+    out +=
+        fmt::format("  {} vs {}  {:>3} scenes  r² {}  slope {:.3f}  mean |difference| {:>6}  {}\n",
+                    result.documents[p.a].label, result.documents[p.b].label, p.scenes,
+                    r2_text(p.r2), p.slope, percent(p.mean_abs_relative_difference),
+                    p.passes ? "ok" : fmt::format("below {:.2f}", result.options.min_r2));
+  }
+  out += fmt::format("  overall (every pair pooled)  r² {}  lowest pair r² {}\n",
+                     r2_text(result.overall_r2), r2_text(result.min_pair_r2));
+  table_scenes(result, out);
+  for (const MissingScene& m : result.missing) {
+    out += fmt::format("missing: {} not measured in {} (excluded)\n", m.id,
+                       labels(result, m.missing_from));
+  }
+  const auto unstable = result.unstable_scenes();
+  if (!unstable.empty()) {
+    out += fmt::format("\nnot machine-stable ({} scene(s), limit {} deviation):\n", unstable.size(),
+                       percent(result.options.max_deviation));
+    for (const SceneConsistency* s : unstable) {
+      for (const std::string& reason : s->reasons) out += fmt::format("  {}: {}\n", s->id, reason);
+    }
+  }
+  out += fmt::format("\n{}\n", verdict_line(result));
+  return out;
+}
+
+json consistency_json(const ConsistencyResult& result) {
+  json documents = json::array();
+  for (const DocumentRatios& d : result.documents) {
+    documents.push_back({{"label", d.label},
+                         {"path", d.path},
+                         {"kind", d.kind},
+                         {"role", d.role},
+                         {"hostname", d.hostname},
+                         {"cpu_model", d.cpu_model},
+                         {"baseline",
+                          {{"version", d.baseline_version},
+                           {"source_sha256", d.baseline_source_sha256},
+                           {"mode", d.baseline_mode}}},
+                         {"tracer",
+                          {{"sha", d.tracer_sha},
+                           {"dirty", d.tracer_dirty},
+                           {"adapter", d.adapter_name},
+                           {"adapter_hash", d.adapter_hash}}},
+                         {"scenes_measured", d.scenes.size()}});
+  }
+  json pairs = json::array();
+  for (const PairFit& p : result.pairs) {
+    pairs.push_back({{"a", result.documents[p.a].label},
+                     {"b", result.documents[p.b].label},
+                     {"scenes", p.scenes},
+                     {"r2", number(p.r2)},
+                     {"slope", number(p.slope)},
+                     {"intercept", number(p.intercept)},
+                     {"mean_abs_relative_difference", number(p.mean_abs_relative_difference)},
+                     {"passes", p.passes}});
+  }
+  json scenes = json::array();
+  json unstable = json::array();
+  for (const SceneConsistency& s : result.scenes) {
+    json intervals = json::array();
+    for (const Interval& i : s.intervals) intervals.push_back({number(i.lower), number(i.upper)});
+    scenes.push_back({{"id", s.id},
+                      {"ratios", s.ratios},
+                      {"intervals", intervals},
+                      {"mean_ratio", s.mean_ratio},
+                      {"cv", s.cv},
+                      {"mean_deviation", s.mean_deviation},
+                      {"max_deviation", s.max_deviation},
+                      {"max_deviation_document", result.documents[s.max_deviation_document].label},
+                      {"intervals_overlap", s.intervals_overlap},
+                      {"unstable", s.unstable},
+                      {"reasons", s.reasons}});
+    if (s.unstable) unstable.push_back(s.id);
+  }
+  json missing = json::array();
+  for (const MissingScene& m : result.missing) {
+    json from = json::array();
+    for (std::size_t i : m.missing_from) from.push_back(result.documents[i].label);
+    missing.push_back({{"id", m.id}, {"missing_from", from}});
+  }
+  return {{"documents", documents},
+          {"options",
+           {{"min_r2", result.options.min_r2},
+            {"max_deviation", result.options.max_deviation},
+            {"allow_mixed", result.options.allow_mixed}}},
+          {"mixed", result.mixed},
+          {"notes", result.notes},
+          {"pairs", pairs},
+          {"overall_r2", number(result.overall_r2)},
+          {"min_pair_r2", number(result.min_pair_r2)},
+          {"scenes", scenes},
+          {"missing", missing},
+          {"unstable", unstable},
+          {"machine_independent", result.machine_independent()},
+          {"exit_code", result.exit_code()}};
+}
+
+std::string consistency_markdown(const ConsistencyResult& result) {
+  std::string out = "## Ratio consistency across machines\n\n";
+  out += "| | document | host | CPU | tracer | baseline |\n|---|---|---|---|---|---|\n";
+  for (const DocumentRatios& d : result.documents) {
+    out += fmt::format("| {} | `{}` | {} | {} | {} {} | {} `{}` |\n", d.label, d.path, d.hostname,
+                       d.cpu_model, d.adapter_name, d.tracer_short_sha, d.baseline_version,
+                       d.baseline_source_sha256.substr(0, 12));
+  }
+  for (const std::string& m : result.mixed) out += "\n> mixed (--allow-mixed): " + m + "\n";
+  for (const std::string& note : result.notes) out += "\n> note: " + note + "\n";
+  out += "\n| pair | scenes | r² | slope | mean abs difference | |\n|---|---|---|---|---|---|\n";
+  for (const PairFit& p : result.pairs) {
+    out += fmt::format("| {} vs {} | {} | {} | {:.3f} | {} | {} |\n", result.documents[p.a].label,
+                       result.documents[p.b].label, p.scenes, r2_text(p.r2), p.slope,
+                       percent(p.mean_abs_relative_difference), p.passes ? "ok" : "**low**");
+  }
+  out += fmt::format("| overall | {} | {} | | | |\n", result.scenes.size(),
+                     r2_text(result.overall_r2));
+  out += "\n| scene |";
+  for (const DocumentRatios& d : result.documents) out += " " + d.label + " |";
+  out += " mean | CV | mean dev | max dev | CIs |\n|---|";
+  for (std::size_t i = 0; i < result.documents.size(); ++i) out += "---|";
+  out += "---|---|---|---|---|\n";
+  for (const SceneConsistency& s : result.scenes) {
+    out += fmt::format("| {}{} |", s.id, s.unstable ? " **unstable**" : "");
+    for (double ratio : s.ratios) out += fmt::format(" {:.4f} |", ratio);
+    out += fmt::format(" {:.4f} | {} | {} | {} ({}) | {} |\n", s.mean_ratio, percent(s.cv),
+                       percent(s.mean_deviation), percent(s.max_deviation),
+                       result.documents[s.max_deviation_document].label,
+                       s.intervals_overlap ? "overlap" : "apart");
+  }
+  out += "\n";
+  for (const MissingScene& m : result.missing) {
+    out += fmt::format("- missing: `{}` not measured in {} (excluded)\n", m.id,
+                       labels(result, m.missing_from));
+  }
+  for (const SceneConsistency* s : result.unstable_scenes()) {
+    for (const std::string& reason : s->reasons) {
+      out += fmt::format("- unstable: `{}`: {}\n", s->id, reason);
+    }
+  }
+  out += fmt::format("\n**{}**\n", verdict_line(result));
+  return out;
+}
+
+}  // namespace raygate

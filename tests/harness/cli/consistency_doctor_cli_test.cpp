@@ -1,0 +1,109 @@
+// `raygate consistency` and `raygate doctor` as a user runs them: hand-made results documents
+// of two machines give exit 0 or 1, one document or mixed baselines exit 2, an unreadable file
+// exits 3; doctor measures a real noise score with the built raygate-baseline.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_support.h"
+#include "results_fixture.h"
+
+namespace raygate::test {
+namespace {
+
+using ::testing::HasSubstr;
+
+DocumentSpec machine(const std::string& host, double mount_ratio) {
+  DocumentSpec spec;
+  spec.sha = fake_sha(7);
+  spec.hostname = host;
+  spec.cpu_model = "CPU of " + host;
+  spec.scenes = {{"balls", 0.50, 0.05},
+                 {"gears", 0.80, 0.05},
+                 {"mount", mount_ratio, 0.05},
+                 {"rings", 1.50, 0.05},
+                 {"teapot", 0.90, 0.05}};
+  return spec;
+}
+
+class ConsistencyCli : public ::testing::Test {
+ protected:
+  std::string write(const std::string& name, const DocumentSpec& spec) {
+    write_results(make_document(spec), dir.path() / name);
+    return name;
+  }
+  TempDir dir;
+};
+
+TEST_F(ConsistencyCli, SameRatiosOnTwoMachinesExitZero) {
+  const CliRun r =
+      run_raygate({"consistency", write("a.json", machine("straylight", 1.2)),
+                   write("b.json", machine("neolith", 1.21)), "--markdown", "out/consistency.md"},
+                  dir);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("straylight  CPU of straylight"));
+  EXPECT_THAT(r.out, HasSubstr("neolith  CPU of neolith"));
+  EXPECT_THAT(r.out, HasSubstr("machine-independent: every pair r²"));
+  EXPECT_THAT(read_file(dir.path() / "out/consistency.md"), HasSubstr("| A vs B | 5 |"));
+}
+
+TEST_F(ConsistencyCli, AMovedSceneExitsOneAndNamesIt) {
+  const CliRun r = run_raygate({"consistency", write("a.json", machine("straylight", 1.2)),
+                                write("b.json", machine("neolith", 1.6)), "--json"},
+                               dir);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  const nlohmann::json json = nlohmann::json::parse(r.out);
+  EXPECT_EQ(json["unstable"], nlohmann::json::array({"mount"}));
+  EXPECT_EQ(json["machine_independent"], false);
+  EXPECT_EQ(json["exit_code"], 1);
+}
+
+TEST_F(ConsistencyCli, UsageErrorsExitTwo) {
+  const std::string a = write("a.json", machine("straylight", 1.2));
+  const CliRun one = run_raygate({"consistency", a}, dir);
+  EXPECT_EQ(one.exit_code, 2) << one.out;
+  EXPECT_THAT(one.out, HasSubstr("at least 2 results documents"));
+  DocumentSpec other = machine("neolith", 1.2);
+  other.baseline_sha256 = std::string(64, 'c');
+  const std::string b = write("b.json", other);
+  const CliRun mixed = run_raygate({"consistency", a, b}, dir);
+  EXPECT_EQ(mixed.exit_code, 2) << mixed.out;
+  EXPECT_THAT(mixed.out, HasSubstr("different raygate-baseline sources"));
+  EXPECT_EQ(run_raygate({"consistency", a, b, "--allow-mixed"}, dir).exit_code, 0);
+}
+
+TEST_F(ConsistencyCli, UnreadableDocumentExitsThree) {
+  const std::string a = write("a.json", machine("straylight", 1.2));
+  const CliRun missing = run_raygate({"consistency", a, "nowhere.json"}, dir);
+  EXPECT_EQ(missing.exit_code, 3) << missing.out;
+  EXPECT_THAT(missing.out, HasSubstr("nowhere.json"));
+  write_file_atomically(dir.path() / "text.json", "not json");
+  EXPECT_EQ(run_raygate({"consistency", a, "text.json"}, dir).exit_code, 3);
+}
+
+TEST(DoctorCli, JsonWithAMeasuredNoiseScore) {
+  TempDir dir;
+  const CliRun r = run_raygate({"doctor", "--rounds", "3", "--json"}, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const nlohmann::json json = nlohmann::json::parse(r.out);
+  ASSERT_TRUE(json["noise"].is_object()) << r.out;
+  EXPECT_EQ(json["noise"]["rounds"], 3);
+  EXPECT_GT(json["noise"]["seconds"]["median"].get<double>(), 0.0);
+  EXPECT_GE(json["noise"]["ratio_cv"].get<double>(), 0.0);
+  EXPECT_THAT(json["noise"]["grade"].get<std::string>(), ::testing::AnyOf("good", "fair", "noisy"));
+  EXPECT_EQ(json["checks"].size(), 9u);
+  EXPECT_THAT(json["baseline"].get<std::string>(), HasSubstr("raygate-baseline"));
+}
+
+TEST(DoctorCli, BadRoundsAndMissingBaseline) {
+  TempDir dir;
+  EXPECT_EQ(run_raygate({"doctor", "--rounds", "1"}, dir).exit_code, 2);
+  const CliRun r = run_raygate({"doctor", "--baseline", "/nonexistent/raygate-baseline"}, dir);
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("noise: not measured: raygate-baseline not found"));
+  EXPECT_THAT(r.out, HasSubstr("governor"));  // the checks are still reported
+}
+
+}  // namespace
+}  // namespace raygate::test

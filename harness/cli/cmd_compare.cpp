@@ -72,6 +72,7 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   CLI::App* command = app.add_subcommand(
       "compare", "measure base and head in the same job and gate the change");
   add_measure_options(*command, args->measure);
+  add_shard_options(*command, args->measure);
   command->add_option("--base", args->base, "base revision");
   command->add_option("--base-branch", args->base_branch,
                       "use the merge base of head and this branch as the base");

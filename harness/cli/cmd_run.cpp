@@ -64,9 +64,9 @@ int run_command(const RunArgs& args) {
 
   ResultsDocument document = new_document("run", context, baseline);
   document.revisions.push_back(tracer.record);
-  fmt::print("measuring {} {} ({}) against {} on suite {}: {} scenes\n", context.adapter.name,
+  fmt::print("measuring {} {} ({}) against {} on suite {}: {} scenes{}\n", context.adapter.name,
              worktree.short_sha, worktree.subject, baseline.version_line(), context.suite.name,
-             m.scenes.size());
+             m.scenes.size(), shard_note(context));
   SystemExecutor executor;
   SteadyClock clock;
   {
@@ -96,6 +96,7 @@ void add_run_command(CLI::App& app, int& exit_code) {
   CLI::App* command = app.add_subcommand(
       "run", "measure one revision against the baseline on a suite; writes a results document");
   add_measure_options(*command, args->measure);
+  add_shard_options(*command, args->measure);
   command->add_option("--rev", args->rev, "revision to measure (branch, tag, sha, HEAD~3, ...)")
       ->capture_default_str();
   command->add_option("--worktree", args->worktree,

@@ -18,5 +18,6 @@ void add_bisect_command(CLI::App& app, int& exit_code);
 void add_report_command(CLI::App& app, int& exit_code);
 void add_consistency_command(CLI::App& app, int& exit_code);  // ratios across machines
 void add_doctor_command(CLI::App& app, int& exit_code);       // is this machine fit to measure
+void add_merge_command(CLI::App& app, int& exit_code);  // shards of a CI matrix
 
 }  // namespace raygate::cli

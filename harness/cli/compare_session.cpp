@@ -80,9 +80,10 @@ ResultsDocument measure_compare(const CompareSetup& setup, std::filesystem::path
 
   ResultsDocument document = new_document("compare", context, setup.baseline);
   document.revisions = {base.record, head.record};
-  fmt::print("comparing {} {} (base) with {} (head) against {} on suite {}: {} scenes\n",
+  fmt::print("comparing {} {} (base) with {} (head) against {} on suite {}: {} scenes{}\n",
              context.adapter.name, setup.base.short_sha, setup.head.short_sha,
-             setup.baseline.version_line(), context.suite.name, m.scenes.size());
+             setup.baseline.version_line(), context.suite.name, m.scenes.size(),
+             shard_note(context));
   SystemExecutor executor;
   SteadyClock clock;
   {

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "core/error.h"
+#include "core/sha256.h"
 
 namespace raygate::cli {
 
@@ -55,6 +56,15 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
                      "(docs/gate.md)");
 }
 
+void add_shard_options(CLI::App& command, MeasureArgs& args) {
+  command.add_option("--shard", args.shard,
+                     "measure only shard K of N of the selected scenes (1 <= K <= N), split by "
+                     "expected cost the same way on every machine; join with raygate merge");
+  command.add_option("--shard-costs", args.shard_costs,
+                     "results document of the suite whose scene times are the expected costs "
+                     "(default: every scene costs the same; docs/shards.md)");
+}
+
 namespace {
 
 std::filesystem::path find_adapter(const std::string& name, const std::filesystem::path& data_root) {
@@ -75,6 +85,32 @@ std::filesystem::path pick_golden_dir(const MeasureArgs& args, const ToolPaths& 
   return tools.data_root / "golden";
 }
 
+// The selection's shard named by --shard, and its record for the document.
+void apply_shard(const MeasureArgs& args, MeasureContext& c) {
+  if (args.shard.empty()) {
+    if (!args.shard_costs.empty()) throw UsageError("--shard-costs needs --shard K/N");
+    return;
+  }
+  ShardRecord record;
+  record.spec = parse_shard(args.shard);
+  for (const SuiteScene& scene : c.scenes) record.suite_scenes.push_back(scene.id);
+  std::map<std::string, double> expected_seconds;
+  if (!args.shard_costs.empty()) {
+    const ResultsDocument costs = read_results(args.shard_costs);
+    if (costs.suite != c.suite.name) {
+      throw UsageError(fmt::format("--shard-costs {}: a document of suite '{}', not '{}'; give "
+                                   "one measured on the suite being split",
+                                   args.shard_costs, costs.suite, c.suite.name));
+    }
+    expected_seconds = expected_seconds_from(costs);
+    // By content, not path: every job of the matrix must name the same costs to split alike.
+    record.cost_basis = "seconds_spent of results document sha256:" +
+                        sha256_file_hex(args.shard_costs);
+  }
+  c.scenes = shard_scenes(c.scenes, record.spec, expected_seconds);
+  c.shard = std::move(record);
+}
+
 }  // namespace
 
 MeasureContext load_measure_context(const MeasureArgs& args) {
@@ -83,6 +119,7 @@ MeasureContext load_measure_context(const MeasureArgs& args) {
   c.adapter = load_adapter(find_adapter(args.adapter, c.tools.data_root));
   c.suite = load_suite(args.suite, c.tools.data_root);
   c.scenes = select_scenes(c.suite, args.scenes);
+  apply_shard(args, c);
   c.cache_dir = std::filesystem::absolute(args.cache_dir);
   c.golden_dir = pick_golden_dir(args, c.tools, c.adapter);
   c.schedule.kind = args.schedule == "duet" ? ScheduleKind::duet : ScheduleKind::alternate;
@@ -110,24 +147,33 @@ TimingMetric baseline_metric(const MeasureContext& context) {
   return context.metric.value_or(context.adapter.timing.metric);
 }
 
+std::string shard_note(const MeasureContext& context) {
+  if (!context.shard) return {};
+  return fmt::format(", shard {} of {} selected scenes", to_string(context.shard->spec),
+                     context.shard->suite_scenes.size());
+}
+
 nlohmann::json measure_settings(const MeasureContext& c) {
-  return {{"schedule", std::string(to_string(c.schedule.kind))},
-          {"warmup_runs", c.schedule.warmup_runs},
-          {"pin_cpus", c.schedule.pin_cpus},
-          {"duet_cpus", c.schedule.duet_cpus},
-          {"target_relative_half_width", c.stopping.target_relative_half_width},
-          {"min_rounds", c.stopping.min_rounds},
-          {"max_rounds", c.stopping.max_rounds},
-          {"max_seconds_per_scene", c.stopping.max_seconds},
-          {"metric", c.metric ? std::string(to_string(*c.metric))
-                              : std::string(to_string(c.adapter.timing.metric))},
-          {"timing_source", std::string(to_string(c.adapter.timing.source))},
-          {"baseline_metric", std::string(to_string(baseline_metric(c)))},
-          {"threads", c.adapter.threads},
-          {"golden_dir", c.golden_dir.string()},
-          {"policy_file", c.policy.file.string()},
-          {"max_slowdown", c.policy.defaults.max_slowdown},
-          {"significance", c.policy.defaults.significance}};
+  nlohmann::json settings = {
+      {"schedule", std::string(to_string(c.schedule.kind))},
+      {"warmup_runs", c.schedule.warmup_runs},
+      {"pin_cpus", c.schedule.pin_cpus},
+      {"duet_cpus", c.schedule.duet_cpus},
+      {"target_relative_half_width", c.stopping.target_relative_half_width},
+      {"min_rounds", c.stopping.min_rounds},
+      {"max_rounds", c.stopping.max_rounds},
+      {"max_seconds_per_scene", c.stopping.max_seconds},
+      {"metric", c.metric ? std::string(to_string(*c.metric))
+                          : std::string(to_string(c.adapter.timing.metric))},
+      {"timing_source", std::string(to_string(c.adapter.timing.source))},
+      {"baseline_metric", std::string(to_string(baseline_metric(c)))},
+      {"threads", c.adapter.threads},
+      {"golden_dir", c.golden_dir.string()},
+      {"policy_file", c.policy.file.string()},
+      {"max_slowdown", c.policy.defaults.max_slowdown},
+      {"significance", c.policy.defaults.significance}};
+  if (c.shard) settings["shard"] = shard_to_json(*c.shard);
+  return settings;
 }
 
 }  // namespace raygate::cli

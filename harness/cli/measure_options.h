@@ -16,6 +16,7 @@
 #include "measure/stopping.h"
 #include "runner/scheduler.h"
 #include "runner/suite.h"
+#include "store/shard.h"
 
 namespace raygate::cli {
 
@@ -38,9 +39,14 @@ struct MeasureArgs {
   std::string metric;  // "" (the adapter's), wall, cpu
   int jobs = 0;
   std::string policy;  // gate policy file; "" = the defaults
+  std::string shard;        // "K/N" (run and compare only); "" = every selected scene
+  std::string shard_costs;  // results document whose scene times are the split's costs
 };
 
 void add_measure_options(CLI::App& command, MeasureArgs& args);
+
+// --shard K/N and --shard-costs: for run and compare, whose documents `raygate merge` joins.
+void add_shard_options(CLI::App& command, MeasureArgs& args);
 
 // Everything the options name, loaded and checked; UsageError for anything wrong.
 struct MeasureContext {
@@ -48,6 +54,7 @@ struct MeasureContext {
   Adapter adapter;
   Suite suite;
   std::vector<SuiteScene> scenes;
+  std::optional<ShardRecord> shard;  // --shard: `scenes` is this shard of the selection
   std::filesystem::path cache_dir;
   std::filesystem::path golden_dir;
   ScheduleOptions schedule;
@@ -62,6 +69,9 @@ MeasureContext load_measure_context(const MeasureArgs& args);
 // How the baseline is timed in this measurement: by in-process CPU seconds when the tracer is
 // timed by process CPU seconds, else by in-process wall seconds (the same clock on both sides).
 TimingMetric baseline_metric(const MeasureContext& context);
+
+// ", shard K/N of M selected scenes" with --shard, else "": for the line that opens a run.
+std::string shard_note(const MeasureContext& context);
 
 // The settings object of a results document: how this measurement was made.
 nlohmann::json measure_settings(const MeasureContext& context);

@@ -9,6 +9,7 @@
 #include "core/time_text.h"
 #include "measure/machine_context.h"
 #include "runner/scene_files.h"
+#include "store/scores.h"
 
 namespace raygate::cli {
 
@@ -48,15 +49,9 @@ void check_images(SceneResult& result, const SuiteMeasurement& m, const GoldenMa
   }
 }
 
+// The same computation `raygate merge` makes over shards (store/scores.h).
 void update_scores(ResultsDocument& document, const std::vector<std::string>& roles) {
-  document.scores.clear();
-  for (const std::string& role : roles) {
-    std::vector<std::vector<RoundSample>> per_scene;
-    for (const SceneResult& scene : document.scenes) {
-      if (scene.status == "measured") per_scene.push_back(round_samples(scene.runs.rounds, role));
-    }
-    if (!per_scene.empty()) document.scores[role] = suite_score(per_scene);
-  }
+  document.scores = suite_scores(document.scenes, roles);
 }
 
 // Remaining time: the mean time per finished scene for every scene not finished yet.
@@ -104,6 +99,7 @@ ResultsDocument new_document(const std::string& kind, const MeasureContext& cont
       baseline_metric(context) == TimingMetric::cpu ? "in-process-cpu" : "in-process";
   document.suite = context.suite.name;
   document.settings = measure_settings(context);
+  if (context.shard) document.shard = to_string(context.shard->spec);
   return document;
 }
 

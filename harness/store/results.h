@@ -68,7 +68,7 @@ struct ResultsDocument {
   nlohmann::json machine;   // MachineContext as JSON (machine_context.h)
   BaselineRecord baseline;
   std::string suite;
-  std::string shard;        // "K/N" when the suite was split across jobs, else empty
+  std::string shard;  // "K/N" when the suite was split across jobs (split: settings.shard)
   nlohmann::json settings;  // schedule, stopping policy, thresholds, metric, threads, pinning
   std::vector<RevisionRecord> revisions;
   std::vector<SceneResult> scenes;

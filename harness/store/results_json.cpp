@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "store/results.h"
+#include "store/shard.h"
 
 namespace raygate {
 
@@ -311,6 +312,7 @@ ResultsDocument results_from_json(const nlohmann::json& j, const std::string& or
     d.suite = j.at("suite").get<std::string>();
     d.shard = j.value("shard", std::string());
     d.settings = j.at("settings");
+    shard_from_settings(d.settings, origin);  // optional; when present it must be a shard
     d.revisions = j.at("revisions").get<std::vector<RevisionRecord>>();
     d.scenes = j.at("scenes").get<std::vector<SceneResult>>();
     d.scores = j.at("scores").get<std::map<std::string, SuiteScore>>();

@@ -1,0 +1,91 @@
+// `raygate merge A.json B.json ... -o OUT.json`: the documents of the shards of one CI matrix
+// (run or compare with --shard K/N) joined into the document one job measuring every scene
+// would have written (store/merge.h): written atomically, stored and reported like run's, and
+// gated like `raygate gate` does, whose exit code it returns (0 pass, 1 regression, 3 not
+// everything measured). Shards that do not belong together are refused with exit 2.
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "cli/commands.h"
+#include "cli/report_options.h"
+#include "cli/store_options.h"
+#include "gate/policy.h"
+#include "gate/verdict.h"
+#include "store/merge.h"
+
+namespace raygate::cli {
+namespace {
+
+struct MergeArgs {
+  std::vector<std::string> documents;
+  std::string out;
+  std::string cache_dir = ".raygate";  // where the default store is, as for run
+  std::string policy;
+  bool fail_on_inconclusive = false;
+  bool allow_partial = false;
+  RecordArgs record;                 // --store, --no-store, --branch
+  std::vector<std::string> reports;  // --report FORMAT:PATH
+};
+
+void print_scores(const ResultsDocument& document) {
+  for (const auto& [role, score] : document.scores) {
+    fmt::print("suite score {} (geometric mean of normalized ratios): {:.3f} [{:.3f}, {:.3f}] "
+               "over {} scenes\n",
+               role, score.score, score.interval.lower, score.interval.upper, score.scenes);
+  }
+}
+
+int merge_command(const MergeArgs& args) {
+  check_report_specs(args.reports);
+  GatePolicy policy = args.policy.empty() ? GatePolicy{} : load_policy(args.policy);
+  policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
+  std::vector<MergeInput> inputs;
+  for (const std::string& path : args.documents) inputs.push_back({path, read_results(path)});
+
+  MergeOptions options;
+  options.allow_partial = args.allow_partial;
+  const MergeResult merged = merge_shards(inputs, options);
+  for (const std::string& warning : merged.warnings) {
+    fmt::print(stderr, "raygate: warning: {}\n", warning);
+  }
+  const ResultsDocument& document = merged.document;
+  const std::filesystem::path out = std::filesystem::absolute(args.out);
+  write_results(document, out);
+  fmt::print("merged {} shard documents of suite {}: {} scenes{}\n", inputs.size(),
+             document.suite, document.scenes.size(), document.complete ? "" : " (incomplete)");
+  print_scores(document);
+  fmt::print("results: {}\n", out.string());
+
+  const std::filesystem::path cache_dir = std::filesystem::absolute(args.cache_dir);
+  record_results(document, args.record, cache_dir, out);
+  const GateResult gate = evaluate_gate(document, policy);
+  emit_reports(document, gate, policy, args.reports, out,
+               trends_from_store(record_store_path(args.record, cache_dir), document));
+  return gate.exit_code;
+}
+
+}  // namespace
+
+void add_merge_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<MergeArgs>();
+  CLI::App* command = app.add_subcommand(
+      "merge", "join the results documents of the shards of a CI matrix (--shard K/N) into one "
+               "and gate it");
+  command->add_option("documents", args->documents, "the shards' results documents")
+      ->required();
+  command->add_option("-o,--out", args->out, "the merged results document")->required();
+  command->add_option("--cache-dir", args->cache_dir,
+                      "the default store is <cache-dir>/results.db, as for run")
+      ->capture_default_str();
+  command->add_option("--policy", args->policy, "gate policy file (docs/gate.md)");
+  command->add_flag("--fail-on-inconclusive", args->fail_on_inconclusive,
+                    "an INCONCLUSIVE change fails the gate instead of warning");
+  command->add_flag("--allow-partial", args->allow_partial,
+                    "merge even if whole shards are missing (the result is incomplete: exit 3)");
+  add_record_options(*command, args->record);
+  add_report_options(*command, args->reports);
+  command->callback([args, &exit_code] { exit_code = merge_command(*args); });
+}
+
+}  // namespace raygate::cli

@@ -1,0 +1,252 @@
+#include "store/merge.h"
+
+#include <fmt/core.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <optional>
+#include <set>
+
+#include "core/error.h"
+#include "store/scores.h"
+#include "store/shard.h"
+
+namespace raygate {
+
+namespace {
+
+using nlohmann::json;
+
+// Settings that name places on the runner that wrote the document (or the shard itself), not
+// how it measured.
+bool per_runner_setting(const std::string& key) {
+  return key == "shard" || key == "golden_dir" || key == "policy_file";
+}
+
+struct Shard {
+  const MergeInput* input = nullptr;
+  ShardRecord record;
+};
+
+const std::string& origin(const Shard& shard) { return shard.input->origin; }
+const ResultsDocument& doc(const Shard& shard) { return shard.input->document; }
+
+// settings.shard, or for a document that only has the top-level "K/N", that.
+ShardRecord shard_record(const MergeInput& input) {
+  if (auto record = shard_from_settings(input.document.settings, input.origin)) return *record;
+  if (!input.document.shard.empty()) {
+    ShardRecord record;
+    record.spec = parse_shard(input.document.shard);
+    return record;
+  }
+  throw UsageError(fmt::format("merge: {} records no shard (settings.shard): merge combines the "
+                               "documents of jobs run with --shard K/N",
+                               input.origin));
+}
+
+void same(const Shard& a, const Shard& b, const std::string& field, const std::string& value_a,
+          const std::string& value_b) {
+  if (value_a == value_b) return;
+  throw UsageError(fmt::format("merge: {} and {} differ in {} ('{}' vs '{}'): the shards of one "
+                               "matrix must measure the same thing the same way",
+                               origin(a), origin(b), field, value_a, value_b));
+}
+
+void check_header(const Shard& a, const Shard& b) {
+  same(a, b, "schema_version", std::to_string(doc(a).schema_version),
+       std::to_string(doc(b).schema_version));
+  same(a, b, "kind", doc(a).kind, doc(b).kind);
+  same(a, b, "suite", doc(a).suite, doc(b).suite);
+  const BaselineRecord& x = doc(a).baseline;
+  const BaselineRecord& y = doc(b).baseline;
+  same(a, b, "baseline.version", x.version, y.version);
+  same(a, b, "baseline.source_sha256", x.source_sha256, y.source_sha256);
+  same(a, b, "baseline.accel", x.accel, y.accel);
+  same(a, b, "baseline.sampling", x.sampling, y.sampling);
+  same(a, b, "baseline.timing", x.timing, y.timing);
+}
+
+void check_revisions(const Shard& a, const Shard& b) {
+  same(a, b, "revisions (roles)", fmt::format("{}", fmt::join(scored_roles(doc(a)), ",")),
+       fmt::format("{}", fmt::join(scored_roles(doc(b)), ",")));
+  for (std::size_t i = 0; i < doc(a).revisions.size(); ++i) {
+    const RevisionRecord& x = doc(a).revisions[i];
+    const RevisionRecord& y = doc(b).revisions[i];
+    const std::string at = "revisions[" + x.role + "]";
+    same(a, b, at + ".worktree.sha", x.worktree.sha, y.worktree.sha);
+    same(a, b, at + ".worktree.dirty", x.worktree.dirty ? "true" : "false",
+         y.worktree.dirty ? "true" : "false");
+    same(a, b, at + ".adapter.hash", x.adapter_hash, y.adapter_hash);
+  }
+}
+
+void check_settings(const Shard& a, const Shard& b) {
+  const json& x = doc(a).settings;
+  const json& y = doc(b).settings;
+  std::set<std::string> keys;
+  for (const json* settings : {&x, &y}) {
+    if (!settings->is_object()) continue;
+    for (const auto& item : settings->items()) keys.insert(item.key());
+  }
+  for (const std::string& key : keys) {
+    if (per_runner_setting(key)) continue;
+    const json value_x = x.is_object() && x.contains(key) ? x.at(key) : json();
+    const json value_y = y.is_object() && y.contains(key) ? y.at(key) : json();
+    same(a, b, "settings." + key, value_x.dump(), value_y.dump());
+  }
+}
+
+void check_shard_records(const Shard& a, const Shard& b) {
+  same(a, b, "shard count (settings.shard.count)", std::to_string(a.record.spec.count),
+       std::to_string(b.record.spec.count));
+  same(a, b, "the suite's selected scenes (settings.shard.suite_scenes)",
+       fmt::format("{}", fmt::join(a.record.suite_scenes, ",")),
+       fmt::format("{}", fmt::join(b.record.suite_scenes, ",")));
+  same(a, b, "settings.shard.cost_basis", a.record.cost_basis, b.record.cost_basis);
+  if (a.record.spec.index == b.record.spec.index) {
+    throw UsageError(fmt::format("merge: {} and {} are both shard {} (settings.shard.index): "
+                                 "give each shard's document once",
+                                 origin(a), origin(b), to_string(a.record.spec)));
+  }
+}
+
+std::vector<Shard> checked_shards(const std::vector<MergeInput>& inputs) {
+  if (inputs.empty()) throw UsageError("merge: no documents given");
+  std::vector<Shard> shards;
+  for (const MergeInput& input : inputs) shards.push_back({&input, shard_record(input)});
+  std::stable_sort(shards.begin(), shards.end(), [](const Shard& x, const Shard& y) {
+    return x.record.spec.index < y.record.spec.index;
+  });
+  for (std::size_t i = 1; i < shards.size(); ++i) {
+    check_header(shards.front(), shards[i]);
+    check_revisions(shards.front(), shards[i]);
+    check_shard_records(shards.front(), shards[i]);
+    check_shard_records(shards[i - 1], shards[i]);  // equal indices sort next to each other
+    check_settings(shards.front(), shards[i]);
+  }
+  return shards;
+}
+
+// Scenes of every shard, each once, in suite order (shard order where a document has no list).
+std::vector<SceneResult> collect_scenes(const std::vector<Shard>& shards) {
+  const std::vector<std::string>& suite = shards.front().record.suite_scenes;
+  std::map<std::string, const Shard*> owner;
+  std::vector<std::pair<std::size_t, const SceneResult*>> positioned;
+  for (const Shard& shard : shards) {
+    for (const SceneResult& scene : doc(shard).scenes) {
+      const std::string& id = scene.entry.id;
+      const auto at = std::find(suite.begin(), suite.end(), id);
+      if (!suite.empty() && at == suite.end()) {
+        throw UsageError(fmt::format("merge: {} has scene '{}', which is not in the selection "
+                                     "its shard was split from (settings.shard.suite_scenes)",
+                                     origin(shard), id));
+      }
+      if (const auto [it, fresh] = owner.emplace(id, &shard); !fresh) {
+        throw UsageError(fmt::format("merge: scene '{}' is in both {} and {}: the shards "
+                                     "overlap; were they split from different selections?",
+                                     id, origin(*it->second), origin(shard)));
+      }
+      positioned.emplace_back(suite.empty() ? positioned.size() : std::size_t(at - suite.begin()),
+                              &scene);
+    }
+  }
+  std::stable_sort(positioned.begin(), positioned.end(),
+                   [](const auto& x, const auto& y) { return x.first < y.first; });
+  std::vector<SceneResult> scenes;
+  for (const auto& [position, scene] : positioned) scenes.push_back(*scene);
+  return scenes;
+}
+
+// Shards not given, as "K/N" texts.
+std::vector<std::string> missing_shards(const std::vector<Shard>& shards) {
+  std::set<int> given;
+  for (const Shard& shard : shards) given.insert(shard.record.spec.index);
+  std::vector<std::string> missing;
+  const int count = shards.front().record.spec.count;
+  for (int index = 1; index <= count; ++index) {
+    if (!given.contains(index)) missing.push_back(to_string(ShardSpec{index, count}));
+  }
+  return missing;
+}
+
+std::vector<std::string> unmeasured_scenes(const std::vector<Shard>& shards,
+                                           const std::vector<SceneResult>& scenes) {
+  std::vector<std::string> missing;
+  for (const std::string& id : shards.front().record.suite_scenes) {
+    const bool found = std::any_of(scenes.begin(), scenes.end(),
+                                   [&](const SceneResult& s) { return s.entry.id == id; });
+    if (!found) missing.push_back(id);
+  }
+  return missing;
+}
+
+json shard_summary(const Shard& shard) {
+  json ids = json::array();
+  for (const SceneResult& scene : doc(shard).scenes) ids.push_back(scene.entry.id);
+  return {{"index", shard.record.spec.index},   {"count", shard.record.spec.count},
+          {"document", origin(shard)},          {"raygate_version", doc(shard).raygate_version},
+          {"started_at", doc(shard).started_at}, {"finished_at", doc(shard).finished_at},
+          {"complete", doc(shard).complete},     {"scenes", ids},
+          {"machine", doc(shard).machine}};
+}
+
+// The header of the first shard, times spanning all shards, and every shard's own record.
+ResultsDocument merged_header(const std::vector<Shard>& shards) {
+  ResultsDocument merged = doc(shards.front());
+  merged.scenes.clear();
+  merged.shard.clear();
+  merged.complete = true;
+  json summaries = json::array();
+  for (const Shard& shard : shards) {
+    const ResultsDocument& d = doc(shard);
+    merged.started_at = std::min(merged.started_at, d.started_at);
+    merged.finished_at = merged.finished_at.empty() || d.finished_at.empty()
+                             ? std::string()
+                             : std::max(merged.finished_at, d.finished_at);
+    merged.complete = merged.complete && d.complete;
+    summaries.push_back(shard_summary(shard));
+  }
+  if (merged.settings.is_object()) merged.settings.erase("shard");
+  merged.settings["merged_shards"] = summaries;
+  return merged;
+}
+
+}  // namespace
+
+MergeResult merge_shards(const std::vector<MergeInput>& inputs, const MergeOptions& options) {
+  const std::vector<Shard> shards = checked_shards(inputs);
+  MergeResult result;
+  const std::vector<std::string> missing = missing_shards(shards);
+  if (!missing.empty()) {
+    const std::string which = fmt::format("{}", fmt::join(missing, ", "));
+    if (!options.allow_partial) {
+      throw UsageError(fmt::format("merge: shard {} missing: give every shard's document, or "
+                                   "--allow-partial to merge what there is (the result is "
+                                   "incomplete and the gate exits 3)",
+                                   which));
+    }
+    result.warnings.push_back("shard " + which + " missing: the merged document is incomplete");
+  }
+  for (const Shard& shard : shards) {
+    if (doc(shard).raygate_version != doc(shards.front()).raygate_version) {
+      result.warnings.push_back(fmt::format("{} was written by raygate {}, {} by {}",
+                                            origin(shard), doc(shard).raygate_version,
+                                            origin(shards.front()),
+                                            doc(shards.front()).raygate_version));
+    }
+  }
+  result.document = merged_header(shards);
+  result.document.scenes = collect_scenes(shards);
+  const std::vector<std::string> unmeasured = unmeasured_scenes(shards, result.document.scenes);
+  if (!unmeasured.empty()) {
+    result.document.complete = false;
+    result.warnings.push_back(fmt::format("not measured by any shard given: {}",
+                                          fmt::join(unmeasured, ", ")));
+  }
+  if (!missing.empty()) result.document.complete = false;
+  result.document.scores = suite_scores(result.document.scenes, scored_roles(result.document));
+  return result;
+}
+
+}  // namespace raygate

@@ -1,0 +1,26 @@
+#include "store/scores.h"
+
+#include "runner/scheduler.h"
+
+namespace raygate {
+
+std::map<std::string, SuiteScore> suite_scores(const std::vector<SceneResult>& scenes,
+                                               const std::vector<std::string>& roles) {
+  std::map<std::string, SuiteScore> scores;
+  for (const std::string& role : roles) {
+    std::vector<std::vector<RoundSample>> per_scene;
+    for (const SceneResult& scene : scenes) {
+      if (scene.status == "measured") per_scene.push_back(round_samples(scene.runs.rounds, role));
+    }
+    if (!per_scene.empty()) scores[role] = suite_score(per_scene);
+  }
+  return scores;
+}
+
+std::vector<std::string> scored_roles(const ResultsDocument& document) {
+  std::vector<std::string> roles;
+  for (const RevisionRecord& revision : document.revisions) roles.push_back(revision.role);
+  return roles;
+}
+
+}  // namespace raygate

@@ -5,6 +5,7 @@
 #include "cli/progress.h"
 #include "core/error.h"
 #include "report/reporter.h"
+#include "store/postgres_url.h"
 #include "store/store.h"
 
 #include <algorithm>
@@ -38,7 +39,8 @@ void check_report_specs(const std::vector<std::string>& reports) { (void)parse_s
 
 std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
                                            const ResultsDocument& document, std::size_t commits) {
-  if (store.empty() || !std::filesystem::exists(store)) return {};
+  const bool team_store = is_postgresql_url(store.string());
+  if (store.empty() || (!team_store && !std::filesystem::exists(store))) return {};
   std::vector<HistoryRow> rows;
   try {
     HistoryQuery query;
@@ -46,7 +48,8 @@ std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
     query.last_commits = commits;
     rows = open_store(store.string(), StoreOpen::must_exist)->history(query);
   } catch (const Error& e) {
-    fmt::print(stderr, "warning: no trends from {}: {}\n", store.string(), e.what());
+    fmt::print(stderr, "warning: no trends from {}: {}\n", redact_postgresql_url(store.string()),
+               e.what());
     return {};
   }
   std::sort(rows.begin(), rows.end(), [](const HistoryRow& a, const HistoryRow& b) {

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "store/postgres_url.h"
 #include "store/store.h"
 
 namespace raygate::cli {
@@ -10,12 +11,9 @@ namespace {
 
 // Only what can be told without opening anything: the kind of location.
 std::string check_store_location(const std::string& location) {
-  if (location.starts_with("postgresql://") || location.starts_with("postgres://")) {
-    return "the PostgreSQL backend is not available in this build of raygate; give an SQLite "
-           "file path";
-  }
+  if (is_postgresql_url(location)) return {};
   if (location.find("://") != std::string::npos) {
-    return "unknown kind of URL; give a file path for an SQLite store";
+    return "unknown kind of URL; give a file path for an SQLite store or a postgresql:// URL";
   }
   return {};
 }
@@ -25,7 +23,9 @@ std::string check_store_location(const std::string& location) {
 CLI::Option* add_store_option(CLI::App& command, std::string& store,
                               const std::string& default_text) {
   return command
-      .add_option("--store", store, "results store: an SQLite file (default " + default_text + ")")
+      .add_option("--store", store,
+                  "results store: an SQLite file (default " + default_text +
+                      ") or postgresql://USER@HOST[:PORT]/DATABASE")
       ->check(CLI::Validator(check_store_location, "PATH", "store location"));
 }
 
@@ -48,6 +48,7 @@ void record_results(const ResultsDocument& document, const RecordArgs& args,
                     const std::filesystem::path& document_path) {
   if (args.no_store) return;
   const std::string location = record_store_path(args, cache_dir).string();
+  const std::string printable = redact_postgresql_url(location);  // a URL's password stays out
   try {
     const auto store = open_store(location, StoreOpen::create_if_missing);
     const std::string branch = branch_of(document, args.branch);
@@ -59,7 +60,7 @@ void record_results(const ResultsDocument& document, const RecordArgs& args,
     fmt::print(stderr,
                "raygate: warning: results not stored: {}\n  the document is kept at {}; store it "
                "later with: raygate import {} --store {}\n",
-               e.what(), document_path.string(), document_path.string(), location);
+               e.what(), document_path.string(), document_path.string(), printable);
   }
 }
 

@@ -5,18 +5,12 @@
 
 #include "core/error.h"
 #include "store/history.h"
+#include "store/postgres_store.h"
+#include "store/postgres_url.h"
 #include "store/sqlite_store.h"
 #include "store/store_rows.h"
 
 namespace raygate {
-
-namespace {
-
-bool is_postgresql_url(const std::string& location) {
-  return location.starts_with("postgresql://") || location.starts_with("postgres://");
-}
-
-}  // namespace
 
 std::vector<HistoryRow> ResultsStore::history(const HistoryQuery& query) {
   return latest_per_commit(measurements(query), query.last_commits);
@@ -24,19 +18,12 @@ std::vector<HistoryRow> ResultsStore::history(const HistoryQuery& query) {
 
 std::unique_ptr<ResultsStore> open_store(const std::string& location, StoreOpen mode) {
   if (location.empty()) return open_store(kDefaultStorePath, mode);
-  if (is_postgresql_url(location)) {
-    // The team store (issue 6) plugs in here: a PostgreSQL backend implementing ResultsStore
-    // with the schema of docs/store.md. The URL is not echoed: it may hold a password.
-    throw UsageError(
-        "--store names a PostgreSQL server, but the PostgreSQL backend is not "
-        "available in this build of raygate; use an SQLite file path (default " +
-        std::string(kDefaultStorePath) + ")");
-  }
+  if (is_postgresql_url(location)) return std::make_unique<PostgresStore>(location, mode);
   if (location.find("://") != std::string::npos) {
     throw UsageError(
         fmt::format("--store {}: unknown kind of URL; give a file path for an "
-                    "SQLite store",
-                    location));
+                    "SQLite store or a postgresql:// URL for the team store",
+                    redact_postgresql_url(location)));
   }
   return std::make_unique<SqliteStore>(std::filesystem::absolute(location), mode);
 }

@@ -1,7 +1,7 @@
 // The results store (DESIGN.md §8): every results document raygate writes or imports, kept
 // whole (so export gives it back byte for byte) and indexed by commit, branch, scene and machine
-// for history, trends and drift checks. One interface, several backends: an SQLite file (the
-// embedded default) today, a PostgreSQL server for teams later (same schema, docs/store.md).
+// for history, trends and drift checks. One interface, two backends: an SQLite file (the
+// embedded default) and a PostgreSQL database for teams (same schema, docs/store.md).
 // Backends store and filter; the choices made on rows (latest per commit, --last) live in
 // store/history.h so every backend answers a query the same way.
 #pragma once
@@ -106,8 +106,9 @@ enum class StoreOpen {
   must_exist,         // history, export: a missing store is a UsageError saying how to fill one
 };
 
-// An SQLite file for a path; "postgresql://" and "postgres://" URLs name the team store, not
-// available in this build yet (UsageError). Migrates the schema to the newest version.
+// An SQLite file for a path; a "postgresql://" or "postgres://" URL connects to the team store
+// (store/postgres_store.h: a malformed URL is a UsageError, a server that cannot be reached an
+// InfraError). Migrates the schema to the newest version.
 std::unique_ptr<ResultsStore> open_store(const std::string& location,
                                          StoreOpen mode = StoreOpen::create_if_missing);
 

@@ -1,0 +1,214 @@
+// Writing documents into the PostgreSQL store and reading them and their history rows back.
+// The queries are the SQLite store's (store/sqlite_store.cpp) in PostgreSQL's dialect, so both
+// backends filter and order alike: text is ordered bytewise (COLLATE "C", SQLite's BINARY)
+// whatever the database's locale.
+#include "store/postgres_store.h"
+
+#include <fmt/core.h>
+
+#include "core/error.h"
+#include "core/time_text.h"
+#include "store/postgres_schema.h"
+
+namespace raygate {
+
+namespace {
+
+// Another writer may have stored the same content a moment earlier: its row stands, this
+// insert returns no id and writes nothing (the UNIQUE key on content_sha256 decides).
+const char* const kInsertDocument = R"sql(
+INSERT INTO documents (content_sha256, schema_version, kind, branch, suite, shard, complete,
+  started_at, finished_at, stored_at, raygate_version, baseline_version, baseline_sha256,
+  machine_hostname, machine_cpu_model, document_json)
+VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, $16)
+ON CONFLICT (content_sha256) DO NOTHING
+RETURNING id)sql";
+
+const char* const kInsertRevision = R"sql(
+INSERT INTO revisions (document_id, role, repository, sha, short_sha, subject, author, ref_name,
+  commit_time, commit_unix, dirty, adapter_name, adapter_hash)
+VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13))sql";
+
+const char* const kInsertScene = R"sql(
+INSERT INTO scene_results (document_id, scene_id, role, status, rounds, normalized_ratio,
+  ratio_lower, ratio_upper, tracer_median_seconds, baseline_median_seconds, image_verdict,
+  image_max_error, image_rms_error, relative_change, change_lower, change_upper, change_verdict)
+VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, $16, $17))sql";
+
+// LIMIT NULL is no limit.
+const char* const kSelectDocuments = R"sql(
+SELECT d.id, d.stored_at, d.branch, d.content_sha256, d.document_json FROM documents d
+WHERE ($1::text = '' OR d.branch = $1::text)
+  AND ($2::text = '' OR EXISTS (SELECT 1 FROM revisions r WHERE r.document_id = d.id
+                                AND substr(r.sha, 1, length($2::text)) = $2::text))
+ORDER BY d.id DESC LIMIT $3::bigint)sql";
+
+const char* const kSelectMeasurements = R"sql(
+SELECT d.id, d.stored_at, d.started_at, d.complete, d.branch, r.role, r.sha, r.short_sha,
+  r.subject, r.commit_time, r.commit_unix, r.dirty, s.scene_id, s.status, s.normalized_ratio,
+  s.ratio_lower, s.ratio_upper, s.baseline_median_seconds, s.image_verdict, s.image_max_error,
+  s.image_rms_error, d.machine_hostname, d.machine_cpu_model, d.baseline_sha256
+FROM scene_results s
+JOIN revisions r ON r.document_id = s.document_id AND r.role = s.role
+JOIN documents d ON d.id = s.document_id
+WHERE ($1::text = '' OR d.branch = $1::text) AND ($2::text = 'any' OR s.role = $2::text)
+  AND ($3::boolean OR NOT r.dirty))sql";
+
+const char* const kMeasurementOrder =
+    " ORDER BY r.commit_unix DESC NULLS LAST, d.started_at COLLATE \"C\" DESC, d.id DESC,"
+    " s.scene_id COLLATE \"C\"";
+
+// " AND s.scene_id IN ($4, $5, ...)" for the scenes asked for, numbered after the fixed three:
+// placeholders only, the scene ids travel as parameters.
+std::string scene_filter(const std::vector<std::string>& scenes) {
+  if (scenes.empty()) return {};
+  std::string sql = " AND s.scene_id IN (";
+  for (std::size_t i = 0; i < scenes.size(); ++i) {
+    sql += fmt::format("{}${}::text", i == 0 ? "" : ", ", i + 4);
+  }
+  return sql + ")";
+}
+
+HistoryRow history_row(const PgResult& r, int i) {
+  HistoryRow row;
+  row.document_id = r.integer(i, 0);
+  row.stored_at = r.text(i, 1);
+  row.measured_at = r.text(i, 2);
+  row.complete = r.flag(i, 3);
+  row.branch = r.text(i, 4);
+  row.role = r.text(i, 5);
+  row.sha = r.text(i, 6);
+  row.short_sha = r.text(i, 7);
+  row.subject = r.text(i, 8);
+  row.commit_time = r.text(i, 9);
+  row.commit_unix = r.optional_integer(i, 10);
+  row.dirty = r.flag(i, 11);
+  row.scene_id = r.text(i, 12);
+  row.status = r.text(i, 13);
+  row.ratio = r.real(i, 14);
+  row.ratio_lower = r.real(i, 15);
+  row.ratio_upper = r.real(i, 16);
+  row.baseline_median_seconds = r.real(i, 17);
+  row.image_verdict = r.text(i, 18);
+  row.image_max_error = r.real(i, 19);
+  row.image_rms_error = r.real(i, 20);
+  row.machine_hostname = r.text(i, 21);
+  row.machine_cpu_model = r.text(i, 22);
+  row.baseline_sha256 = r.text(i, 23);
+  return row;
+}
+
+nlohmann::json parse_stored(const std::string& text, std::int64_t id, const std::string& location) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InfraError(
+        fmt::format("results store {}: document {} is not JSON ({}); the store is "
+                    "damaged",
+                    location, id, e.what()));
+  }
+}
+
+}  // namespace
+
+PostgresStore::PostgresStore(const std::string& url, StoreOpen mode)
+    : db_(PgConnection::connect(url)) {
+  if (mode == StoreOpen::must_exist && schema_version(db_) == 0) {
+    throw UsageError(
+        fmt::format("results store {} has no raygate tables yet; `raygate run --store URL` "
+                    "records into it, `raygate import FILE... --store URL` fills it",
+                    db_.location()));
+  }
+  migrate(db_, postgres_migrations());
+}
+
+AddOutcome PostgresStore::add(const ResultsDocument& document, const std::string& branch) {
+  const DocumentRows rows = document_rows(document, branch, utc_timestamp());
+  // Checked first so that re-importing stored documents uses up no ids.
+  if (const auto existing = find_document(rows.document.content_sha256)) return {*existing, true};
+  {
+    PgTransaction transaction(db_);
+    if (const std::optional<std::int64_t> id = insert_document(rows.document)) {
+      for (const RevisionRow& revision : rows.revisions) insert_revision(*id, revision);
+      for (const SceneRow& scene : rows.scenes) insert_scene(*id, scene);
+      transaction.commit();
+      return {*id, false};
+    }
+  }  // nothing was written; rolled back
+  // Another writer committed the same content while this insert waited on the unique key.
+  if (const auto existing = find_document(rows.document.content_sha256)) return {*existing, true};
+  throw InfraError(fmt::format(
+      "results store {}: document {} was neither stored nor found (a concurrent writer's "
+      "row vanished); retry",
+      location(), rows.document.content_sha256));
+}
+
+std::optional<std::int64_t> PostgresStore::find_document(const std::string& content_sha256) {
+  const PgResult found = db_.exec("SELECT id FROM documents WHERE content_sha256 = $1",
+                                  PgParams().text(content_sha256));
+  if (found.rows() == 0) return std::nullopt;
+  return found.integer(0, 0);
+}
+
+std::optional<std::int64_t> PostgresStore::insert_document(const DocumentRow& row) {
+  PgParams p;
+  p.text(row.content_sha256).integer(row.schema_version).text(row.kind).text(row.branch);
+  p.text(row.suite).text(row.shard).flag(row.complete).text(row.started_at);
+  p.text(row.finished_at).text(row.stored_at).text(row.raygate_version);
+  p.text(row.baseline_version).text(row.baseline_sha256).text(row.machine_hostname);
+  p.text(row.machine_cpu_model).text(row.document_json);
+  const PgResult inserted = db_.exec(kInsertDocument, p);
+  if (inserted.rows() == 0) return std::nullopt;
+  return inserted.integer(0, 0);
+}
+
+void PostgresStore::insert_revision(std::int64_t document_id, const RevisionRow& row) {
+  PgParams p;
+  p.integer(document_id).text(row.role).text(row.repository).text(row.sha);
+  p.text(row.short_sha).text(row.subject).text(row.author).text(row.ref_name);
+  p.text(row.commit_time).integer(row.commit_unix).flag(row.dirty).text(row.adapter_name);
+  p.text(row.adapter_hash);
+  db_.exec(kInsertRevision, p);
+}
+
+void PostgresStore::insert_scene(std::int64_t document_id, const SceneRow& row) {
+  PgParams p;
+  p.integer(document_id).text(row.scene_id).text(row.role).text(row.status);
+  p.integer(row.rounds).real(row.ratio).real(row.ratio_lower).real(row.ratio_upper);
+  p.real(row.tracer_median_seconds).real(row.baseline_median_seconds);
+  p.text(row.image_verdict).real(row.image_max_error).real(row.image_rms_error);
+  p.real(row.change).real(row.change_lower).real(row.change_upper).text(row.change_verdict);
+  db_.exec(kInsertScene, p);
+}
+
+std::vector<StoredDocument> PostgresStore::documents(const DocumentQuery& query) {
+  PgParams p;
+  p.text(query.branch).text(query.sha_prefix);
+  p.integer(query.last == 0 ? std::nullopt
+                            : std::optional<std::int64_t>(static_cast<std::int64_t>(query.last)));
+  const PgResult r = db_.exec(kSelectDocuments, p);
+  std::vector<StoredDocument> out;
+  for (int i = 0; i < r.rows(); ++i) {
+    StoredDocument d;
+    d.id = r.integer(i, 0);
+    d.stored_at = r.text(i, 1);
+    d.branch = r.text(i, 2);
+    d.content_sha256 = r.text(i, 3);
+    d.document = parse_stored(r.text(i, 4), d.id, location());
+    out.push_back(std::move(d));
+  }
+  return out;
+}
+
+std::vector<HistoryRow> PostgresStore::measurements(const HistoryQuery& query) {
+  PgParams p;
+  p.text(query.branch).text(query.role).flag(query.include_dirty);
+  for (const std::string& scene : query.scenes) p.text(scene);
+  const PgResult r =
+      db_.exec(kSelectMeasurements + scene_filter(query.scenes) + kMeasurementOrder, p);
+  std::vector<HistoryRow> rows;
+  for (int i = 0; i < r.rows(); ++i) rows.push_back(history_row(r, i));
+  return rows;
+}
+
+}  // namespace raygate

@@ -69,18 +69,36 @@ std::string query_without_password(const std::string& query, std::vector<std::st
   return kept;
 }
 
+// Where the user part ends for redaction: the last '@' before the query. Wider than libpq's
+// reading (user_part_end) on purpose: a password holding an unencoded '/' or '@' is not a valid
+// URL to libpq, and must still not be printed in the error that says so.
+std::size_t redacted_user_part_end(const std::string& rest) {
+  const std::size_t question = rest.find('?');
+  const std::size_t at =
+      question == std::string::npos ? rest.rfind('@') : rest.rfind('@', question);
+  return at;
+}
+
 // The redacted URL, and the secrets as written in it.
 std::string redact(const std::string& url, std::vector<std::string>& secrets) {
   const std::size_t scheme = url.find("://");
   if (scheme == std::string::npos) return url;
   std::string rest = url.substr(scheme + 3);
   std::size_t host = 0;  // where the host starts in `rest`
-  const std::size_t at = user_part_end(rest);
+  const std::size_t at = redacted_user_part_end(rest);
   if (at != std::string::npos) {
     host = at;
     const std::size_t colon = rest.find(':');
     if (colon < at) {
-      secrets.push_back(rest.substr(colon + 1, at - colon - 1));
+      const std::string password = rest.substr(colon + 1, at - colon - 1);
+      secrets.push_back(password);
+      // libpq reads an unencoded '@' or '/' as the end of the user part and echoes the rest as
+      // a host name: the tails after them are secrets too (all but the very short ones, which
+      // would blank out ordinary words of the message).
+      for (std::size_t cut = password.find_first_of("@/"); cut != std::string::npos;
+           cut = password.find_first_of("@/", cut + 1)) {
+        if (password.size() - cut - 1 >= 3) secrets.push_back(password.substr(cut + 1));
+      }
       rest.erase(colon, at - colon);
       host = colon;
     }

@@ -22,7 +22,10 @@ struct GateArgs {
 
 int gate_command(const GateArgs& args) {
   const ResultsDocument document = read_results(args.results);
-  GatePolicy policy = args.policy.empty() ? GatePolicy{} : load_policy(args.policy);
+  std::string note;
+  GatePolicy policy =
+      args.policy.empty() ? recorded_policy(document.settings, note) : load_policy(args.policy);
+  if (!note.empty()) fmt::print("gate policy: {}\n", note);
   policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
   const GateResult gate = evaluate_gate(document, policy);
   print_gate_summary(gate, stdout);

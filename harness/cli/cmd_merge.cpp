@@ -38,10 +38,17 @@ void print_scores(const ResultsDocument& document) {
 
 int merge_command(const MergeArgs& args) {
   check_report_specs(args.reports);
-  GatePolicy policy = args.policy.empty() ? GatePolicy{} : load_policy(args.policy);
-  policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
   std::vector<MergeInput> inputs;
   for (const std::string& path : args.documents) inputs.push_back({path, read_results(path)});
+  // Without --policy the shards' own limits judge the merge (merge checked that they agree).
+  std::string note;
+  GatePolicy policy = args.policy.empty() || inputs.empty()
+                          ? recorded_policy(inputs.empty() ? nlohmann::json::object()
+                                                           : inputs.front().document.settings,
+                                            note)
+                          : load_policy(args.policy);
+  if (!note.empty()) fmt::print("gate policy: {}\n", note);
+  policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
 
   MergeOptions options;
   options.allow_partial = args.allow_partial;

@@ -83,4 +83,20 @@ GatePolicy load_policy(const std::filesystem::path& path) {
   return policy;
 }
 
+GatePolicy recorded_policy(const nlohmann::json& settings, std::string& note) {
+  const std::string file = settings.value("policy_file", std::string());
+  if (!file.empty() && std::filesystem::is_regular_file(file)) {
+    note = "the policy it was measured under, " + file;
+    return load_policy(file);
+  }
+  GatePolicy policy;
+  policy.defaults.max_slowdown = settings.value("max_slowdown", policy.defaults.max_slowdown);
+  policy.defaults.significance = settings.value("significance", policy.defaults.significance);
+  note = fmt::format("the limits it was measured under (max_slowdown {}, significance {}){}",
+                     policy.defaults.max_slowdown, policy.defaults.significance,
+                     file.empty() ? "" : "; its policy file " + file +
+                                             " is not here, so per-scene overrides are not applied");
+  return policy;
+}
+
 }  // namespace raygate

@@ -6,6 +6,8 @@
 
 #include <filesystem>
 #include <map>
+
+#include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 
@@ -33,5 +35,10 @@ struct GatePolicy {
 // values are UsageErrors naming origin and JSON path; an override without a reason too.
 GatePolicy parse_policy(std::string_view text, const std::string& origin);
 GatePolicy load_policy(const std::filesystem::path& path);
+
+// The policy a results document was measured under, for judging it again (gate, merge) when no
+// --policy is given: its policy file when that file is still there, else the defaults it
+// recorded (settings.max_slowdown, settings.significance); `note` says which was used.
+GatePolicy recorded_policy(const nlohmann::json& settings, std::string& note);
 
 }  // namespace raygate

@@ -5,6 +5,7 @@
 // as `git bisect skip` would; if skips hide the answer, the range that holds it is printed.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 
@@ -14,6 +15,7 @@
 #include "cli/revision_setup.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
+#include "measure/change.h"
 
 namespace raygate::cli {
 namespace {
@@ -33,6 +35,11 @@ struct Bisector {
   const BaselineTool& baseline;
   const Repository& repository;
   Worktree good;
+  // The slowdown that separates good from bad. The bad end is judged against the policy's limit;
+  // after that a step is bad when its change is closer to the bad end's than to none, so a
+  // commit with a small unrelated change (+1% where the culprit made +10%) is not called the
+  // culprit by a noisy median that strays over a 3% limit.
+  std::optional<double> split;
 
   // Measures `candidate` against the good commit on the one scene and says which side it is on.
   Step judge(const Revision& candidate) {
@@ -54,15 +61,24 @@ struct Bisector {
     const bool bad = args.metric == "image" ? image_failed(scene) : speed_regressed(scene);
     fmt::print("  {} {}: {} -> {}\n", candidate.short_sha, candidate.subject, describe(scene),
                bad ? "bad" : "good");
+    if (bad && !split && scene.change) {
+      const double limit = context.policy.for_scene(scene.entry.id).max_slowdown;
+      split = std::max(limit, scene.change->change / 2);
+      if (args.metric == "ratio") {
+        fmt::print("  later steps are bad above {:+.1f}% (half of this one's change)\n",
+                   100 * *split);
+      }
+    }
     return bad ? Step::bad : Step::good;
   }
 
   bool speed_regressed(const SceneResult& scene) const {
     // An INCONCLUSIVE step is decided by its point estimate against the limit: bisect must
     // choose a side, and the printed numbers show how close the call was.
-    const double limit = context.policy.for_scene(scene.entry.id).max_slowdown;
-    return scene.change_verdict == "REGRESSED" ||
-           (scene.change_verdict == "INCONCLUSIVE" && scene.change->change > limit);
+    const double limit = split.value_or(context.policy.for_scene(scene.entry.id).max_slowdown);
+    const ChangeVerdict verdict = classify_change(*scene.change, limit);
+    return verdict == ChangeVerdict::regressed ||
+           (verdict == ChangeVerdict::inconclusive && scene.change->change > limit);
   }
 
   static bool image_failed(const SceneResult& scene) {

@@ -102,12 +102,20 @@ TEST_F(GateScenario, TenPercentSlowerFailsOnSpeed) {
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_TRUE(has(r.out, "slower: head vs base +")) << r.out;
   EXPECT_FALSE(has(r.out, "image head vs base")) << r.out;  // the same picture
+  // Every scene is slower; at least one is proven so. On a noisy runner a scene may use up its
+  // 30 rounds undecided (INCONCLUSIVE, a warning): bench/gate-reliability measures how often.
+  int regressed = 0;
   for (const SceneResult& scene : document().scenes) {
-    EXPECT_EQ(scene.change_verdict, "REGRESSED") << scene.entry.id << "\n" << r.out;
-    ASSERT_TRUE(scene.change);
+    ASSERT_TRUE(scene.change) << scene.entry.id;
+    EXPECT_TRUE(scene.change_verdict == "REGRESSED" || scene.change_verdict == "INCONCLUSIVE")
+        << scene.entry.id << " " << scene.change_verdict << "\n" << r.out;
+    EXPECT_GT(scene.change->change, 0.0) << scene.entry.id;
+    if (scene.change_verdict != "REGRESSED") continue;
+    ++regressed;
     EXPECT_GT(scene.change->change, 0.03) << scene.entry.id;
     EXPECT_LT(scene.change->change, 0.25) << scene.entry.id;  // ~10%, not a different program
   }
+  EXPECT_GE(regressed, 1) << r.out;
 }
 
 TEST_F(GateScenario, WrongShadingFailsOnTheImageNotOnSpeed) {

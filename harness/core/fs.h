@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -14,6 +15,10 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
 
 // Whole file as bytes; throws UsageError (missing or unreadable input is the user's to fix).
 std::string read_file(const std::filesystem::path& path);
+
+// The whole of a /proc or /sys file (they report size 0, so it is read to EOF); nullopt when it
+// cannot be read, which for such files means "unknown", not an error.
+std::optional<std::string> read_pseudo_file(const std::filesystem::path& path);
 
 // A fresh, empty directory under the system temp dir, removed by the destructor.
 class TempDir {

@@ -15,16 +15,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// /proc and /sys files report size 0, so read to EOF; any failure means "unknown".
-std::optional<std::string> read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream out;
-  out << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return out.str();
-}
-
 std::string trimmed(std::string_view text) {
   const auto first = text.find_first_not_of(" \t\r\n");
   if (first == std::string_view::npos) return {};
@@ -80,17 +70,17 @@ void probe_cpus(const fs::path& root, SystemFacts& facts) {
   for (const auto& [cpu, dir] : cpu_directories(root)) {
     std::error_code error;
     if (fs::is_directory(dir / "cpufreq", error)) facts.cpufreq_present = true;
-    if (auto text = read_text(dir / "cpufreq" / "scaling_governor")) {
+    if (auto text = read_pseudo_file(dir / "cpufreq" / "scaling_governor")) {
       if (std::string governor = trimmed(*text); !governor.empty()) {
         facts.governors.push_back({cpu, governor});
       }
     }
-    if (auto text = read_text(dir / "topology" / "thread_siblings_list")) {
+    if (auto text = read_pseudo_file(dir / "topology" / "thread_siblings_list")) {
       if (auto siblings = parse_cpu_list(*text); siblings.size() > 1) groups.insert(siblings);
     }
   }
   facts.smt_sibling_groups.assign(groups.begin(), groups.end());
-  if (auto text = read_text(under_root(root, "/sys/devices/system/cpu/smt/active"))) {
+  if (auto text = read_pseudo_file(under_root(root, "/sys/devices/system/cpu/smt/active"))) {
     if (auto value = parse_int(*text)) facts.smt_active = *value != 0;
   }
 }
@@ -124,14 +114,14 @@ bool has_hypervisor_flag(std::string_view cpuinfo) {
 
 void probe_virtualization(const ProbeOptions& options, SystemFacts& facts) {
   Virtualization& v = facts.virtualization;
-  const auto product = read_text(under_root(options.root, "/sys/class/dmi/id/product_name"));
-  const auto vendor = read_text(under_root(options.root, "/sys/class/dmi/id/sys_vendor"));
+  const auto product = read_pseudo_file(under_root(options.root, "/sys/class/dmi/id/product_name"));
+  const auto vendor = read_pseudo_file(under_root(options.root, "/sys/class/dmi/id/sys_vendor"));
   if (std::string vm = vm_from_dmi(product.value_or(""), vendor.value_or("")); !vm.empty()) {
     v.vm = vm;
     v.evidence.push_back("DMI product \"" + trimmed(product.value_or("")) + "\", vendor \"" +
                          trimmed(vendor.value_or("")) + "\"");
   }
-  if (auto cpuinfo = read_text(under_root(options.root, "/proc/cpuinfo"));
+  if (auto cpuinfo = read_pseudo_file(under_root(options.root, "/proc/cpuinfo"));
       cpuinfo && has_hypervisor_flag(*cpuinfo)) {
     if (v.vm.empty()) v.vm = "unknown hypervisor";
     v.evidence.push_back("CPU flag \"hypervisor\" in /proc/cpuinfo");
@@ -144,7 +134,7 @@ void probe_virtualization(const ProbeOptions& options, SystemFacts& facts) {
     v.container = "podman";
     v.evidence.push_back("/run/.containerenv exists");
   }
-  if (auto cgroup = read_text(under_root(options.root, "/proc/1/cgroup"))) {
+  if (auto cgroup = read_pseudo_file(under_root(options.root, "/proc/1/cgroup"))) {
     if (std::string c = container_from_cgroup(*cgroup); !c.empty()) {
       if (v.container.empty()) v.container = c;
       v.evidence.push_back("/proc/1/cgroup names " + c);
@@ -170,7 +160,7 @@ struct CgroupPaths {
 
 CgroupPaths cgroup_paths(const fs::path& root) {
   CgroupPaths paths;
-  const auto text = read_text(under_root(root, "/proc/self/cgroup"));
+  const auto text = read_pseudo_file(under_root(root, "/proc/self/cgroup"));
   if (!text) return paths;
   std::istringstream in(*text);
   for (std::string line; std::getline(in, line);) {
@@ -203,14 +193,14 @@ std::optional<double> tightest_quota(const fs::path& base, const fs::path& group
 std::optional<double> probe_cpu_quota(const fs::path& root) {
   const CgroupPaths paths = cgroup_paths(root);
   auto v2 = tightest_quota(under_root(root, "/sys/fs/cgroup"), paths.v2, [](const fs::path& dir) {
-    const auto text = read_text(dir / "cpu.max");
+    const auto text = read_pseudo_file(dir / "cpu.max");
     return text ? parse_cpu_max(*text) : std::nullopt;
   });
   if (v2) return v2;
   return tightest_quota(under_root(root, "/sys/fs/cgroup/cpu"), paths.v1_cpu,
                         [](const fs::path& dir) -> std::optional<double> {
-                          const auto quota = read_text(dir / "cpu.cfs_quota_us");
-                          const auto period = read_text(dir / "cpu.cfs_period_us");
+                          const auto quota = read_pseudo_file(dir / "cpu.cfs_quota_us");
+                          const auto period = read_pseudo_file(dir / "cpu.cfs_period_us");
                           if (!quota || !period) return std::nullopt;
                           return parse_cpu_max(trimmed(*quota) + " " + trimmed(*period));
                         });
@@ -331,7 +321,7 @@ std::string container_from_cgroup(std::string_view cgroup) {
 }
 
 std::optional<CpuTimes> read_cpu_times(const fs::path& root) {
-  const auto text = read_text(under_root(root, "/proc/stat"));
+  const auto text = read_pseudo_file(under_root(root, "/proc/stat"));
   return text ? parse_cpu_times(*text) : std::nullopt;
 }
 
@@ -340,10 +330,10 @@ SystemFacts probe_system_facts(const ProbeOptions& options) {
   facts.machine = probe_machine_context(options.root);
   probe_cpus(options.root, facts);
   if (options.live) facts.allowed_cpus = allowed_cpu_list();
-  if (auto text = read_text(under_root(options.root, "/proc/sys/kernel/randomize_va_space"))) {
+  if (auto text = read_pseudo_file(under_root(options.root, "/proc/sys/kernel/randomize_va_space"))) {
     if (auto value = parse_int(*text)) facts.aslr = static_cast<int>(*value);
   }
-  if (auto text = read_text(under_root(options.root, "/proc/meminfo")))
+  if (auto text = read_pseudo_file(under_root(options.root, "/proc/meminfo")))
     facts.swap = parse_swap(*text);
   facts.cpu_quota = probe_cpu_quota(options.root);
   probe_virtualization(options, facts);

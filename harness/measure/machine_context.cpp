@@ -16,20 +16,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/fs.h"
+
 namespace raygate {
 namespace {
 
 namespace fs = std::filesystem;
-
-// /proc and /sys files report size 0, so read to EOF; any failure means "unknown".
-std::optional<std::string> read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream out;
-  out << in.rdbuf();
-  if (in.bad()) return std::nullopt;
-  return out.str();
-}
 
 std::string_view trim(std::string_view text) {
   const auto first = text.find_first_not_of(" \t\r\n");
@@ -80,7 +72,7 @@ std::vector<std::string> probe_governors(const fs::path& root) {
   for (fs::directory_iterator it(under_root(root, "/sys/devices/system/cpu"), error), end;
        !error && it != end; it.increment(error)) {
     if (!is_cpu_directory_name(it->path().filename().string())) continue;
-    if (auto text = read_text(it->path() / "cpufreq" / "scaling_governor")) {
+    if (auto text = read_pseudo_file(it->path() / "cpufreq" / "scaling_governor")) {
       const std::string_view governor = trim(*text);
       if (!governor.empty()) governors.emplace(governor);
     }
@@ -90,10 +82,10 @@ std::vector<std::string> probe_governors(const fs::path& root) {
 
 std::optional<bool> probe_turbo(const fs::path& root) {
   // intel_pstate says "no turbo"; acpi-cpufreq and amd-pstate say "boost".
-  if (auto text = read_text(under_root(root, "/sys/devices/system/cpu/intel_pstate/no_turbo"))) {
+  if (auto text = read_pseudo_file(under_root(root, "/sys/devices/system/cpu/intel_pstate/no_turbo"))) {
     if (auto value = parse_integer(*text)) return *value == 0;
   }
-  if (auto text = read_text(under_root(root, "/sys/devices/system/cpu/cpufreq/boost"))) {
+  if (auto text = read_pseudo_file(under_root(root, "/sys/devices/system/cpu/cpufreq/boost"))) {
     if (auto value = parse_integer(*text)) return *value != 0;
   }
   return std::nullopt;
@@ -243,11 +235,11 @@ std::string compiler_description() {
 
 MachineContext probe_machine_context(const fs::path& root) {
   MachineContext context;
-  if (auto cpuinfo = read_text(under_root(root, "/proc/cpuinfo"))) {
+  if (auto cpuinfo = read_pseudo_file(under_root(root, "/proc/cpuinfo"))) {
     context.cpu_model = parse_cpu_model(*cpuinfo);
     context.logical_cores = count_processors(*cpuinfo);
   }
-  if (auto online = read_text(under_root(root, "/sys/devices/system/cpu/online"))) {
+  if (auto online = read_pseudo_file(under_root(root, "/sys/devices/system/cpu/online"))) {
     context.online_cpus = count_cpu_list(*online);
   }
   context.allowed_cpus = probe_allowed_cpus();
@@ -255,15 +247,15 @@ MachineContext probe_machine_context(const fs::path& root) {
   context.turbo_enabled = probe_turbo(root);
   context.kernel = probe_kernel();
   context.compiler = compiler_description();
-  if (auto loadavg = read_text(under_root(root, "/proc/loadavg"))) {
+  if (auto loadavg = read_pseudo_file(under_root(root, "/proc/loadavg"))) {
     context.load_average = parse_load_average(*loadavg);
   }
-  if (auto meminfo = read_text(under_root(root, "/proc/meminfo"))) {
+  if (auto meminfo = read_pseudo_file(under_root(root, "/proc/meminfo"))) {
     context.total_memory_bytes = parse_mem_total_bytes(*meminfo);
   }
   context.perf_error = probe_perf_instructions();
   context.perf_instructions_available = context.perf_error.empty();
-  if (auto paranoid = read_text(under_root(root, "/proc/sys/kernel/perf_event_paranoid"))) {
+  if (auto paranoid = read_pseudo_file(under_root(root, "/proc/sys/kernel/perf_event_paranoid"))) {
     if (auto value = parse_integer(*paranoid)) context.perf_event_paranoid = static_cast<int>(*value);
   }
   context.hostname = probe_hostname();

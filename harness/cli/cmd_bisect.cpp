@@ -36,9 +36,10 @@ struct Bisector {
   const Repository& repository;
   Worktree good;
   // The slowdown that separates good from bad. The bad end is judged against the policy's limit;
-  // after that a step is bad when its change is closer to the bad end's than to none, so a
-  // commit with a small unrelated change (+1% where the culprit made +10%) is not called the
-  // culprit by a noisy median that strays over a 3% limit.
+  // after that a step is bad when its change is above half of what the bad end's surely is (the
+  // lower end of its CI: its estimate alone once came out +27% for a +11% culprit, and the
+  // split at +13.6% called the culprit good). So a commit with a small unrelated change (+1%
+  // where the culprit made +10%) is not called the culprit by a median straying over 3%.
   std::optional<double> split;
 
   // Measures `candidate` against the good commit on the one scene and says which side it is on.
@@ -63,9 +64,10 @@ struct Bisector {
                bad ? "bad" : "good");
     if (bad && !split && scene.change) {
       const double limit = context.policy.for_scene(scene.entry.id).max_slowdown;
-      split = std::max(limit, scene.change->change / 2);
+      split = std::max(limit, scene.change->change_interval.lower / 2);
       if (args.metric == "ratio") {
-        fmt::print("  later steps are bad above {:+.1f}% (half of this one's change)\n",
+        fmt::print("  later steps are bad above {:+.1f}% (half the lower end of this one's CI, "
+                   "or the limit)\n",
                    100 * *split);
       }
     }

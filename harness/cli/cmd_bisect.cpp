@@ -120,7 +120,8 @@ int bisect_command(const BisectArgs& args) {
   const BaselineTool baseline(context.tools.baseline);
   const Repository repository = Repository::open(args.measure.repo, context.cache_dir);
   const std::vector<Revision> candidates = repository.first_parent_history(args.good, args.bad);
-  Bisector bisector{args, context, baseline, repository, repository.checkout(args.good), std::nullopt};
+  Bisector bisector{args, context, baseline, repository, repository.checkout(args.good),
+                    std::nullopt};
   fmt::print("bisecting {} commits after {} on scene {} by {}\n", candidates.size(),
              bisector.good.short_sha, context.scenes.front().id, args.metric);
 

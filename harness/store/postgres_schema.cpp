@@ -84,17 +84,13 @@ const std::vector<Migration> kMigrations = {
     {1, "documents, revisions, scene_results", kCreateTables},
 };
 
-const char* const kMigrationsTable =
-    "CREATE TABLE IF NOT EXISTS schema_migrations (version INTEGER PRIMARY KEY, "
-    "description TEXT NOT NULL, applied_at TEXT NOT NULL)";
-
 // One migration with its bookkeeping, in one transaction. The advisory lock makes processes
 // that open a fresh database at once take turns (CREATE TABLE IF NOT EXISTS alone races on the
 // catalog); the version is read again under it, so the second one finds the work done.
 void apply(PgConnection& db, const Migration& migration) {
   PgTransaction transaction(db);
   db.exec("SELECT pg_advisory_xact_lock($1)", PgParams().integer(kMigrationLockKey));
-  db.exec(kMigrationsTable);
+  db.exec(kMigrationsTableSql);
   if (schema_version(db) >= migration.version) return;
   db.exec_script(migration.sql);
   db.exec("INSERT INTO schema_migrations (version, description, applied_at) VALUES ($1, $2, $3)",

@@ -9,7 +9,7 @@
 #include <span>
 
 #include "store/postgres_handle.h"
-#include "store/sqlite_schema.h"  // Migration: one shape for both backends' lists
+#include "store/migration.h"
 
 namespace raygate {
 

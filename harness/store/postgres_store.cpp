@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/time_text.h"
 #include "store/postgres_schema.h"
+#include "store/store_rows.h"
 
 namespace raygate {
 
@@ -69,45 +70,18 @@ std::string scene_filter(const std::vector<std::string>& scenes) {
   return sql + ")";
 }
 
-HistoryRow history_row(const PgResult& r, int i) {
-  HistoryRow row;
-  row.document_id = r.integer(i, 0);
-  row.stored_at = r.text(i, 1);
-  row.measured_at = r.text(i, 2);
-  row.complete = r.flag(i, 3);
-  row.branch = r.text(i, 4);
-  row.role = r.text(i, 5);
-  row.sha = r.text(i, 6);
-  row.short_sha = r.text(i, 7);
-  row.subject = r.text(i, 8);
-  row.commit_time = r.text(i, 9);
-  row.commit_unix = r.optional_integer(i, 10);
-  row.dirty = r.flag(i, 11);
-  row.scene_id = r.text(i, 12);
-  row.status = r.text(i, 13);
-  row.ratio = r.real(i, 14);
-  row.ratio_lower = r.real(i, 15);
-  row.ratio_upper = r.real(i, 16);
-  row.baseline_median_seconds = r.real(i, 17);
-  row.image_verdict = r.text(i, 18);
-  row.image_max_error = r.real(i, 19);
-  row.image_rms_error = r.real(i, 20);
-  row.machine_hostname = r.text(i, 21);
-  row.machine_cpu_model = r.text(i, 22);
-  row.baseline_sha256 = r.text(i, 23);
-  return row;
-}
-
-nlohmann::json parse_stored(const std::string& text, std::int64_t id, const std::string& location) {
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InfraError(
-        fmt::format("results store {}: document {} is not JSON ({}); the store is "
-                    "damaged",
-                    location, id, e.what()));
+// The history columns of one result row.
+struct ResultColumns {
+  const PgResult& result;
+  int row;
+  std::string text(int c) const { return result.text(row, c); }
+  std::int64_t integer(int c) const { return result.integer(row, c); }
+  std::optional<std::int64_t> optional_integer(int c) const {
+    return result.optional_integer(row, c);
   }
-}
+  std::optional<double> real(int c) const { return result.real(row, c); }
+  bool flag(int c) const { return result.flag(row, c); }
+};
 
 }  // namespace
 
@@ -194,7 +168,7 @@ std::vector<StoredDocument> PostgresStore::documents(const DocumentQuery& query)
     d.stored_at = r.text(i, 1);
     d.branch = r.text(i, 2);
     d.content_sha256 = r.text(i, 3);
-    d.document = parse_stored(r.text(i, 4), d.id, location());
+    d.document = parse_stored_document(r.text(i, 4), d.id, location());
     out.push_back(std::move(d));
   }
   return out;
@@ -207,7 +181,7 @@ std::vector<HistoryRow> PostgresStore::measurements(const HistoryQuery& query) {
   const PgResult r =
       db_.exec(kSelectMeasurements + scene_filter(query.scenes) + kMeasurementOrder, p);
   std::vector<HistoryRow> rows;
-  for (int i = 0; i < r.rows(); ++i) rows.push_back(history_row(r, i));
+  for (int i = 0; i < r.rows(); ++i) rows.push_back(history_row_from(ResultColumns{r, i}));
   return rows;
 }
 

@@ -84,16 +84,12 @@ const std::vector<Migration> kMigrations = {
     {1, "documents, revisions, scene_results", kCreateTables},
 };
 
-const char* const kMigrationsTable =
-    "CREATE TABLE IF NOT EXISTS schema_migrations (version INTEGER PRIMARY KEY, "
-    "description TEXT NOT NULL, applied_at TEXT NOT NULL)";
-
 // One migration with its bookkeeping, in one transaction; skipped if another process applied
 // it first (the version is read again under the write lock).
 void apply(SqliteDb& db, const Migration& migration) {
   SqliteTransaction transaction(db);
   if (schema_version(db) >= migration.version) return;
-  db.exec(kMigrationsTable);
+  db.exec(kMigrationsTableSql);
   db.exec(migration.sql);
   SqliteStatement record(db,
                          "INSERT INTO schema_migrations (version, description, applied_at) "

@@ -7,15 +7,10 @@
 #include <span>
 #include <string>
 
+#include "store/migration.h"
 #include "store/sqlite_handle.h"
 
 namespace raygate {
-
-struct Migration {
-  int version = 0;  // 1, 2, 3, ... in order
-  std::string description;
-  std::string sql;
-};
 
 // Every migration this raygate knows, oldest first.
 std::span<const Migration> sqlite_migrations();

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/time_text.h"
 #include "store/sqlite_schema.h"
+#include "store/store_rows.h"
 
 namespace raygate {
 
@@ -75,45 +76,17 @@ std::string scene_filter(const std::vector<std::string>& scenes) {
   return sql + ")";
 }
 
-HistoryRow history_row(const SqliteStatement& s) {
-  HistoryRow row;
-  row.document_id = s.integer(0);
-  row.stored_at = s.text(1);
-  row.measured_at = s.text(2);
-  row.complete = s.integer(3) != 0;
-  row.branch = s.text(4);
-  row.role = s.text(5);
-  row.sha = s.text(6);
-  row.short_sha = s.text(7);
-  row.subject = s.text(8);
-  row.commit_time = s.text(9);
-  row.commit_unix = s.optional_integer(10);
-  row.dirty = s.integer(11) != 0;
-  row.scene_id = s.text(12);
-  row.status = s.text(13);
-  row.ratio = s.real(14);
-  row.ratio_lower = s.real(15);
-  row.ratio_upper = s.real(16);
-  row.baseline_median_seconds = s.real(17);
-  row.image_verdict = s.text(18);
-  row.image_max_error = s.real(19);
-  row.image_rms_error = s.real(20);
-  row.machine_hostname = s.text(21);
-  row.machine_cpu_model = s.text(22);
-  row.baseline_sha256 = s.text(23);
-  return row;
-}
-
-nlohmann::json parse_stored(const std::string& text, std::int64_t id, const std::string& location) {
-  try {
-    return nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw InfraError(
-        fmt::format("results store {}: document {} is not JSON ({}); the store is "
-                    "damaged",
-                    location, id, e.what()));
+// The history columns of the current row.
+struct StatementColumns {
+  const SqliteStatement& statement;
+  std::string text(int c) const { return statement.text(c); }
+  std::int64_t integer(int c) const { return statement.integer(c); }
+  std::optional<std::int64_t> optional_integer(int c) const {
+    return statement.optional_integer(c);
   }
-}
+  std::optional<double> real(int c) const { return statement.real(c); }
+  bool flag(int c) const { return statement.integer(c) != 0; }
+};
 
 }  // namespace
 
@@ -193,7 +166,7 @@ std::vector<StoredDocument> SqliteStore::documents(const DocumentQuery& query) {
     d.stored_at = s.text(1);
     d.branch = s.text(2);
     d.content_sha256 = s.text(3);
-    d.document = parse_stored(s.text(4), d.id, location());
+    d.document = parse_stored_document(s.text(4), d.id, location());
     out.push_back(std::move(d));
   }
   return out;
@@ -206,7 +179,7 @@ std::vector<HistoryRow> SqliteStore::measurements(const HistoryQuery& query) {
     s.bind_text(static_cast<int>(i + 4), query.scenes[i]);
   }
   std::vector<HistoryRow> rows;
-  while (s.step()) rows.push_back(history_row(s));
+  while (s.step()) rows.push_back(history_row_from(StatementColumns{s}));
   return rows;
 }
 

@@ -1,9 +1,12 @@
 // Rows of the store's tables for one results document, shared by every backend.
 #include "store/store_rows.h"
 
+#include <fmt/core.h>
+
 #include <cctype>
 #include <cmath>
 
+#include "core/error.h"
 #include "core/sha256.h"
 
 namespace raygate {
@@ -197,6 +200,17 @@ std::string short_ref_name(const std::string& ref_name) {
     if (ref_name.starts_with(prefix)) return ref_name.substr(prefix.size());
   }
   return ref_name;
+}
+
+nlohmann::json parse_stored_document(const std::string& text, std::int64_t id,
+                                     const std::string& location) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InfraError(fmt::format(
+        "results store {}: document {} is not JSON ({}); the store is damaged", location, id,
+        e.what()));
+  }
 }
 
 }  // namespace raygate

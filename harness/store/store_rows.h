@@ -9,7 +9,10 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "store/results.h"
+#include "store/store.h"
 
 namespace raygate {
 
@@ -84,5 +87,42 @@ std::optional<std::int64_t> parse_iso8601_unix(std::string_view text);
 
 // "refs/heads/main" -> "main", "refs/remotes/origin/x" -> "origin/x", "refs/tags/v1" -> "v1".
 std::string short_ref_name(const std::string& ref_name);
+
+// A stored document's JSON text parsed back; text that is not JSON means a damaged store
+// (InfraError naming the store and the document id).
+nlohmann::json parse_stored_document(const std::string& text, std::int64_t id,
+                                     const std::string& location);
+
+// One measurements() row from the columns of the backends' shared query (its select list, in
+// order), read through `columns`: text(c), integer(c), optional_integer(c), real(c), flag(c).
+template <class Columns>
+HistoryRow history_row_from(const Columns& columns) {
+  HistoryRow row;
+  row.document_id = columns.integer(0);
+  row.stored_at = columns.text(1);
+  row.measured_at = columns.text(2);
+  row.complete = columns.flag(3);
+  row.branch = columns.text(4);
+  row.role = columns.text(5);
+  row.sha = columns.text(6);
+  row.short_sha = columns.text(7);
+  row.subject = columns.text(8);
+  row.commit_time = columns.text(9);
+  row.commit_unix = columns.optional_integer(10);
+  row.dirty = columns.flag(11);
+  row.scene_id = columns.text(12);
+  row.status = columns.text(13);
+  row.ratio = columns.real(14);
+  row.ratio_lower = columns.real(15);
+  row.ratio_upper = columns.real(16);
+  row.baseline_median_seconds = columns.real(17);
+  row.image_verdict = columns.text(18);
+  row.image_max_error = columns.real(19);
+  row.image_rms_error = columns.real(20);
+  row.machine_hostname = columns.text(21);
+  row.machine_cpu_model = columns.text(22);
+  row.baseline_sha256 = columns.text(23);
+  return row;
+}
 
 }  // namespace raygate

@@ -18,22 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool has(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
-class CompareCli : public ::testing::Test {
+class CompareCli : public TracerRepoTest {
  protected:
-  CompareCli() : repo_(dir_.path() / "tracer-repo") {
-    write_file_atomically(suite_, kTinySuite);
-    fs::create_directories(dir_.path() / "no-goldens");
-  }
-
-  std::string commit(const std::string& source, const std::string& message) {
-    repo_.write("tracer.cpp", source);
-    repo_.write("Makefile", read_file(kFixture / "Makefile"));
-    return repo_.commit(message);
-  }
 
   // The options every measuring command here shares: the tiny suite, make-nff, no goldens.
   std::vector<std::string> common(const std::vector<std::string>& scenes) const {
@@ -56,12 +42,6 @@ class CompareCli : public ::testing::Test {
   }
 
   ResultsDocument document() const { return read_results(dir_.path() / "c.json"); }
-
-  TempDir dir_;
-  testing::GitFixture repo_;
-  TracerSources sources_;
-  fs::path suite_ = dir_.path() / "tiny.json";
-  fs::path cache_ = dir_.path() / ".raygate";
 };
 
 TEST_F(CompareCli, SlowerHeadRegressesWithItsNumbersInEveryReport) {

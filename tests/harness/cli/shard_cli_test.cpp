@@ -18,22 +18,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-bool has(const std::string& text, const std::string& part) {
-  return text.find(part) != std::string::npos;
-}
-
-class ShardCli : public ::testing::Test {
+class ShardCli : public TracerRepoTest {
  protected:
-  ShardCli() : repo_(dir_.path() / "tracer-repo") {
-    write_file_atomically(suite_, kTinySuite);
-    fs::create_directories(dir_.path() / "no-goldens");
-  }
-
-  std::string commit(const std::string& source, const std::string& message) {
-    repo_.write("tracer.cpp", source);
-    repo_.write("Makefile", read_file(kFixture / "Makefile"));
-    return repo_.commit(message);
-  }
 
   // raygate run of `rev` on the tiny suite, few rounds, as shard `shard`, into `out`.
   CliRun run_shard(const std::string& rev, const std::string& shard, const fs::path& out,
@@ -51,12 +37,6 @@ class ShardCli : public ::testing::Test {
     args.insert(args.end(), {"-o", out.string(), "--store", (cache_ / "results.db").string()});
     return run_raygate(args, dir_);
   }
-
-  TempDir dir_;
-  testing::GitFixture repo_;
-  TracerSources sources_;
-  fs::path suite_ = dir_.path() / "tiny.json";
-  fs::path cache_ = dir_.path() / ".raygate";
 };
 
 std::vector<std::string> scene_ids(const ResultsDocument& document) {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "checkout/git_fixture.h"
 #include "core/fs.h"
 
 namespace raygate::test {
@@ -58,5 +59,34 @@ inline constexpr const char* kTinySuite = R"({
     {"id": "balls", "scene": "balls", "size": 2, "resolution": [128, 128]}
   ]
 })";
+
+inline bool has(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
+
+// A temp dir holding a git repository of the fixture tracer (commits made by the test), a suite
+// file, an empty golden folder ("no-goldens") and a cache dir: what every CLI test of the
+// measuring commands starts from.
+class TracerRepoTest : public ::testing::Test {
+ protected:
+  explicit TracerRepoTest(const char* suite_json = kTinySuite)
+      : repo_(dir_.path() / "tracer-repo") {
+    write_file_atomically(suite_, suite_json);
+    std::filesystem::create_directories(dir_.path() / "no-goldens");
+  }
+
+  // Commits the tracer's `source` and the fixture's Makefile; returns the sha.
+  std::string commit(const std::string& source, const std::string& message) {
+    repo_.write("tracer.cpp", source);
+    repo_.write("Makefile", read_file(kFixture / "Makefile"));
+    return repo_.commit(message);
+  }
+
+  TempDir dir_;
+  testing::GitFixture repo_;
+  TracerSources sources_;
+  std::filesystem::path suite_ = dir_.path() / "suite.json";
+  std::filesystem::path cache_ = dir_.path() / ".raygate";
+};
 
 }  // namespace raygate::test

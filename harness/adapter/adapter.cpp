@@ -12,6 +12,7 @@
 #include "adapter/suggest.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/path_component.h"
 #include "core/sha256.h"
 
 namespace raygate {
@@ -66,9 +67,13 @@ std::vector<std::string> read_argv(const JsonField& field, TemplateField where) 
 
 std::string read_name(const JsonField& field) {
   std::string name = field.as_string();
-  // It names cache folders and result records, so it must be safe as a file name.
+  // It names cache folders, golden folders and result records, so it must be safe as a file
+  // name; core/path_component.h has the rules every such name follows.
   if (!matches(name, "[A-Za-z0-9][A-Za-z0-9._-]*")) {
     field.fail("'" + name + "' must be letters, digits, '.', '_' or '-' (it names folders)");
+  }
+  if (const std::string problem = component_problem(name); !problem.empty()) {
+    field.fail("'" + name.substr(0, 20) + "...' " + problem + " (it names folders)");
   }
   return name;
 }
@@ -166,10 +171,21 @@ Timing read_timing(const JsonField& field) {
   return timing;
 }
 
+// The longest timeout accepted: a week. Anything longer is a typo or "never", and values far
+// beyond it overflow the clock arithmetic (1e10 s in nanoseconds exceeds 64 bits), which once
+// made every run "time out after 0.0 s".
+constexpr double kMaxTimeoutSeconds = 7 * 24 * 3600;
+// Timeouts are kept in milliseconds: anything shorter would round to 0, which means "none".
+constexpr double kMinTimeoutSeconds = 0.001;
+
 double read_positive_seconds(const JsonField& field) {
   const double seconds = field.as_number();
   if (!(seconds > 0) || !std::isfinite(seconds)) {
     field.fail("must be a positive number of seconds, found " + describe_json(field.value()));
+  }
+  if (seconds > kMaxTimeoutSeconds || seconds < kMinTimeoutSeconds) {
+    field.fail("must be between 0.001 and 604800 seconds (one week), found " +
+               describe_json(field.value()));
   }
   return seconds;
 }
@@ -281,9 +297,11 @@ Adapter parse_adapter(std::string_view text, const std::string& origin) {
   }
   json document;
   try {
-    document = json::parse(text);
+    document = parse_json_rejecting_duplicate_keys(text);
   } catch (const json::parse_error& e) {
     throw_parse_error(e, origin);
+  } catch (const FieldError& e) {
+    throw UsageError(origin + ": " + e.path() + ": " + e.what());
   }
   try {
     Adapter adapter = read_fields(JsonField(document, "$"));

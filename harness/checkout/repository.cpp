@@ -1,6 +1,11 @@
 #include "checkout/repository.h"
 
 #include <fmt/format.h>
+#include <pwd.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <optional>
 
 #include "checkout/atomic_dir.h"
 #include "checkout/describe.h"
@@ -21,6 +26,44 @@ std::string without_trailing_slash(std::string path) {
   return path;
 }
 
+// Where the user's files are (or the git dir of a bare repository): what "../sub" is relative to.
+std::string local_base(git_repository* repo) {
+  const char* workdir = git_repository_workdir(repo);
+  return without_trailing_slash(workdir != nullptr ? workdir : git_repository_path(repo));
+}
+
+// Whether `path` is in a repository that git's ownership check refused: libgit2 1.5 reports that
+// refusal as GIT_ENOTFOUND ("config value 'safe.directory' was not found"), later versions as
+// GIT_EOWNER. Asking again with the check off tells a refused repository from no repository;
+// the check is restored at once and the repository opened that way is never used.
+std::optional<std::string> refused_for_ownership(const fs::path& path, int rc) {
+  if (rc != GIT_ENOTFOUND && rc != GIT_EOWNER) return std::nullopt;
+  int validating = 1;
+  git_libgit2_opts(GIT_OPT_GET_OWNER_VALIDATION, &validating);
+  if (validating == 0) return std::nullopt;
+  git_libgit2_opts(GIT_OPT_SET_OWNER_VALIDATION, 0);
+  git::RepositoryPtr repo;
+  const int unchecked = git_repository_open_ext(repo.out(), path.c_str(), 0, nullptr);
+  git_libgit2_opts(GIT_OPT_SET_OWNER_VALIDATION, 1);
+  if (unchecked < 0) return std::nullopt;
+  return local_base(repo.get());
+}
+
+[[noreturn]] void throw_refused(const fs::path& path, const std::string& root) {
+  struct stat info {};
+  std::string owner = "another user";
+  if (::stat(root.c_str(), &info) == 0) {
+    const passwd* user = ::getpwuid(info.st_uid);
+    owner = fmt::format("uid {}{}", info.st_uid,
+                        user != nullptr ? fmt::format(" ({})", user->pw_name) : "");
+  }
+  throw UsageError(fmt::format(
+      "git refuses the repository {} (for {}): it is owned by {}, not by the user running "
+      "raygate (uid {}), and git's ownership check (safe.directory) does not trust it; if you "
+      "trust it, run: git config --global --add safe.directory {}",
+      root, path.string(), owner, ::getuid(), root));
+}
+
 git::RepositoryPtr open_local(const fs::path& path) {
   std::error_code ec;
   if (!fs::exists(path, ec)) {
@@ -29,18 +72,13 @@ git::RepositoryPtr open_local(const fs::path& path) {
   }
   git::RepositoryPtr repo;
   const int rc = git_repository_open_ext(repo.out(), path.c_str(), 0, nullptr);
+  if (const auto root = refused_for_ownership(path, rc)) throw_refused(path, *root);
   if (rc == GIT_ENOTFOUND) {
     throw UsageError(fmt::format(
         "{} is not in a git repository; give --repo a repository path or URL", path.string()));
   }
   git::check(rc, fmt::format("opening repository {}", path.string()));
   return repo;
-}
-
-// Where the user's files are (or the git dir of a bare repository): what "../sub" is relative to.
-std::string local_base(git_repository* repo) {
-  const char* workdir = git_repository_workdir(repo);
-  return without_trailing_slash(workdir != nullptr ? workdir : git_repository_path(repo));
 }
 
 }  // namespace

@@ -27,11 +27,20 @@ std::string list_for_message(const std::vector<std::string>& names) {
   return out;
 }
 
+// A shallow clone (CI checkouts are, by default) lacks older commits: say so, since "unknown
+// revision" alone sends the user looking for a typo in a sha that is right.
+std::string shallow_note(git_repository* repo) {
+  if (git_repository_is_shallow(repo) != 1) return "";
+  return "; the clone is shallow, so older commits are missing: fetch them with "
+         "`git fetch --unshallow` (in GitHub Actions: actions/checkout with fetch-depth: 0)";
+}
+
 [[noreturn]] void throw_unknown(git_repository* repo, const std::string& revspec,
                                 std::string_view where) {
   throw UsageError(fmt::format(
-      "unknown revision '{}' in {} (branches: {}; tags: {}); give a branch, tag or commit sha",
-      revspec, where, list_for_message(branch_names(repo)), list_for_message(tag_names(repo))));
+      "unknown revision '{}' in {} (branches: {}; tags: {}); give a branch, tag or commit sha{}",
+      revspec, where, list_for_message(branch_names(repo)), list_for_message(tag_names(repo)),
+      shallow_note(repo)));
 }
 
 int revparse(ObjectPtr& object, ReferencePtr& ref, git_repository* repo, const std::string& spec) {
@@ -70,8 +79,12 @@ ResolvedCommit resolve_commit(git_repository* repo, const std::string& revspec,
 
 CommitPtr lookup_commit(git_repository* repo, const git_oid& id, std::string_view where) {
   CommitPtr commit;
-  check(git_commit_lookup(commit.out(), repo, &id),
-        fmt::format("looking up commit {} in {}", to_hex(id), where));
+  const int rc = git_commit_lookup(commit.out(), repo, &id);
+  if (rc == GIT_ENOTFOUND && git_repository_is_shallow(repo) == 1) {
+    throw UsageError(fmt::format("commit {} is not in {}{}", to_hex(id), where,
+                                 shallow_note(repo)));
+  }
+  check(rc, fmt::format("looking up commit {} in {}", to_hex(id), where));
   return commit;
 }
 

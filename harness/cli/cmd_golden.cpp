@@ -6,12 +6,14 @@
 #include <OpenImageIO/imagebuf.h>
 #include <fmt/core.h>
 
+#include <cctype>
 #include <memory>
 
 #include "cli/commands.h"
 #include "compare/golden.h"
 #include "compare/image_compare.h"
 #include "core/error.h"
+#include "core/path_component.h"
 #include "core/paths.h"
 #include "core/sha256.h"
 #include "runner/baseline_tool.h"
@@ -137,6 +139,19 @@ const SceneResult* find_scene(const ResultsDocument& document, const std::string
   return nullptr;
 }
 
+// The golden's file is named <id><extension of the run's image>: the extension must be an
+// image's, or a crafted document could name the copy "manifest.json" or leave it extension-less.
+void checked_image_extension(const std::filesystem::path& image, const std::string& field) {
+  std::string extension = image.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* known : {".png", ".ppm", ".pgm", ".pfm", ".exr", ".hdr", ".tga", ".bmp",
+                            ".tif", ".tiff", ".jpg", ".jpeg"}) {
+    if (extension == known) return;
+  }
+  throw UsageError(field + ", " + image.string() + ", has no image file extension (.png, .ppm, "
+                   ".exr, ...); the golden copy is named after it");
+}
+
 // The foreign tracer's images of a run, as goldens of its adapter. Nothing is rendered: the
 // images are the ones the run made (each scene's first successful run of `role`, the image the
 // run compared), so what is blessed is exactly what was measured and looked at.
@@ -148,6 +163,8 @@ int run_bless_from_run(const GoldenArgs& args) {
     throw UsageError(results.string() + " has no revision with role '" + args.role +
                      "' (use --role tracer, base or head)");
   }
+  checked_component(revision->adapter_name,
+                    results.string() + ": revisions[" + args.role + "].adapter.name");
   const std::filesystem::path golden_dir =
       args.golden_dir.empty()
           ? locate_tools(args.baseline).data_root / "golden" / revision->adapter_name
@@ -182,6 +199,9 @@ int run_bless_from_run(const GoldenArgs& args) {
       throw UsageError(results.string() + ": the " + args.role + " image of '" + id + "', " +
                        run->image.string() + ", is gone (was the run directory removed?)");
     }
+    checked_component(id, results.string() + ": scenes[].entry.id");
+    checked_image_extension(run->image, results.string() + ": the " + args.role + " image of '" +
+                                            id + "'");
     chosen.emplace_back(scene, run->image);
   }
 

@@ -11,6 +11,7 @@
 #include "cli/store_options.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/path_component.h"
 #include "store/store.h"
 
 namespace raygate::cli {
@@ -103,9 +104,18 @@ void export_to(const std::vector<StoredDocument>& documents, const std::filesyst
     fmt::print("wrote document {} to {}\n", documents.front().id, out.string());
     return;
   }
+  // The sha is read back from the store, which holds whatever was imported: every name is
+  // checked before anything is written, so a bad one leaves the directory untouched.
+  std::vector<std::filesystem::path> paths;
   for (const StoredDocument& stored : documents) {
-    const std::string name = fmt::format("{}-{}.json", stored.id, short_sha_of(stored.document));
-    write_file_atomically(out / name, document_text(stored));
+    const std::string sha = checked_component(
+        short_sha_of(stored.document),
+        fmt::format("stored document {}: revisions[].worktree.short_sha", stored.id));
+    paths.push_back(join_component(out, fmt::format("{}-{}", stored.id, sha),
+                                   "exported document name", ".json"));
+  }
+  for (std::size_t i = 0; i < documents.size(); ++i) {
+    write_file_atomically(paths[i], document_text(documents[i]));
   }
   fmt::print("wrote {} documents to {}\n", documents.size(), out.string());
 }

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "core/path_component.h"
 #include "core/sha256.h"
 #include "core/time_text.h"
 #include "measure/machine_context.h"
@@ -76,7 +77,7 @@ SuiteMeasurement suite_measurement(const MeasureContext& context, const std::str
   SuiteMeasurement m;
   m.work_dir = fresh_run_dir(context.cache_dir / "runs", run_name);
   m.out = out.empty() ? m.work_dir / "results.json" : std::filesystem::absolute(out);
-  m.scene_cache = context.cache_dir / "scenes" / context.suite.name;
+  m.scene_cache = join_component(context.cache_dir / "scenes", context.suite.name, "suite name");
   m.golden_dir = context.golden_dir;
   m.policy = context.policy;
   m.scenes = context.scenes;
@@ -129,7 +130,8 @@ void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Executo
       progress.update(state);
     };
     result.runs = measure_scene(input, m.contenders, m.schedule, m.stop(entry), executor, clock,
-                                m.work_dir / "scenes" / entry.id, observe);
+                                join_component(m.work_dir / "scenes", entry.id, "scene id"),
+                                observe);
     result.status = result.runs.failed() ? "failed" : "measured";
     summarize_ratios(result, m);
     check_images(result, m, manifest, document.baseline.sampling);

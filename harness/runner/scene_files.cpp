@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/path_component.h"
 #include "nff/parser.h"
 #include "spd.h"
 #include "writers/scene_writers.h"
@@ -23,7 +24,7 @@ std::filesystem::path prepare_scene(const SuiteScene& scene,
   } catch (const std::invalid_argument& e) {
     throw UsageError(scene.id + ": " + e.what());
   }
-  const std::filesystem::path path = cache_dir / (scene.id + ".nff");
+  const std::filesystem::path path = join_component(cache_dir, scene.id, "scene id", ".nff");
   std::error_code ec;
   if (std::filesystem::exists(path, ec)) {
     try {

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/path_component.h"
 #include "spd.h"
 
 namespace raygate {
@@ -58,7 +59,12 @@ SuiteScene read_scene(const Suite& suite, const json& entry, const std::string& 
       fail(suite, where + ".resolution", "each side must be in 1..16384");
     }
   }
+  if (entry.contains("id") && !entry["id"].is_string()) {
+    fail(suite, where + ".id", "expected a string");
+  }
   s.id = entry.contains("id") ? entry["id"].get<std::string>() : s.scene;
+  // The id names the scene's files in the cache, run folders and goldens.
+  checked_component(s.id, suite.path.string() + ": " + where + ".id");
   return s;
 }
 
@@ -69,7 +75,8 @@ Suite load_suite(const std::string& name_or_path, const std::filesystem::path& d
   const bool is_path = name_or_path.find('/') != std::string::npos ||
                        name_or_path.ends_with(".json");
   suite.path = is_path ? std::filesystem::path(name_or_path)
-                       : data_root / "scenes" / "suites" / (name_or_path + ".json");
+                       : join_component(data_root / "scenes" / "suites", name_or_path,
+                                        "suite name", ".json");
   if (!is_path && !std::filesystem::exists(suite.path)) {
     throw UsageError("unknown suite '" + name_or_path + "' (no " + suite.path.string() + ")");
   }
@@ -81,7 +88,11 @@ Suite load_suite(const std::string& name_or_path, const std::filesystem::path& d
   }
   if (!doc.is_object()) fail(suite, "$", "expected an object");
   check_keys(suite, doc, "$", {"name", "description", "sampling", "scenes"});
+  if (doc.contains("name") && !doc["name"].is_string()) fail(suite, "$.name", "expected a string");
   suite.name = doc.value("name", suite.path.stem().string());
+  // The name names the suite's scene cache folder.
+  checked_component(suite.name, suite.path.string() + ": " +
+                                    (doc.contains("name") ? "$.name" : "suite name (file stem)"));
   suite.description = doc.value("description", "");
   suite.sampling = doc.value("sampling", "center");
   if (suite.sampling != "center" && suite.sampling != "corners") {

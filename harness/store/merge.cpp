@@ -9,6 +9,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "core/path_component.h"
 #include "store/scores.h"
 #include "store/shard.h"
 
@@ -32,9 +33,42 @@ struct Shard {
 const std::string& origin(const Shard& shard) { return shard.input->origin; }
 const ResultsDocument& doc(const Shard& shard) { return shard.input->document; }
 
+// The merged document's names later become paths (golden bless --from-run, run folders), so a
+// crafted shard cannot smuggle one in: each is checked as a path component, naming the field.
+void check_names(const MergeInput& input) {
+  const ResultsDocument& d = input.document;
+  const std::string at = "merge: " + input.origin + ": ";
+  checked_component(d.suite, at + "suite");
+  for (std::size_t i = 0; i < d.scenes.size(); ++i) {
+    checked_component(d.scenes[i].entry.id, at + "scenes[" + std::to_string(i) + "].entry.id");
+  }
+  for (std::size_t i = 0; i < d.revisions.size(); ++i) {
+    checked_component(d.revisions[i].adapter_name,
+                      at + "revisions[" + std::to_string(i) + "].adapter.name");
+  }
+}
+
+// The top-level "shard" label must say what settings.shard records: a label that disagrees
+// (or is not K/N at all) means the document was edited, and would be carried into reports.
+void check_shard_label(const MergeInput& input, const ShardRecord& record) {
+  const std::string& label = input.document.shard;
+  if (label.empty() || label == to_string(record.spec)) return;
+  throw UsageError(fmt::format("merge: {}: shard '{}' disagrees with settings.shard ({})",
+                               input.origin, label, to_string(record.spec)));
+}
+
 // settings.shard, or for a document that only has the top-level "K/N", that.
 ShardRecord shard_record(const MergeInput& input) {
-  if (auto record = shard_from_settings(input.document.settings, input.origin)) return *record;
+  check_names(input);
+  if (auto record = shard_from_settings(input.document.settings, input.origin)) {
+    check_shard_label(input, *record);
+    for (std::size_t i = 0; i < record->suite_scenes.size(); ++i) {
+      checked_component(record->suite_scenes[i], "merge: " + input.origin +
+                                                     ": settings.shard.suite_scenes[" +
+                                                     std::to_string(i) + "]");
+    }
+    return *record;
+  }
   if (!input.document.shard.empty()) {
     ShardRecord record;
     record.spec = parse_shard(input.document.shard);

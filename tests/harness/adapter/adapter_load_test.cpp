@@ -237,6 +237,24 @@ INSTANTIATE_TEST_SUITE_P(
                "$.timeout_s.build: must be a positive number of seconds, found number 0"},
         Broken{"negative_timeout", with(R"("timeout_s": {"run": -5})"),
                "$.timeout_s.run: must be a positive number of seconds, found number -5"},
+        Broken{"overflowing_timeout", with(R"("timeout_s": {"run": 1e10})"),
+               "$.timeout_s.run: must be between 0.001 and 604800 seconds (one week), found "
+               "number 10000000000.0"},
+        Broken{"vanishing_timeout", with(R"("timeout_s": {"build": 1e-9})"),
+               "$.timeout_s.build: must be between 0.001 and 604800 seconds (one week), found "
+               "number 1e-09"},
+        Broken{"duplicate_key", with(R"("run": ["u", "{scene}", "{image}"])"),
+               "$: duplicate key 'run' (JSON keeps only one of them; remove the other)"},
+        Broken{"nested_duplicate_key",
+               with(R"("build": [["make"], {"a": 1, "a": 2}], "timing": {"source": "process"})"),
+               "$.build[1]: duplicate key 'a' (JSON keeps only one of them; remove the other)"},
+        Broken{"duplicate_env_key", with(R"("env": {"A": "1", "B": "2", "A": "3"})"),
+               "$.env: duplicate key 'A' (JSON keeps only one of them; remove the other)"},
+        Broken{"name_too_long_for_a_file",
+               R"({"name": ")" + std::string(300, 'n') +
+                   R"(", "scene_format": "nff", "run": ["t", "{scene}", "{image}"], "image": "{image}"})",
+               "$.name: 'nnnnnnnnnnnnnnnnnnnn...' is 300 bytes long, more than the 128 allowed "
+               "(it names folders)"},
         Broken{"zero_threads", with(R"("threads": 0)"),
                "$.threads: must be between 1 and 4096, found number 0"},
         Broken{"relative_cwd", with(R"("cwd": "out")"),

@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "runner/scene_files.h"
 
 namespace raygate {
 namespace {
@@ -50,6 +51,44 @@ TEST(Suite, ErrorsNameTheJsonPath) {
   EXPECT_NE(load_error("{not json").find("not valid JSON"), std::string::npos);
   EXPECT_NE(load_error(R"({"scenes": []})").find("$.scenes: expected a non-empty array"),
             std::string::npos);
+}
+
+// Ids and names become cache paths (scenes/<suite>/<id>.nff, runs/.../scenes/<id>): one that
+// could climb out of the cache is refused at load time, naming the file and the field.
+TEST(Suite, IdsAndNamesThatWouldEscapeTheCacheAreRefused) {
+  const std::string climbing = load_error(R"({"scenes": [{"scene": "balls", "id": "../x"}]})");
+  EXPECT_NE(climbing.find("bad.json: $.scenes[0].id '../x' may hold only letters"),
+            std::string::npos) << climbing;
+  const std::string absolute = load_error(R"({"name": "/tmp/x", "scenes": [{"scene": "balls"}]})");
+  EXPECT_NE(absolute.find("bad.json: $.name '/tmp/x' may hold only letters"), std::string::npos)
+      << absolute;
+  EXPECT_NE(load_error(R"({"name": "..", "scenes": [{"scene": "balls"}]})").find("$.name '..'"),
+            std::string::npos);
+  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "id": ""}]})").find("$.scenes[0].id '' is empty"),
+            std::string::npos);
+  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "id": 7}]})").find("$.scenes[0].id: expected a string"),
+            std::string::npos);
+  EXPECT_NE(load_error(R"({"name": 7, "scenes": [{"scene": "balls"}]})").find("$.name: expected a string"),
+            std::string::npos);
+  try {
+    load_suite("..", RAYGATE_SOURCE_DIR);
+    ADD_FAILURE() << "suite name '..' accepted";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("suite name '..'"), std::string::npos) << e.what();
+  }
+}
+
+// A SuiteScene made in code (not loaded) still cannot put its file outside the cache.
+TEST(Suite, PreparedSceneFilesStayInTheCache) {
+  TempDir cache;
+  const SuiteScene ok{"balls-1", "balls", 1, 0, 0};
+  EXPECT_EQ(prepare_scene(ok, cache.path()), cache.path() / "balls-1.nff");
+  TempDir outside;
+  const std::string escape = (outside.path() / "x").string();
+  EXPECT_THROW(prepare_scene(SuiteScene{escape, "balls", 1, 0, 0}, cache.path()), UsageError);
+  EXPECT_THROW(prepare_scene(SuiteScene{"../x", "balls", 1, 0, 0}, cache.path()), UsageError);
+  EXPECT_FALSE(std::filesystem::exists(escape + ".nff"));
+  EXPECT_FALSE(std::filesystem::exists(cache.path().parent_path() / "x.nff"));
 }
 
 TEST(Suite, UnknownSuiteNameAndSceneSelection) {

@@ -5,6 +5,11 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iterator>
 #include <optional>
 
 #include "checkout/atomic_dir.h"
@@ -13,8 +18,10 @@
 #include "checkout/remote_cache.h"
 #include "checkout/resolve.h"
 #include "checkout/submodules.h"
+#include "checkout/tree_stamp.h"
 #include "checkout/tree_writer.h"
 #include "core/error.h"
+#include "core/fs.h"
 
 namespace fs = std::filesystem;
 
@@ -81,6 +88,41 @@ git::RepositoryPtr open_local(const fs::path& path) {
   return repo;
 }
 
+constexpr const char* kNoTree = "not materialized yet";
+
+// Why the cached tree at `dir` cannot be reused, or nullopt when it can: it is missing, has no
+// stamp (made by a raygate that wrote none), or a file the checkout wrote was edited or removed
+// since (tree_stamp.h).
+std::optional<std::string> cached_tree_problem(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec)) return kNoTree;
+  std::ifstream in(stamp_path_for(dir), std::ios::binary);
+  if (!in) return "it has no stamp to verify it by";
+  const std::string stamp((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (auto difference = stamp_difference(dir, stamp)) {
+    return *difference + " since it was checked out";
+  }
+  return std::nullopt;
+}
+
+// Moves a rejected tree out of the way and deletes it. Renamed first, under the temporary prefix
+// build_directory_atomically clears, so a crash half way through deleting leaves no partial
+// tree under the final name.
+void discard_tree(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(dir, ec))) return;
+  std::string name = ".";  // appended, not "." + ...: GCC 12 warns falsely (-Wrestrict) on that
+  name += dir.filename().string();
+  name += ".tmp-discarded";
+  const fs::path aside = dir.parent_path() / name;
+  fs::remove_all(aside, ec);
+  if (std::rename(dir.c_str(), aside.c_str()) != 0) {
+    throw InfraError(fmt::format("cannot move the stale worktree {} aside: {}", dir.string(),
+                                 std::strerror(errno)));
+  }
+  fs::remove_all(aside, ec);
+}
+
 }  // namespace
 
 Repository Repository::open(const std::string& location, const fs::path& cache_dir) {
@@ -122,14 +164,21 @@ git::CommitPtr Repository::commit_of(const Revision& revision) const {
 
 Worktree Repository::materialize(const Revision& revision) const {
   const fs::path final_path = worktree_path(revision.sha);
-  std::error_code ec;
-  if (!fs::is_directory(final_path, ec)) {
+  if (cached_tree_problem(final_path)) {
+    git::CommitPtr commit = commit_of(revision);  // a bad sha is refused before any file is made
     FileLock lock(lock_path_for(final_path));
-    if (!fs::is_directory(final_path, ec)) {  // another process may have built it meanwhile
-      git::CommitPtr commit = commit_of(revision);
+    // Another process may have built it meanwhile; otherwise say why it is rebuilt.
+    if (const auto problem = cached_tree_problem(final_path)) {
+      if (*problem != kNoTree) {
+        fmt::print(stderr, "note: recreating the cached worktree {}: {}\n", final_path.string(),
+                   *problem);
+      }
+      discard_tree(final_path);
       build_directory_atomically(final_path, [&](const fs::path& temp) {
         const auto gitlinks = git::write_commit_tree(repo_.get(), commit.get(), temp, where_);
         git::populate_submodules({cache_dir_, url_base_, where_}, commit.get(), gitlinks, temp);
+        // Written before the rename publishes the tree: a published tree always has its stamp.
+        write_file_atomically(stamp_path_for(final_path), tree_stamp(temp));
       });
     }
   }

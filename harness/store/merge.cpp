@@ -52,7 +52,9 @@ void check_names(const MergeInput& input) {
 // (or is not K/N at all) means the document was edited, and would be carried into reports.
 void check_shard_label(const MergeInput& input, const ShardRecord& record) {
   const std::string& label = input.document.shard;
-  if (label.empty() || label == to_string(record.spec)) return;
+  const bool recorded = input.document.settings.is_object() &&
+                        input.document.settings.contains("shard");
+  if (!recorded || label.empty() || label == to_string(record.spec)) return;
   throw UsageError(fmt::format("merge: {}: shard '{}' disagrees with settings.shard ({})",
                                input.origin, label, to_string(record.spec)));
 }
@@ -61,7 +63,6 @@ void check_shard_label(const MergeInput& input, const ShardRecord& record) {
 ShardRecord shard_record(const MergeInput& input) {
   check_names(input);
   if (auto record = shard_from_settings(input.document.settings, input.origin)) {
-    check_shard_label(input, *record);
     for (std::size_t i = 0; i < record->suite_scenes.size(); ++i) {
       checked_component(record->suite_scenes[i], "merge: " + input.origin +
                                                      ": settings.shard.suite_scenes[" +
@@ -159,6 +160,7 @@ std::vector<Shard> checked_shards(const std::vector<MergeInput>& inputs) {
     check_shard_records(shards[i - 1], shards[i]);  // equal indices sort next to each other
     check_settings(shards.front(), shards[i]);
   }
+  for (const Shard& shard : shards) check_shard_label(*shard.input, shard.record);
   return shards;
 }
 

@@ -9,6 +9,7 @@
 
 #include "checkout/git_fixture.h"
 #include "checkout/repository.h"
+#include "checkout/tree_stamp.h"
 #include "core/error.h"
 #include "core/fs.h"
 
@@ -147,6 +148,76 @@ TEST_F(CheckoutMaterialize, AKilledRunsHalfWrittenTreeIsIgnoredAndCleaned) {
     if (name.find(".tmp-") != std::string::npos) temporaries.push_back(name);
   }
   EXPECT_THAT(temporaries, ::testing::ElementsAre(other.filename().string()));
+}
+
+// A cached tree is verified before reuse (checkout/tree_stamp.h): what was edited, removed or
+// emptied since it was checked out is recreated, so the clean commit's record never measures
+// other code.
+TEST_F(CheckoutMaterialize, AnEditedTreeIsRecreatedBeforeReuse) {
+  const fs::path path = open().checkout("main").path;
+  write_file_atomically(path / "src/render.cpp", "// v9\n");  // same size, new mtime
+  EXPECT_EQ(read_file(open().checkout("main").path / "src/render.cpp"), "// v2\n");
+
+  ::chmod((path / "CMakeLists.txt").c_str(), 0755);
+  open().checkout("main");
+  EXPECT_EQ(stat_of(path / "CMakeLists.txt").st_mode & S_IXUSR, 0u);
+
+  fs::remove(path / "CMakeLists.txt");
+  EXPECT_EQ(read_file(open().checkout("main").path / "CMakeLists.txt"), "project(t)\n");
+}
+
+TEST_F(CheckoutMaterialize, AnEmptiedOrDeletedTreeIsRecreated) {
+  const fs::path path = open().checkout("main").path;
+  for (const auto& entry : fs::directory_iterator(path)) fs::remove_all(entry.path());
+  EXPECT_EQ(read_file(open().checkout("main").path / "src/render.cpp"), "// v2\n");
+  fs::remove_all(path);
+  EXPECT_EQ(read_file(open().checkout("main").path / "src/render.cpp"), "// v2\n");
+}
+
+// make-nff builds in {src}: its outputs appear in the tree and must not count as an edit, or
+// every run would throw the build's tree away.
+TEST_F(CheckoutMaterialize, FilesAddedByAnInTreeBuildDoNotCountAsChanges) {
+  const fs::path path = open().checkout("main").path;
+  const struct stat before = stat_of(path / "src/render.cpp");
+  write_file_atomically(path / "src/render.o", "object");
+  write_file_atomically(path / "tracer", "binary");
+  open().checkout("main");
+  EXPECT_EQ(stat_of(path / "src/render.cpp").st_ino, before.st_ino);
+  EXPECT_TRUE(fs::exists(path / "tracer"));
+  // The stamp lives beside the tree, never in it.
+  EXPECT_TRUE(fs::exists(cache() / "worktrees" / ("." + second_ + ".stamp")));
+  EXPECT_EQ(std::distance(fs::directory_iterator(path), fs::directory_iterator()), 3);
+}
+
+// A tree cached by a raygate that wrote no stamp cannot be vouched for: recreated once, then
+// reused.
+TEST_F(CheckoutMaterialize, ATreeWithoutAStampIsRecreatedOnceThenReused) {
+  const fs::path path = open().checkout("main").path;
+  fs::remove(cache() / "worktrees" / ("." + second_ + ".stamp"));
+  write_file_atomically(path / "src/render.cpp", "// v9\n");
+  EXPECT_EQ(read_file(open().checkout("main").path / "src/render.cpp"), "// v2\n");
+  const struct stat recreated = stat_of(path / "src/render.cpp");
+  open().checkout("main");
+  EXPECT_EQ(stat_of(path / "src/render.cpp").st_ino, recreated.st_ino);
+}
+
+// Any path git allows survives the stamp's text form; a damaged stamp is never trusted.
+TEST(TreeStamp, RoundTripsOddPathsAndRefusesDamagedStamps) {
+  TempDir dir;
+  write_file_atomically(dir.path() / "a b" / "line\nbreak.txt", "x");
+  write_file_atomically(dir.path() / "12 34:5", "y");
+  fs::create_symlink("12 34:5", dir.path() / "link");
+  const std::string stamp = tree_stamp(dir.path());
+  EXPECT_EQ(stamp_difference(dir.path(), stamp), std::nullopt);
+  EXPECT_EQ(stamp_difference(dir.path(), stamp.substr(0, stamp.size() - 3)),
+            "its stamp is unreadable");
+  EXPECT_EQ(stamp_difference(dir.path(), "raygate tree stamp 0\n"), "its stamp is unreadable");
+  fs::remove(dir.path() / "link");
+  fs::create_symlink("elsewhere", dir.path() / "link");
+  EXPECT_EQ(stamp_difference(dir.path(), stamp), "link was modified");
+  const std::string relinked = tree_stamp(dir.path());
+  fs::remove(dir.path() / "a b" / "line\nbreak.txt");
+  EXPECT_EQ(stamp_difference(dir.path(), relinked), "a b/line\nbreak.txt is missing");
 }
 
 TEST_F(CheckoutMaterialize, MaterializeTakesAResolvedRevision) {

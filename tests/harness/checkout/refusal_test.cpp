@@ -106,7 +106,7 @@ TEST(CheckoutRefusal, RevisionMissingFromAShallowCloneSaysTheCloneIsShallow) {
     full.resolve(old);
     ADD_FAILURE() << "resolved";
   } catch (const Error& e) {
-    EXPECT_EQ(std::string(e.what()).find("shallow"), std::string::npos) << e.what();
+    EXPECT_EQ(std::string(e.what()).find("the clone is shallow"), std::string::npos) << e.what();
   }
 }
 

@@ -2,6 +2,8 @@
 // validates one key completely, so a message always names the key that is wrong.
 #include "adapter/adapter.h"
 
+#include <fmt/format.h>
+
 #include <cmath>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -12,7 +14,6 @@
 #include "adapter/suggest.h"
 #include "core/error.h"
 #include "core/fs.h"
-#include "core/path_component.h"
 #include "core/sha256.h"
 
 namespace raygate {
@@ -65,15 +66,21 @@ std::vector<std::string> read_argv(const JsonField& field, TemplateField where) 
   return argv;
 }
 
+constexpr std::size_t kMaxAdapterName = 64;
+
 std::string read_name(const JsonField& field) {
   std::string name = field.as_string();
   // It names cache folders, golden folders and result records, so it must be safe as a file
-  // name; core/path_component.h has the rules every such name follows.
+  // name: the rules of core/path_component.h, and shorter.
   if (!matches(name, "[A-Za-z0-9][A-Za-z0-9._-]*")) {
     field.fail("'" + name + "' must be letters, digits, '.', '_' or '-' (it names folders)");
   }
-  if (const std::string problem = component_problem(name); !problem.empty()) {
-    field.fail("'" + name.substr(0, 20) + "...' " + problem + " (it names folders)");
+  // Build folders are "<name>-<sha>-<hash>" (builder/build_cache.h), so the name gets less
+  // than the 128 bytes core/path_component.h allows any one file name.
+  if (name.size() > kMaxAdapterName) {
+    field.fail(fmt::format("'{}...' is {} bytes long, more than the {} allowed (it is part of "
+                           "cache folder names)",
+                           name.substr(0, 20), name.size(), kMaxAdapterName));
   }
   return name;
 }

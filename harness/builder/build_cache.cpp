@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/path_component.h"
 #include "core/sha256.h"
 
 namespace fs = std::filesystem;
@@ -77,7 +78,7 @@ std::string build_key(const BuildKeyInputs& inputs) {
 BuildCacheEntry cache_entry(const fs::path& cache_dir, const std::string& key) {
   BuildCacheEntry entry;
   entry.key = key;
-  entry.dir = cache_dir / "builds" / key;
+  entry.dir = join_component(cache_dir / "builds", key, "build key");
   entry.build_dir = entry.dir / "build";
   entry.logs_dir = entry.dir / "logs";
   entry.record = entry.dir / "build.json";

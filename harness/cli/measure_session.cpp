@@ -67,7 +67,8 @@ double eta_seconds(double elapsed_done, std::size_t done, std::size_t total, dou
 std::filesystem::path fresh_run_dir(const std::filesystem::path& parent, const std::string& stem) {
   std::filesystem::create_directories(parent);
   for (int n = 1;; ++n) {
-    const std::filesystem::path dir = parent / (n == 1 ? stem : fmt::format("{}-{}", stem, n));
+    const std::filesystem::path dir =
+        join_component(parent, n == 1 ? stem : fmt::format("{}-{}", stem, n), "run folder name");
     if (std::filesystem::create_directory(dir)) return dir;  // false: it exists (another run's)
   }
 }

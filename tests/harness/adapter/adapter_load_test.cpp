@@ -253,8 +253,11 @@ INSTANTIATE_TEST_SUITE_P(
         Broken{"name_too_long_for_a_file",
                R"({"name": ")" + std::string(300, 'n') +
                    R"(", "scene_format": "nff", "run": ["t", "{scene}", "{image}"], "image": "{image}"})",
-               "$.name: 'nnnnnnnnnnnnnnnnnnnn...' is 300 bytes long, more than the 128 allowed "
-               "(it names folders)"},
+               "$.name: 'nnnnnnnnnnnnnnnnnnnn...' is 300 bytes long, more than the 64 allowed "
+               "(it is part of cache folder names)"},
+        Broken{"name_climbing_out",
+               R"({"name": "../../x", "scene_format": "nff", "run": ["t", "{scene}", "{image}"], "image": "{image}"})",
+               "$.name: '../../x' must be letters, digits, '.', '_' or '-' (it names folders)"},
         Broken{"zero_threads", with(R"("threads": 0)"),
                "$.threads: must be between 1 and 4096, found number 0"},
         Broken{"relative_cwd", with(R"("cwd": "out")"),

@@ -87,7 +87,7 @@ std::string commit_row(const HistoryTable& table, const CommitLine& line, std::s
 
 std::string trend_line(const SceneTrend& trend, std::size_t scene_w, std::size_t spark_w) {
   std::string out =
-      "  " + pad_right(trend.scene_id, scene_w) + "  " + pad_right(trend.sparkline, spark_w) + "  ";
+      "  " + pad_right(trend.label, scene_w) + "  " + pad_right(trend.sparkline, spark_w) + "  ";
   if (!trend.latest) return out + "no ratio measured\n";
   out += fmt::format("{:.3f}", *trend.latest);
   if (!trend.change) return out + "  first measurement\n";
@@ -99,7 +99,7 @@ std::string trend_section(const HistoryTable& table) {
   std::size_t scene_w = 5;
   std::size_t spark_w = 1;
   for (const SceneTrend& t : table.trends) {
-    scene_w = std::max(scene_w, code_points(t.scene_id));
+    scene_w = std::max(scene_w, code_points(t.label));
     spark_w = std::max(spark_w, code_points(t.sparkline));
   }
   std::string out = "trend (oldest -> newest; a ratio going up is the tracer getting slower):\n";
@@ -184,7 +184,7 @@ nlohmann::json table_json(const HistoryTable& table) {
   nlohmann::json series = nlohmann::json::object();
   for (const SeriesColumn& column : table.columns) series[column.label] = series_json(column);
   nlohmann::json trends = nlohmann::json::object();
-  for (const SceneTrend& t : table.trends) trends[t.scene_id] = trend_json(t);
+  for (const SceneTrend& t : table.trends) trends[t.label] = trend_json(t);
   return {{"repository", table.repository_key},
           {"adapter", table.adapter_name},
           {"commits", commits},
@@ -243,10 +243,14 @@ std::string history_table(const HistoryView& view) {
       fmt::format("role {}{}", view.role, view.branch.empty() ? "" : ", branch " + view.branch);
   if (view.tables.empty()) return fmt::format("no results in {} match ({})\n", view.store, scope);
   std::string out = fmt::format(
-      "history from {} ({}): one table per repository and adapter; ratio = time(tracer) / "
-      "time(baseline) with its 95% CI half-width; image = max error against the golden\n",
+      "history from {} ({}), one table per repository and adapter\n"
+      "ratio = time(tracer) / time(baseline) with its 95% CI half-width; image = max error "
+      "against the golden\n",
       view.store, scope);
-  for (const HistoryTable& table : view.tables) out += "\n" + table_text(table);
+  for (const HistoryTable& table : view.tables) {
+    out += "\n";
+    out += table_text(table);
+  }
   if (view.drift) out += fmt::format("\n{}\n", describe_drift(*view.drift));
   return out;
 }

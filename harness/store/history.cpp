@@ -150,7 +150,8 @@ std::vector<SeriesColumn> series_columns(const std::vector<HistoryRow>& rows) {
 SceneTrend scene_trend(const std::vector<CommitLine>& lines, const SeriesColumn& column) {
   SceneTrend trend;
   trend.series_id = column.series_id;
-  trend.scene_id = column.label;
+  trend.scene_id = column.scene_id;
+  trend.label = column.label;
   std::vector<std::string> shas;
   for (auto line = lines.rbegin(); line != lines.rend(); ++line) {
     const auto found = line->scenes.find(column.series_id);

@@ -161,6 +161,23 @@ TEST_F(StoreSeries, HistoryFiltersByRepositoryAdapterSuiteAndSeries) {
   }
 }
 
+TEST_F(StoreSeries, ASceneWithSeveralSeriesInOneTableGetsAColumnEach) {
+  DocumentSpec ci = teapot(1, 1, 1.0, kRepoA);
+  DocumentSpec full = teapot(2, 2, 1.5, kRepoA);
+  full.suite = "full";
+  store->add(make_document(ci), "main");
+  store->add(make_document(full), "main");
+  const std::vector<HistoryRow> rows = store->history({});
+  const std::vector<SeriesColumn> columns = series_columns(rows);
+  ASSERT_EQ(columns.size(), 2u);
+  EXPECT_EQ(columns[0].label, "teapot [suite ci]");
+  EXPECT_EQ(columns[1].label, "teapot [suite full]");
+  const std::vector<CommitLine> lines = group_by_commit(rows);
+  EXPECT_EQ(scene_trend(lines, columns[0]).ratios, std::vector<double>{1.0});
+  EXPECT_EQ(scene_trend(lines, columns[1]).ratios, std::vector<double>{1.5});
+  EXPECT_EQ(scene_trend(lines, columns[1]).label, "teapot [suite full]");
+}
+
 TEST_F(StoreSeries, DriftComparesASeriesOnlyWithItself) {
   // A's history at 1 s of baseline per scene; then B, on the same machine, at 0.8 s with its
   // own steady ratio: B has no earlier history of its own, so nothing drifted.

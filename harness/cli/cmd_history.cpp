@@ -1,6 +1,7 @@
 // `raygate history`: the normalized ratio and image error of each scene over commits, from the
-// results store, with each scene's trend and a note when the machine drifted rather than the
-// code. `--json` for machines, `--html DIR` for a page of plots. Exit 0, 2 for a bad store.
+// results store, one table per repository and adapter with each series' trend (store/series.h),
+// and a note when the machine drifted rather than the code. `--json` for machines, `--html DIR`
+// for a page of plots. Exit 0, 2 for a bad store.
 #include <fmt/core.h>
 
 #include <memory>
@@ -21,6 +22,10 @@ struct HistoryArgs {
   std::vector<std::string> scenes;
   std::size_t last = 20;
   std::string role = "tracer";
+  std::string repository;
+  std::string adapter;
+  std::string suite;
+  std::string series;
   bool include_dirty = false;
   bool json = false;
   std::string html_dir;
@@ -33,14 +38,23 @@ HistoryQuery history_query(const HistoryArgs& args) {
   query.role = args.role;
   query.include_dirty = args.include_dirty;
   query.last_commits = args.last;
+  query.repository = args.repository;
+  query.adapter = args.adapter;
+  query.suite = args.suite;
+  query.series = args.series;
   return query;
 }
 
-// The machine's own history for the drift rule: every document, any branch.
+// The machine's own history for the drift rule: every document, any branch, any series (the
+// rule compares each series only with itself).
 HistoryQuery machine_query(const HistoryQuery& query) {
   HistoryQuery machine = query;
   machine.branch.clear();
   machine.last_commits = 0;
+  machine.repository.clear();
+  machine.adapter.clear();
+  machine.suite.clear();
+  machine.series.clear();
   return machine;
 }
 
@@ -53,8 +67,8 @@ void write_html(const HistoryView& view, const std::string& dir) {
 int history_command(const HistoryArgs& args) {
   const auto store = open_store(args.store, StoreOpen::must_exist);
   const HistoryQuery query = history_query(args);
-  HistoryView view =
-      make_history_view(store->history(query), store->measurements(machine_query(query)));
+  HistoryView view = make_history_view(store->measurements(query), query.last_commits,
+                                       store->measurements(machine_query(query)));
   view.store = store->location();
   view.role = args.role;
   view.branch = args.branch;
@@ -74,7 +88,15 @@ void add_history_command(CLI::App& app, int& exit_code) {
   add_store_option(*command, args->store, kDefaultStorePath);
   command->add_option("--branch", args->branch, "only results recorded under this branch");
   command->add_option("--scene", args->scenes, "only these suite scene ids (repeatable)");
-  command->add_option("--last", args->last, "the newest N commits (0: all)")->capture_default_str();
+  command->add_option("--last", args->last, "the newest N commits of each table (0: all)")
+      ->capture_default_str();
+  command->add_option("--repository", args->repository,
+                      "only the repository whose key contains this text (its root commit sha "
+                      "or URL, as the table headings show)");
+  command->add_option("--adapter", args->adapter, "only results measured with this adapter");
+  command->add_option("--suite", args->suite, "only results of this suite");
+  command->add_option("--series", args->series,
+                      "only this series (an id from --json, or its first digits)");
   command
       ->add_option("--role", args->role,
                    "which revision of a document: tracer (run), head or base (compare), any")

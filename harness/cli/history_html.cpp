@@ -45,10 +45,10 @@ struct Scale {
 };
 
 std::vector<Point> scene_points(const std::vector<CommitLine>& oldest_first,
-                                const std::string& scene) {
+                                const std::string& series_id) {
   std::vector<Point> points;
   for (std::size_t i = 0; i < oldest_first.size(); ++i) {
-    const auto found = oldest_first[i].scenes.find(scene);
+    const auto found = oldest_first[i].scenes.find(series_id);
     if (found != oldest_first[i].scenes.end() && found->second.ratio) {
       points.push_back({i, &found->second});
     }
@@ -127,9 +127,11 @@ std::string line_and_points(const Scale& s, const std::vector<Point>& points) {
   return "<polyline class=\"ratio\" points=\"" + line + "\"/>\n" + dots;
 }
 
-std::string scene_section(const std::vector<CommitLine>& oldest_first, const std::string& scene) {
-  const std::vector<Point> points = scene_points(oldest_first, scene);
-  std::string out = "<section>\n<h2>" + escape(scene) + "</h2>\n";
+std::string scene_section(const std::vector<CommitLine>& oldest_first,
+                          const SeriesColumn& column) {
+  const std::vector<Point> points = scene_points(oldest_first, column.series_id);
+  const std::string& scene = column.label;
+  std::string out = "<section>\n<h3>" + escape(scene) + "</h3>\n";
   if (points.empty()) return out + "<p>no normalized ratio measured</p>\n</section>\n";
   const Scale s = scale_for(points, oldest_first.size());
   out += fmt::format(
@@ -141,10 +143,10 @@ std::string scene_section(const std::vector<CommitLine>& oldest_first, const std
   return out + "</svg>\n</section>\n";
 }
 
-std::string commit_table(const HistoryView& view) {
+std::string commit_table(const HistoryTable& table) {
   std::string out =
       "<table>\n<tr><th>date</th><th>commit</th><th>subject</th><th>branch</th></tr>\n";
-  for (const CommitLine& line : view.lines) {
+  for (const CommitLine& line : table.lines) {
     const HistoryRow& c = line.commit;
     out += fmt::format("<tr><td>{}</td><td><code>{}</code></td><td>{}</td><td>{}</td></tr>\n",
                        escape(c.commit_time.substr(0, 10)), escape(c.short_sha), escape(c.subject),
@@ -155,7 +157,8 @@ std::string commit_table(const HistoryView& view) {
 
 const char* const kStyle = R"css(
 body { font-family: system-ui, sans-serif; margin: 2em; color: #222; max-width: 820px; }
-h1 { font-size: 1.4em; } h2 { font-size: 1.1em; margin-bottom: 0.2em; }
+h1 { font-size: 1.4em; } h2 { font-size: 1.2em; margin-top: 1.5em; }
+h3 { font-size: 1.05em; margin-bottom: 0.2em; }
 svg text { font-size: 11px; fill: #444; }
 .axis { stroke: #444; } .grid { stroke: #ddd; }
 .ci { fill: #4a7bd0; fill-opacity: 0.18; stroke: none; }
@@ -165,19 +168,26 @@ svg text { font-size: 11px; fill: #444; }
 table { border-collapse: collapse; } td, th { padding: 2px 10px; text-align: left; }
 )css";
 
+std::string table_section(const HistoryTable& table) {
+  const std::vector<CommitLine> oldest_first(table.lines.rbegin(), table.lines.rend());
+  std::string out = fmt::format("<h2>repository <code>{}</code>, adapter {}</h2>\n",
+                                escape(short_repository(table.repository_key)),
+                                escape(table.adapter_name));
+  for (const SeriesColumn& column : table.columns) out += scene_section(oldest_first, column);
+  return out + "<h3>commits, newest first</h3>\n" + commit_table(table);
+}
+
 }  // namespace
 
 std::string history_html(const HistoryView& view) {
-  const std::vector<CommitLine> oldest_first(view.lines.rbegin(), view.lines.rend());
   std::string body = fmt::format(
-      "<h1>raygate history</h1>\n<p>{} commits from <code>{}</code> (role {}{}). The normalized "
-      "ratio is time(tracer) / time(baseline); lower is faster. The band is its 95% CI; hover a "
-      "point for the commit.</p>\n",
-      view.lines.size(), escape(view.store), escape(view.role),
+      "<h1>raygate history</h1>\n<p>From <code>{}</code> (role {}{}), one part per repository "
+      "and adapter, one plot per series. The normalized ratio is time(tracer) / time(baseline); "
+      "lower is faster. The band is its 95% CI; hover a point for the commit.</p>\n",
+      escape(view.store), escape(view.role),
       view.branch.empty() ? "" : ", branch " + escape(view.branch));
   if (view.drift) body += "<p class=\"note\">" + escape(describe_drift(*view.drift)) + "</p>\n";
-  for (const std::string& scene : view.scenes) body += scene_section(oldest_first, scene);
-  body += "<h2>commits, newest first</h2>\n" + commit_table(view);
+  for (const HistoryTable& table : view.tables) body += table_section(table);
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
          "<title>raygate history</title>\n<style>" +
          std::string(kStyle) + "</style>\n</head>\n<body>\n" + body + "</body>\n</html>\n";

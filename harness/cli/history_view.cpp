@@ -52,32 +52,32 @@ bool any_incomplete(const CommitLine& line) {
                      [](const auto& scene) { return !scene.second.complete; });
 }
 
-std::size_t sha_width(const HistoryView& view) {
+std::size_t sha_width(const HistoryTable& table) {
   std::size_t width = 7;
-  for (const CommitLine& line : view.lines) {
+  for (const CommitLine& line : table.lines) {
     width = std::max(width, code_points(line.commit.short_sha) + 1);
   }
   return width;
 }
 
-std::string header_lines(const HistoryView& view, std::size_t sha_w) {
+std::string header_lines(const HistoryTable& table, std::size_t sha_w) {
   std::string first = pad_right("date", 10) + "  " + pad_right("commit", sha_w) + "  " +
                       pad_right("subject", kSubjectWidth);
   std::string second(first.size(), ' ');
-  for (const std::string& scene : view.scenes) {
-    first += "  " + pad_right(scene, kRatioWidth + 2 + kImageWidth);
+  for (const SeriesColumn& column : table.columns) {
+    first += "  " + pad_right(column.label, kRatioWidth + 2 + kImageWidth);
     second += "  " + pad_right("ratio", kRatioWidth) + "  " + pad_right("image", kImageWidth);
   }
   return trimmed_line(first) + trimmed_line(second);
 }
 
-std::string commit_row(const HistoryView& view, const CommitLine& line, std::size_t sha_w) {
+std::string commit_row(const HistoryTable& table, const CommitLine& line, std::size_t sha_w) {
   const HistoryRow& c = line.commit;
   const std::string sha = c.short_sha + (any_incomplete(line) ? "*" : "");
   std::string out = pad_right(date_of(c), 10) + "  " + pad_right(sha, sha_w) + "  " +
                     pad_right(truncate_text(c.subject, kSubjectWidth), kSubjectWidth);
-  for (const std::string& scene : view.scenes) {
-    const auto found = line.scenes.find(scene);
+  for (const SeriesColumn& column : table.columns) {
+    const auto found = line.scenes.find(column.series_id);
     const bool has = found != line.scenes.end();
     out += "  " + pad_right(has ? ratio_cell(found->second) : "", kRatioWidth) + "  " +
            pad_right(has ? image_cell(found->second) : "", kImageWidth);
@@ -87,7 +87,7 @@ std::string commit_row(const HistoryView& view, const CommitLine& line, std::siz
 
 std::string trend_line(const SceneTrend& trend, std::size_t scene_w, std::size_t spark_w) {
   std::string out =
-      "  " + pad_right(trend.scene_id, scene_w) + "  " + pad_right(trend.sparkline, spark_w) + "  ";
+      "  " + pad_right(trend.label, scene_w) + "  " + pad_right(trend.sparkline, spark_w) + "  ";
   if (!trend.latest) return out + "no ratio measured\n";
   out += fmt::format("{:.3f}", *trend.latest);
   if (!trend.change) return out + "  first measurement\n";
@@ -95,15 +95,36 @@ std::string trend_line(const SceneTrend& trend, std::size_t scene_w, std::size_t
                            trend.previous_short_sha);
 }
 
-std::string trend_section(const HistoryView& view) {
+std::string trend_section(const HistoryTable& table) {
   std::size_t scene_w = 5;
   std::size_t spark_w = 1;
-  for (const SceneTrend& t : view.trends) {
-    scene_w = std::max(scene_w, code_points(t.scene_id));
+  for (const SceneTrend& t : table.trends) {
+    scene_w = std::max(scene_w, code_points(t.label));
     spark_w = std::max(spark_w, code_points(t.sparkline));
   }
   std::string out = "trend (oldest -> newest; a ratio going up is the tracer getting slower):\n";
-  for (const SceneTrend& t : view.trends) out += trend_line(t, scene_w, spark_w);
+  for (const SceneTrend& t : table.trends) out += trend_line(t, scene_w, spark_w);
+  return out;
+}
+
+std::string table_text(const HistoryTable& table) {
+  const std::size_t sha_w = sha_width(table);
+  std::string out = fmt::format("repository {}, adapter {}: {} commit{}, newest first\n\n",
+                                short_repository(table.repository_key), table.adapter_name,
+                                table.lines.size(), table.lines.size() == 1 ? "" : "s");
+  out += header_lines(table, sha_w);
+  for (const CommitLine& line : table.lines) out += commit_row(table, line, sha_w);
+  if (std::any_of(table.lines.begin(), table.lines.end(), any_incomplete)) {
+    out += "* from a results document that did not finish every scene\n";
+  }
+  out += "\n";
+  out += trend_section(table);
+  if (table.baseline_versions > 1) {
+    out += fmt::format(
+        "\nnote: these commits were measured with {} different baseline sources; each is its own "
+        "series, and ratios compare only within one\n",
+        table.baseline_versions);
+  }
   return out;
 }
 
@@ -128,21 +149,48 @@ nlohmann::json scene_json(const HistoryRow& row) {
           {"stored_at", row.stored_at}};
 }
 
-nlohmann::json commit_json(const CommitLine& line) {
+nlohmann::json commit_json(const HistoryTable& table, const CommitLine& line) {
   const HistoryRow& c = line.commit;
   nlohmann::json scenes = nlohmann::json::object();
-  for (const auto& [id, row] : line.scenes) scenes[id] = scene_json(row);
+  for (const SeriesColumn& column : table.columns) {
+    const auto found = line.scenes.find(column.series_id);
+    if (found != line.scenes.end()) scenes[column.label] = scene_json(found->second);
+  }
   return {{"sha", c.sha},       {"short_sha", c.short_sha},     {"subject", c.subject},
           {"branch", c.branch}, {"commit_time", c.commit_time}, {"dirty", c.dirty},
           {"scenes", scenes}};
 }
 
 nlohmann::json trend_json(const SceneTrend& t) {
-  return {{"ratios", t.ratios},
+  return {{"series", t.series_id},
+          {"ratios", t.ratios},
           {"latest", optional_number(t.latest)},
           {"change_vs_previous", optional_number(t.change)},
           {"previous_short_sha", t.previous_short_sha},
           {"sparkline", t.sparkline}};
+}
+
+nlohmann::json series_json(const SeriesColumn& column) {
+  const HistoryRow& r = column.sample;
+  return {{"id", column.series_id},         {"scene", column.scene_id},
+          {"suite", r.suite},               {"scene_settings", r.scene_settings},
+          {"timing", r.timing},             {"baseline_sha256", r.baseline_sha256},
+          {"baseline_accel", r.baseline_accel}};
+}
+
+nlohmann::json table_json(const HistoryTable& table) {
+  nlohmann::json commits = nlohmann::json::array();
+  for (const CommitLine& line : table.lines) commits.push_back(commit_json(table, line));
+  nlohmann::json series = nlohmann::json::object();
+  for (const SeriesColumn& column : table.columns) series[column.label] = series_json(column);
+  nlohmann::json trends = nlohmann::json::object();
+  for (const SceneTrend& t : table.trends) trends[t.label] = trend_json(t);
+  return {{"repository", table.repository_key},
+          {"adapter", table.adapter_name},
+          {"commits", commits},
+          {"series", series},
+          {"trends", trends},
+          {"baseline_versions", table.baseline_versions}};
 }
 
 nlohmann::json drift_json(const std::optional<MachineDrift>& drift) {
@@ -159,60 +207,62 @@ nlohmann::json drift_json(const std::optional<MachineDrift>& drift) {
 
 }  // namespace
 
-HistoryView make_history_view(const std::vector<HistoryRow>& rows,
+HistoryView make_history_view(const std::vector<HistoryRow>& measurements,
+                              std::size_t last_commits,
                               const std::vector<HistoryRow>& machine_rows) {
   HistoryView view;
-  view.lines = group_by_commit(rows);
-  view.scenes = scene_ids(rows);
-  for (const std::string& scene : view.scenes)
-    view.trends.push_back(scene_trend(view.lines, scene));
+  for (HistoryGroup& group : group_by_repository_and_adapter(measurements)) {
+    HistoryTable table;
+    table.repository_key = group.repository_key;
+    table.adapter_name = group.adapter_name;
+    const std::vector<HistoryRow> rows = latest_per_commit(std::move(group.rows), last_commits);
+    table.lines = group_by_commit(rows);
+    table.columns = series_columns(rows);
+    for (const SeriesColumn& column : table.columns) {
+      table.trends.push_back(scene_trend(table.lines, column));
+    }
+    std::set<std::string> baselines;
+    for (const HistoryRow& row : rows) baselines.insert(row.baseline_sha256);
+    table.baseline_versions = baselines.size();
+    view.tables.push_back(std::move(table));
+  }
   view.drift = detect_machine_drift(machine_rows);
-  std::set<std::string> baselines;
-  for (const HistoryRow& row : rows) baselines.insert(row.baseline_sha256);
-  view.baseline_versions = baselines.size();
   return view;
 }
 
+std::string short_repository(const std::string& repository_key) {
+  constexpr std::string_view kRoot = "root:";
+  if (repository_key.starts_with(kRoot) && repository_key.size() > kRoot.size() + 12) {
+    return repository_key.substr(0, kRoot.size() + 12);
+  }
+  return repository_key;
+}
+
 std::string history_table(const HistoryView& view) {
-  if (view.lines.empty()) {
-    return fmt::format("no results in {} match (role {}{})\n", view.store, view.role,
-                       view.branch.empty() ? "" : ", branch " + view.branch);
-  }
-  const std::size_t sha_w = sha_width(view);
+  const std::string scope =
+      fmt::format("role {}{}", view.role, view.branch.empty() ? "" : ", branch " + view.branch);
+  if (view.tables.empty()) return fmt::format("no results in {} match ({})\n", view.store, scope);
   std::string out = fmt::format(
-      "{} commit{} from {} (role {}{}), newest first; ratio = time(tracer) / time(baseline) with "
-      "its 95% CI half-width; image = max error against the golden\n\n",
-      view.lines.size(), view.lines.size() == 1 ? "" : "s", view.store, view.role,
-      view.branch.empty() ? "" : ", branch " + view.branch);
-  out += header_lines(view, sha_w);
-  for (const CommitLine& line : view.lines) out += commit_row(view, line, sha_w);
-  if (std::any_of(view.lines.begin(), view.lines.end(), any_incomplete)) {
-    out += "* from a results document that did not finish every scene\n";
-  }
-  out += "\n";
-  out += trend_section(view);
-  if (view.baseline_versions > 1) {
-    out += fmt::format(
-        "\nnote: these commits were measured with {} different baseline sources; "
-        "ratios compare only within one baseline\n",
-        view.baseline_versions);
+      "history from {} ({}), one table per repository and adapter\n"
+      "ratio = time(tracer) / time(baseline) with its 95% CI half-width; image = max error "
+      "against the golden\n",
+      view.store, scope);
+  for (const HistoryTable& table : view.tables) {
+    out += "\n";
+    out += table_text(table);
   }
   if (view.drift) out += fmt::format("\n{}\n", describe_drift(*view.drift));
   return out;
 }
 
 nlohmann::json history_json(const HistoryView& view) {
-  nlohmann::json commits = nlohmann::json::array();
-  for (const CommitLine& line : view.lines) commits.push_back(commit_json(line));
-  nlohmann::json trends = nlohmann::json::object();
-  for (const SceneTrend& t : view.trends) trends[t.scene_id] = trend_json(t);
+  nlohmann::json tables = nlohmann::json::array();
+  for (const HistoryTable& table : view.tables) tables.push_back(table_json(table));
   return {{"store", view.store},
           {"role", view.role},
           {"branch", view.branch},
-          {"commits", commits},
-          {"trends", trends},
-          {"machine_drift", drift_json(view.drift)},
-          {"baseline_versions", view.baseline_versions}};
+          {"tables", tables},
+          {"machine_drift", drift_json(view.drift)}};
 }
 
 std::string pad_right(const std::string& text, std::size_t width) {

@@ -13,19 +13,32 @@
 
 namespace raygate::cli {
 
+// One repository and adapter: its commits, its series as columns, each series' trend.
+struct HistoryTable {
+  std::string repository_key;
+  std::string adapter_name;
+  std::vector<CommitLine> lines;  // newest first
+  std::vector<SeriesColumn> columns;
+  std::vector<SceneTrend> trends;     // one per column, in `columns` order
+  std::size_t baseline_versions = 0;  // distinct baseline sources among the rows
+};
+
 struct HistoryView {
   std::string store;  // where the rows came from
   std::string role;
   std::string branch;
-  std::vector<CommitLine> lines;  // newest first
-  std::vector<std::string> scenes;
-  std::vector<SceneTrend> trends;  // one per scene, in `scenes` order
+  std::vector<HistoryTable> tables;  // newest first
   std::optional<MachineDrift> drift;
-  std::size_t baseline_versions = 0;  // distinct baseline sources among the rows
 };
 
-HistoryView make_history_view(const std::vector<HistoryRow>& rows,
+// `measurements` as ResultsStore::measurements gives them; each table keeps the latest
+// measurement of each commit and series, at most `last_commits` commits (0: all).
+HistoryView make_history_view(const std::vector<HistoryRow>& measurements,
+                              std::size_t last_commits,
                               const std::vector<HistoryRow>& machine_rows);
+
+// "root:" and the first 12 digits of a root commit; other repository keys as they are.
+std::string short_repository(const std::string& repository_key);
 
 std::string history_table(const HistoryView& view);
 nlohmann::json history_json(const HistoryView& view);

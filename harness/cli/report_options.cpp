@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "report/reporter.h"
 #include "store/postgres_url.h"
+#include "store/series.h"
 #include "store/store.h"
 
 #include <algorithm>
@@ -41,11 +42,23 @@ std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
                                            const ResultsDocument& document, std::size_t commits) {
   const bool team_store = is_postgresql_url(store.string());
   if (store.empty() || (!team_store && !std::filesystem::exists(store))) return {};
+  // The document's own series, scene by scene: another tracer's, adapter's or setting's history
+  // is not this one's trend.
+  const RevisionRecord* measured = document.revision("tracer");
+  if (measured == nullptr) measured = document.revision("head");
+  if (measured == nullptr) return {};
+  std::map<std::string, std::string> wanted_series;  // scene id -> series id
+  for (const SceneResult& scene : document.scenes) {
+    wanted_series[scene.entry.id] = series_key(document, *measured, scene).id();
+  }
   std::vector<HistoryRow> rows;
   try {
     HistoryQuery query;
     query.role = "any";
     query.last_commits = commits;
+    query.repository = repository_key(*measured);
+    query.adapter = measured->adapter_name;
+    query.suite = document.suite;
     rows = open_store(store.string(), StoreOpen::must_exist)->history(query);
   } catch (const Error& e) {
     fmt::print(stderr, "warning: no trends from {}: {}\n", redact_postgresql_url(store.string()),
@@ -57,7 +70,8 @@ std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
   });
   std::map<std::string, TrendSeries> by_scene;
   for (const HistoryRow& row : rows) {
-    if (!row.ratio || row.baseline_sha256 != document.baseline.source_sha256) continue;
+    const auto wanted = wanted_series.find(row.scene_id);
+    if (!row.ratio || wanted == wanted_series.end() || row.series_id != wanted->second) continue;
     TrendSeries& series = by_scene[row.scene_id];
     series.scene = row.scene_id;
     series.points.push_back({row.short_sha, row.subject, row.commit_time, *row.ratio,

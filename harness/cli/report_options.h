@@ -22,7 +22,8 @@ void add_report_options(CLI::App& command, std::vector<std::string>& reports);
 void check_report_specs(const std::vector<std::string>& reports);
 
 // The normalized ratio of each of the document's scenes over the last `commits` commits in the
-// store (oldest first), measured with the same baseline; empty when there is no store.
+// store (oldest first), within the scene's series (store/series.h: the same repository,
+// adapter, suite, scene settings, timing and baseline); empty when there is no store.
 std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
                                            const ResultsDocument& document,
                                            std::size_t commits = 20);

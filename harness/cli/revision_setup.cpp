@@ -4,6 +4,7 @@
 
 #include "adapter/placeholders.h"
 #include "builder/builder.h"
+#include "checkout/repository_identity.h"
 
 namespace raygate::cli {
 
@@ -48,6 +49,7 @@ PreparedRevision prepare_revision(const std::string& role, const std::string& re
   PreparedRevision prepared;
   prepared.record.role = role;
   prepared.record.repository = repository;
+  prepared.record.repository_id = repository_identity(repository, worktree.sha, context.cache_dir);
   prepared.record.worktree = worktree;
   prepared.record.adapter_name = context.adapter.name;
   prepared.record.adapter_hash = adapter_hash(context.adapter);

@@ -52,7 +52,10 @@ std::optional<SceneDrift> scene_drift(const HistoryRow& latest,
   std::vector<double> baselines;
   std::vector<double> ratios;
   for (const HistoryRow& row : rows) {
-    if (!usable(row) || row.scene_id != latest.scene_id || row.role != latest.role ||
+    // Only the same series (store/series.h): another tracer's ratios or another scene size's
+    // seconds are not this series' history.
+    if (!usable(row) || row.scene_id != latest.scene_id || row.series_id != latest.series_id ||
+        row.role != latest.role ||
         !same_machine_and_baseline(row, latest) || measured_order(row) >= measured_order(latest)) {
       continue;
     }

@@ -1,8 +1,9 @@
 // Machine drift (DESIGN.md §6): when the baseline's own seconds moved against this machine's
 // history while the normalized ratios held, the machine changed (governor, turbo, a neighbour,
 // new hardware under the same name), not the code. The rule (docs/store.md): compare the latest
-// document with earlier documents of the same machine (hostname + CPU model) and baseline
-// source, scene by scene, against the median of the earlier values.
+// document with earlier documents of the same machine (hostname + CPU model), series by series
+// (store/series.h: same repository, adapter, suite, scene settings, timing and baseline),
+// against the median of the earlier values.
 #pragma once
 
 #include <cstddef>

@@ -21,6 +21,45 @@ auto recency(const HistoryRow& row) {
   return std::make_tuple(when.value_or(0), row.measured_at, row.document_id);
 }
 
+// The parts of a column's series that differ among `same_scene` (columns of one scene id).
+std::string distinguishing_parts(const SeriesColumn& column,
+                                 const std::vector<const SeriesColumn*>& same_scene) {
+  using Part = std::string (*)(const HistoryRow&);
+  const std::vector<Part> parts = {
+      [](const HistoryRow& r) { return "suite " + r.suite; },
+      [](const HistoryRow& r) { return r.scene_settings; },
+      [](const HistoryRow& r) { return "timing " + r.timing; },
+      [](const HistoryRow& r) {
+        return "baseline " + r.baseline_sha256.substr(0, 8) + " accel=" + r.baseline_accel;
+      },
+  };
+  std::string out;
+  for (const Part part : parts) {
+    const std::string mine = part(column.sample);
+    const bool differs = std::any_of(same_scene.begin(), same_scene.end(),
+                                     [&](const SeriesColumn* other) {
+                                       return part(other->sample) != mine;
+                                     });
+    if (differs) out += (out.empty() ? "" : ", ") + mine;
+  }
+  // Same visible parts (e.g. a repository or adapter outside this table): the id tells them apart.
+  return out.empty() ? "series " + column.series_id.substr(0, 8) : out;
+}
+
+// Labels each column with its scene id, and what sets it apart when a scene id has several.
+void label_columns(std::vector<SeriesColumn>& columns) {
+  std::map<std::string, std::vector<const SeriesColumn*>> by_scene;
+  for (const SeriesColumn& column : columns) by_scene[column.scene_id].push_back(&column);
+  std::vector<std::string> labels;
+  for (const SeriesColumn& column : columns) {
+    const auto& same_scene = by_scene[column.scene_id];
+    labels.push_back(same_scene.size() == 1 ? column.scene_id
+                                            : column.scene_id + " [" +
+                                                  distinguishing_parts(column, same_scene) + "]");
+  }
+  for (std::size_t i = 0; i < columns.size(); ++i) columns[i].label = labels[i];
+}
+
 }  // namespace
 
 void sort_history(std::vector<HistoryRow>& rows) {
@@ -38,12 +77,12 @@ std::string commit_key(const HistoryRow& row) {
 
 std::vector<HistoryRow> latest_per_commit(std::vector<HistoryRow> rows, std::size_t last_commits) {
   sort_history(rows);
-  std::set<std::pair<std::string, std::string>> seen;  // (commit, scene)
+  std::set<std::tuple<std::string, std::string, std::string>> seen;  // commit, series, scene
   std::set<std::string> commits;
   std::vector<HistoryRow> out;
   for (HistoryRow& row : rows) {
     const std::string key = commit_key(row);
-    if (!seen.insert({key, row.scene_id}).second) continue;
+    if (!seen.insert({key, row.series_id, row.scene_id}).second) continue;
     if (!commits.contains(key) && last_commits != 0 && commits.size() == last_commits) continue;
     commits.insert(key);
     out.push_back(std::move(row));
@@ -58,7 +97,7 @@ std::vector<CommitLine> group_by_commit(const std::vector<HistoryRow>& rows) {
     const std::string key = commit_key(row);
     auto [at, fresh] = index.try_emplace(key, lines.size());
     if (fresh) lines.push_back({key, row, {}});
-    lines[at->second].scenes.emplace(row.scene_id, row);
+    lines[at->second].scenes.emplace(row.series_id, row);
   }
   return lines;
 }
@@ -69,12 +108,53 @@ std::vector<std::string> scene_ids(const std::vector<HistoryRow>& rows) {
   return {ids.begin(), ids.end()};
 }
 
-SceneTrend scene_trend(const std::vector<CommitLine>& lines, const std::string& scene_id) {
+std::vector<HistoryGroup> group_by_repository_and_adapter(const std::vector<HistoryRow>& rows) {
+  std::vector<HistoryGroup> groups;
+  std::vector<decltype(recency(HistoryRow{}))> newest;  // per group
+  std::map<std::pair<std::string, std::string>, std::size_t> index;
+  for (const HistoryRow& row : rows) {
+    auto [at, fresh] = index.try_emplace({row.repository_key, row.adapter_name}, groups.size());
+    if (fresh) {
+      groups.push_back({row.repository_key, row.adapter_name, {}});
+      newest.push_back(recency(row));
+    }
+    groups[at->second].rows.push_back(row);
+    newest[at->second] = std::max(newest[at->second], recency(row));
+  }
+  std::vector<std::size_t> order(groups.size());
+  for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return newest[a] > newest[b]; });
+  std::vector<HistoryGroup> sorted;
+  for (const std::size_t i : order) sorted.push_back(std::move(groups[i]));
+  return sorted;
+}
+
+std::vector<SeriesColumn> series_columns(const std::vector<HistoryRow>& rows) {
+  std::map<std::string, SeriesColumn> by_id;
+  for (const HistoryRow& row : rows) {
+    by_id.try_emplace(row.series_id, SeriesColumn{row.series_id, row.scene_id, row.scene_id, row});
+  }
+  std::vector<SeriesColumn> columns;
+  for (auto& [id, column] : by_id) columns.push_back(std::move(column));
+  std::sort(columns.begin(), columns.end(), [](const SeriesColumn& a, const SeriesColumn& b) {
+    return std::tie(a.scene_id, a.sample.suite, a.sample.scene_settings, a.sample.timing,
+                    a.sample.baseline_sha256, a.sample.baseline_accel, a.series_id) <
+           std::tie(b.scene_id, b.sample.suite, b.sample.scene_settings, b.sample.timing,
+                    b.sample.baseline_sha256, b.sample.baseline_accel, b.series_id);
+  });
+  label_columns(columns);
+  return columns;
+}
+
+SceneTrend scene_trend(const std::vector<CommitLine>& lines, const SeriesColumn& column) {
   SceneTrend trend;
-  trend.scene_id = scene_id;
+  trend.series_id = column.series_id;
+  trend.scene_id = column.scene_id;
+  trend.label = column.label;
   std::vector<std::string> shas;
   for (auto line = lines.rbegin(); line != lines.rend(); ++line) {
-    const auto found = line->scenes.find(scene_id);
+    const auto found = line->scenes.find(column.series_id);
     if (found == line->scenes.end() || !found->second.ratio) continue;
     trend.ratios.push_back(*found->second.ratio);
     shas.push_back(found->second.short_sha);

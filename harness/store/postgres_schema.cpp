@@ -7,6 +7,8 @@
 
 #include "core/error.h"
 #include "core/time_text.h"
+#include "store/series.h"
+#include "store/store_rows.h"
 
 namespace raygate {
 
@@ -82,7 +84,47 @@ CREATE INDEX scene_results_scene ON scene_results(scene_id, role);
 
 const std::vector<Migration> kMigrations = {
     {1, "documents, revisions, scene_results", kCreateTables},
+    {2, kSeriesColumnsDescription, kSeriesColumnsSql, true},
 };
+
+void mark_unknown(PgConnection& db, std::int64_t id) {
+  db.exec("UPDATE scene_results SET series_id = $2 WHERE document_id = $1",
+          PgParams().integer(id).text(unknown_series_id(id)));
+  db.exec("UPDATE revisions SET repository_key = 'unknown' WHERE document_id = $1",
+          PgParams().integer(id));
+}
+
+void write_series(PgConnection& db, std::int64_t id, const DocumentRows& rows) {
+  db.exec("UPDATE documents SET timing = $2, baseline_accel = $3 WHERE id = $1",
+          PgParams().integer(id).text(rows.document.timing).text(rows.document.baseline_accel));
+  for (const RevisionRow& r : rows.revisions) {
+    db.exec("UPDATE revisions SET repository_key = $3 WHERE document_id = $1 AND role = $2",
+            PgParams().integer(id).text(r.role).text(r.repository_key));
+  }
+  for (const SceneRow& r : rows.scenes) {
+    PgParams p;
+    p.integer(id).text(r.scene_id).text(r.role).text(r.scene_settings).text(r.series_id);
+    db.exec("UPDATE scene_results SET scene_settings = $4, series_id = $5 "
+            "WHERE document_id = $1 AND scene_id = $2 AND role = $3",
+            p);
+  }
+}
+
+// Every stored document, one at a time (a large store need not fit in memory).
+void backfill_series(PgConnection& db) {
+  const PgResult ids = db.exec("SELECT id FROM documents ORDER BY id");
+  for (int i = 0; i < ids.rows(); ++i) {
+    const std::int64_t id = ids.integer(i, 0);
+    const PgResult text =
+        db.exec("SELECT document_json FROM documents WHERE id = $1", PgParams().integer(id));
+    const StoredSeries series = stored_series(text.text(0, 0), id);
+    if (series.known) {
+      write_series(db, id, series.rows);
+    } else {
+      mark_unknown(db, id);
+    }
+  }
+}
 
 // One migration with its bookkeeping, in one transaction. The advisory lock makes processes
 // that open a fresh database at once take turns (CREATE TABLE IF NOT EXISTS alone races on the
@@ -93,6 +135,7 @@ void apply(PgConnection& db, const Migration& migration) {
   db.exec(kMigrationsTableSql);
   if (schema_version(db) >= migration.version) return;
   db.exec_script(migration.sql);
+  if (migration.backfills_series) backfill_series(db);
   db.exec("INSERT INTO schema_migrations (version, description, applied_at) VALUES ($1, $2, $3)",
           PgParams().integer(migration.version).text(migration.description).text(utc_timestamp()));
   transaction.commit();

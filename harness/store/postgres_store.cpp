@@ -20,21 +20,22 @@ namespace {
 const char* const kInsertDocument = R"sql(
 INSERT INTO documents (content_sha256, schema_version, kind, branch, suite, shard, complete,
   started_at, finished_at, stored_at, raygate_version, baseline_version, baseline_sha256,
-  machine_hostname, machine_cpu_model, document_json)
-VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, $16)
+  machine_hostname, machine_cpu_model, document_json, timing, baseline_accel)
+VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, $16, $17, $18)
 ON CONFLICT (content_sha256) DO NOTHING
 RETURNING id)sql";
 
 const char* const kInsertRevision = R"sql(
 INSERT INTO revisions (document_id, role, repository, sha, short_sha, subject, author, ref_name,
-  commit_time, commit_unix, dirty, adapter_name, adapter_hash)
-VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13))sql";
+  commit_time, commit_unix, dirty, adapter_name, adapter_hash, repository_key)
+VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14))sql";
 
 const char* const kInsertScene = R"sql(
 INSERT INTO scene_results (document_id, scene_id, role, status, rounds, normalized_ratio,
   ratio_lower, ratio_upper, tracer_median_seconds, baseline_median_seconds, image_verdict,
-  image_max_error, image_rms_error, relative_change, change_lower, change_upper, change_verdict)
-VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, $16, $17))sql";
+  image_max_error, image_rms_error, relative_change, change_lower, change_upper, change_verdict,
+  scene_settings, series_id)
+VALUES ($1, $2, $3, $4, $5, $6, $7, $8, $9, $10, $11, $12, $13, $14, $15, $16, $17, $18, $19))sql";
 
 // LIMIT NULL is no limit.
 const char* const kSelectDocuments = R"sql(
@@ -48,24 +49,29 @@ const char* const kSelectMeasurements = R"sql(
 SELECT d.id, d.stored_at, d.started_at, d.complete, d.branch, r.role, r.sha, r.short_sha,
   r.subject, r.commit_time, r.commit_unix, r.dirty, s.scene_id, s.status, s.normalized_ratio,
   s.ratio_lower, s.ratio_upper, s.baseline_median_seconds, s.image_verdict, s.image_max_error,
-  s.image_rms_error, d.machine_hostname, d.machine_cpu_model, d.baseline_sha256
+  s.image_rms_error, d.machine_hostname, d.machine_cpu_model, d.baseline_sha256,
+  r.repository_key, r.adapter_name, d.suite, s.scene_settings, d.timing, d.baseline_accel,
+  s.series_id
 FROM scene_results s
 JOIN revisions r ON r.document_id = s.document_id AND r.role = s.role
 JOIN documents d ON d.id = s.document_id
 WHERE ($1::text = '' OR d.branch = $1::text) AND ($2::text = 'any' OR s.role = $2::text)
-  AND ($3::boolean OR NOT r.dirty))sql";
+  AND ($3::boolean OR NOT r.dirty)
+  AND ($4::text = '' OR strpos(r.repository_key, $4::text) > 0)
+  AND ($5::text = '' OR r.adapter_name = $5::text) AND ($6::text = '' OR d.suite = $6::text)
+  AND ($7::text = '' OR substr(s.series_id, 1, length($7::text)) = $7::text))sql";
 
 const char* const kMeasurementOrder =
     " ORDER BY r.commit_unix DESC NULLS LAST, d.started_at COLLATE \"C\" DESC, d.id DESC,"
     " s.scene_id COLLATE \"C\"";
 
-// " AND s.scene_id IN ($4, $5, ...)" for the scenes asked for, numbered after the fixed three:
+// " AND s.scene_id IN ($8, $9, ...)" for the scenes asked for, numbered after the fixed seven:
 // placeholders only, the scene ids travel as parameters.
 std::string scene_filter(const std::vector<std::string>& scenes) {
   if (scenes.empty()) return {};
   std::string sql = " AND s.scene_id IN (";
   for (std::size_t i = 0; i < scenes.size(); ++i) {
-    sql += fmt::format("{}${}::text", i == 0 ? "" : ", ", i + 4);
+    sql += fmt::format("{}${}::text", i == 0 ? "" : ", ", i + 8);
   }
   return sql + ")";
 }
@@ -130,7 +136,8 @@ std::optional<std::int64_t> PostgresStore::insert_document(const DocumentRow& ro
   p.text(row.suite).text(row.shard).flag(row.complete).text(row.started_at);
   p.text(row.finished_at).text(row.stored_at).text(row.raygate_version);
   p.text(row.baseline_version).text(row.baseline_sha256).text(row.machine_hostname);
-  p.text(row.machine_cpu_model).text(row.document_json);
+  p.text(row.machine_cpu_model).text(row.document_json).text(row.timing);
+  p.text(row.baseline_accel);
   const PgResult inserted = db_.exec(kInsertDocument, p);
   if (inserted.rows() == 0) return std::nullopt;
   return inserted.integer(0, 0);
@@ -141,7 +148,7 @@ void PostgresStore::insert_revision(std::int64_t document_id, const RevisionRow&
   p.integer(document_id).text(row.role).text(row.repository).text(row.sha);
   p.text(row.short_sha).text(row.subject).text(row.author).text(row.ref_name);
   p.text(row.commit_time).integer(row.commit_unix).flag(row.dirty).text(row.adapter_name);
-  p.text(row.adapter_hash);
+  p.text(row.adapter_hash).text(row.repository_key);
   db_.exec(kInsertRevision, p);
 }
 
@@ -152,6 +159,7 @@ void PostgresStore::insert_scene(std::int64_t document_id, const SceneRow& row) 
   p.real(row.tracer_median_seconds).real(row.baseline_median_seconds);
   p.text(row.image_verdict).real(row.image_max_error).real(row.image_rms_error);
   p.real(row.change).real(row.change_lower).real(row.change_upper).text(row.change_verdict);
+  p.text(row.scene_settings).text(row.series_id);
   db_.exec(kInsertScene, p);
 }
 
@@ -177,6 +185,7 @@ std::vector<StoredDocument> PostgresStore::documents(const DocumentQuery& query)
 std::vector<HistoryRow> PostgresStore::measurements(const HistoryQuery& query) {
   PgParams p;
   p.text(query.branch).text(query.role).flag(query.include_dirty);
+  p.text(query.repository).text(query.adapter).text(query.suite).text(query.series);
   for (const std::string& scene : query.scenes) p.text(scene);
   const PgResult r =
       db_.exec(kSelectMeasurements + scene_filter(query.scenes) + kMeasurementOrder, p);

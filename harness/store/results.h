@@ -27,7 +27,8 @@ inline constexpr int kResultsSchemaVersion = 1;
 // One measured revision of the tracer and how it was built.
 struct RevisionRecord {
   std::string role;  // "tracer" for run; "base" and "head" for compare
-  std::string repository;
+  std::string repository;     // as the user named it: a path or a URL
+  std::string repository_id;  // checkout/repository_identity.h; "" when not known
   Worktree worktree;
   std::string adapter_name;
   std::string adapter_hash;

@@ -239,10 +239,14 @@ void to_json(json& j, const RevisionRecord& r) {
            {"worktree", r.worktree},
            {"adapter", {{"name", r.adapter_name}, {"hash", r.adapter_hash}, {"file", r.adapter_file}}},
            {"build", build_record_to_json(r.build)}};
+  // Written only when known, so a document from before it was recorded reads back and hashes
+  // the same (the store's duplicate check compares canonical JSON).
+  if (!r.repository_id.empty()) j["repository_id"] = r.repository_id;
 }
 void from_json(const json& j, RevisionRecord& r) {
   r.role = j.at("role").get<std::string>();
   r.repository = j.at("repository").get<std::string>();
+  if (j.contains("repository_id")) r.repository_id = j.at("repository_id").get<std::string>();
   r.worktree = j.at("worktree").get<Worktree>();
   const json& adapter = j.at("adapter");
   r.adapter_name = adapter.at("name").get<std::string>();

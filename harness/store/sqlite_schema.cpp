@@ -9,6 +9,8 @@
 
 #include "core/error.h"
 #include "core/time_text.h"
+#include "store/series.h"
+#include "store/store_rows.h"
 
 namespace raygate {
 
@@ -82,7 +84,56 @@ CREATE INDEX scene_results_scene ON scene_results(scene_id, role);
 
 const std::vector<Migration> kMigrations = {
     {1, "documents, revisions, scene_results", kCreateTables},
+    {2, kSeriesColumnsDescription, kSeriesColumnsSql, true},
 };
+
+std::string document_text(SqliteDb& db, std::int64_t id) {
+  SqliteStatement get(db, "SELECT document_json FROM documents WHERE id = ?1");
+  get.bind_int(1, id);
+  get.step();
+  return get.text(0);
+}
+
+void mark_unknown(SqliteDb& db, std::int64_t id) {
+  SqliteStatement scenes(db, "UPDATE scene_results SET series_id = ?2 WHERE document_id = ?1");
+  scenes.bind_int(1, id).bind_text(2, unknown_series_id(id)).run();
+  SqliteStatement revisions(db,
+                            "UPDATE revisions SET repository_key = 'unknown' WHERE document_id = ?1");
+  revisions.bind_int(1, id).run();
+}
+
+void write_series(SqliteDb& db, std::int64_t id, const DocumentRows& rows) {
+  SqliteStatement document(db, "UPDATE documents SET timing = ?2, baseline_accel = ?3 WHERE id = ?1");
+  document.bind_int(1, id).bind_text(2, rows.document.timing);
+  document.bind_text(3, rows.document.baseline_accel).run();
+  for (const RevisionRow& r : rows.revisions) {
+    SqliteStatement revision(
+        db, "UPDATE revisions SET repository_key = ?3 WHERE document_id = ?1 AND role = ?2");
+    revision.bind_int(1, id).bind_text(2, r.role).bind_text(3, r.repository_key).run();
+  }
+  for (const SceneRow& r : rows.scenes) {
+    SqliteStatement scene(db,
+                          "UPDATE scene_results SET scene_settings = ?4, series_id = ?5 "
+                          "WHERE document_id = ?1 AND scene_id = ?2 AND role = ?3");
+    scene.bind_int(1, id).bind_text(2, r.scene_id).bind_text(3, r.role);
+    scene.bind_text(4, r.scene_settings).bind_text(5, r.series_id).run();
+  }
+}
+
+// Every stored document, one at a time (a large store need not fit in memory).
+void backfill_series(SqliteDb& db) {
+  std::vector<std::int64_t> ids;
+  SqliteStatement list(db, "SELECT id FROM documents ORDER BY id");
+  while (list.step()) ids.push_back(list.integer(0));
+  for (const std::int64_t id : ids) {
+    const StoredSeries series = stored_series(document_text(db, id), id);
+    if (series.known) {
+      write_series(db, id, series.rows);
+    } else {
+      mark_unknown(db, id);
+    }
+  }
+}
 
 // One migration with its bookkeeping, in one transaction; skipped if another process applied
 // it first (the version is read again under the write lock).
@@ -91,6 +142,7 @@ void apply(SqliteDb& db, const Migration& migration) {
   if (schema_version(db) >= migration.version) return;
   db.exec(kMigrationsTableSql);
   db.exec(migration.sql);
+  if (migration.backfills_series) backfill_series(db);
   SqliteStatement record(db,
                          "INSERT INTO schema_migrations (version, description, applied_at) "
                          "VALUES (?1, ?2, ?3)");

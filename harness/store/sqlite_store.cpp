@@ -32,19 +32,20 @@ SqliteDb open_database(const std::filesystem::path& path, StoreOpen mode,
 const char* const kInsertDocument = R"sql(
 INSERT INTO documents (content_sha256, schema_version, kind, branch, suite, shard, complete,
   started_at, finished_at, stored_at, raygate_version, baseline_version, baseline_sha256,
-  machine_hostname, machine_cpu_model, document_json)
-VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16))sql";
+  machine_hostname, machine_cpu_model, document_json, timing, baseline_accel)
+VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18))sql";
 
 const char* const kInsertRevision = R"sql(
 INSERT INTO revisions (document_id, role, repository, sha, short_sha, subject, author, ref_name,
-  commit_time, commit_unix, dirty, adapter_name, adapter_hash)
-VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13))sql";
+  commit_time, commit_unix, dirty, adapter_name, adapter_hash, repository_key)
+VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14))sql";
 
 const char* const kInsertScene = R"sql(
 INSERT INTO scene_results (document_id, scene_id, role, status, rounds, normalized_ratio,
   ratio_lower, ratio_upper, tracer_median_seconds, baseline_median_seconds, image_verdict,
-  image_max_error, image_rms_error, relative_change, change_lower, change_upper, change_verdict)
-VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17))sql";
+  image_max_error, image_rms_error, relative_change, change_lower, change_upper, change_verdict,
+  scene_settings, series_id)
+VALUES (?1, ?2, ?3, ?4, ?5, ?6, ?7, ?8, ?9, ?10, ?11, ?12, ?13, ?14, ?15, ?16, ?17, ?18, ?19))sql";
 
 const char* const kSelectDocuments = R"sql(
 SELECT d.id, d.stored_at, d.branch, d.content_sha256, d.document_json FROM documents d
@@ -57,21 +58,27 @@ const char* const kSelectMeasurements = R"sql(
 SELECT d.id, d.stored_at, d.started_at, d.complete, d.branch, r.role, r.sha, r.short_sha,
   r.subject, r.commit_time, r.commit_unix, r.dirty, s.scene_id, s.status, s.normalized_ratio,
   s.ratio_lower, s.ratio_upper, s.baseline_median_seconds, s.image_verdict, s.image_max_error,
-  s.image_rms_error, d.machine_hostname, d.machine_cpu_model, d.baseline_sha256
+  s.image_rms_error, d.machine_hostname, d.machine_cpu_model, d.baseline_sha256,
+  r.repository_key, r.adapter_name, d.suite, s.scene_settings, d.timing, d.baseline_accel,
+  s.series_id
 FROM scene_results s
 JOIN revisions r ON r.document_id = s.document_id AND r.role = s.role
 JOIN documents d ON d.id = s.document_id
-WHERE (?1 = '' OR d.branch = ?1) AND (?2 = 'any' OR s.role = ?2) AND (?3 = 1 OR r.dirty = 0))sql";
+WHERE (?1 = '' OR d.branch = ?1) AND (?2 = 'any' OR s.role = ?2) AND (?3 = 1 OR r.dirty = 0)
+  AND (?4 = '' OR instr(r.repository_key, ?4) > 0) AND (?5 = '' OR r.adapter_name = ?5)
+  AND (?6 = '' OR d.suite = ?6) AND (?7 = '' OR substr(s.series_id, 1, length(?7)) = ?7))sql";
+
+constexpr std::size_t kFixedParameters = 7;  // of kSelectMeasurements
 
 const char* const kMeasurementOrder =
     " ORDER BY r.commit_unix DESC NULLS LAST, d.started_at DESC, d.id DESC, s.scene_id";
 
-// " AND s.scene_id IN (?4, ?5, ...)" for the scenes asked for, numbered after the fixed three.
+// " AND s.scene_id IN (?8, ?9, ...)" for the scenes asked for, numbered after the fixed seven.
 std::string scene_filter(const std::vector<std::string>& scenes) {
   if (scenes.empty()) return {};
   std::string sql = " AND s.scene_id IN (";
   for (std::size_t i = 0; i < scenes.size(); ++i) {
-    sql += fmt::format("{}?{}", i == 0 ? "" : ", ", i + 4);
+    sql += fmt::format("{}?{}", i == 0 ? "" : ", ", i + kFixedParameters + 1);
   }
   return sql + ")";
 }
@@ -125,7 +132,8 @@ std::int64_t SqliteStore::insert_document(const DocumentRow& row) {
   s.bind_text(10, row.stored_at).bind_text(11, row.raygate_version);
   s.bind_text(12, row.baseline_version).bind_text(13, row.baseline_sha256);
   s.bind_text(14, row.machine_hostname).bind_text(15, row.machine_cpu_model);
-  s.bind_text(16, row.document_json);
+  s.bind_text(16, row.document_json).bind_text(17, row.timing);
+  s.bind_text(18, row.baseline_accel);
   s.run();
   SqliteStatement id(db_, "SELECT last_insert_rowid()");
   id.step();
@@ -138,7 +146,7 @@ void SqliteStore::insert_revision(std::int64_t document_id, const RevisionRow& r
   s.bind_text(4, row.sha).bind_text(5, row.short_sha).bind_text(6, row.subject);
   s.bind_text(7, row.author).bind_text(8, row.ref_name).bind_text(9, row.commit_time);
   s.bind_int(10, row.commit_unix).bind_flag(11, row.dirty).bind_text(12, row.adapter_name);
-  s.bind_text(13, row.adapter_hash);
+  s.bind_text(13, row.adapter_hash).bind_text(14, row.repository_key);
   s.run();
 }
 
@@ -151,7 +159,8 @@ void SqliteStore::insert_scene(std::int64_t document_id, const SceneRow& row) {
   s.bind_text(11, row.image_verdict).bind_real(12, row.image_max_error);
   s.bind_real(13, row.image_rms_error).bind_real(14, row.change);
   s.bind_real(15, row.change_lower).bind_real(16, row.change_upper);
-  s.bind_text(17, row.change_verdict);
+  s.bind_text(17, row.change_verdict).bind_text(18, row.scene_settings);
+  s.bind_text(19, row.series_id);
   s.run();
 }
 
@@ -175,8 +184,10 @@ std::vector<StoredDocument> SqliteStore::documents(const DocumentQuery& query) {
 std::vector<HistoryRow> SqliteStore::measurements(const HistoryQuery& query) {
   SqliteStatement s(db_, kSelectMeasurements + scene_filter(query.scenes) + kMeasurementOrder);
   s.bind_text(1, query.branch).bind_text(2, query.role).bind_flag(3, query.include_dirty);
+  s.bind_text(4, query.repository).bind_text(5, query.adapter).bind_text(6, query.suite);
+  s.bind_text(7, query.series);
   for (std::size_t i = 0; i < query.scenes.size(); ++i) {
-    s.bind_text(static_cast<int>(i + 4), query.scenes[i]);
+    s.bind_text(static_cast<int>(i + kFixedParameters + 1), query.scenes[i]);
   }
   std::vector<HistoryRow> rows;
   while (s.step()) rows.push_back(history_row_from(StatementColumns{s}));

@@ -68,6 +68,14 @@ struct HistoryRow {
   std::string machine_hostname;
   std::string machine_cpu_model;
   std::string baseline_sha256;  // ratios compare only across the same baseline
+  // The series (store/series.h): trends, drift and comparisons stay within one series_id.
+  std::string repository_key;
+  std::string adapter_name;
+  std::string suite;
+  std::string scene_settings;
+  std::string timing;
+  std::string baseline_accel;
+  std::string series_id;
 };
 
 struct HistoryQuery {
@@ -76,6 +84,10 @@ struct HistoryQuery {
   std::string role = "tracer";      // "any": every measured revision
   bool include_dirty = false;       // trees with local changes are not commits
   std::size_t last_commits = 0;     // history(): at most this many commits (0: all)
+  std::string repository;           // "" any; else repository keys containing this text
+  std::string adapter;              // "" any; else this adapter name
+  std::string suite;                // "" any; else this suite
+  std::string series;               // "" any; else series ids starting with this
 };
 
 class ResultsStore {
@@ -96,7 +108,7 @@ class ResultsStore {
   // Where the store lives, for messages (a path; a URL without its password).
   virtual std::string location() const = 0;
 
-  // One row per commit and scene (the latest measurement of it), newest commit first, at most
+  // One row per commit and series (the latest measurement of it), newest commit first, at most
   // query.last_commits commits.
   std::vector<HistoryRow> history(const HistoryQuery& query);
 };

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/sha256.h"
+#include "store/series.h"
 
 namespace raygate {
 
@@ -37,6 +38,7 @@ RevisionRow revision_row(const RevisionRecord& r) {
   row.dirty = r.worktree.dirty;
   row.adapter_name = r.adapter_name;
   row.adapter_hash = r.adapter_hash;
+  row.repository_key = repository_key(r);
   return row;
 }
 
@@ -71,10 +73,14 @@ void fill_change(SceneRow& row, const SceneResult& scene) {
   row.change_verdict = scene.change_verdict;
 }
 
-SceneRow scene_row(const SceneResult& scene, const std::string& role) {
+SceneRow scene_row(const ResultsDocument& document, const SceneResult& scene,
+                   const RevisionRecord& revision) {
+  const std::string& role = revision.role;
   SceneRow row;
   row.scene_id = scene.entry.id;
   row.role = role;
+  row.scene_settings = scene_settings(scene.entry, document.baseline);
+  row.series_id = series_key(document, revision, scene).id();
   row.status = scene.status;
   if (const RatioSummary* ratio = scene.ratio(role)) fill_ratio(row, *ratio);
   if (const ImageCheck* check = golden_check(scene, role)) fill_image(row, *check);
@@ -101,6 +107,8 @@ DocumentRow document_row(const ResultsDocument& d, const std::string& branch,
   row.baseline_sha256 = d.baseline.source_sha256;
   row.machine_hostname = text_at(d.machine, "hostname");
   row.machine_cpu_model = text_at(d.machine, "cpu_model");
+  row.timing = timing_identity(d);
+  row.baseline_accel = d.baseline.accel;
   return row;
 }
 
@@ -160,10 +168,23 @@ DocumentRows document_rows(const ResultsDocument& document, const std::string& b
   }
   for (const SceneResult& scene : document.scenes) {
     for (const RevisionRecord& revision : document.revisions) {
-      rows.scenes.push_back(scene_row(scene, revision.role));
+      rows.scenes.push_back(scene_row(document, scene, revision));
     }
   }
   return rows;
+}
+
+StoredSeries stored_series(const std::string& document_json, std::int64_t id) {
+  StoredSeries out;
+  try {
+    const ResultsDocument document =
+        results_from_json(nlohmann::json::parse(document_json), fmt::format("document {}", id));
+    out.rows = document_rows(document, "", "");
+    out.known = true;
+  } catch (const std::exception&) {  // not JSON, or not a document this raygate reads
+    out.known = false;
+  }
+  return out;
 }
 
 std::optional<std::int64_t> parse_iso8601_unix(std::string_view text) {

@@ -32,6 +32,8 @@ struct DocumentRow {
   std::string baseline_sha256;
   std::string machine_hostname;
   std::string machine_cpu_model;
+  std::string timing;          // store/series.h timing_identity()
+  std::string baseline_accel;  // with baseline_sha256, the baseline's identity
   std::string document_json;  // canonical: compact, keys sorted
 };
 
@@ -48,6 +50,7 @@ struct RevisionRow {
   bool dirty = false;
   std::string adapter_name;
   std::string adapter_hash;
+  std::string repository_key;  // store/series.h
 };
 
 // One scene as one revision (role) saw it. Numbers that are absent or not finite are nullopt.
@@ -68,6 +71,8 @@ struct SceneRow {
   std::optional<double> change_lower;
   std::optional<double> change_upper;
   std::string change_verdict;
+  std::string scene_settings;  // store/series.h
+  std::string series_id;       // SeriesKey::id() of this scene as this revision measured it
 };
 
 struct DocumentRows {
@@ -81,6 +86,15 @@ std::string canonical_json(const ResultsDocument& document);
 
 DocumentRows document_rows(const ResultsDocument& document, const std::string& branch,
                            const std::string& stored_at);
+
+// The series columns (store migration 2) of a document stored before they existed, worked out
+// from its stored text. `known` is false for a document that no longer reads back: its rows get
+// unknown_series_id(id) (store/series.h).
+struct StoredSeries {
+  bool known = false;
+  DocumentRows rows;  // the columns of document_rows(); the others are left as computed
+};
+StoredSeries stored_series(const std::string& document_json, std::int64_t id);
 
 // "2026-11-21T06:31:50+00:00", "...Z", "...+0130", fractions ignored -> seconds since 1970 UTC.
 std::optional<std::int64_t> parse_iso8601_unix(std::string_view text);
@@ -122,6 +136,13 @@ HistoryRow history_row_from(const Columns& columns) {
   row.machine_hostname = columns.text(21);
   row.machine_cpu_model = columns.text(22);
   row.baseline_sha256 = columns.text(23);
+  row.repository_key = columns.text(24);
+  row.adapter_name = columns.text(25);
+  row.suite = columns.text(26);
+  row.scene_settings = columns.text(27);
+  row.timing = columns.text(28);
+  row.baseline_accel = columns.text(29);
+  row.series_id = columns.text(30);
   return row;
 }
 

@@ -100,7 +100,11 @@ TEST_F(HistoryCli, JsonForMachines) {
   const CliRun r =
       run_raygate({"history", "--store", "store.db", "--json", "--scene", "balls"}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  const nlohmann::json j = nlohmann::json::parse(r.out);
+  const nlohmann::json all = nlohmann::json::parse(r.out);
+  ASSERT_EQ(all["tables"].size(), 1u);
+  const nlohmann::json& j = all["tables"][0];
+  EXPECT_EQ(j["repository"], "path:/tmp/tracer-repo");
+  EXPECT_EQ(j["adapter"], "cmake-nff");
   ASSERT_EQ(j["commits"].size(), 3u);
   EXPECT_EQ(j["commits"][0]["sha"], fake_sha(3));
   EXPECT_EQ(j["commits"][0]["branch"], "main");
@@ -111,7 +115,9 @@ TEST_F(HistoryCli, JsonForMachines) {
   EXPECT_EQ(balls["machine"]["hostname"], "ci-runner-1");
   EXPECT_FALSE(j["commits"][0]["scenes"].contains("gears"));
   EXPECT_NEAR(j["trends"]["balls"]["change_vs_previous"].get<double>(), 0.1, 1e-12);
-  EXPECT_TRUE(j["machine_drift"].is_null());
+  EXPECT_EQ(j["trends"]["balls"]["series"], j["series"]["balls"]["id"]);
+  EXPECT_EQ(j["series"]["balls"]["scene_settings"], "scene=balls size=1 64x64 sampling=center");
+  EXPECT_TRUE(all["machine_drift"].is_null());
 }
 
 TEST_F(HistoryCli, SaysWhenTheMachineMovedAndTheCodeDidNot) {
@@ -152,6 +158,82 @@ TEST_F(HistoryCli, HtmlPageWithOnePlotPerScene) {
   EXPECT_THAT(html, HasSubstr("ratio 0.8800 [0.8712, 0.8888]"));
   EXPECT_THAT(html, Not(HasSubstr("<script")));
   EXPECT_THAT(html, Not(HasSubstr("https://")));
+}
+
+// Two tracers' repositories (root commits A and B), each measured with two adapters, in one
+// store: B's teapot is 1.718x A's, so a trend across both would say "+71.8%".
+const std::string kRepoA = "root:" + std::string(40, 'a');
+const std::string kRepoB = "root:" + std::string(40, 'b');
+
+DocumentSpec tracer_commit(int seed, int day, double ratio, const std::string& repository,
+                           const std::string& adapter = "cmake-nff") {
+  DocumentSpec spec = commit(seed, day, ratio);
+  spec.scenes = {{"teapot", ratio}};
+  spec.repository_id = repository;
+  spec.adapter = adapter;
+  return spec;
+}
+
+std::size_t count(const std::string& text, const std::string& part) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+  return n;
+}
+
+TEST_F(HistoryCli, OneTablePerRepositoryAndAdapterWithTrendsThatStayInTheirSeries) {
+  ASSERT_EQ(import({write("a1.json", tracer_commit(1, 1, 1.0, kRepoA)),
+                    write("b2.json", tracer_commit(2, 2, 1.718, kRepoB)),
+                    write("a3.json", tracer_commit(3, 3, 1.0, kRepoA)),
+                    write("b4.json", tracer_commit(4, 4, 1.718, kRepoB)),
+                    write("a5.json", tracer_commit(5, 5, 2.0, kRepoA, "meson")),
+                    write("b6.json", tracer_commit(6, 6, 3.0, kRepoB, "meson"))})
+                .exit_code,
+            0);
+  const CliRun r = run_raygate({"history", "--store", "store.db"}, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  EXPECT_EQ(count(r.out, "\nrepository root:"), 4u) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("repository root:aaaaaaaaaaaa, adapter cmake-nff: 2 commits"));
+  EXPECT_THAT(r.out, HasSubstr("repository root:bbbbbbbbbbbb, adapter cmake-nff: 2 commits"));
+  EXPECT_THAT(r.out, HasSubstr("repository root:bbbbbbbbbbbb, adapter meson: 1 commit,"));
+  EXPECT_THAT(r.out, Not(HasSubstr("71.8%"))) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("+0.0% → vs " + fake_sha(1).substr(0, 7)));
+  EXPECT_THAT(r.out, HasSubstr("+0.0% → vs " + fake_sha(2).substr(0, 7)));
+  EXPECT_EQ(count(r.out, "first measurement"), 2u) << r.out;  // each meson table
+
+  const CliRun b = run_raygate(
+      {"history", "--store", "store.db", "--repository", "bbbbbbbb", "--adapter", "meson"}, dir);
+  ASSERT_EQ(b.exit_code, 0) << b.out;
+  EXPECT_EQ(count(b.out, "\nrepository "), 1u) << b.out;
+  EXPECT_THAT(b.out, HasSubstr(fake_sha(6).substr(0, 7)));
+  EXPECT_THAT(b.out, Not(HasSubstr(fake_sha(4).substr(0, 7))));
+  const CliRun json = run_raygate({"history", "--store", "store.db", "--json"}, dir);
+  const nlohmann::json tables = nlohmann::json::parse(json.out)["tables"];
+  ASSERT_EQ(tables.size(), 4u);
+  EXPECT_EQ(tables[0]["repository"], kRepoB);  // the newest first
+  EXPECT_EQ(tables[0]["adapter"], "meson");
+  const CliRun suite = run_raygate({"history", "--store", "store.db", "--suite", "full"}, dir);
+  EXPECT_THAT(suite.out, HasSubstr("no results in"));
+}
+
+// The HTML report's trend plot (trends_from_store, here through `raygate merge`) shows the
+// document's own series only.
+TEST_F(HistoryCli, TheReportsTrendPlotStaysInTheDocumentsSeries) {
+  ASSERT_EQ(import({write("a1.json", tracer_commit(1, 1, 1.0, kRepoA)),
+                    write("b2.json", tracer_commit(2, 2, 1.718, kRepoB)),
+                    write("a3.json", tracer_commit(3, 3, 1.0, kRepoA))})
+                .exit_code,
+            0);
+  DocumentSpec shard = tracer_commit(4, 4, 1.718, kRepoB);
+  shard.shard = "1/1";
+  const std::string shard_file = write("b4-shard.json", shard);
+  const CliRun merged = run_raygate({"merge", shard_file, "-o", "merged.json", "--store",
+                                     "store.db", "--report", "html:report.html"},
+                                    dir);
+  ASSERT_TRUE(std::filesystem::exists(dir.path() / "report.html")) << merged.out;
+  const std::string html = read_file(dir.path() / "report.html");
+  // (find, not HasSubstr: a failure should not print the whole page)
+  EXPECT_NE(html.find("Trend over 2 commits"), std::string::npos);
+  EXPECT_EQ(html.find(fake_sha(3).substr(0, 7)), std::string::npos);
 }
 
 TEST_F(HistoryCli, ExportGivesBackTheImportedFilesByteForByte) {

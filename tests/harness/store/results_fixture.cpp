@@ -12,6 +12,7 @@ RevisionRecord revision(const DocumentSpec& spec, const std::string& role) {
   RevisionRecord r;
   r.role = role;
   r.repository = "/tmp/tracer-repo";
+  r.repository_id = spec.repository_id;
   r.worktree.path = "/tmp/worktrees/" + spec.sha;
   r.worktree.revision = "main";
   r.worktree.ref_name = spec.ref_name;
@@ -21,7 +22,7 @@ RevisionRecord revision(const DocumentSpec& spec, const std::string& role) {
   r.worktree.author = "Test Author";
   r.worktree.commit_time = spec.commit_time;
   r.worktree.dirty = spec.dirty;
-  r.adapter_name = "cmake-nff";
+  r.adapter_name = spec.adapter;
   r.adapter_hash = std::string(64, 'a');
   r.adapter_file = "adapters/cmake-nff.json";
   r.build.sha = spec.sha;
@@ -107,7 +108,7 @@ ResultsDocument make_document(const DocumentSpec& spec) {
   d.machine = {{"hostname", spec.hostname}, {"cpu_model", spec.cpu_model}, {"logical_cores", 2}};
   d.baseline.version = "raygate-baseline 0.1.0";
   d.baseline.source_sha256 = spec.baseline_sha256;
-  d.suite = "ci";
+  d.suite = spec.suite;
   d.shard = spec.shard;
   d.settings = {{"schedule", "alternate"}, {"target", 0.01}};
   for (const std::string& role : spec.roles) d.revisions.push_back(revision(spec, role));

@@ -34,6 +34,9 @@ struct DocumentSpec {
   std::vector<std::string> roles{"tracer"};  // compare: {"base", "head"}
   bool dirty = false;
   bool complete = true;
+  std::string repository_id;  // "" as in documents written before it was recorded
+  std::string adapter = "cmake-nff";
+  std::string suite = "ci";
   std::vector<SceneSpec> scenes;
 };
 

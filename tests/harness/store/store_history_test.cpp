@@ -1,6 +1,9 @@
-// History from the store: one row per commit and scene (the latest measurement), newest commit
-// first, filters by branch, scene, role and dirtiness; trends and sparklines; time parsing.
+// History from the store: one row per commit and series (the latest measurement), newest commit
+// first, filters by branch, scene, role, dirtiness, repository, adapter, suite and series; one
+// table per repository and adapter, trends only within a series; sparklines; time parsing.
 #include <gtest/gtest.h>
+
+#include <stdexcept>
 
 #include "core/fs.h"
 #include "results_fixture.h"
@@ -19,6 +22,14 @@ DocumentSpec commit(int seed, const std::string& day, double ratio) {
   spec.started_at = "2026-03-" + day + "T12:00:00Z";
   spec.scenes = {{"balls", ratio}, {"gears", ratio * 2}};
   return spec;
+}
+
+// The cell of a commit line for a scene id (lines are keyed by series id).
+const HistoryRow& cell(const CommitLine& line, const std::string& scene_id) {
+  for (const auto& [series, row] : line.scenes) {
+    if (row.scene_id == scene_id) return row;
+  }
+  throw std::out_of_range("no scene " + scene_id);
 }
 
 // A query with one field set (designated initializers warn under -Wextra on GCC 12).
@@ -52,7 +63,7 @@ TEST_F(StoreHistory, NewestCommitFirstWithTheLatestMeasurementOfEach) {
   EXPECT_EQ(lines[0].commit.sha, fake_sha(3));
   EXPECT_EQ(lines[1].commit.sha, fake_sha(2));
   EXPECT_EQ(lines[2].commit.sha, fake_sha(1));
-  EXPECT_DOUBLE_EQ(*lines[1].scenes.at("balls").ratio, 0.95);
+  EXPECT_DOUBLE_EQ(*cell(lines[1], "balls").ratio, 0.95);
   EXPECT_EQ(lines[1].commit.subject, "commit 2");
   EXPECT_EQ(store->measurements({}).size(), 8u);  // every document's rows
   const auto last_two = store->history(query([](HistoryQuery& q) { q.last_commits = 2; }));
@@ -131,17 +142,22 @@ TEST(History, TrendComparesWithThePreviousCommit) {
     row.short_sha = row.sha.substr(0, 7);
     row.commit_unix = 1000 + i;
     row.scene_id = "balls";
+    row.series_id = "balls-series";
     row.ratio = ratios[i];
     rows.push_back(row);
   }
   const auto lines = group_by_commit(latest_per_commit(rows, 0));
-  const SceneTrend trend = scene_trend(lines, "balls");
+  const std::vector<SeriesColumn> columns = series_columns(rows);
+  ASSERT_EQ(columns.size(), 1u);
+  const SceneTrend trend = scene_trend(lines, columns[0]);
   EXPECT_EQ(trend.ratios, (std::vector<double>{1.0, 1.0, 1.1}));
   EXPECT_NEAR(*trend.change, 0.1, 1e-12);
   EXPECT_EQ(trend.arrow, "↑");
   EXPECT_EQ(trend.previous_short_sha, fake_sha(1).substr(0, 7));
   EXPECT_EQ(trend.sparkline, "▁▁█");
-  EXPECT_FALSE(scene_trend(lines, "gears").latest);
+  SeriesColumn gears = columns[0];
+  gears.series_id = "gears-series";
+  EXPECT_FALSE(scene_trend(lines, gears).latest);
 }
 
 TEST(History, Sparkline) {

@@ -58,7 +58,7 @@ TEST_F(StorePostgresCli, ImportHistoryAndExportThroughTheBinary) {
   EXPECT_THAT(history.out, HasSubstr("+10.0% ↑ vs " + fake_sha(2).substr(0, 7)));
   const CliRun json = run_raygate({"history", "--store", url, "--json"}, dir);
   ASSERT_EQ(json.exit_code, 0) << json.out;
-  EXPECT_EQ(nlohmann::json::parse(json.out)["commits"].size(), 3u) << json.out;
+  EXPECT_EQ(nlohmann::json::parse(json.out)["tables"].at(0)["commits"].size(), 3u) << json.out;
 
   const CliRun exported = run_raygate({"export", "--store", url, "-o", "out"}, dir);
   ASSERT_EQ(exported.exit_code, 0) << exported.out;

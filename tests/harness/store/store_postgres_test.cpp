@@ -82,27 +82,29 @@ TEST_F(StorePostgres, SchemaIsVersionedAndMigratedOnce) {
   open_store(url);
   open_store(url);  // reopening applies nothing again
   RawConnection raw(url);
-  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "1");
+  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "2");
   EXPECT_EQ(raw.text("SELECT description FROM schema_migrations WHERE version = 1"),
             "documents, revisions, scene_results");
+  EXPECT_EQ(raw.text("SELECT description FROM schema_migrations WHERE version = 2"),
+            kSeriesColumnsDescription);
   EXPECT_EQ(raw.text("SELECT data_type FROM information_schema.columns WHERE table_name = "
                      "'scene_results' AND column_name = 'normalized_ratio'"),
             "double precision");
   EXPECT_EQ(raw.text("SELECT count(*) FROM pg_indexes WHERE indexname IN ('documents_branch', "
                      "'documents_machine', 'revisions_sha', 'revisions_commit', "
-                     "'scene_results_scene')"),
-            "5");
+                     "'scene_results_scene', 'revisions_repository', 'scene_results_series')"),
+            "7");
 }
 
 TEST_F(StorePostgres, ASecondMigrationAppliesOnceOnTopOfTheFirst) {
   open_store(url);
   std::vector<Migration> migrations(postgres_migrations().begin(), postgres_migrations().end());
-  migrations.push_back({2, "documents.note", "ALTER TABLE documents ADD COLUMN note TEXT"});
+  migrations.push_back({3, "documents.note", "ALTER TABLE documents ADD COLUMN note TEXT"});
   PgConnection db = PgConnection::connect(url);
-  EXPECT_EQ(migrate(db, migrations), 2);
-  EXPECT_EQ(migrate(db, migrations), 2);
+  EXPECT_EQ(migrate(db, migrations), 3);
+  EXPECT_EQ(migrate(db, migrations), 3);
   RawConnection raw(url);
-  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "2");
+  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "3");
   EXPECT_TRUE(raw.exec("SELECT note FROM documents"));
 }
 
@@ -110,10 +112,10 @@ TEST_F(StorePostgres, AFailingMigrationLeavesTheVersionBefore) {
   open_store(url);
   std::vector<Migration> migrations(postgres_migrations().begin(), postgres_migrations().end());
   migrations.push_back(
-      {2, "broken", "CREATE TABLE extra (x INTEGER); INSERT INTO nope VALUES (1)"});
+      {3, "broken", "CREATE TABLE extra (x INTEGER); INSERT INTO nope VALUES (1)"});
   PgConnection db = PgConnection::connect(url);
   EXPECT_THROW(migrate(db, migrations), InfraError);
-  EXPECT_EQ(schema_version(db), 1);
+  EXPECT_EQ(schema_version(db), 2);
   RawConnection raw(url);
   EXPECT_EQ(raw.text("SELECT to_regclass('extra') IS NULL"), "t");
 }

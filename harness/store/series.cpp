@@ -1,0 +1,59 @@
+// Series keys from a results document.
+#include "store/series.h"
+
+#include <fmt/core.h>
+
+#include "checkout/remote_cache.h"
+#include "checkout/repository_identity.h"
+#include "core/sha256.h"
+
+namespace raygate {
+
+std::string SeriesKey::id() const {
+  // A separator that no part contains keeps ("ab", "c") and ("a", "bc") apart.
+  const std::string text = fmt::format("{}\n{}\n{}\n{}\n{}\n{}\n{}", repository, adapter, suite,
+                                       scene, settings, timing, baseline);
+  return sha256_hex(text).substr(0, 16);
+}
+
+std::string repository_key(const RevisionRecord& revision) {
+  if (!revision.repository_id.empty()) return revision.repository_id;
+  if (revision.repository.empty()) return "unknown";
+  if (is_url(revision.repository)) return "url:" + normalize_remote_url(revision.repository);
+  return "path:" + std::filesystem::path(revision.repository).lexically_normal().string();
+}
+
+std::string scene_settings(const SuiteScene& entry, const BaselineRecord& baseline) {
+  return fmt::format("scene={} size={} {}x{} sampling={}", entry.scene, entry.size, entry.width,
+                     entry.height, baseline.sampling);
+}
+
+std::string timing_identity(const ResultsDocument& document) {
+  std::string metric;
+  if (document.settings.is_object()) {
+    const auto found = document.settings.find("metric");
+    if (found != document.settings.end() && found->is_string()) metric = found->get<std::string>();
+  }
+  return (metric.empty() ? "-" : metric) + " " + document.baseline.timing;
+}
+
+std::string baseline_identity(const BaselineRecord& baseline) {
+  return baseline.source_sha256 + " accel=" + baseline.accel;
+}
+
+SeriesKey series_key(const ResultsDocument& document, const RevisionRecord& revision,
+                     const SceneResult& scene) {
+  return {repository_key(revision),
+          revision.adapter_name,
+          document.suite,
+          scene.entry.id,
+          scene_settings(scene.entry, document.baseline),
+          timing_identity(document),
+          baseline_identity(document.baseline)};
+}
+
+std::string unknown_series_id(std::int64_t document_id) {
+  return fmt::format("unknown-{}", document_id);
+}
+
+}  // namespace raygate

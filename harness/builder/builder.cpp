@@ -16,6 +16,7 @@
 #include "builder/compiler_identity.h"
 #include "checkout/file_lock.h"
 #include "core/error.h"
+#include "core/interrupt.h"
 
 namespace fs = std::filesystem;
 
@@ -113,6 +114,13 @@ void run_steps(BuildRecord& record, const Worktree& worktree, const Adapter& ada
   record.total_seconds = std::chrono::duration<double>(Clock::now() - started).count();
 }
 
+// Its steps' processes are gone (Process killed their groups); what they wrote is removed, so
+// nothing of it can be taken for a build. The lock is still held.
+void discard_interrupted_build(const BuildCacheEntry& entry) {
+  std::error_code ignored;  // what stays is removed by the next build of the key anyway
+  fs::remove_all(entry.dir, ignored);
+}
+
 }  // namespace
 
 BuildRecord build(const Worktree& worktree, const Adapter& adapter, const BuildOptions& options) {
@@ -130,7 +138,16 @@ BuildRecord build(const Worktree& worktree, const Adapter& adapter, const BuildO
   require_packages(adapter);
   prepare_fresh_entry(entry);
   BuildRecord record = new_record(inputs, entry, src);
-  run_steps(record, worktree, adapter, options, entry);
+  try {
+    run_steps(record, worktree, adapter, options, entry);
+    // A step that ended by itself while the signal arrived does not make the build complete.
+    throw_if_interrupted("after the build steps");
+  } catch (const Interrupted& stop) {
+    discard_interrupted_build(entry);
+    throw Interrupted(stop.signal(), fmt::format("{} while building {}; the unfinished build was "
+                                                 "removed (the next run builds it again)",
+                                                 stop.what(), entry.key));
+  }
   if (record.success) {
     if (!inputs.dirty) publish_build(entry, record);
     return record;

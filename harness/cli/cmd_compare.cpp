@@ -48,6 +48,7 @@ int compare_command(const CompareArgs& args) {
   }
   const MeasureContext context = load_measure_context(args.measure);
   check_report_specs(args.reports);
+  check_output_path(args.out, "--out");
   const BaselineTool baseline(context.tools.baseline);
   const Repository repository = Repository::open(args.measure.repo, context.cache_dir);
   const Worktree head = repository.checkout(args.head);

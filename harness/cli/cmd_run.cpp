@@ -46,6 +46,7 @@ std::pair<Worktree, std::string> locate_tree(const RunArgs& args, const MeasureC
 int run_command(const RunArgs& args) {
   const MeasureContext context = load_measure_context(args.measure);
   check_report_specs(args.reports);
+  check_output_path(args.out, "--out");
   const BaselineTool baseline(context.tools.baseline);
   const auto [worktree, repository] = locate_tree(args, context);
   const PreparedRevision tracer = prepare_revision("tracer", repository, worktree, context,

@@ -8,11 +8,17 @@
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
+#include "core/interrupt.h"
+#include "core/strays.h"
 
 int main(int argc, char** argv) {
   CLI::App app{"raygate: ray tracer regression harness, normalized against a baseline tracer"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("raygate ") + RAYGATE_VERSION);
+  // Before any child starts: Ctrl-C and SIGTERM stop children and write what was measured, and
+  // orphans of children re-parent to raygate, to be swept (core/interrupt.h, core/strays.h).
+  raygate::install_interrupt_handlers();
+  raygate::become_subreaper();
   int exit_code = 0;
   raygate::cli::add_scenes_command(app, exit_code);
   raygate::cli::add_golden_command(app, exit_code);
@@ -34,12 +40,23 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return raygate::to_int(raygate::ExitCode::usage);
+  } catch (const raygate::Interrupted& e) {
+    fmt::print(stderr, "raygate: {}\n", e.what());  // one line: what was kept, and where
+    return raygate::to_int(e.code());
   } catch (const raygate::Error& e) {
     fmt::print(stderr, "raygate: error: {}\n", e.what());
     return raygate::to_int(e.code());
   } catch (const std::exception& e) {
     fmt::print(stderr, "raygate: internal error: {}\n", e.what());
     return raygate::to_int(raygate::ExitCode::infrastructure);
+  }
+  if (const int sig = raygate::interrupt_signal(); sig != 0) {
+    // The signal came after the last child ended: the work is done and kept, but the caller
+    // asked to stop and learns that it did.
+    const raygate::Interrupted stop(sig, "");
+    fmt::print(stderr, "raygate: interrupted by {} after the work was done; all of it was kept\n",
+               raygate::signal_name(sig));
+    return raygate::to_int(stop.code());
   }
   return exit_code;
 }

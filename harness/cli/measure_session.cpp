@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "core/interrupt.h"
 #include "core/path_component.h"
 #include "core/sha256.h"
 #include "core/time_text.h"
@@ -105,12 +106,23 @@ ResultsDocument new_document(const std::string& kind, const MeasureContext& cont
   return document;
 }
 
-void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
-                   Clock& clock, Progress& progress) {
+namespace {
+
+// The one line an interrupted measurement ends with: what was kept, and where.
+std::string kept_message(const Interrupted& stop, const ResultsDocument& document,
+                         const SuiteMeasurement& m) {
+  return fmt::format("interrupted by {}: kept {} of {} scenes in {} (complete: false)",
+                     signal_name(stop.signal()), document.scenes.size(), m.scenes.size(),
+                     m.out.string());
+}
+
+void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
+                    Clock& clock, Progress& progress) {
   const GoldenManifest manifest = load_golden_manifest(m.golden_dir);
   const double started = clock.now_seconds();
   double elapsed_done = 0.0;
   for (std::size_t index = 0; index < m.scenes.size(); ++index) {
+    throw_if_interrupted("between scenes");
     const SuiteScene& entry = m.scenes[index];
     ProgressState state{index + 1, m.scenes.size(), entry.id, 0, 0.0, 0.0,
                         eta_seconds(elapsed_done, index, m.scenes.size(), 0.0)};
@@ -144,6 +156,22 @@ void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Executo
     elapsed_done = clock.now_seconds() - started;
     progress.line(fmt::format("[{}/{}] {}", index + 1, m.scenes.size(),
                               scene_line(document.scenes.back(), m.tracer_roles)));
+  }
+}
+
+}  // namespace
+
+void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
+                   Clock& clock, Progress& progress) {
+  // Within it a signal is not fatal at once: the running child's group is killed, the scenes
+  // finished so far are written, and Interrupted says where.
+  const InterruptScope stop_here;
+  try {
+    measure_scenes(document, m, executor, clock, progress);
+  } catch (const Interrupted& stop) {
+    document.complete = false;
+    write_results(document, m.out);
+    throw Interrupted(stop.signal(), kept_message(stop, document, m));
   }
   document.complete = true;
 }

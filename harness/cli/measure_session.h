@@ -54,7 +54,9 @@ ResultsDocument new_document(const std::string& kind, const MeasureContext& cont
                              const BaselineTool& baseline);
 
 // Measures every scene into `document` (whose header the caller filled in), writing it to
-// m.out after each scene and once more, complete, at the end.
+// m.out after each scene and once more, complete, at the end. On SIGINT or SIGTERM it stops the
+// running child, writes the scenes finished so far (complete: false) and throws Interrupted
+// saying what was kept and where.
 void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
                    Clock& clock, Progress& progress);
 

@@ -1,6 +1,10 @@
 #include "cli/report_options.h"
 
 #include <fmt/core.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include "cli/progress.h"
 #include "core/error.h"
@@ -36,7 +40,33 @@ void add_report_options(CLI::App& command, std::vector<std::string>& reports) {
                      "console (repeatable; PATH - is standard output)");
 }
 
-void check_report_specs(const std::vector<std::string>& reports) { (void)parse_specs(reports); }
+void check_report_specs(const std::vector<std::string>& reports) {
+  for (const ReportTarget& target : parse_specs(reports)) {
+    if (target.path != "-") check_output_path(target.path, "--report " + target.path.string());
+  }
+}
+
+void check_output_path(const std::filesystem::path& path, const std::string& option) {
+  if (path.empty()) return;
+  std::error_code error;
+  const std::filesystem::path target = std::filesystem::absolute(path, error);
+  if (std::filesystem::is_directory(target, error)) {
+    throw UsageError(fmt::format("{}: {} is a directory; name a file in it", option,
+                                 target.string()));
+  }
+  std::filesystem::path folder = target.parent_path();
+  while (!std::filesystem::exists(folder, error) && folder.has_relative_path()) {
+    folder = folder.parent_path();  // created when the file is written
+  }
+  if (!std::filesystem::is_directory(folder, error)) {
+    throw UsageError(fmt::format("{}: cannot write {}: {} is not a directory", option,
+                                 target.string(), folder.string()));
+  }
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+    throw UsageError(fmt::format("{}: cannot write {}: {}: {}", option, target.string(),
+                                 folder.string(), std::strerror(errno)));
+  }
+}
 
 std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
                                            const ResultsDocument& document, std::size_t commits) {

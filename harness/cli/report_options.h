@@ -17,9 +17,16 @@ namespace raygate::cli {
 
 void add_report_options(CLI::App& command, std::vector<std::string>& reports);
 
-// Throws UsageError for a spec that is not FORMAT:PATH with a known format. Check the specs
-// before measuring (parse_report_specs) so a typo does not cost a whole run.
+// Throws UsageError for a spec that is not FORMAT:PATH with a known format, or whose PATH cannot
+// be written (check_output_path). Check the specs before measuring so a typo does not cost a
+// whole run.
 void check_report_specs(const std::vector<std::string>& reports);
+
+// Throws UsageError, naming `option`, when a file could not be written at `path` the way
+// documents and reports are (a temporary file beside it renamed over it, missing folders
+// created): it is a directory, or the nearest existing folder above it is not a folder or is
+// not writable. An empty path (the default place) passes.
+void check_output_path(const std::filesystem::path& path, const std::string& option);
 
 // The normalized ratio of each of the document's scenes over the last `commits` commits in the
 // store (oldest first), within the scene's series (store/series.h: the same repository,

@@ -8,6 +8,8 @@ enum class ExitCode : int {
   regression = 1,      // the change made a scene slower or its image wrong
   usage = 2,           // bad command line, adapter, policy or scene file
   infrastructure = 3,  // raygate could not check out, build or measure
+  interrupted = 130,   // stopped by SIGINT (128 + 2), after writing what it had
+  terminated = 143,    // stopped by SIGTERM (128 + 15), likewise
 };
 
 constexpr int to_int(ExitCode code) { return static_cast<int>(code); }

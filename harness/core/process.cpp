@@ -20,6 +20,8 @@
 #include <utility>
 
 #include "core/error.h"
+#include "core/interrupt.h"
+#include "core/strays.h"
 
 extern char** environ;
 
@@ -114,6 +116,7 @@ std::string ProcessResult::describe() const {
 Process Process::start(const ProcessSpec& spec) {
   Process p;
   p.spec_ = spec;
+  throw_if_interrupted("before starting " + (spec.argv.empty() ? "a process" : spec.argv[0]));
   if (spec.argv.empty()) {
     p.early_result_ = ProcessResult{};
     p.early_result_->spawn_error = "empty command";
@@ -156,10 +159,13 @@ Process Process::start(const ProcessSpec& spec) {
   std::vector<char*> argv = c_strings(argv_strings);
   std::vector<char*> envp = c_strings(env_strings);
   int spawn_status = 0;
+  p.scope_ = std::make_unique<InterruptScope>();  // from here a signal stops this child
   {
+    const std::lock_guard table(child_table_mutex());  // no sweep takes it before it is listed
     ScopedAffinity affinity(spec.cpu_affinity);
     p.started_ = Clock::now();
     spawn_status = ::posix_spawnp(&p.pid_, argv[0], &actions, &attr, argv.data(), envp.data());
+    if (spawn_status == 0) p.group_slot_ = register_child_group(p.pid_);
   }
   posix_spawn_file_actions_destroy(&actions);
   posix_spawnattr_destroy(&attr);
@@ -173,6 +179,7 @@ Process Process::start(const ProcessSpec& spec) {
     p.early_result_->spawn_error = spec.argv[0] + ": " + std::strerror(spawn_status);
     close_fd(p.stdout_fd_);
     close_fd(p.stderr_fd_);
+    p.scope_.reset();
     return p;
   }
   p.pidfd_ = static_cast<int>(::syscall(SYS_pidfd_open, p.pid_, 0));
@@ -189,13 +196,16 @@ Process::Process(Process&& other) noexcept
       stderr_log_(std::exchange(other.stderr_log_, -1)),
       started_(other.started_),
       early_result_(std::move(other.early_result_)),
-      reaped_(std::exchange(other.reaped_, true)) {}
+      reaped_(std::exchange(other.reaped_, true)),
+      group_slot_(std::exchange(other.group_slot_, -1)),
+      scope_(std::move(other.scope_)) {}
 
 Process::~Process() {
   if (pid_ > 0 && !reaped_) {
     kill_group(SIGKILL);
     ::waitpid(pid_, nullptr, 0);
   }
+  release_child_group(group_slot_);
   for (int* fd : {&pidfd_, &stdout_fd_, &stderr_fd_, &stdout_log_, &stderr_log_}) close_fd(*fd);
 }
 
@@ -223,13 +233,25 @@ void Process::drain(int& fd, int log_fd, std::uint64_t& written, bool& truncated
   }
 }
 
-void Process::reap(ProcessResult& result, bool block) {
+bool Process::has_exited(bool block) const {
+  for (;;) {
+    siginfo_t info{};
+    const int flags = WEXITED | WNOWAIT | (block ? 0 : WNOHANG);
+    if (::waitid(P_PID, static_cast<id_t>(pid_), &info, flags) == 0) return info.si_pid == pid_;
+    if (errno != EINTR) return true;  // not our child any more: nothing left to wait for
+  }
+}
+
+void Process::reap(ProcessResult& result, Clock::time_point exited_at) {
   int status = 0;
   rusage usage{};
-  const pid_t r = ::wait4(pid_, &status, block ? 0 : WNOHANG, &usage);
-  if (r != pid_) return;
+  pid_t r = -1;
+  do {
+    r = ::wait4(pid_, &status, 0, &usage);
+  } while (r < 0 && errno == EINTR);
   reaped_ = true;
-  result.wall_seconds = std::chrono::duration<double>(Clock::now() - started_).count();
+  if (r != pid_) return;
+  result.wall_seconds = std::chrono::duration<double>(exited_at - started_).count();
   result.user_seconds = seconds_of(usage.ru_utime);
   result.system_seconds = seconds_of(usage.ru_stime);
   result.max_rss_kib = usage.ru_maxrss;
@@ -242,6 +264,20 @@ void Process::reap(ProcessResult& result, bool block) {
   }
 }
 
+// The child has exited and is a zombie, so its pid, and with it its group id, cannot have been
+// reused: what is left in the group (a background process that closed its output) is killed
+// before the reap. Then strays that left the group are swept.
+void Process::finish(ProcessResult& result, Clock::time_point exited_at) {
+  kill_group(SIGKILL);
+  reap(result, exited_at);
+  release_child_group(std::exchange(group_slot_, -1));
+  sweep_stray_children();
+  scope_.reset();
+  for (int* fd : {&pidfd_, &stdout_fd_, &stderr_fd_, &stdout_log_, &stderr_log_}) close_fd(*fd);
+  if (result.outcome == ProcessOutcome::timed_out && result.signal == 0) result.signal = SIGTERM;
+  throw_if_interrupted("while running " + spec_.argv[0]);
+}
+
 ProcessResult Process::wait() {
   if (early_result_) return *early_result_;
   ProcessResult result;
@@ -251,41 +287,48 @@ ProcessResult Process::wait() {
   const int err_log = stderr_log_ >= 0 ? stderr_log_ : stdout_log_;
   const bool has_timeout = spec_.timeout.count() > 0;
   const auto deadline = started_ + spec_.timeout;
+  bool exited = false;  // the child has ended (a zombie until finish() reaps it)
+  Clock::time_point exited_at;
   std::optional<Clock::time_point> kill_at;
   std::optional<Clock::time_point> pipes_deadline;  // after exit, how long grandchildren may hold pipes
 
-  while (!reaped_ || stdout_fd_ >= 0 || stderr_fd_ >= 0) {
+  while (!exited || stdout_fd_ >= 0 || stderr_fd_ >= 0) {
     const auto now = Clock::now();
-    if (!reaped_ && has_timeout && !kill_at && now >= deadline) {
+    if (!exited && !kill_at && interrupt_signal() != 0) {
+      kill_group(SIGTERM);  // let a build tool clean up, briefly: the user is waiting
+      kill_at = now + std::min(spec_.kill_grace, std::chrono::milliseconds(2000));
+    } else if (!exited && has_timeout && !kill_at && now >= deadline) {
       result.outcome = ProcessOutcome::timed_out;
       kill_group(SIGTERM);
       kill_at = now + spec_.kill_grace;
     }
-    if (kill_at && !reaped_ && now >= *kill_at) kill_group(SIGKILL);
-    if (reaped_ && !pipes_deadline) pipes_deadline = now + std::chrono::milliseconds(200);
-    if (pipes_deadline && now >= *pipes_deadline) {
-      kill_group(SIGKILL);  // stray descendants still holding our pipes
-      close_fd(stdout_fd_);
-      close_fd(stderr_fd_);
-      break;
-    }
-    pollfd fds[3] = {{stdout_fd_, POLLIN, 0}, {stderr_fd_, POLLIN, 0},
-                     {reaped_ ? -1 : pidfd_, POLLIN, 0}};
+    if (kill_at && !exited && now >= *kill_at) kill_group(SIGKILL);
+    if (exited && !pipes_deadline) pipes_deadline = now + std::chrono::milliseconds(200);
+    if (pipes_deadline && now >= *pipes_deadline) break;  // strays still hold our pipes
+    pollfd fds[4] = {{stdout_fd_, POLLIN, 0},
+                     {stderr_fd_, POLLIN, 0},
+                     {exited ? -1 : pidfd_, POLLIN, 0},
+                     {exited || kill_at ? -1 : interrupt_fd(), POLLIN, 0}};
     int wait_ms = 50;  // also bounds the reaping latency when pidfd_open is unavailable
-    if (has_timeout && !kill_at && !reaped_) {
+    if (has_timeout && !kill_at && !exited) {
       const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now);
       wait_ms = static_cast<int>(std::clamp<long>(left.count() + 1, 0, wait_ms));
     }
     if (pidfd_ >= 0 && !has_timeout && !kill_at && !pipes_deadline) wait_ms = -1;
-    const int ready = ::poll(fds, 3, wait_ms);
+    const int ready = ::poll(fds, 4, wait_ms);
     if (ready < 0 && errno != EINTR) break;
     if (fds[0].revents != 0) drain(stdout_fd_, stdout_log_, out_written, result.stdout_truncated);
     if (fds[1].revents != 0) drain(stderr_fd_, err_log, err_written, result.stderr_truncated);
-    if (!reaped_) reap(result, false);
+    if (!exited && has_exited(false)) {
+      exited = true;
+      exited_at = Clock::now();
+    }
   }
-  if (!reaped_) reap(result, true);
-  if (result.outcome == ProcessOutcome::timed_out) result.signal = result.signal ? result.signal : SIGTERM;
-  for (int* fd : {&pidfd_, &stdout_log_, &stderr_log_}) close_fd(*fd);
+  if (!exited) {
+    has_exited(true);
+    exited_at = Clock::now();
+  }
+  finish(result, exited_at);
   return result;
 }
 

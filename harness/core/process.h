@@ -2,6 +2,9 @@
 // shell, a controlled environment, its own process group, a timeout that sends SIGTERM and then
 // SIGKILL to the whole group, stdout/stderr drained into size-bounded log files, and the
 // resources wait4 reports. A tracer that crashes or hangs is a result here, not an exception.
+// Nothing the child started outlives it: what is left in its group when it exits is killed,
+// and strays that left the group are swept (core/strays.h). SIGINT or SIGTERM to raygate
+// (core/interrupt.h) kills the group too and throws Interrupted.
 #pragma once
 
 #include <sys/types.h>
@@ -10,11 +13,14 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 namespace raygate {
+
+class InterruptScope;
 
 struct ProcessSpec {
   std::vector<std::string> argv;  // argv[0] is looked up in PATH when it has no '/'
@@ -26,7 +32,7 @@ struct ProcessSpec {
   std::filesystem::path stderr_path;  // empty: discarded; may equal stdout_path (merged)
   std::uint64_t log_limit_bytes = 8u << 20;  // per stream; the rest is drained and dropped
   std::chrono::milliseconds timeout{0};      // 0: none
-  std::chrono::milliseconds kill_grace{2000};  // SIGTERM to SIGKILL
+  std::chrono::milliseconds kill_grace{2000};  // SIGTERM to SIGKILL (at most 2 s when interrupted)
   std::vector<int> cpu_affinity;  // CPUs to pin to; empty: inherit
 };
 
@@ -58,7 +64,8 @@ struct ProcessResult {
 class Process {
  public:
   // Starts the child. Never throws for a program that cannot run: wait() reports spawn_failed.
-  // Throws InfraError only if the log files cannot be created.
+  // Throws InfraError if the log files cannot be created, Interrupted if raygate was asked to
+  // stop (then nothing is started).
   static Process start(const ProcessSpec& spec);
 
   Process(Process&& other) noexcept;
@@ -66,7 +73,9 @@ class Process {
   Process(const Process&) = delete;
   ~Process();  // a still-running child's group is killed and reaped
 
-  // Drains output and waits for the child (honouring the timeout); call once.
+  // Drains output and waits for the child (honouring the timeout); call once. Throws
+  // Interrupted once SIGINT or SIGTERM arrived, after killing and reaping the child's group,
+  // even if the child ended by itself meanwhile: nothing that ran then counts.
   ProcessResult wait();
   pid_t pid() const { return pid_; }
 
@@ -74,7 +83,9 @@ class Process {
   Process() = default;
   void drain(int& fd, int log_fd, std::uint64_t& written, bool& truncated);
   void kill_group(int sig) const;
-  void reap(ProcessResult& result, bool block);
+  bool has_exited(bool block) const;  // leaves the child a zombie, so its pid stays ours
+  void reap(ProcessResult& result, std::chrono::steady_clock::time_point exited_at);
+  void finish(ProcessResult& result, std::chrono::steady_clock::time_point exited_at);
 
   ProcessSpec spec_;
   pid_t pid_ = -1;
@@ -86,6 +97,8 @@ class Process {
   std::chrono::steady_clock::time_point started_;
   std::optional<ProcessResult> early_result_;  // set when spawning failed
   bool reaped_ = false;
+  int group_slot_ = -1;                   // in the table of live children (core/interrupt.h)
+  std::unique_ptr<InterruptScope> scope_;  // a signal is acted on while the child lives
 };
 
 // Starts, waits, returns the result.

@@ -20,6 +20,9 @@ const RunRecord* SceneRuns::first_run(const std::string& role) const {
       return &found->second;
     }
   }
+  if (const auto found = partial_round.find(role); found != partial_round.end() && found->second.ok) {
+    return &found->second;
+  }
   return nullptr;
 }
 
@@ -115,9 +118,11 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
   const RunLauncher launcher(scene, executor, scene_dir);
   const double started = clock.now_seconds();
   SceneRuns out;
-  auto fail = [&](const std::string& role, const RunRecord& run) {
+  auto fail = [&](const std::string& role, const RunRecord& run,
+                  std::map<std::string, RunRecord> partial_round = {}) {
     out.failed_role = role;
     out.failed_run = run;
+    out.partial_round = std::move(partial_round);
     out.stop_reason = "failed";
     out.seconds_spent = clock.now_seconds() - started;
     return out;
@@ -140,8 +145,10 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
           std::vector<int>(options.duet_cpus.begin(), options.duet_cpus.begin() + 2), index);
       const std::vector<RunRecord> runs = launcher.run_together(roster, label, cpus);
       for (std::size_t i = 0; i < roster.size(); ++i) {
-        if (!runs[i].ok) return fail(roster[i]->role(), runs[i]);
-        round.runs[roster[i]->role()] = runs[i];
+        if (runs[i].ok) round.runs[roster[i]->role()] = runs[i];
+      }
+      for (std::size_t i = 0; i < roster.size(); ++i) {
+        if (!runs[i].ok) return fail(roster[i]->role(), runs[i], round.runs);
       }
       // Order by CPU, so the document says which contender had which CPU this round.
       for (std::size_t c = 0; c < cpus.size(); ++c) {
@@ -151,7 +158,7 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
     } else {
       for (const Contender* contender : rotated(roster, index)) {
         RunRecord run = launcher.run(*contender, label, options.pin_cpus);
-        if (!run.ok) return fail(contender->role(), run);
+        if (!run.ok) return fail(contender->role(), run, round.runs);
         round.order.push_back(contender->role());
         round.runs[contender->role()] = std::move(run);
       }

@@ -48,10 +48,14 @@ struct SceneRuns {
   // stopped there; the rounds before it are kept.
   std::string failed_role;
   std::optional<RunRecord> failed_run;
+  // The successful runs of the round that failure cut short, by role. So "base ran before head
+  // crashed" reads the same whether the crash came in a warm-up or in the first round.
+  std::map<std::string, RunRecord> partial_round;
 
   bool failed() const { return failed_run.has_value(); }
-  // The first successful run of `role` (a warm-up if there was one): its image is the one
-  // compared with the golden. nullptr if there is none.
+  // The first successful run of `role` (a warm-up if there was one, else a round's, else one of
+  // the round a failure cut short): its image is the one compared with the golden. nullptr if
+  // there is none.
   const RunRecord* first_run(const std::string& role) const;
 };
 

@@ -208,6 +208,7 @@ void to_json(json& j, const SceneResult& s) {
   if (s.runs.failed_run) {
     j["failure"] = {{"role", s.runs.failed_role}, {"run", *s.runs.failed_run}};
   }
+  if (!s.runs.partial_round.empty()) j["partial_round"] = s.runs.partial_round;
   if (s.change) {
     j["change"] = *s.change;
     j["change"]["verdict"] = s.change_verdict;
@@ -225,6 +226,9 @@ void from_json(const json& j, SceneResult& s) {
   }
   s.runs.warmup = j.at("warmup").get<std::map<std::string, std::vector<RunRecord>>>();
   s.runs.rounds = j.at("rounds").get<std::vector<Round>>();
+  if (j.contains("partial_round")) {
+    s.runs.partial_round = j.at("partial_round").get<std::map<std::string, RunRecord>>();
+  }
   s.ratios = j.at("ratios").get<std::map<std::string, RatioSummary>>();
   if (const json& change = j.at("change"); !change.is_null()) {
     s.change = change.get<ChangeSummary>();

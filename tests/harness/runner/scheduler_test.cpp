@@ -478,5 +478,31 @@ TEST_F(SchedulerTest, FirstRunWithoutWarmupIsTheFirstRound) {
   EXPECT_EQ(runs.first_run("head"), nullptr);
 }
 
+// Without a warm-up, head crashing in round 1 comes after base ran in that round: that run is
+// kept, so "base ran" (the gate's crash verdict) does not depend on the warm-up.
+TEST_F(SchedulerTest, CrashWithoutWarmupKeepsTheRunsBeforeItInItsRound) {
+  options_.warmup_runs = 0;
+  executor_.script("head", 1, killed_by(SIGSEGV));
+  const SceneRuns runs = measure({&baseline_, &base_, &head_}, stop_after(10));
+  ASSERT_TRUE(runs.failed());
+  EXPECT_EQ(runs.failed_role, "head");
+  EXPECT_TRUE(runs.rounds.empty());
+  EXPECT_EQ(runs.partial_round.size(), 2u);
+  const RunRecord* base = runs.first_run("base");
+  ASSERT_NE(base, nullptr);
+  EXPECT_EQ(base->image, dir_.path() / "scene" / "base" / "round-001" / "image.png");
+  EXPECT_EQ(runs.first_run("head"), nullptr);
+}
+
+TEST_F(DuetTest, CrashKeepsTheOtherRunOfItsRound) {
+  options_.warmup_runs = 0;
+  executor_.script("tracer", 1, killed_by(SIGSEGV));
+  const SceneRuns runs = measure_pair(stop_after(10));
+  ASSERT_TRUE(runs.failed());
+  EXPECT_EQ(runs.failed_role, "tracer");
+  ASSERT_EQ(runs.partial_round.size(), 1u);
+  EXPECT_NE(runs.first_run("baseline"), nullptr);
+}
+
 }  // namespace
 }  // namespace raygate

@@ -1,0 +1,72 @@
+// Ctrl-C (SIGINT) and SIGTERM while raygate runs a tracer or a build step. Children run in their
+// own process groups, so the terminal's signal reaches raygate only; raygate must stop them.
+// The handler only records the signal (an atomic flag and a byte on a self-pipe, both
+// async-signal-safe). Process::wait sees it, kills its child's group and throws Interrupted,
+// which travels up through the measuring code (that writes its document, complete: false) to
+// cli/main.cpp, which exits 130 (SIGINT) or 143 (SIGTERM).
+//
+// A signal counts as a request to stop only while someone will act on it: while a child runs
+// or an InterruptScope is open. Otherwise, and on a second signal, the handler kills every live
+// child group and ends raygate at once with the signal's default action.
+#pragma once
+
+#include <sys/types.h>
+
+#include <string>
+
+#include "core/error.h"
+
+namespace raygate {
+
+// Thrown once SIGINT or SIGTERM arrived; code() is 128 + the signal. what() says what was kept.
+class Interrupted : public Error {
+ public:
+  Interrupted(int signal, const std::string& message);
+  int signal() const { return signal_; }
+
+ private:
+  int signal_;
+};
+
+// Installs the SIGINT and SIGTERM handlers and creates the self-pipe. Call once, early in main;
+// calling again does nothing.
+void install_interrupt_handlers();
+
+// The signal that asked raygate to stop, or 0.
+int interrupt_signal();
+
+// Becomes readable once a stop was requested (never drained, so every poller wakes); -1 before
+// install_interrupt_handlers().
+int interrupt_fd();
+
+// What the handler does on the first signal; tests call it directly.
+void request_interrupt(int signal);
+
+// Throws Interrupted ("interrupted by SIGINT <doing>") if a stop was requested.
+void throw_if_interrupted(const std::string& doing);
+
+// "SIGINT", "SIGTERM".
+std::string signal_name(int signal);
+
+// Forgets a requested stop (tests only: raygate never resumes after one).
+void clear_interrupt_for_testing();
+
+// While one is open, a signal is recorded for the code below to act on (write what it has,
+// then stop) instead of ending raygate at once. Process holds one while its child lives.
+class InterruptScope {
+ public:
+  InterruptScope();
+  ~InterruptScope();
+  InterruptScope(const InterruptScope&) = delete;
+  InterruptScope& operator=(const InterruptScope&) = delete;
+};
+
+// The process groups of live children, for the handler to kill on a second signal. Returns a
+// slot for release_child_group (-1 if the table is full: that child is then only not killed by
+// a second signal).
+int register_child_group(pid_t group);
+void release_child_group(int slot);
+// Whether `pid` is a child raygate started and has not reaped yet.
+bool is_registered_child(pid_t pid);
+
+}  // namespace raygate

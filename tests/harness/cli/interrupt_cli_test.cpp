@@ -1,0 +1,230 @@
+// Verdicts a team can trust, end to end on the fixture tracer's repository: SIGINT and SIGTERM
+// stop `raygate run` with 130 / 143, leaving no tracer, grandchild or setsid stray running, the
+// finished scenes in the document (complete: false) and one line saying so; an interrupted
+// build leaves nothing that looks complete and the rerun builds again; a crashing head fails
+// the gate with or without a warm-up; an --out or --report that cannot be written is refused
+// (exit 2) before anything is built or measured.
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <chrono>
+#include <fstream>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "cli_support.h"
+#include "store/results.h"
+#include "tracer_fixture.h"
+
+namespace raygate::test {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using namespace std::chrono_literals;
+
+// Running (not gone, not a zombie waiting for whoever inherited it).
+bool alive(pid_t pid) {
+  std::ifstream stat("/proc/" + std::to_string(pid) + "/stat");
+  std::string text;
+  if (!std::getline(stat, text)) return false;
+  const std::size_t close = text.rfind(')');
+  return close != std::string::npos && close + 2 < text.size() && text[close + 2] != 'Z';
+}
+
+bool ends(pid_t pid) {
+  for (int i = 0; i < 250 && alive(pid); ++i) std::this_thread::sleep_for(20ms);
+  return !alive(pid);
+}
+
+// Waits (up to two minutes: the first build compiles the tracer) for a file a child writes.
+bool appears(const fs::path& file, const Process& raygate) {
+  for (int i = 0; i < 1200; ++i) {
+    if (fs::exists(file) && fs::file_size(file) > 0) return true;
+    if (!alive(raygate.pid())) return false;
+    std::this_thread::sleep_for(100ms);
+  }
+  return false;
+}
+
+pid_t pid_in(const fs::path& file) { return static_cast<pid_t>(std::stoi(read_file(file))); }
+
+std::vector<std::string> lines_with(const std::string& text, const std::string& part) {
+  std::vector<std::string> found;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = std::min(text.find('\n', start), text.size());
+    const std::string line = text.substr(start, end - start);
+    if (has(line, part)) found.push_back(line);
+    start = end + 1;
+  }
+  return found;
+}
+
+class InterruptCli : public TracerRepoTest {
+ protected:
+  // make-nff with `run` wrapped: on balls, the tracer starts a grandchild in its group and a
+  // setsid stray outside it, writes the pids, and waits; other scenes render normally.
+  fs::path sleeping_adapter() const {
+    json adapter = json::parse(read_file(kSource / "adapters" / "make-nff.json"));
+    adapter["name"] = "make-nff-sleeping";
+    adapter["run"] = {"sh", "-c",
+                      "case \"$1\" in *balls*)\n"
+                      "  sleep 100 & echo $! > \"$4/grandchild.pid\"\n"
+                      "  setsid sleep 100 </dev/null >/dev/null 2>&1 & echo $! > \"$4/stray.pid\"\n"
+                      "  echo $$ > \"$4/tracer.pid\"\n"
+                      "  wait;;\n"
+                      "esac\n"
+                      "exec \"$2\" \"$1\" -o \"$3\"",
+                      "sh", "{scene}", "{build}/tracer", "{image}", pids_.string()};
+    const fs::path path = dir_.path() / "make-nff-sleeping.json";
+    write_file_atomically(path, adapter.dump(2));
+    return path;
+  }
+
+  // make-nff with a first build step that counts its runs and, unless `go` exists, writes its
+  // pid and waits.
+  fs::path waiting_build_adapter() const {
+    json adapter = json::parse(read_file(kSource / "adapters" / "make-nff.json"));
+    adapter["name"] = "make-nff-waiting";
+    json steps = json::array();
+    steps.push_back({"sh", "-c",
+                     "echo ran >> \"$1/build-runs\"; "
+                     "if [ ! -e \"$1/go\" ]; then echo $$ > \"$1/step.pid\"; exec sleep 100; fi",
+                     "sh", pids_.string()});
+    for (const json& step : adapter["build"]) steps.push_back(step);
+    adapter["build"] = steps;
+    const fs::path path = dir_.path() / "make-nff-waiting.json";
+    write_file_atomically(path, adapter.dump(2));
+    return path;
+  }
+
+  std::vector<std::string> run_args(const fs::path& adapter) const {
+    return {"run",          "--repo",        repo_.path().string(), "--adapter",
+            adapter.string(), "--suite",     suite_.string(),       "--cache-dir",
+            cache_.string(), "--golden-dir", "no-goldens",          "--max-rounds",
+            "1",            "--warmup",      "0",                   "--no-store",
+            "--out",        out_.string()};
+  }
+
+  // Starts raygate with `args`; once `ready` appears, sends `sig`; returns the exit code.
+  int signal_when(const std::vector<std::string>& args, const fs::path& ready, int sig) {
+    ProcessSpec spec;
+    spec.argv = {RAYGATE_EXE};
+    spec.argv.insert(spec.argv.end(), args.begin(), args.end());
+    spec.stdout_path = dir_.path() / "cli.log";
+    spec.stderr_path = spec.stdout_path;
+    spec.working_directory = dir_.path();
+    spec.timeout = std::chrono::minutes(4);
+    Process raygate = Process::start(spec);
+    EXPECT_TRUE(appears(ready, raygate)) << read_file(spec.stdout_path);
+    const auto sent = std::chrono::steady_clock::now();
+    ::kill(raygate.pid(), sig);
+    const ProcessResult r = raygate.wait();
+    EXPECT_LT(std::chrono::steady_clock::now() - sent, 10s) << "stopping took too long";
+    output_ = read_file(spec.stdout_path);
+    return r.outcome == ProcessOutcome::exited ? r.exit_code : -1;
+  }
+
+  fs::path pids_ = dir_.path() / "pids";
+  fs::path out_ = dir_.path() / "r.json";
+  std::string output_;
+};
+
+TEST_F(InterruptCli, SignalsStopTheTracerItsChildrenAndStraysAndKeepTheFinishedScenes) {
+  commit(sources_.fast, "tracer");
+  const fs::path adapter = sleeping_adapter();
+  for (const auto& [sig, code] : {std::pair{SIGINT, 130}, std::pair{SIGTERM, 143}}) {
+    const std::string name = sig == SIGINT ? "SIGINT" : "SIGTERM";
+    SCOPED_TRACE(name);
+    fs::remove_all(pids_);
+    fs::create_directories(pids_);
+    fs::remove(out_);
+    EXPECT_EQ(signal_when(run_args(adapter), pids_ / "tracer.pid", sig), code) << output_;
+    for (const char* file : {"tracer.pid", "grandchild.pid", "stray.pid"}) {
+      EXPECT_TRUE(ends(pid_in(pids_ / file))) << file << " still runs";
+    }
+    // tetra was measured before balls started: it is kept, and the document says it is partial.
+    const ResultsDocument d = read_results(out_);
+    EXPECT_FALSE(d.complete);
+    ASSERT_EQ(d.scenes.size(), 1u);
+    EXPECT_EQ(d.scenes[0].entry.id, "tetra");
+    const std::vector<std::string> said = lines_with(output_, "interrupted");
+    ASSERT_EQ(said.size(), 1u) << output_;
+    EXPECT_EQ(said[0], "raygate: interrupted by " + name + ": kept 1 of 2 scenes in " +
+                           out_.string() + " (complete: false)");
+  }
+}
+
+TEST_F(InterruptCli, InterruptedBuildLeavesNoCompleteLookingEntryAndTheRerunBuilds) {
+  commit(sources_.fast, "tracer");
+  fs::create_directories(pids_);
+  const fs::path adapter = waiting_build_adapter();
+  EXPECT_EQ(signal_when(run_args(adapter), pids_ / "step.pid", SIGINT), 130) << output_;
+  EXPECT_TRUE(ends(pid_in(pids_ / "step.pid"))) << "the build step still runs";
+  EXPECT_TRUE(has(output_, "the unfinished build was removed")) << output_;
+  EXPECT_FALSE(fs::exists(out_)) << "nothing was measured";
+  for (const auto& entry : fs::recursive_directory_iterator(cache_ / "builds")) {
+    EXPECT_NE(entry.path().filename(), "build.json") << entry.path();
+  }
+
+  write_file_atomically(pids_ / "go", "");
+  std::vector<std::string> args = run_args(adapter);
+  args.insert(args.end(), {"--scene", "tetra"});
+  const CliRun rerun = run_raygate(args, dir_);
+  EXPECT_EQ(rerun.exit_code, 0) << rerun.out;
+  EXPECT_EQ(read_file(pids_ / "build-runs"), "ran\nran\n");  // built again, not taken from cache
+  EXPECT_TRUE(read_results(out_).complete);
+}
+
+TEST_F(InterruptCli, CrashingHeadFailsTheGateWithOrWithoutAWarmup) {
+  const std::string base = commit(sources_.fast, "tracer");
+  const std::string head = commit(sources_.crashing, "abort on spheres");
+  for (const char* warmup : {"0", "1"}) {
+    SCOPED_TRACE(std::string("--warmup ") + warmup);
+    const CliRun r = run_raygate(
+        {"compare", "--base", base, "--head", head, "--no-store", "--out", out_.string(),
+         "--repo", repo_.path().string(), "--adapter", "make-nff", "--suite", suite_.string(),
+         "--cache-dir", cache_.string(), "--golden-dir", "no-goldens", "--scene", "balls",
+         "--max-rounds", "2", "--warmup", warmup},
+        dir_);
+    EXPECT_EQ(r.exit_code, 1) << r.out;
+    EXPECT_TRUE(has(r.out, "head failed where base ran")) << r.out;
+    // The document alone gives the same verdict.
+    const CliRun gate = run_raygate({"gate", out_.string()}, dir_);
+    EXPECT_EQ(gate.exit_code, 1) << gate.out;
+  }
+}
+
+TEST_F(InterruptCli, UnwritableOutputsAreRefusedBeforeAnythingIsBuilt) {
+  commit(sources_.fast, "tracer");
+  const fs::path a_file = dir_.path() / "a-file";
+  write_file_atomically(a_file, "");
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {"--out", dir_.path().string()},                 // a directory
+      {"--out", (a_file / "r.json").string()},         // under a file
+      {"--report", "html:" + dir_.path().string()},    // a directory
+      {"--report", "junit:" + (a_file / "j.xml").string()},
+  };
+  for (const std::string command : {"run", "compare"}) {
+    for (const auto& [option, value] : cases) {
+      SCOPED_TRACE(command + " " + option + " " + value);
+      std::vector<std::string> args{command,   "--repo",          repo_.path().string(),
+                                    "--adapter", "make-nff",       "--suite",
+                                    suite_.string(), "--cache-dir", cache_.string(),
+                                    "--golden-dir", "no-goldens",  "--no-store",
+                                    option,     value};
+      if (command == "compare") args.insert(args.end(), {"--base", "HEAD"});
+      const CliRun r = run_raygate(args, dir_);
+      EXPECT_EQ(r.exit_code, 2) << r.out;
+      EXPECT_TRUE(has(r.out, option)) << r.out;
+      EXPECT_FALSE(fs::exists(cache_ / "builds")) << "built before refusing";
+    }
+  }
+}
+
+}  // namespace
+}  // namespace raygate::test

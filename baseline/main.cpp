@@ -62,7 +62,8 @@ void add_options(CLI::App& app, Options& options) {
   app.add_option("scene", options.scene_path, "NFF scene file, or - to read standard input")
       ->required();
   app.add_option("-o,--output", options.output_path,
-                 "image to write; the extension picks the format (.png, .exr, .ppm, .tga)")
+                 "image to write; the extension picks the format: .png, .ppm, .tga (8-bit), "
+                 ".pfm (float)")
       ->required();
   const std::map<std::string, Accel> accels{{"none", Accel::none}, {"bbox", Accel::bbox}};
   app.add_option("--accel", options.accel,

@@ -1,16 +1,17 @@
-// OpenImageIO output for the baseline's images.
+// Picks the encoder by extension and writes its bytes.
 #include "image/image_writer.h"
-
-#include <OpenImageIO/imageio.h>
 
 #include <algorithm>
 #include <cctype>
-#include <cmath>
-#include <string_view>
-#include <vector>
+#include <cerrno>
+#include <cstring>
+#include <fstream>
+#include <stdexcept>
 
 namespace raygate {
 namespace {
+
+using Encoder = std::string (*)(const Image&);
 
 std::string lower_extension(const std::string& path) {
   const std::size_t slash = path.find_last_of('/');
@@ -22,72 +23,52 @@ std::string lower_extension(const std::string& path) {
   return ext;
 }
 
-bool is_float_format(const std::string& ext) {
-  return ext == "exr" || ext == "hdr" || ext == "tif" || ext == "tiff" || ext == "pfm";
-}
-
-// OpenImageIO stamps EXR and TIFF files with the current time unless told a DateTime; a
-// fixed one keeps the bytes reproducible. PNG, PPM and TGA get no date at all.
-constexpr const char* kFixedDateTime = "1970:01:01 00:00:00";
-
-bool writes_date_by_default(const std::string& ext) {
-  return ext == "exr" || ext == "tif" || ext == "tiff";
-}
-
-std::vector<unsigned char> quantize(const Image& image) {
-  std::vector<unsigned char> bytes(image.rgb.size());
-  for (std::size_t i = 0; i < image.rgb.size(); ++i) bytes[i] = to_8bit(image.rgb[i]);
-  return bytes;
+Encoder encoder_for(const std::string& ext) {
+  if (ext == "png") return encode_png;
+  if (ext == "ppm") return encode_ppm;
+  if (ext == "pfm") return encode_pfm;
+  if (ext == "tga") return encode_tga;
+  return nullptr;
 }
 
 }  // namespace
 
-unsigned char to_8bit(float value) {
-  const double clamped = value > 0.0f ? (value < 1.0f ? double(value) : 1.0) : 0.0;
-  return static_cast<unsigned char>(std::floor(clamped * 255.0 + 0.5));
-}
-
 std::string check_output_format(const std::string& path) {
-  if (lower_extension(path).empty()) {
-    return "'" + path + "' has no file extension to choose an image format by";
-  }
-  auto out = OIIO::ImageOutput::create(path);
-  if (!out) {
-    OIIO::geterror();  // clear OpenImageIO's pending message
-    return "OpenImageIO cannot write the format of '" + path + "' (use .png, .exr, .ppm, .tga)";
+  const std::string ext = lower_extension(path);
+  if (ext.empty()) return "'" + path + "' has no file extension to choose an image format by";
+  if (encoder_for(ext) == nullptr) {
+    return "cannot write '" + path + "': raygate-baseline writes .png, .ppm, .tga (8-bit) and " +
+           ".pfm (float); for ." + ext + " write .pfm and convert it, e.g. oiiotool x.pfm -o x." +
+           ext;
   }
   return {};
 }
 
 bool write_image(const std::string& path, const Image& image, std::string& error) {
-  auto out = OIIO::ImageOutput::create(path);
+  const Encoder encode = encoder_for(lower_extension(path));
+  if (encode == nullptr) {
+    error = check_output_format(path);
+    return false;
+  }
+  std::string bytes;
+  try {
+    bytes = encode(image);
+  } catch (const std::exception& e) {
+    error = "cannot write '" + path + "': " + e.what();
+    return false;
+  }
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
   if (!out) {
-    error = "cannot write '" + path + "': " + OIIO::geterror();
+    error = "cannot write '" + path + "': " + std::strerror(errno);
     return false;
   }
-  const std::string ext = lower_extension(path);
-  const bool as_float = is_float_format(ext);
-  const OIIO::TypeDesc type = as_float ? OIIO::TypeDesc::FLOAT : OIIO::TypeDesc::UINT8;
-  OIIO::ImageSpec spec(image.width, image.height, 3, type);
-  if (writes_date_by_default(ext)) spec.attribute("DateTime", kFixedDateTime);
-  if (!out->open(path, spec)) {
-    error = "cannot write '" + path + "': " + out->geterror();
+  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+  out.close();
+  if (!out) {
+    error = "cannot write '" + path + "': the write failed (disk full?)";
     return false;
   }
-  bool ok = false;
-  if (as_float) {
-    ok = out->write_image(OIIO::TypeDesc::FLOAT, image.rgb.data());
-  } else {
-    const std::vector<unsigned char> bytes = quantize(image);
-    ok = out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
-  }
-  std::string write_error = ok ? std::string() : out->geterror();
-  if (!out->close() && ok) {
-    ok = false;
-    write_error = out->geterror();
-  }
-  if (!ok) error = "cannot write '" + path + "': " + write_error;
-  return ok;
+  return true;
 }
 
 }  // namespace raygate

@@ -1,22 +1,21 @@
-// Writing an Image through OpenImageIO, the format chosen by the file extension. Float
-// formats (EXR, HDR, TIFF, PFM) get the floats as they are; every other format gets 8 bits
-// per channel: clamp to [0, 1], then round(v * 255). No current time is written (EXR and TIFF
-// get a fixed DateTime), so the same image gives the same bytes on every run.
+// Writing an Image to a file, the format chosen by the file extension (case-insensitive):
+// .png, .ppm and .tga get 8 bits per channel (clamped, rounded), .pfm gets the floats as they
+// are. Encoded by the baseline itself (image/encoders.h), no image library: see there for why.
+// No date is written, so the same image gives the same bytes on every run.
 #pragma once
 
 #include <string>
 
+#include "image/encoders.h"
 #include "image/image.h"
 
 namespace raygate {
 
-// Empty if OpenImageIO can write `path`'s format, else why not (unknown extension).
+// Empty if `path`'s extension names a format the baseline writes, else why not: what it
+// writes, and how to get the others.
 std::string check_output_format(const std::string& path);
 
 // Writes the image; on failure returns false and puts the reason (naming the path) in `error`.
 bool write_image(const std::string& path, const Image& image, std::string& error);
-
-// The 8-bit value written for a channel value (NaN counts as 0).
-unsigned char to_8bit(float value);
 
 }  // namespace raygate

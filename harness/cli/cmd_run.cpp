@@ -59,7 +59,7 @@ int run_command(const RunArgs& args) {
 
   const BaselineContender baseline_runs(context.tools.baseline, context.suite.sampling,
                                         std::chrono::minutes(30), "none",
-                                        baseline_metric(context));
+                                        baseline_clock(context));
   const TracerContender tracer_runs(tracer.setup);
   m.contenders = {&baseline_runs, &tracer_runs};
 

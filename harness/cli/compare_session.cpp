@@ -73,7 +73,7 @@ ResultsDocument measure_compare(const CompareSetup& setup, std::filesystem::path
   };
   const BaselineContender baseline_runs(context.tools.baseline, context.suite.sampling,
                                         std::chrono::minutes(30), "none",
-                                        baseline_metric(context));
+                                        baseline_clock(context));
   const TracerContender base_runs(base.setup);
   const TracerContender head_runs(head.setup);
   m.contenders = {&baseline_runs, &base_runs, &head_runs};

@@ -142,9 +142,12 @@ MeasureContext load_measure_context(const MeasureArgs& args) {
   return c;
 }
 
-TimingMetric baseline_metric(const MeasureContext& context) {
-  if (context.adapter.timing.source != TimingSource::process) return TimingMetric::wall;
+TimingMetric tracer_metric(const MeasureContext& context) {
   return context.metric.value_or(context.adapter.timing.metric);
+}
+
+BaselineClock baseline_clock(const MeasureContext& context) {
+  return matching_baseline_clock(context.adapter.timing.source, tracer_metric(context));
 }
 
 std::string shard_note(const MeasureContext& context) {
@@ -166,7 +169,9 @@ nlohmann::json measure_settings(const MeasureContext& c) {
       {"metric", c.metric ? std::string(to_string(*c.metric))
                           : std::string(to_string(c.adapter.timing.metric))},
       {"timing_source", std::string(to_string(c.adapter.timing.source))},
-      {"baseline_metric", std::string(to_string(baseline_metric(c)))},
+      {"tracer_clock",
+       std::string(tracer_clock_name(c.adapter.timing.source, tracer_metric(c)))},
+      {"baseline_clock", std::string(to_string(baseline_clock(c)))},
       {"threads", c.adapter.threads},
       {"golden_dir", c.golden_dir.string()},
       {"policy_file", c.policy.file.string()},

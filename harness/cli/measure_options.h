@@ -14,6 +14,7 @@
 #include "core/paths.h"
 #include "gate/policy.h"
 #include "measure/stopping.h"
+#include "runner/baseline_contender.h"
 #include "runner/scheduler.h"
 #include "runner/suite.h"
 #include "store/shard.h"
@@ -66,9 +67,13 @@ struct MeasureContext {
 
 MeasureContext load_measure_context(const MeasureArgs& args);
 
-// How the baseline is timed in this measurement: by in-process CPU seconds when the tracer is
-// timed by process CPU seconds, else by in-process wall seconds (the same clock on both sides).
-TimingMetric baseline_metric(const MeasureContext& context);
+// How the tracer is timed in this measurement: the adapter's timing, --timing overriding its
+// process metric.
+TimingMetric tracer_metric(const MeasureContext& context);
+
+// How the baseline is timed: by the tracer's clock (process wall or CPU), or by its in-process
+// seconds when the tracer reports its own time (DESIGN.md §11).
+BaselineClock baseline_clock(const MeasureContext& context);
 
 // ", shard K/N of M selected scenes" with --shard, else "": for the line that opens a run.
 std::string shard_note(const MeasureContext& context);

@@ -98,8 +98,7 @@ ResultsDocument new_document(const std::string& kind, const MeasureContext& cont
   document.baseline.version = baseline.version_line();
   document.baseline.source_sha256 = baseline.source_hash();
   document.baseline.sampling = context.suite.sampling;
-  document.baseline.timing =
-      baseline_metric(context) == TimingMetric::cpu ? "in-process-cpu" : "in-process";
+  document.baseline.timing = std::string(to_string(baseline_clock(context)));
   document.suite = context.suite.name;
   document.settings = measure_settings(context);
   if (context.shard) document.shard = to_string(context.shard->spec);

@@ -23,8 +23,8 @@ TimeSpread spread_of(const std::vector<double>& values) {
   return {median(values), coefficient_of_variation(values), *high / *low};
 }
 
-// One timed run of the baseline: the contender's own command and interpretation (the same
-// in-process seconds every ratio uses), plus the in-process CPU seconds from its --stats file.
+// One timed run of the baseline: the contender's own command and interpretation (its in-process
+// seconds), plus the in-process CPU seconds from its --stats file.
 NoiseRun run_once(const BaselineContender& baseline, const SceneInput& scene,
                   const std::filesystem::path& run_dir) {
   std::filesystem::create_directories(run_dir);
@@ -137,7 +137,10 @@ NoiseScore measure_noise(const NoiseOptions& options) {
   scene.entry = noise_scene();
   scene.nff = prepare_scene(scene.entry, options.work_dir / "scenes");
   scene.files[SceneFormat::nff] = scene.nff;
-  const BaselineContender baseline(options.baseline, "center", std::chrono::minutes(2));
+  // In-process seconds: how the machine's speed wanders, without the process start-up that a
+  // process-timed ratio divides out on both sides.
+  const BaselineContender baseline(options.baseline, "center", std::chrono::minutes(2), "none",
+                                   BaselineClock::in_process);
   const std::filesystem::path runs = options.work_dir / "runs";
   run_once(baseline, scene, runs / "warm-up");  // page cache, CPU caches, frequency ramp
   const auto before = read_cpu_times(options.root);

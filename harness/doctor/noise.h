@@ -23,7 +23,7 @@ std::string to_string(NoiseGrade grade);
 NoiseGrade grade_noise(double ratio_cv);
 
 struct NoiseRun {
-  double seconds = 0.0;      // in-process parse + prepare + render (what ratios use)
+  double seconds = 0.0;      // in-process parse + prepare + render
   double cpu_seconds = 0.0;  // in-process CPU seconds
 };
 

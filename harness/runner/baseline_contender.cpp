@@ -6,23 +6,61 @@
 
 namespace raygate {
 
+namespace {
+
+// PPM: no compression, so writing the image costs next to nothing; the harness reads it
+// through OpenImageIO like any tracer's image.
+constexpr const char* kImageName = "image.ppm";
+constexpr const char* kStatsName = "stats.json";
+
+// Parse + prepare + render seconds from the --stats file; throws if absent or not positive.
+double in_process_seconds(const std::filesystem::path& stats_path) {
+  const nlohmann::json stats = nlohmann::json::parse(read_file(stats_path));
+  const double seconds = stats.at("parse_seconds").get<double>() +
+                         stats.at("prepare_seconds").get<double>() +
+                         stats.at("render_seconds").get<double>();
+  if (!(seconds > 0.0) || !std::isfinite(seconds)) throw std::runtime_error("no positive time");
+  return seconds;
+}
+
+}  // namespace
+
+std::string_view to_string(BaselineClock clock) {
+  switch (clock) {
+    case BaselineClock::process_wall: return "process-wall";
+    case BaselineClock::process_cpu: return "process-cpu";
+    case BaselineClock::in_process: return "in-process";
+  }
+  return "unknown";
+}
+
+std::string_view tracer_clock_name(TimingSource source, TimingMetric metric) {
+  if (source == TimingSource::reported) return "reported";
+  return metric == TimingMetric::cpu ? "process-cpu" : "process-wall";
+}
+
+BaselineClock matching_baseline_clock(TimingSource source, TimingMetric metric) {
+  if (source == TimingSource::reported) return BaselineClock::in_process;
+  return metric == TimingMetric::cpu ? BaselineClock::process_cpu : BaselineClock::process_wall;
+}
+
 BaselineContender::BaselineContender(std::filesystem::path executable, std::string sampling,
                                      std::chrono::milliseconds timeout, std::string accel,
-                                     TimingMetric metric)
+                                     BaselineClock clock)
     : Contender("baseline"),
       executable_(std::move(executable)),
       sampling_(std::move(sampling)),
       timeout_(timeout),
       accel_(std::move(accel)),
-      metric_(metric) {}
+      clock_(clock) {}
 
 ProcessSpec BaselineContender::command(const SceneInput& scene,
                                        const std::filesystem::path& run_dir) const {
   ProcessSpec spec;
   spec.argv = {executable_.string(),       scene.nff.string(), "-o",
-               (run_dir / "image.png").string(), "--accel", accel_,
+               (run_dir / kImageName).string(), "--accel", accel_,
                "--sampling",               sampling_,          "--stats",
-               (run_dir / "stats.json").string()};
+               (run_dir / kStatsName).string()};
   spec.working_directory = run_dir;
   spec.stdout_path = run_dir / "log.txt";
   spec.stderr_path = spec.stdout_path;
@@ -34,22 +72,25 @@ RunRecord BaselineContender::interpret(const SceneInput& /*scene*/, const Proces
                                        const ProcessSpec& spec,
                                        const std::filesystem::path& run_dir) const {
   RunRecord run = record_process(result, spec);
-  run.image = run_dir / "image.png";
+  run.image = run_dir / kImageName;
   if (!run.ok) return run;
   try {
-    const nlohmann::json stats = nlohmann::json::parse(read_file(run_dir / "stats.json"));
-    const double seconds = metric_ == TimingMetric::cpu
-                               ? stats.at("cpu_seconds").get<double>()
-                               : stats.at("parse_seconds").get<double>() +
-                                     stats.at("prepare_seconds").get<double>() +
-                                     stats.at("render_seconds").get<double>();
-    if (!(seconds > 0.0) || !std::isfinite(seconds)) throw std::runtime_error("no positive time");
-    run.reported_seconds = seconds;
-    run.seconds = seconds;
+    run.reported_seconds = in_process_seconds(run_dir / kStatsName);
   } catch (const std::exception& e) {
     run.ok = false;
-    run.failure = "raygate-baseline wrote unusable statistics " + (run_dir / "stats.json").string() +
-                  ": " + e.what();
+    run.failure = "raygate-baseline wrote unusable statistics " +
+                  (run_dir / kStatsName).string() + ": " + e.what();
+    return run;
+  }
+  switch (clock_) {
+    case BaselineClock::process_wall: run.seconds = run.wall_seconds; break;
+    case BaselineClock::process_cpu: run.seconds = run.cpu_seconds(); break;
+    case BaselineClock::in_process: run.seconds = *run.reported_seconds; break;
+  }
+  if (!(run.seconds > 0.0)) {  // the denominator of every ratio
+    run.ok = false;
+    run.failure = "raygate-baseline took no measurable " + std::string(to_string(clock_)) +
+                  " time";
   }
   return run;
 }

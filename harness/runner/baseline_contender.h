@@ -1,33 +1,59 @@
-// raygate-baseline as a contender: the normalizer of every ratio. Timed by its in-process
-// seconds (parse + prepare + render, from --stats), not by process wall time, because its
-// process start-up is dominated by loading OpenImageIO's shared libraries (DESIGN.md §11).
+// raygate-baseline as a contender: the normalizer of every ratio. Timed by the same clock as the
+// tracer it normalizes (DESIGN.md §11): process wall against process wall, process CPU against
+// process CPU, and its in-process seconds (parse + prepare + render, from --stats) against a
+// tracer that reports its own time. The in-process seconds are kept in every run record either
+// way. During measurement it writes PPM, the cheapest format, and starts in milliseconds: it
+// links no image library (baseline/image/encoders.h).
 #pragma once
 
 #include <chrono>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 #include "runner/contender.h"
 
 namespace raygate {
 
+// Which of the baseline's times the ratio divides by.
+enum class BaselineClock {
+  process_wall,  // wall seconds of the whole process (fork to wait4)
+  process_cpu,   // user + system CPU seconds of the whole process (wait4's rusage)
+  in_process,    // parse + prepare + render wall seconds, measured inside the process
+};
+
+// "process-wall", "process-cpu", "in-process": the names results documents carry
+// (BaselineRecord::timing). Documents written before the clocks were matched say "in-process"
+// (or "in-process-cpu", against CPU-timed tracers).
+std::string_view to_string(BaselineClock clock);
+
+// The clock of a tracer timed by `source` and `metric`: "process-wall", "process-cpu" or
+// "reported" (settings.tracer_clock in results documents).
+std::string_view tracer_clock_name(TimingSource source, TimingMetric metric);
+
+// The baseline clock that matches it: the process clock of the same metric, or the in-process
+// seconds for a tracer that reports its own time (it does not count its start-up either).
+BaselineClock matching_baseline_clock(TimingSource source, TimingMetric metric);
+
 class BaselineContender final : public Contender {
  public:
   BaselineContender(std::filesystem::path executable, std::string sampling,
                     std::chrono::milliseconds timeout = std::chrono::minutes(30),
-                    std::string accel = "none", TimingMetric metric = TimingMetric::wall);
+                    std::string accel = "none", BaselineClock clock = BaselineClock::process_wall);
 
   ProcessSpec command(const SceneInput& scene, const std::filesystem::path& run_dir) const override;
   RunRecord interpret(const SceneInput& scene, const ProcessResult& result,
                               const ProcessSpec& spec,
                       const std::filesystem::path& run_dir) const override;
 
+  BaselineClock clock() const { return clock_; }
+
  private:
   std::filesystem::path executable_;
   std::string sampling_;
   std::chrono::milliseconds timeout_;
   std::string accel_;
-  TimingMetric metric_;  // wall: parse + prepare + render seconds; cpu: their CPU seconds
+  BaselineClock clock_;
 };
 
 }  // namespace raygate

@@ -41,9 +41,11 @@ struct BaselineRecord {
   std::string source_sha256;
   std::string accel = "none";
   std::string sampling = "center";
-  // "in-process": parse + prepare + render seconds from --stats; "in-process-cpu": their CPU
-  // seconds (when the tracer is timed by CPU seconds)
-  std::string timing = "in-process";
+  // The clock the ratios divide by, matched to the tracer's (runner/baseline_contender.h):
+  // "process-wall", "process-cpu", or "in-process" (parse + prepare + render seconds from
+  // --stats, against a tracer that reports its own time). Documents written before the clocks
+  // were matched say "in-process", or "in-process-cpu" (in-process CPU seconds).
+  std::string timing = "process-wall";
 };
 
 struct SceneResult {

@@ -1,6 +1,7 @@
 // Contenders without running anything: TracerContender fills the adapter's placeholders into a
 // ProcessSpec and judges a hand-made ProcessResult (image, timing source and metric, exit);
-// BaselineContender reads its --stats file, and a missing or garbled one is a failed run.
+// BaselineContender is timed by the clock it is given and reads its --stats file, and a missing
+// or garbled one is a failed run.
 #include <gtest/gtest.h>
 
 #include <csignal>
@@ -246,12 +247,12 @@ class BaselineContenderTest : public ContenderTest {
   BaselineContender baseline_{"/opt/raygate-baseline", "corners", std::chrono::seconds(9), "bbox"};
 };
 
-TEST_F(BaselineContenderTest, CommandRendersIntoTheRunDirectory) {
+TEST_F(BaselineContenderTest, CommandRendersPpmIntoTheRunDirectory) {
   const ProcessSpec spec = baseline_.command(scene_, run_dir_);
   const std::vector<std::string> expected{"/opt/raygate-baseline",
                                           scene_.nff.string(),
                                           "-o",
-                                          (run_dir_ / "image.png").string(),
+                                          (run_dir_ / "image.ppm").string(),
                                           "--accel",
                                           "bbox",
                                           "--sampling",
@@ -264,27 +265,70 @@ TEST_F(BaselineContenderTest, CommandRendersIntoTheRunDirectory) {
   EXPECT_EQ(baseline_.role(), "baseline");
 }
 
-TEST_F(BaselineContenderTest, TimedByParsePreparePlusRenderSeconds) {
+// By default the baseline is timed like a process-timed tracer: by its process wall seconds.
+// Its in-process seconds stay in the record.
+TEST_F(BaselineContenderTest, TimedByProcessWallByDefaultKeepingInProcessSeconds) {
   const std::string stats =
       R"({"parse_seconds": 0.25, "prepare_seconds": 0.125, "render_seconds": 1.5, "rays": 7})";
+  EXPECT_EQ(baseline_.clock(), BaselineClock::process_wall);
   const RunRecord r = interpret(exited_with(0, 2.0, 1.9, 0.05), &stats);
   ASSERT_TRUE(r.ok) << r.failure;
-  EXPECT_DOUBLE_EQ(r.seconds, 1.875);
+  EXPECT_DOUBLE_EQ(r.seconds, 2.0);
   ASSERT_TRUE(r.reported_seconds);
   EXPECT_DOUBLE_EQ(*r.reported_seconds, 1.875);
   EXPECT_DOUBLE_EQ(r.wall_seconds, 2.0);
-  EXPECT_EQ(r.image, run_dir_ / "image.png");
+  EXPECT_EQ(r.image, run_dir_ / "image.ppm");
 }
 
-// Against a tracer timed by CPU seconds, the baseline uses its in-process CPU seconds too.
-TEST_F(BaselineContenderTest, CpuMetricTimesByInProcessCpuSeconds) {
+TEST_F(BaselineContenderTest, ProcessCpuClockTimesByUserPlusSystemSeconds) {
   const std::string stats = R"({"parse_seconds": 0.25, "prepare_seconds": 0.125,
                                 "render_seconds": 1.5, "cpu_seconds": 1.25})";
   baseline_ = BaselineContender{"/opt/raygate-baseline", "center", std::chrono::seconds(9), "none",
-                                TimingMetric::cpu};
+                                BaselineClock::process_cpu};
+  const RunRecord r = interpret(exited_with(0, 2.0, 1.5, 0.25), &stats);
+  ASSERT_TRUE(r.ok) << r.failure;
+  EXPECT_DOUBLE_EQ(r.seconds, 1.75);
+  EXPECT_DOUBLE_EQ(*r.reported_seconds, 1.875);
+}
+
+TEST_F(BaselineContenderTest, InProcessClockTimesByParsePreparePlusRenderSeconds) {
+  const std::string stats =
+      R"({"parse_seconds": 0.25, "prepare_seconds": 0.125, "render_seconds": 1.5})";
+  baseline_ = BaselineContender{"/opt/raygate-baseline", "center", std::chrono::seconds(9), "none",
+                                BaselineClock::in_process};
   const RunRecord r = interpret(exited_with(0, 2.0, 1.9, 0.05), &stats);
   ASSERT_TRUE(r.ok) << r.failure;
-  EXPECT_DOUBLE_EQ(r.seconds, 1.25);
+  EXPECT_DOUBLE_EQ(r.seconds, 1.875);
+}
+
+// The denominator of every ratio: a zero CPU time (a clock too coarse) is a failed run.
+TEST_F(BaselineContenderTest, ZeroProcessTimeIsAFailedRun) {
+  const std::string stats =
+      R"({"parse_seconds": 0.25, "prepare_seconds": 0.125, "render_seconds": 1.5})";
+  baseline_ = BaselineContender{"/opt/raygate-baseline", "center", std::chrono::seconds(9), "none",
+                                BaselineClock::process_cpu};
+  const RunRecord r = interpret(exited_with(0, 2.0, 0.0, 0.0), &stats);
+  EXPECT_FALSE(r.ok);
+  EXPECT_EQ(contains(r.failure, "no measurable process-cpu time"), "");
+}
+
+// Each side of the ratio on the same clock as the other (DESIGN.md §11), and the names the
+// results document records.
+TEST(BaselineClock, MatchesTheTracersClock) {
+  EXPECT_EQ(matching_baseline_clock(TimingSource::process, TimingMetric::wall),
+            BaselineClock::process_wall);
+  EXPECT_EQ(matching_baseline_clock(TimingSource::process, TimingMetric::cpu),
+            BaselineClock::process_cpu);
+  EXPECT_EQ(matching_baseline_clock(TimingSource::reported, TimingMetric::wall),
+            BaselineClock::in_process);
+  EXPECT_EQ(matching_baseline_clock(TimingSource::reported, TimingMetric::cpu),
+            BaselineClock::in_process);
+  EXPECT_EQ(to_string(BaselineClock::process_wall), "process-wall");
+  EXPECT_EQ(to_string(BaselineClock::process_cpu), "process-cpu");
+  EXPECT_EQ(to_string(BaselineClock::in_process), "in-process");
+  EXPECT_EQ(tracer_clock_name(TimingSource::process, TimingMetric::wall), "process-wall");
+  EXPECT_EQ(tracer_clock_name(TimingSource::process, TimingMetric::cpu), "process-cpu");
+  EXPECT_EQ(tracer_clock_name(TimingSource::reported, TimingMetric::cpu), "reported");
 }
 
 TEST_F(BaselineContenderTest, MissingStatsIsAFailedRunNotAnException) {

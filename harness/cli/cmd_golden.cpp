@@ -1,4 +1,5 @@
-// `raygate golden verify | bless`: the baseline's golden image of every suite scene. verify
+// `raygate golden verify | bless`: the baseline's golden image of every suite scene, in
+// golden/raygate-baseline/ (compare/golden.h says whom they judge). verify
 // re-renders and demands identical pixels (the baseline is deterministic); bless rewrites goldens
 // only for the scenes named (or all), never as a side effect of anything else.
 // `bless --from-run RESULTS.json` blesses a foreign tracer's images instead: the ones a run
@@ -27,7 +28,7 @@ namespace {
 struct GoldenArgs {
   std::string suite = "ci";
   std::vector<std::string> scenes;
-  std::string golden_dir;  // default: <data root>/golden
+  std::string golden_dir;  // default: <data root>/golden/raygate-baseline (--from-run: /<adapter>)
   std::string work_dir = ".raygate/golden";
   std::string baseline;
   std::string from_run;       // bless: a results document whose tracer images become goldens
@@ -46,8 +47,9 @@ GoldenContext open_context(const GoldenArgs& args) {
   const ToolPaths tools = locate_tools(args.baseline);
   Suite suite = load_suite(args.suite, tools.data_root);
   std::vector<SuiteScene> selected = select_scenes(suite, args.scenes);
-  const std::filesystem::path golden_dir =
-      args.golden_dir.empty() ? tools.data_root / "golden" : std::filesystem::path(args.golden_dir);
+  const std::filesystem::path golden_dir = args.golden_dir.empty()
+                                               ? tools.data_root / "golden" / kBaselineGoldens
+                                               : std::filesystem::path(args.golden_dir);
   return {std::move(suite), std::move(selected), golden_dir, args.work_dir,
           BaselineTool(tools.baseline)};
 }
@@ -234,7 +236,8 @@ int run_bless_from_run(const GoldenArgs& args) {
 
 void add_common_options(CLI::App* cmd, GoldenArgs& args) {
   cmd->add_option("--suite", args.suite, "Suite name or file")->capture_default_str();
-  cmd->add_option("--golden-dir", args.golden_dir, "Golden directory (default: raygate's golden/)");
+  cmd->add_option("--golden-dir", args.golden_dir,
+                  "Golden directory (default: golden/raygate-baseline/, the baseline's)");
   cmd->add_option("--work-dir", args.work_dir, "Where scenes, renders and evidence go")
       ->capture_default_str();
   cmd->add_option("--baseline", args.baseline, "raygate-baseline to use (default: beside raygate)");

@@ -1,8 +1,26 @@
 #include "cli/gate_summary.h"
 
 #include <fmt/core.h>
+#include <fmt/format.h>
+
+#include <vector>
 
 namespace raygate::cli {
+
+namespace {
+
+// "3 scenes, 1 failed, 0 warnings": the unmeasured count only when it is the reason or not zero,
+// so "COULD NOT MEASURE" never stands beside "0 unmeasured" unexplained.
+std::string counts(const GateResult& gate) {
+  std::vector<std::string> parts{fmt::format("{} scenes", gate.scenes.size()),
+                                 fmt::format("{} failed", gate.count(GateOutcome::fail))};
+  const std::size_t unmeasured = gate.count(GateOutcome::unmeasured);
+  if (unmeasured > 0 || gate.problems.empty()) parts.push_back(fmt::format("{} unmeasured", unmeasured));
+  parts.push_back(fmt::format("{} warnings", gate.count(GateOutcome::warn)));
+  return fmt::format("{}", fmt::join(parts, ", "));
+}
+
+}  // namespace
 
 void print_gate_summary(const GateResult& gate, std::FILE* stream) {
   for (const GateOutcome outcome : {GateOutcome::fail, GateOutcome::unmeasured, GateOutcome::warn}) {
@@ -13,14 +31,13 @@ void print_gate_summary(const GateResult& gate, std::FILE* stream) {
       }
     }
   }
-  const std::size_t failed = gate.count(GateOutcome::fail);
-  const std::size_t unmeasured = gate.count(GateOutcome::unmeasured);
-  const std::size_t warned = gate.count(GateOutcome::warn);
+  for (const std::string& note : gate.notes) fmt::print(stream, "note: {}\n", note);
   const char* verdict = gate.exit_code == 0   ? "PASS"
                         : gate.exit_code == 1 ? "FAIL (regression)"
                                               : "COULD NOT MEASURE";
-  fmt::print(stream, "gate: {}: {} scenes, {} failed, {} unmeasured, {} warnings\n", verdict,
-             gate.scenes.size(), failed, unmeasured, warned);
+  std::string why;
+  for (const std::string& problem : gate.problems) why += "; " + problem;
+  fmt::print(stream, "gate: {}: {}{}\n", verdict, counts(gate), why);
 }
 
 }  // namespace raygate::cli

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "compare/golden.h"
 #include "core/error.h"
 #include "core/sha256.h"
 
@@ -19,7 +20,9 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
                      "worktrees, builds, scenes and run files go here")
       ->capture_default_str();
   command.add_option("--golden-dir", args.golden_dir,
-                     "golden images (default: golden/<adapter name>/ if present, else golden/)");
+                     "golden images (default: golden/<adapter name>/, or the set whose manifest "
+                     "shares it with the adapter; a tracer without goldens is checked against "
+                     "none)");
   command.add_option("--baseline", args.baseline, "raygate-baseline executable to use");
   command.add_option("--schedule", args.schedule,
                      "alternate: one program at a time, order alternating per round; duet: "
@@ -80,9 +83,8 @@ std::filesystem::path find_adapter(const std::string& name, const std::filesyste
 std::filesystem::path pick_golden_dir(const MeasureArgs& args, const ToolPaths& tools,
                                       const Adapter& adapter) {
   if (!args.golden_dir.empty()) return args.golden_dir;
-  const std::filesystem::path own = tools.data_root / "golden" / adapter.name;
-  if (std::filesystem::exists(own / "manifest.json")) return own;
-  return tools.data_root / "golden";
+  // Never the baseline's for another tracer: its shading differs by design (compare/golden.h).
+  return adapter_golden_dir(tools.data_root / "golden", adapter.name);
 }
 
 // The selection's shard named by --shard, and its record for the document.

@@ -27,7 +27,7 @@ struct MeasureArgs {
   std::string suite = "ci";
   std::vector<std::string> scenes;
   std::string cache_dir = ".raygate";
-  std::string golden_dir;  // default: golden/<adapter name>/ if it exists, else golden/
+  std::string golden_dir;  // default: the adapter's goldens (compare/golden.h)
   std::string baseline;    // raygate-baseline override
   std::string schedule = "alternate";
   std::vector<int> pin_cpus;

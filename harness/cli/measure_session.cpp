@@ -101,6 +101,9 @@ ResultsDocument new_document(const std::string& kind, const MeasureContext& cont
   document.baseline.timing = std::string(to_string(baseline_clock(context)));
   document.suite = context.suite.name;
   document.settings = measure_settings(context);
+  // Whose goldens judge this run's images ("none": the tracer has none yet), so a report can
+  // say so once instead of once per scene.
+  document.settings["goldens"] = golden_owner(load_golden_manifest(context.golden_dir));
   if (context.shard) document.shard = to_string(context.shard->spec);
   return document;
 }
@@ -190,6 +193,7 @@ std::string scene_line(const SceneResult& scene, const std::vector<std::string>&
                         run.log.string());
   }
   for (const ImageCheck& check : scene.images) {
+    if (check.verdict == "missing") continue;  // no golden: one note at the end, not per scene
     const std::string what = check.reference == "golden" ? check.role
                                                          : check.role + "-vs-" + check.reference;
     std::string detail = check.error;

@@ -53,6 +53,9 @@ GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir) {
                                   e.at("height"), e.at("sampling"), e.at("accel"), e.at("file"),
                                   e.at("sha256")});
     }
+    if (doc.contains("shared_with")) {
+      manifest.shared_with = doc.at("shared_with").get<std::vector<std::string>>();
+    }
     if (doc.contains("tracer")) {
       const json& t = doc.at("tracer");
       manifest.tracer = GoldenProvenance{t.at("adapter"),    t.at("adapter_sha256"),
@@ -83,6 +86,7 @@ void save_golden_manifest(const GoldenManifest& manifest,
                      {{"version", manifest.baseline_version},
                       {"source_sha256", manifest.baseline_source_sha256}}},
                     {"images", images}};
+  if (!manifest.shared_with.empty()) doc["shared_with"] = manifest.shared_with;
   if (manifest.tracer) {
     const GoldenProvenance& t = *manifest.tracer;
     doc["tracer"] = {{"adapter", t.adapter},   {"adapter_sha256", t.adapter_hash},
@@ -91,6 +95,28 @@ void save_golden_manifest(const GoldenManifest& manifest,
                      {"started_at", t.started_at}};
   }
   write_file_atomically(golden_dir / kManifestName, doc.dump(2) + "\n");
+}
+
+std::filesystem::path adapter_golden_dir(const std::filesystem::path& golden_root,
+                                         const std::string& adapter) {
+  const std::filesystem::path own = golden_root / adapter;
+  if (std::filesystem::exists(own / kManifestName)) return own;
+  std::error_code ec;
+  std::vector<std::filesystem::path> sets;
+  for (const auto& item : std::filesystem::directory_iterator(golden_root, ec)) {
+    if (std::filesystem::exists(item.path() / kManifestName)) sets.push_back(item.path());
+  }
+  std::sort(sets.begin(), sets.end());  // the same answer on every file system
+  for (const std::filesystem::path& set : sets) {
+    const std::vector<std::string> shared = load_golden_manifest(set).shared_with;
+    if (std::find(shared.begin(), shared.end(), adapter) != shared.end()) return set;
+  }
+  return own;
+}
+
+std::string golden_owner(const GoldenManifest& manifest) {
+  if (manifest.entries.empty()) return "none";
+  return manifest.tracer ? manifest.tracer->adapter : kBaselineGoldens;
 }
 
 }  // namespace raygate

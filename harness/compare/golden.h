@@ -1,5 +1,7 @@
-// Golden images: the baseline's own picture of every suite scene, and the manifest that says
-// how each was made (golden/manifest.json). Goldens change only on request (`golden bless`).
+// Golden images: an adapter's own picture of every suite scene, in golden/<adapter>/, and the
+// manifest that says how each was made. The baseline's are golden/raygate-baseline/; they judge
+// the baseline and the variants its manifest names (shared_with), never another tracer, whose
+// shading differs by design. Goldens change only on request (`golden bless`).
 #pragma once
 
 #include <filesystem>
@@ -42,10 +44,27 @@ struct GoldenManifest {
   std::string baseline_source_sha256;
   std::vector<GoldenEntry> entries;
   std::optional<GoldenProvenance> tracer;  // set for goldens blessed from a run
+  // Adapters other than the directory's own that these goldens judge: variants that render the
+  // same pictures (the baseline's bbox control).
+  std::vector<std::string> shared_with;
 
   const GoldenEntry* find(const std::string& id) const;
   void upsert(const GoldenEntry& entry);  // replaces the entry with the same id
 };
+
+// The folder of the baseline's goldens under golden/.
+inline constexpr const char* kBaselineGoldens = "raygate-baseline";
+
+// Where the goldens that judge `adapter` are, under `golden_root` (<data root>/golden):
+// golden/<adapter>/ when it holds a manifest, else the folder whose manifest lists the adapter in
+// shared_with, else golden/<adapter>/ all the same (empty or absent: the adapter has no goldens
+// yet, and that is where `golden bless --from-run` puts them).
+std::filesystem::path adapter_golden_dir(const std::filesystem::path& golden_root,
+                                         const std::string& adapter);
+
+// Whose goldens a manifest holds, for the results document's settings.goldens: the adapter it
+// was blessed from, kBaselineGoldens for the baseline's, "none" for an empty or absent manifest.
+std::string golden_owner(const GoldenManifest& manifest);
 
 // A missing manifest yields an empty one; a malformed one is a UsageError naming the file.
 GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir);

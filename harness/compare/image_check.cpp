@@ -1,6 +1,6 @@
 #include "compare/image_check.h"
 
-#include <OpenImageIO/imagebuf.h>
+#include <fmt/core.h>
 
 #include "core/error.h"
 
@@ -32,23 +32,35 @@ bool same_settings(const GoldenEntry& golden, const GoldenEntry& rendered) {
          same_sampling;
 }
 
-// Why OpenImageIO cannot decode `image`, or "" when it can.
-std::string unreadable(const std::filesystem::path& image) {
-  OIIO_NAMESPACE::ImageBuf buf(image.string());
-  if (buf.read(0, 0, true, OIIO_NAMESPACE::TypeDesc::FLOAT)) return {};
-  return image.string() + ": cannot read image: " + buf.geterror();
-}
-
-// With nothing to compare against, the image is still read: an unreadable image is an error
-// even when no golden exists, not a "missing" that passes.
+// With nothing to compare against, the image is still read: a tracer that exited 0 but wrote
+// an unreadable image, or one with NaN pixels, has failed on it, golden or not.
 ImageCheck without_golden(const std::string& role, const std::filesystem::path& actual,
                           const std::filesystem::path& expected, const std::string& why) {
   ImageCheck check{role, "golden", actual, expected, "missing", why, std::nullopt, {}};
-  if (const std::string problem = unreadable(actual); !problem.empty()) {
-    check.verdict = "error";
-    check.error = problem + " (" + why + ")";
+  if (const std::string problem = unreadable_image(actual); !problem.empty()) {
+    check.verdict = "fail";
+    check.error = problem;
+    return check;
+  }
+  // The image against itself: every metric zero, but its NaN pixels counted.
+  check.metrics = compare_images(actual, actual, {});
+  if (check.metrics->nonfinite_pixels > 0) {
+    check.verdict = "fail";
+    check.error = summarize(*check.metrics);
+  } else {
+    check.metrics.reset();  // compared with nothing: no metrics to show
   }
   return check;
+}
+
+// Whose fault an image that cannot be compared is: the tracer's own image unreadable or with
+// NaN pixels fails the check (exit 1); a broken reference (golden, base's image) means the
+// check could not be made ("error").
+std::optional<std::string> broken_reference(const ImageMetrics& m,
+                                            const std::filesystem::path& expected) {
+  if (m.nonfinite_pixels > 0 || m.expected_nonfinite_pixels == 0) return std::nullopt;
+  return fmt::format("{}: the reference has {} NaN/Inf pixels; nothing to compare with",
+                     expected.string(), m.expected_nonfinite_pixels);
 }
 
 }  // namespace
@@ -58,10 +70,19 @@ ImageCheck check_image(const std::string& role, const std::string& reference,
                        const ImageThresholds& thresholds, const std::filesystem::path& evidence_dir,
                        const std::string& stem) {
   ImageCheck check{role, reference, actual, expected, "error", {}, std::nullopt, {}};
+  if (std::string problem = unreadable_image(actual); !problem.empty()) {
+    check.verdict = "fail";
+    check.error = std::move(problem);
+    return check;
+  }
   try {
     check.metrics = compare_images(actual, expected, thresholds);
   } catch (const Error& e) {
-    check.error = e.what();
+    check.error = e.what();  // the reference is unreadable
+    return check;
+  }
+  if (auto problem = broken_reference(*check.metrics, expected)) {
+    check.error = std::move(*problem);
     return check;
   }
   check.verdict = std::string(verdict_name(judge(*check.metrics, thresholds)));
@@ -87,6 +108,11 @@ ImageCheck check_against_golden(const std::string& role, const std::filesystem::
   const GoldenEntry* entry = manifest.find(id);
   const std::filesystem::path expected =
       golden_dir / (entry != nullptr ? entry->file : id + ".png");
+  if (manifest.entries.empty()) {
+    // The same words for every scene, so reports say it once (a tracer's first runs).
+    return without_golden(role, actual, expected,
+                          "no goldens in " + golden_dir.string() + " (none blessed yet)");
+  }
   if (entry == nullptr || !std::filesystem::exists(expected)) {
     return without_golden(role, actual, expected,
                           "no golden image for '" + id + "' in " + golden_dir.string());

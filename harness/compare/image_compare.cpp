@@ -14,10 +14,21 @@ namespace {
 
 namespace OIIO = OIIO_NAMESPACE;
 
+// The first non-empty line of a library's message, without trailing blanks, at most 200 bytes.
+std::string first_line(const std::string& text) {
+  std::size_t start = text.find_first_not_of(" \t\r\n");
+  if (start == std::string::npos) return "unknown error";
+  const std::size_t end = text.find_first_of("\r\n", start);
+  std::string line = text.substr(start, end == std::string::npos ? end : end - start);
+  line.erase(line.find_last_not_of(" \t") + 1);
+  if (line.size() > 200) line = line.substr(0, 197) + "...";
+  return line;
+}
+
 OIIO::ImageBuf load_rgb(const std::filesystem::path& path) {
   OIIO::ImageBuf buf(path.string());
   if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
-    throw UsageError(path.string() + ": cannot read image: " + buf.geterror());
+    throw UsageError(path.string() + ": cannot read image: " + first_line(buf.geterror()));
   }
   const int channels = buf.nchannels();
   if (channels == 3) return buf;
@@ -43,7 +54,30 @@ long count_nonfinite(const OIIO::ImageBuf& buf) {
   return total;
 }
 
+struct NonFinite {
+  long pixels = 0;
+  int x = 0, y = 0;  // the first, in reading order
+};
+
+NonFinite nonfinite_pixels(const OIIO::ImageBuf& rgb) {
+  NonFinite found;
+  for (OIIO::ImageBuf::ConstIterator<float> it(rgb); !it.done(); ++it) {
+    if (std::isfinite(it[0]) && std::isfinite(it[1]) && std::isfinite(it[2])) continue;
+    if (found.pixels++ == 0) {
+      found.x = it.x();
+      found.y = it.y();
+    }
+  }
+  return found;
+}
+
 }  // namespace
+
+std::string unreadable_image(const std::filesystem::path& image) {
+  OIIO::ImageBuf buf(image.string());
+  if (buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) return {};
+  return image.string() + ": cannot read image: " + first_line(buf.geterror());
+}
 
 ImageMetrics compare_images(const std::filesystem::path& actual,
                             const std::filesystem::path& expected,
@@ -56,6 +90,11 @@ ImageMetrics compare_images(const std::filesystem::path& actual,
   m.expected_width = b.spec().width;
   m.expected_height = b.spec().height;
   m.nonfinite_values = count_nonfinite(a);
+  const NonFinite broken = nonfinite_pixels(a);
+  m.nonfinite_pixels = broken.pixels;
+  m.nonfinite_x = broken.x;
+  m.nonfinite_y = broken.y;
+  m.expected_nonfinite_pixels = nonfinite_pixels(b).pixels;
   m.mean_luminance_actual = mean_luminance(a);
   m.mean_luminance_expected = mean_luminance(b);
   if (m.width != m.expected_width || m.height != m.expected_height) {
@@ -89,7 +128,9 @@ ImageMetrics compare_images(const std::filesystem::path& actual,
 }
 
 ImageVerdict judge(const ImageMetrics& m, const ImageThresholds& t) {
-  if (m.size_mismatch || m.nonfinite_values > 0) return ImageVerdict::fail;
+  if (m.size_mismatch || m.nonfinite_values > 0 || m.nonfinite_pixels > 0) {
+    return ImageVerdict::fail;
+  }
   if (m.max_error > t.hard_fail) return ImageVerdict::fail;
   if (m.percent_over_fail > t.fail_percent) return ImageVerdict::fail;
   if (m.pixels_over_warn > 0) return ImageVerdict::warn;
@@ -102,6 +143,11 @@ std::string summarize(const ImageMetrics& m) {
                        m.expected_height);
   }
   if (m.identical()) return "identical";
+  if (m.nonfinite_pixels > 0) {
+    // The error statistics of an image with NaN in it are NaN or meaningless: say what is wrong.
+    return fmt::format("{} NaN/Inf pixels of {}, first at ({},{})", m.nonfinite_pixels,
+                       static_cast<long>(m.width) * m.height, m.nonfinite_x, m.nonfinite_y);
+  }
   std::string text = fmt::format(
       "max {:.4g} at ({},{}) ch {}: {:.4g} vs {:.4g}; {:.3g}% pixels over threshold; "
       "RMS {:.3g}; PSNR {:.1f} dB",

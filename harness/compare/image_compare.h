@@ -33,8 +33,15 @@ struct ImageMetrics {
   double mean_luminance_actual = 0.0;
   double mean_luminance_expected = 0.0;
   long nonfinite_values = 0;  // NaN or Inf channels in the actual image
+  // Pixels of the actual image with a NaN or Inf channel, and the first of them: a broken
+  // render, whatever the comparison says (a NaN difference is over no threshold).
+  long nonfinite_pixels = 0;
+  int nonfinite_x = 0, nonfinite_y = 0;
+  long expected_nonfinite_pixels = 0;  // the same in the reference: no reference at all
 
-  bool identical() const { return !size_mismatch && max_error == 0.0 && nonfinite_values == 0; }
+  bool identical() const {
+    return !size_mismatch && max_error == 0.0 && nonfinite_values == 0 && nonfinite_pixels == 0;
+  }
   double luminance_bias() const { return mean_luminance_actual - mean_luminance_expected; }
 };
 
@@ -42,13 +49,18 @@ enum class ImageVerdict { pass, warn, fail };
 
 // Reads both images (any format OpenImageIO reads) and compares their RGB channels. Throws
 // UsageError naming the file if either cannot be read.
+// Why `image` cannot be decoded, in one line ("" when it can): image libraries (libpng) report
+// over several lines, and a report's table cell holds one.
+std::string unreadable_image(const std::filesystem::path& image);
+
 ImageMetrics compare_images(const std::filesystem::path& actual,
                             const std::filesystem::path& expected,
                             const ImageThresholds& thresholds);
 
 ImageVerdict judge(const ImageMetrics& metrics, const ImageThresholds& thresholds);
 
-// One line for a report: "max 0.031 at (12,40) ch 1: 0.52 vs 0.49; 0.3% over 0.004; PSNR 41.2 dB".
+// One line for a report: "max 0.031 at (12,40) ch 1: 0.52 vs 0.49; 0.3% over 0.004; PSNR 41.2 dB";
+// an image with NaN or Inf pixels says so first: "12 NaN/Inf pixels of 16384, first at (3,4)".
 std::string summarize(const ImageMetrics& metrics);
 
 // Writes <stem>.actual.png, <stem>.expected.png and <stem>.diff.png (|actual-expected| x 16)

@@ -51,29 +51,69 @@ void judge_speed(const SceneResult& scene, const ScenePolicy& policy, bool fail_
   }
 }
 
+// A missing golden ranks lowest: the column shows what was checked (head against base) first.
 int image_rank(const std::string& verdict) {
   if (verdict == "fail") return 4;
   if (verdict == "error") return 3;
-  if (verdict == "missing") return 2;
-  if (verdict == "warn") return 1;
+  if (verdict == "warn") return 2;
+  if (verdict == "pass") return 1;
   return 0;
 }
 
-void judge_images(const SceneResult& scene, SceneGate& gate) {
+// The same "no golden" words from many scenes (a tracer without goldens), counted to say once.
+using MissingGoldens = std::vector<std::pair<std::string, std::size_t>>;
+
+void count_missing(MissingGoldens& missing, const std::string& why) {
+  for (auto& [text, scenes] : missing) {
+    if (text == why) {
+      ++scenes;
+      return;
+    }
+  }
+  missing.emplace_back(why, 1);
+}
+
+void judge_images(const SceneResult& scene, SceneGate& gate, MissingGoldens& missing) {
   for (const ImageCheck& check : scene.images) {
     if (image_rank(check.verdict) > image_rank(gate.image) || gate.image.empty()) {
       gate.image = check.verdict;
     }
     const std::string who = fmt::format("image {} vs {}", check.role, check.reference);
+    // A failed image without metrics could not be read, or is broken in a way its error says.
+    const std::string what = check.metrics ? summarize(*check.metrics) : check.error;
     if (check.verdict == "fail" || check.verdict == "warn") {
       raise(gate, check.verdict == "fail" ? GateOutcome::fail : GateOutcome::warn,
-            fmt::format("{}: {}", who, summarize(*check.metrics)));
+            fmt::format("{}: {}", who, what));
     } else if (check.verdict == "missing") {
-      raise(gate, GateOutcome::warn, fmt::format("{}: {}", who, check.error));
+      count_missing(missing, check.error);  // not the scene's fault: a note for the document
     } else if (check.verdict == "error") {
       raise(gate, GateOutcome::unmeasured, fmt::format("{}: {}", who, check.error));
     }
   }
+}
+
+// One note per distinct reason, with how to get goldens: look at the images first, then bless.
+std::vector<std::string> missing_golden_notes(const MissingGoldens& missing,
+                                              const ResultsDocument& document) {
+  const std::string role = document.kind == "compare" ? " --role head" : "";
+  std::vector<std::string> notes;
+  for (const auto& [why, checks] : missing) {
+    notes.push_back(fmt::format(
+        "images not checked against goldens: {} ({} {}); look at the images, then bless them: "
+        "raygate golden bless --from-run RESULTS.json{}",
+        why, checks, checks == 1 ? "image" : "images", role));
+  }
+  return notes;
+}
+
+// Why a document cannot pass though no scene says so.
+std::vector<std::string> document_problems(const ResultsDocument& document) {
+  if (document.scenes.empty()) return {"the document holds no scenes: nothing was measured"};
+  if (!document.complete) {
+    return {fmt::format("the document is incomplete: the run stopped after {} {}",
+                        document.scenes.size(), document.scenes.size() == 1 ? "scene" : "scenes")};
+  }
+  return {};
 }
 
 }  // namespace
@@ -85,6 +125,7 @@ std::size_t GateResult::count(GateOutcome outcome) const {
 
 GateResult evaluate_gate(const ResultsDocument& document, const GatePolicy& policy) {
   GateResult result;
+  MissingGoldens missing;
   for (const SceneResult& scene : document.scenes) {
     SceneGate gate;
     gate.id = scene.entry.id;
@@ -93,13 +134,14 @@ GateResult evaluate_gate(const ResultsDocument& document, const GatePolicy& poli
     } else {
       judge_speed(scene, policy.for_scene(scene.entry.id), policy.fail_on_inconclusive, gate);
     }
-    judge_images(scene, gate);
+    judge_images(scene, gate, missing);
     result.scenes.push_back(std::move(gate));
   }
-  const bool incomplete = !document.complete;
+  result.notes = missing_golden_notes(missing, document);
+  result.problems = document_problems(document);
   if (result.count(GateOutcome::fail) > 0) {
     result.exit_code = to_int(ExitCode::regression);
-  } else if (result.count(GateOutcome::unmeasured) > 0 || incomplete) {
+  } else if (result.count(GateOutcome::unmeasured) > 0 || !result.problems.empty()) {
     result.exit_code = to_int(ExitCode::infrastructure);
   } else {
     result.exit_code = to_int(ExitCode::pass);

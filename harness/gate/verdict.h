@@ -13,7 +13,7 @@ namespace raygate {
 
 enum class GateOutcome {
   pass,          // measured; nothing wrong
-  warn,          // an image over the warn threshold, a missing golden, an inconclusive change
+  warn,          // an image over the warn threshold, an inconclusive change
   unmeasured,    // raygate could not measure it (the baseline or base failed, a run crashed): exit 3
   fail,          // slower beyond the policy, an image over the fail thresholds, or head crashing
                  // where base ran: exit 1 (a found regression outranks what could not be measured)
@@ -30,6 +30,10 @@ struct SceneGate {
 struct GateResult {
   std::vector<SceneGate> scenes;
   int exit_code = 0;  // 0 pass (warnings allowed), 1 regression, 3 could not measure
+  // About the document as a whole, said once: why it cannot pass though no scene failed (no
+  // scenes, incomplete), and notes that judge nothing (no goldens: "… (4 scenes); bless …").
+  std::vector<std::string> problems;
+  std::vector<std::string> notes;
 
   std::size_t count(GateOutcome outcome) const;
 };

@@ -110,6 +110,12 @@ void ConsoleReporter::write(const ReportInput& input, std::ostream& out) const {
   const std::vector<SceneView> views = scene_views(input);
   write_header(input, out);
   write_table(input, views, out);
+  // Said once for the document, however many scenes share them (a tracer without goldens).
+  if (!input.gate.notes.empty() || !input.gate.problems.empty()) out << '\n';
+  for (const std::string& problem : input.gate.problems) {
+    out << paint("problem: " + problem, GateOutcome::unmeasured) << '\n';
+  }
+  for (const std::string& note : input.gate.notes) out << "note: " << note << '\n';
   const Headline line = headline(input, views);
   const GateOutcome overall = input.gate.exit_code == 0   ? GateOutcome::pass
                               : input.gate.exit_code == 1 ? GateOutcome::fail

@@ -12,7 +12,8 @@
 namespace raygate::report {
 namespace {
 
-// Text in a table cell or list item: nothing in it may end the cell or open HTML or emphasis.
+// Text in a table cell or list item: nothing in it may end the cell or open HTML, emphasis or
+// a link (a commit subject "[x](javascript:...)" stays text; so do "![" images).
 std::string md(const std::string& text) {
   std::string out;
   for (const char c : text) {
@@ -21,7 +22,7 @@ std::string md(const std::string& text) {
       case '<': out += "&lt;"; break;
       case '>': out += "&gt;"; break;
       case '&': out += "&amp;"; break;
-      case '*': case '_': case '`': case '\\':
+      case '*': case '_': case '`': case '\\': case '[': case ']':
         out += '\\';
         out += c;
         break;
@@ -77,7 +78,10 @@ std::string key_values(const nlohmann::json& object) {
   for (const auto& [key, value] : object.items()) {
     const std::string shown = value_text(value);
     if (value.is_null() || shown.empty()) continue;
-    text += fmt::format("- {}: `{}`\n", md(key), shown);
+    // A backtick would end the code span and let the rest be read as Markdown.
+    const bool plain = shown.find('`') != std::string::npos;
+    text += plain ? fmt::format("- {}: {}\n", md(key), md(shown))
+                  : fmt::format("- {}: `{}`\n", md(key), shown);
   }
   return text;
 }
@@ -126,6 +130,13 @@ std::string MarkdownReporter::compose(const ReportInput& input,
                         views.size() - shown);
   }
   if (!reasons.empty()) text.append("\n").append(reasons);
+  // Said once for the document, however many scenes share them (a tracer without goldens).
+  std::string notes;
+  for (const std::string& problem : input.gate.problems) {
+    notes += "- **problem**: " + md(problem) + "\n";
+  }
+  for (const std::string& note : input.gate.notes) notes += "- note: " + md(note) + "\n";
+  if (!notes.empty()) text.append("\n").append(notes);
   if (with_details) text.append("\n").append(details(input));
   return text;
 }

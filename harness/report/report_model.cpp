@@ -52,7 +52,7 @@ GateOutcome image_outcome_of(const SceneResult& scene) {
     GateOutcome outcome = GateOutcome::pass;
     if (check.verdict == "fail") outcome = GateOutcome::fail;
     if (check.verdict == "error") outcome = GateOutcome::unmeasured;
-    if (check.verdict == "warn" || check.verdict == "missing") outcome = GateOutcome::warn;
+    if (check.verdict == "warn") outcome = GateOutcome::warn;  // "missing": a document note
     worst = std::max(worst, outcome);
   }
   return worst;
@@ -136,6 +136,9 @@ Headline headline(const ReportInput& input, const std::vector<SceneView>& views)
   } else if (unmeasured > 0) {
     line.title = "raygate: could not measure " + plural(unmeasured, "scene", "scenes");
     line.detail = ids_of(views, GateOutcome::unmeasured, false);
+  } else if (views.empty() && gate.exit_code != 0) {
+    line.title = "raygate: no scenes";
+    line.detail = "nothing was measured";
   } else if (gate.exit_code != 0) {
     line.title = "raygate: incomplete";
     line.detail = fmt::format("the run stopped after {}", plural(views.size(), "scene", "scenes"));

@@ -114,7 +114,10 @@ void to_json(json& j, const ImageMetrics& m) {
            {"percent_over_fail", number(m.percent_over_fail)},
            {"mean_luminance_actual", number(m.mean_luminance_actual)},
            {"mean_luminance_expected", number(m.mean_luminance_expected)},
-           {"nonfinite_values", m.nonfinite_values}};
+           {"nonfinite_values", m.nonfinite_values},
+           {"nonfinite_pixels", m.nonfinite_pixels},
+           {"first_nonfinite_pixel", {m.nonfinite_x, m.nonfinite_y}},
+           {"expected_nonfinite_pixels", m.expected_nonfinite_pixels}};
 }
 void from_json(const json& j, ImageMetrics& m) {
   m.size_mismatch = j.at("size_mismatch").get<bool>();
@@ -138,6 +141,12 @@ void from_json(const json& j, ImageMetrics& m) {
   m.mean_luminance_actual = number_at(j, "mean_luminance_actual");
   m.mean_luminance_expected = number_at(j, "mean_luminance_expected");
   m.nonfinite_values = j.at("nonfinite_values").get<long>();
+  // Absent from documents written before NaN pixels were counted.
+  m.nonfinite_pixels = j.value("nonfinite_pixels", 0L);
+  const json first = j.value("first_nonfinite_pixel", json::array({0, 0}));
+  m.nonfinite_x = first.at(0).get<int>();
+  m.nonfinite_y = first.at(1).get<int>();
+  m.expected_nonfinite_pixels = j.value("expected_nonfinite_pixels", 0L);
 }
 
 void to_json(json& j, const Worktree& w) {

@@ -1,10 +1,15 @@
 // check_against_golden on the shipped goldens: a picture of the golden's own scene settings is
 // compared (pass, or fail with evidence); no golden, or a golden of other settings under the
-// same id (another suite's scene), is "missing" with the reason, never a failed comparison.
+// same id (another suite's scene), is "missing" with the reason, never a failed comparison. An
+// unreadable image (garbage, a truncated PNG) or one with NaN pixels fails; which goldens judge
+// which adapter.
 #include "compare/image_check.h"
 
 #include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "core/fs.h"
 
@@ -14,7 +19,8 @@ namespace {
 namespace fs = std::filesystem;
 namespace OIIO = OIIO_NAMESPACE;
 
-const fs::path kGolden = fs::path(RAYGATE_SOURCE_DIR) / "golden";
+const fs::path kGoldenRoot = fs::path(RAYGATE_SOURCE_DIR) / "golden";
+const fs::path kGolden = kGoldenRoot / "raygate-baseline";
 
 class ImageCheckTest : public ::testing::Test {
  protected:
@@ -73,18 +79,124 @@ TEST_F(ImageCheckTest, NoGoldenForTheIdIsMissing) {
   EXPECT_FALSE(c.metrics);
 }
 
-TEST_F(ImageCheckTest, UnreadableImageIsAnErrorEvenWithoutAGolden) {
-  const fs::path garbage = dir_.path() / "image.png";
+// A tracer that exits 0 but writes garbage has failed on the scene (exit 1), golden or not; the
+// message is one line, whatever the image library said.
+TEST_F(ImageCheckTest, UnreadableImageFailsEvenWithoutAGolden) {
+  const fs::path garbage = dir_.path() / "image.ppm";
   write_file_atomically(garbage, "not an image\n");
   GoldenEntry rendered = ci_tetra();
   rendered.id = "tetra-s2";
   const ImageCheck c = check(garbage, rendered);
-  EXPECT_EQ(c.verdict, "error");
+  EXPECT_EQ(c.verdict, "fail");
+  EXPECT_TRUE(c.failed());
   EXPECT_NE(c.error.find(garbage.string() + ": cannot read image"), std::string::npos) << c.error;
-  EXPECT_NE(c.error.find("no golden image for 'tetra-s2'"), std::string::npos) << c.error;
+  EXPECT_EQ(c.error.find('\n'), std::string::npos) << c.error;
   rendered = ci_tetra();
   rendered.size = 2;
-  EXPECT_EQ(check(garbage, rendered).verdict, "error");
+  EXPECT_EQ(check(garbage, rendered).verdict, "fail");
+  EXPECT_EQ(check(garbage, ci_tetra()).verdict, "fail");  // with a golden to compare with
+}
+
+// A PNG cut short: libpng's several lines of complaint become one.
+TEST_F(ImageCheckTest, TruncatedPngFailsWithOneLine) {
+  const std::string png = read_file(kGolden / "tetra.png");
+  const fs::path truncated = dir_.path() / "tetra.png";
+  write_file_atomically(truncated, png.substr(0, png.size() / 2));
+  for (const GoldenEntry& rendered : {ci_tetra(), GoldenEntry{"other", "tetra", 2, 0, 0, "", {}, {}, {}}}) {
+    const ImageCheck c = check(truncated, rendered);
+    EXPECT_EQ(c.verdict, "fail") << c.error;
+    EXPECT_NE(c.error.find("cannot read image"), std::string::npos) << c.error;
+    EXPECT_EQ(c.error.find('\n'), std::string::npos) << c.error;
+  }
+  const ImageCheck against_base = check_image("head", "base", truncated, kGolden / "tetra.png", {},
+                                              dir_.path() / "evidence", "tetra.head-vs-base");
+  EXPECT_EQ(against_base.verdict, "fail") << against_base.error;
+}
+
+// The golden as floats, with NaN in `nan_pixels` pixels of row 5, written as `name`.
+fs::path with_nan(const TempDir& dir, const std::string& name, int nan_pixels) {
+  OIIO::ImageBuf image((kGolden / "tetra.png").string());
+  EXPECT_TRUE(image.read(0, 0, true, OIIO::TypeDesc::FLOAT));
+  OIIO::ImageBuf rgb(OIIO::ImageSpec(image.spec().width, image.spec().height, 3,
+                                     OIIO::TypeDesc::FLOAT));
+  OIIO::ImageBufAlgo::copy(rgb, image);
+  for (int x = 0; x < nan_pixels; ++x) {
+    const float nan[3] = {std::nanf(""), 0.5f, 0.5f};
+    rgb.setpixel(10 + x, 5, nan);
+  }
+  const fs::path path = dir.path() / name;
+  EXPECT_TRUE(rgb.write(path.string(), OIIO::TypeDesc::FLOAT)) << rgb.geterror();
+  return path;
+}
+
+// An 8x8 grey PFM (the float format tracers dump), written by hand: this OpenImageIO reads PFM
+// but cannot write it. NaN in red of the first `nan_pixels` pixels of the top row.
+fs::path grey_pfm(const TempDir& dir, const std::string& name, int nan_pixels) {
+  constexpr int kSize = 8;
+  std::string bytes = "PF\n8 8\n-1.0\n";  // negative scale: little-endian floats
+  for (int y = kSize - 1; y >= 0; --y) {      // rows bottom to top
+    for (int x = 0; x < kSize; ++x) {
+      const float rgb[3] = {y == 0 && x < nan_pixels ? std::nanf("") : 0.5f, 0.5f, 0.5f};
+      bytes.append(reinterpret_cast<const char*>(rgb), sizeof rgb);
+    }
+  }
+  write_file_atomically(dir.path() / name, bytes);
+  return dir.path() / name;
+}
+
+TEST_F(ImageCheckTest, NanPixelsOfAPfmAreCountedAndFail) {
+  const ImageCheck c = check_image("tracer", "golden", grey_pfm(dir_, "nan.pfm", 3),
+                                   grey_pfm(dir_, "good.pfm", 0), {}, dir_.path() / "evidence",
+                                   "grey");
+  EXPECT_EQ(c.verdict, "fail") << c.error;
+  ASSERT_TRUE(c.metrics);
+  EXPECT_EQ(c.metrics->nonfinite_pixels, 3);
+  EXPECT_EQ(summarize(*c.metrics), "3 NaN/Inf pixels of 64, first at (0,0)");
+}
+
+TEST_F(ImageCheckTest, NanPixelsAreCountedAndFail) {
+  for (const char* name : {"nan.exr"}) {
+    const fs::path nan = with_nan(dir_, name, 7);
+    const ImageCheck c = check(nan, ci_tetra());
+    EXPECT_EQ(c.verdict, "fail") << name;
+    ASSERT_TRUE(c.metrics) << name;
+    EXPECT_EQ(c.metrics->nonfinite_pixels, 7) << name;
+    const std::string text = summarize(*c.metrics);
+    EXPECT_EQ(text, "7 NaN/Inf pixels of 25600, first at (10,5)") << name;
+    EXPECT_EQ(text.find("max nan"), std::string::npos) << text;
+  }
+  // Without a golden too.
+  const ImageCheck alone = check_against_golden("tracer", with_nan(dir_, "n.exr", 2),
+                                                dir_.path() / "none", GoldenManifest{},
+                                                ci_tetra(), {}, dir_.path() / "evidence");
+  EXPECT_EQ(alone.verdict, "fail");
+  EXPECT_NE(alone.error.find("2 NaN/Inf pixels"), std::string::npos) << alone.error;
+}
+
+// NaN in the reference (base's image) is no reference: the check could not be made.
+TEST_F(ImageCheckTest, NanInTheReferenceIsAnError) {
+  const ImageCheck c = check_image("head", "base", kGolden / "tetra.png",
+                                   with_nan(dir_, "base.exr", 3), {}, dir_.path() / "evidence",
+                                   "tetra.head-vs-base");
+  EXPECT_EQ(c.verdict, "error");
+  EXPECT_NE(c.error.find("the reference has 3 NaN/Inf pixels"), std::string::npos) << c.error;
+}
+
+// A tracer with no goldens: the same words for every scene, so a report can say them once, and
+// a readable image is not failed for it.
+TEST_F(ImageCheckTest, NoGoldensAtAllSaysTheSameForEveryScene) {
+  const fs::path empty = dir_.path() / "golden" / "my-tracer";
+  GoldenEntry balls = ci_tetra();
+  balls.id = balls.scene = "balls";
+  const ImageCheck a = check_against_golden("tracer", kGolden / "tetra.png", empty,
+                                            GoldenManifest{}, ci_tetra(), {}, dir_.path());
+  const ImageCheck b = check_against_golden("tracer", kGolden / "balls.png", empty,
+                                            GoldenManifest{}, balls, {}, dir_.path());
+  EXPECT_EQ(a.verdict, "missing");
+  EXPECT_FALSE(a.failed());
+  EXPECT_FALSE(a.metrics);
+  EXPECT_EQ(a.error, b.error);
+  EXPECT_EQ(a.error, "no goldens in " + empty.string() + " (none blessed yet)");
 }
 
 TEST_F(ImageCheckTest, GoldenOfAnotherSizeFactorIsNotCompared) {
@@ -107,6 +219,28 @@ TEST_F(ImageCheckTest, GoldenOfAnotherResolutionOrSamplingIsNotCompared) {
   GoldenEntry corners = ci_tetra();
   corners.sampling = "corners";
   EXPECT_EQ(check(kGolden / "tetra.png", corners).verdict, "missing");
+}
+
+// Goldens belong to an adapter: the baseline's judge the baseline and its bbox control, never
+// another tracer, which gets golden/<adapter>/ whether or not it exists yet.
+TEST(AdapterGoldens, EachAdapterHasItsOwnAndTheBaselineSharesOnlyWithItsVariants) {
+  EXPECT_EQ(adapter_golden_dir(kGoldenRoot, "raygate-baseline"), kGolden);
+  EXPECT_EQ(adapter_golden_dir(kGoldenRoot, "raygate-baseline-bbox"), kGolden);
+  EXPECT_EQ(adapter_golden_dir(kGoldenRoot, "povray"), kGoldenRoot / "povray");
+  EXPECT_EQ(adapter_golden_dir(kGoldenRoot, "cmake-nff"), kGoldenRoot / "cmake-nff");
+  EXPECT_EQ(golden_owner(load_golden_manifest(kGolden)), "raygate-baseline");
+  EXPECT_EQ(golden_owner(load_golden_manifest(kGoldenRoot / "cmake-nff")), "none");
+
+  TempDir dir;
+  GoldenManifest shared;
+  shared.suite = "ci";
+  shared.shared_with = {"fast-variant"};
+  shared.upsert({"tetra", "tetra", 6, 160, 160, "center", "none", "tetra.png", "ff"});
+  save_golden_manifest(shared, dir.path() / "slow");
+  EXPECT_EQ(load_golden_manifest(dir.path() / "slow").shared_with, shared.shared_with);
+  EXPECT_EQ(adapter_golden_dir(dir.path(), "fast-variant"), dir.path() / "slow");
+  EXPECT_EQ(adapter_golden_dir(dir.path(), "other"), dir.path() / "other");
+  EXPECT_EQ(adapter_golden_dir(dir.path() / "absent", "other"), dir.path() / "absent" / "other");
 }
 
 }  // namespace

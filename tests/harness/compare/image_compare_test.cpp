@@ -71,7 +71,27 @@ TEST(ImageCompare, SizeMismatchAndNonFiniteValuesFail) {
   const ImageMetrics nan =
       compare_images(make_image(dir, "n.exr", {{0, 0, NAN, 0.5f, 0.5f}}), make_image(dir, "b.exr"), {});
   EXPECT_EQ(nan.nonfinite_values, 1);
+  EXPECT_EQ(nan.nonfinite_pixels, 1);
   EXPECT_EQ(judge(nan, {}), ImageVerdict::fail);
+  EXPECT_EQ(summarize(nan), "1 NaN/Inf pixels of 100, first at (0,0)");
+}
+
+// Pixels, not channels: a pixel NaN in every channel is one, as is a pixel with an Inf.
+TEST(ImageCompare, CountsNonFinitePixelsNotChannels) {
+  TempDir dir;
+  const ImageMetrics m = compare_images(
+      make_image(dir, "n.exr", {{4, 2, NAN, NAN, NAN}, {6, 3, 0.5f, INFINITY, 0.5f}}),
+      make_image(dir, "b.exr"), {});
+  EXPECT_EQ(m.nonfinite_values, 4);
+  EXPECT_EQ(m.nonfinite_pixels, 2);
+  EXPECT_EQ(m.nonfinite_x, 4);
+  EXPECT_EQ(m.nonfinite_y, 2);
+  EXPECT_EQ(m.expected_nonfinite_pixels, 0);
+  EXPECT_FALSE(m.identical());
+  const ImageMetrics reversed =
+      compare_images(make_image(dir, "b.exr"), dir.path() / "n.exr", {});
+  EXPECT_EQ(reversed.nonfinite_pixels, 0);
+  EXPECT_EQ(reversed.expected_nonfinite_pixels, 2);
 }
 
 TEST(ImageCompare, ReadsOtherFormatsAndRejectsUnreadableFiles) {
@@ -81,6 +101,10 @@ TEST(ImageCompare, ReadsOtherFormatsAndRejectsUnreadableFiles) {
   EXPECT_TRUE(compare_images(png, ppm, {}).identical());
   write_file_atomically(dir.path() / "junk.png", "not an image");
   EXPECT_THROW(compare_images(dir.path() / "junk.png", png, {}), UsageError);
+  EXPECT_EQ(unreadable_image(png), "");
+  const std::string why = unreadable_image(dir.path() / "junk.png");
+  EXPECT_NE(why.find("junk.png: cannot read image: "), std::string::npos) << why;
+  EXPECT_EQ(why.find('\n'), std::string::npos) << why;
 }
 
 TEST(ImageCompare, EvidenceImagesAreWritten) {

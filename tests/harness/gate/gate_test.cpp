@@ -174,7 +174,7 @@ TEST(GateVerdict, ImagesFailWarnOrCannotBeChecked) {
 
   scene.images = {{"tracer", "golden", "a.png", "g.png", "missing", "no golden image", {}, {}}};
   gate = evaluate_gate(compare_document({scene}), GatePolicy{});
-  EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::warn);
+  EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::pass);  // a note for the document, not a warning
   EXPECT_EQ(gate.exit_code, 0);
 
   scene.images = {{"tracer", "golden", "a.png", "g.png", "error", "cannot read a.png", {}, {}}};
@@ -186,7 +186,59 @@ TEST(GateVerdict, ImagesFailWarnOrCannotBeChecked) {
 TEST(GateVerdict, AnIncompleteDocumentCannotPass) {
   ResultsDocument document = compare_document({compared("tetra", 0.0, -0.01, 0.01)});
   document.complete = false;
-  EXPECT_EQ(evaluate_gate(document, GatePolicy{}).exit_code, 3);
+  const GateResult gate = evaluate_gate(document, GatePolicy{});
+  EXPECT_EQ(gate.exit_code, 3);
+  ASSERT_EQ(gate.problems.size(), 1u);
+  EXPECT_EQ(gate.problems[0], "the document is incomplete: the run stopped after 1 scene");
+}
+
+// Nothing measured is not a pass, complete or not.
+TEST(GateVerdict, ADocumentWithNoScenesCannotPass) {
+  for (const bool complete : {true, false}) {
+    ResultsDocument document = compare_document({});
+    document.complete = complete;
+    const GateResult gate = evaluate_gate(document, GatePolicy{});
+    EXPECT_EQ(gate.exit_code, 3);
+    ASSERT_EQ(gate.problems.size(), 1u);
+    EXPECT_EQ(gate.problems[0], "the document holds no scenes: nothing was measured");
+  }
+}
+
+// A tracer without goldens: every scene's "no goldens" check becomes one note with the count
+// and how to bless; no scene warns or fails for it. Different reasons stay apart.
+TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
+  const ImageCheck none{"head", "golden", "a.png", "g", "missing", "no goldens in g (none blessed yet)", {}, {}};
+  const ImageCheck same{"head", "base", "a.png", "b.png", "pass", "", ImageMetrics{}, {}};
+  std::vector<SceneResult> scenes;
+  for (const char* id : {"balls", "gears", "tetra"}) {
+    scenes.push_back(compared(id, 0.0, -0.01, 0.01));
+    scenes.back().images = {none, same};
+  }
+  scenes.back().images.push_back({"base", "golden", "b.png", "g", "missing", "no golden image for 'tetra'", {}, {}});
+  const GateResult gate = evaluate_gate(compare_document(scenes), GatePolicy{});
+  EXPECT_EQ(gate.exit_code, 0);
+  EXPECT_EQ(gate.count(GateOutcome::pass), 3u);
+  for (const SceneGate& scene : gate.scenes) {
+    EXPECT_TRUE(scene.reasons.empty()) << scene.id;
+    EXPECT_EQ(scene.image, "pass") << scene.id;  // what was checked: head against base
+  }
+  ASSERT_EQ(gate.notes.size(), 2u);
+  EXPECT_EQ(gate.notes[0],
+            "images not checked against goldens: no goldens in g (none blessed yet) (3 images); "
+            "look at the images, then bless them: raygate golden bless --from-run RESULTS.json "
+            "--role head");
+  EXPECT_NE(gate.notes[1].find("no golden image for 'tetra' (1 image)"), std::string::npos)
+      << gate.notes[1];
+}
+
+// An image that failed without metrics (unreadable) says why, and fails the change.
+TEST(GateVerdict, AnUnreadableImageFailsWithItsReason) {
+  SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
+  scene.images = {{"head", "base", "a.ppm", "b.ppm", "fail", "a.ppm: cannot read image: bad", {}, {}}};
+  const GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
+  EXPECT_EQ(gate.exit_code, 1);
+  ASSERT_EQ(gate.scenes[0].reasons.size(), 1u);
+  EXPECT_EQ(gate.scenes[0].reasons[0], "image head vs base: a.ppm: cannot read image: bad");
 }
 
 TEST(GateVerdict, ARunIsJudgedOnFailuresAndImagesOnly) {

@@ -7,6 +7,27 @@
 namespace raygate::test {
 namespace {
 
+std::size_t occurrences(const std::string& text, const std::string& needle) {
+  std::size_t n = 0;
+  for (std::size_t pos = text.find(needle); pos != std::string::npos;
+       pos = text.find(needle, pos + 1)) {
+    ++n;
+  }
+  return n;
+}
+
+// Every scene of the run without a golden, as for a tracer that has none yet.
+void without_goldens(Fixture& f) {
+  for (SceneResult& scene : f.document.scenes) {
+    for (ImageCheck& check : scene.images) {
+      check.verdict = "missing";
+      check.error = "no goldens in golden/my-tracer (none blessed yet)";
+      check.metrics.reset();
+    }
+  }
+  f.gate = evaluate_gate(f.document, f.policy);
+}
+
 std::size_t at(const std::string& text, const std::string& needle) {
   const std::size_t pos = text.find(needle);
   EXPECT_NE(pos, std::string::npos) << "missing '" << needle << "' in:\n" << text;
@@ -92,6 +113,48 @@ TEST(MarkdownReport, RunSaysPass) {
   const std::string text = f.render("markdown");
   EXPECT_EQ(text.rfind("**raygate: pass** (2 scenes; suite score 0.439)\n", 0), 0u) << text;
   at(text, "| **PASS** | balls | 0.512 [0.508, 0.516] | MEASURED | pass |");
+}
+
+TEST(ConsoleReport, NoGoldensIsSaidOnce) {
+  Fixture f(false);
+  without_goldens(f);
+  const std::string text = f.render("console");
+  EXPECT_EQ(occurrences(text, "no goldens in golden/my-tracer"), 1u) << text;
+  at(text, "note: images not checked against goldens: no goldens in golden/my-tracer (none "
+           "blessed yet) (2 images); look at the images, then bless them: raygate golden bless "
+           "--from-run RESULTS.json");
+  at(text, "raygate: pass (2 scenes; suite score 0.439), exit 0");
+}
+
+TEST(ConsoleReport, NoScenesIsNoPass) {
+  Fixture f(false);
+  f.document.scenes.clear();
+  f.gate = evaluate_gate(f.document, f.policy);
+  const std::string text = f.render("console");
+  at(text, "problem: the document holds no scenes: nothing was measured");
+  at(text, "raygate: no scenes (nothing was measured");
+  at(text, "exit 3");
+}
+
+TEST(MarkdownReport, NoGoldensIsSaidOnce) {
+  Fixture f(false);
+  without_goldens(f);
+  const std::string text = f.render("markdown");
+  EXPECT_EQ(occurrences(text, "no goldens in golden/my-tracer"), 1u) << text;
+  at(text, "- note: images not checked against goldens");
+  EXPECT_EQ(text.rfind("**raygate: pass** (2 scenes; suite score 0.439)\n", 0), 0u) << text;
+}
+
+// A commit subject is the author's text: Markdown link or image syntax in it stays text.
+TEST(MarkdownReport, NeutralisesLinksInCommitSubjects) {
+  Fixture f(true);
+  for (RevisionRecord& revision : f.document.revisions) {
+    revision.worktree.subject = "[click](javascript:alert(1)) ![x](http://t.invalid/p.png)";
+  }
+  const std::string text = f.render("markdown");
+  EXPECT_EQ(text.find("[click]("), std::string::npos) << text;
+  EXPECT_EQ(text.find("![x]("), std::string::npos) << text;
+  at(text, "\\[click\\](javascript:alert(1))");
 }
 
 }  // namespace

@@ -5,11 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imageio.h>
+#include <zlib.h>
 
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -123,6 +126,56 @@ TEST(ImageWriter, PngIsCompressed) {
   const fs::path path = write("flat.png", flat);
   EXPECT_LT(fs::file_size(path), 2000u);
   EXPECT_EQ(decode(path, OIIO::TypeDesc::UINT8).pixels, quantized(flat));
+}
+
+// Byte rows that PNG's predictors fit exactly, in bands that each start from a row of noise: a
+// band repeating the row above (Up), one whose pixels average their left and upper neighbours
+// (Average), one of Paeth predictions. Each band makes its filter the cheapest, so every filter
+// of the encoder is exercised (noise rows take None or Sub).
+Image filter_bands(int width) {
+  std::mt19937 random(7);
+  const int band = 6;
+  const int height = 4 * band;
+  const int stride = width * 3;
+  std::vector<int> v(std::size_t(stride) * std::size_t(height));
+  auto at = [&](int x, int y) -> int& { return v[std::size_t(y * stride + x)]; };
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < stride; ++x) {
+      const int a = x >= 3 ? at(x - 3, y) : 0;
+      const int b = y > 0 ? at(x, y - 1) : 0;
+      const int c = x >= 3 && y > 0 ? at(x - 3, y - 1) : 0;
+      const int p = a + b - c;
+      const int pa = std::abs(p - a), pb = std::abs(p - b), pc = std::abs(p - c);
+      const int paeth = pa <= pb && pa <= pc ? a : (pb <= pc ? b : c);
+      const int kind = y / band;  // 0 noise, 1 up, 2 average, 3 Paeth
+      const bool noise = kind == 0 || y % band == 0 || (kind >= 2 && x < 3);
+      at(x, y) = noise ? int(random() % 256) : kind == 1 ? b : kind == 2 ? (a + b) / 2 : paeth;
+    }
+  }
+  Image image(width, height);
+  for (std::size_t i = 0; i < v.size(); ++i) image.rgb[i] = float(v[i]) / 255.0f;
+  return image;
+}
+
+// The filter type byte of each row of a PNG written by encode_png (one IDAT chunk).
+std::set<int> row_filters(const std::string& png, int width, int height) {
+  const std::size_t idat = png.find("IDAT");
+  const auto* p = reinterpret_cast<const unsigned char*>(png.data() + idat - 4);
+  const uLong length = (uLong(p[0]) << 24) | (uLong(p[1]) << 16) | (uLong(p[2]) << 8) | p[3];
+  const std::size_t stride = std::size_t(width) * 3 + 1;
+  std::vector<unsigned char> raw(stride * std::size_t(height));
+  uLongf size = raw.size();
+  EXPECT_EQ(uncompress(raw.data(), &size, p + 8, length), Z_OK);
+  std::set<int> filters;
+  for (int y = 0; y < height; ++y) filters.insert(raw[std::size_t(y) * stride]);
+  return filters;
+}
+
+TEST(ImageWriter, PngUsesEveryRowFilterAndDecodesExactly) {
+  const Image image = filter_bands(40);
+  EXPECT_EQ(row_filters(encode_png(image), image.width, image.height),
+            (std::set<int>{0, 1, 2, 3, 4}));
+  EXPECT_EQ(decode(write("bands.png", image), OIIO::TypeDesc::UINT8).pixels, quantized(image));
 }
 
 TEST(ImageWriter, EveryFormatIsByteIdenticalAcrossRuns) {

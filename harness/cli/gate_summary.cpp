@@ -15,7 +15,9 @@ std::string counts(const GateResult& gate) {
   std::vector<std::string> parts{fmt::format("{} scenes", gate.scenes.size()),
                                  fmt::format("{} failed", gate.count(GateOutcome::fail))};
   const std::size_t unmeasured = gate.count(GateOutcome::unmeasured);
-  if (unmeasured > 0 || gate.problems.empty()) parts.push_back(fmt::format("{} unmeasured", unmeasured));
+  if (unmeasured > 0 || gate.problems.empty()) {
+    parts.push_back(fmt::format("{} unmeasured", unmeasured));
+  }
   parts.push_back(fmt::format("{} warnings", gate.count(GateOutcome::warn)));
   return fmt::format("{}", fmt::join(parts, ", "));
 }

@@ -1,20 +1,35 @@
-// `raygate golden`: the shipped goldens match the baseline bit for bit; a changed or missing
-// golden is caught with the right exit code, and bless writes only what it is asked to.
+// `raygate golden`: the shipped goldens (golden/raygate-baseline/) match the baseline bit for
+// bit; a changed or missing golden is caught with the right exit code, and bless writes only
+// what it is asked to. And a new tracer's first use: with no goldens of its own it is judged on
+// images head against base only, says so once, then blesses its own from a run and is gated
+// on them; its garbage image fails the change (exit 1), and a document of no scenes never passes.
 #include <gtest/gtest.h>
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <nlohmann/json.hpp>
 
 #include "cli_support.h"
 #include "compare/golden.h"
 #include "compare/image_compare.h"
 #include "core/sha256.h"
+#include "store/results.h"
+#include "tracer_fixture.h"
 
 namespace raygate::test {
 namespace {
 
 namespace OIIO = OIIO_NAMESPACE;
-const std::filesystem::path kGolden = std::filesystem::path(RAYGATE_SOURCE_DIR) / "golden";
+
+std::size_t occurrences(const std::string& text, const std::string& needle) {
+  std::size_t n = 0;
+  for (auto pos = text.find(needle); pos != std::string::npos; pos = text.find(needle, pos + 1)) {
+    ++n;
+  }
+  return n;
+}
+const std::filesystem::path kGolden =
+    std::filesystem::path(RAYGATE_SOURCE_DIR) / "golden" / "raygate-baseline";
 
 // Every shipped golden is re-rendered: any change to the baseline or the generators that moves
 // a single pixel fails here (re-bless on purpose with `raygate golden bless`).
@@ -79,6 +94,104 @@ TEST(GoldenCli, BlessWritesOnlyTheNamedScenes) {
   const CliRun unknown = run_raygate({"golden", "bless", "nope", "--golden-dir", "fresh"}, dir);
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_NE(unknown.out.find("suite 'ci' has no scene 'nope'"), std::string::npos);
+}
+
+// Re-blessing the baseline's goldens keeps whom they are shared with (the bbox control).
+TEST(GoldenCli, BlessKeepsTheSharedWithList) {
+  TempDir dir;
+  std::filesystem::copy(kGolden, dir.path() / "golden");
+  const CliRun r = run_raygate(
+      {"golden", "bless", "tetra", "--golden-dir", "golden", "--work-dir", "work"}, dir);
+  ASSERT_EQ(r.exit_code, 0) << r.out;
+  const GoldenManifest m = load_golden_manifest(dir.path() / "golden");
+  EXPECT_EQ(m.shared_with, std::vector<std::string>{"raygate-baseline-bbox"});
+  EXPECT_EQ(m.entries.size(), 13u);
+}
+
+// The ci suite's balls, at the settings of the baseline's golden: the fixture tracer has no
+// reflections, so the baseline's picture would fail it.
+inline constexpr const char* kCiBallsSuite = R"({
+  "name": "ci-balls",
+  "description": "the ci suite's balls, as its golden was made",
+  "sampling": "center",
+  "scenes": [{"id": "balls", "scene": "balls", "size": 4, "resolution": [128, 128]}]
+})";
+
+class NewTracerCli : public TracerRepoTest {
+ protected:
+  NewTracerCli() : TracerRepoTest(kCiBallsSuite) {}
+
+  std::vector<std::string> measure(std::vector<std::string> args) const {
+    args.insert(args.end(), {"--repo", repo_.path().string(), "--adapter", "make-nff", "--suite",
+                             suite_.string(), "--cache-dir", cache_.string(), "--no-store",
+                             "--warmup", "0", "--max-rounds", "2"});
+    return args;
+  }
+};
+
+// First use: no --golden-dir, and make-nff has no golden/make-nff/. The A/A compare is judged on
+// head against base only and passes; the missing goldens are one note, not one per scene. Then
+// the first-use path: bless from the run, and the next run is gated on the tracer's own goldens.
+TEST_F(NewTracerCli, FirstCompareWithoutGoldensPassesAndSaysSoOnce) {
+  const std::string sha = commit(sources_.fast, "tracer");
+  const std::filesystem::path out = dir_.path() / "c.json";
+  const CliRun r = run_raygate(measure({"compare", "--base", sha, "--head", sha, "--out",
+                                        out.string()}),
+                               dir_);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  const std::filesystem::path own = kSource / "golden" / "make-nff";
+  EXPECT_EQ(occurrences(r.out, "no goldens in " + own.string()), 1u) << r.out;
+  EXPECT_TRUE(has(r.out, "note: images not checked against goldens")) << r.out;
+  EXPECT_TRUE(has(r.out, "raygate golden bless --from-run RESULTS.json --role head")) << r.out;
+  const ResultsDocument d = read_results(out);
+  EXPECT_EQ(d.settings.at("goldens"), "none");
+  EXPECT_EQ(d.settings.at("golden_dir"), own.string());
+  ASSERT_EQ(d.scenes.size(), 1u);
+  bool head_vs_base = false;
+  for (const ImageCheck& check : d.scenes[0].images) {
+    if (check.reference == "base") head_vs_base = check.verdict == "pass";
+    if (check.reference == "golden") EXPECT_EQ(check.verdict, "missing");
+  }
+  EXPECT_TRUE(head_vs_base);
+
+  const CliRun bless = run_raygate({"golden", "bless", "--from-run", out.string(), "--role",
+                                    "head", "--golden-dir", "mine"},
+                                   dir_);
+  ASSERT_EQ(bless.exit_code, 0) << bless.out;
+  const CliRun gated = run_raygate(
+      measure({"run", "--rev", sha, "--golden-dir", "mine", "--out", "r.json"}), dir_);
+  EXPECT_EQ(gated.exit_code, 0) << gated.out;
+  EXPECT_FALSE(has(gated.out, "no goldens")) << gated.out;
+  const ResultsDocument run = read_results(dir_.path() / "r.json");
+  EXPECT_EQ(run.settings.at("goldens"), "make-nff");
+  EXPECT_EQ(run.scenes.at(0).images.at(0).verdict, "pass") << run.scenes.at(0).images.at(0).error;
+
+  // The same document with its scenes taken away is no pass.
+  nlohmann::json empty = nlohmann::json::parse(read_file(out));
+  empty["scenes"] = nlohmann::json::array();
+  write_file_atomically(dir_.path() / "empty.json", empty.dump());
+  const CliRun gate = run_raygate({"gate", "empty.json"}, dir_);
+  EXPECT_EQ(gate.exit_code, 3) << gate.out;
+  EXPECT_TRUE(has(gate.out, "gate: COULD NOT MEASURE: 0 scenes, 0 failed, 0 warnings; the "
+                            "document holds no scenes: nothing was measured"))
+      << gate.out;
+}
+
+// A head that exits 0 but writes text where its image belongs has failed on that scene: exit 1
+// (base measured), not 3, and the reason is one line.
+TEST_F(NewTracerCli, GarbageImageOfHeadFailsTheChange) {
+  const std::string base = commit(sources_.fast, "tracer");
+  const std::string head = commit(sources_.garbling, "write text, not an image");
+  const CliRun r = run_raygate(
+      measure({"compare", "--base", base, "--head", head, "--out", "c.json"}), dir_);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_TRUE(has(r.out, "image head vs base: ")) << r.out;
+  EXPECT_TRUE(has(r.out, "cannot read image")) << r.out;
+  for (const ImageCheck& check : read_results(dir_.path() / "c.json").scenes.at(0).images) {
+    if (check.role != "head") continue;
+    EXPECT_EQ(check.verdict, "fail") << check.reference;
+    EXPECT_EQ(check.error.find('\n'), std::string::npos) << check.error;
+  }
 }
 
 }  // namespace

@@ -1,9 +1,9 @@
 // `raygate run` end to end: a throwaway git repository holding a small real NFF tracer
 // (tests/fixtures/nff_tracer) built through the shipped make-nff adapter, measured on a tiny
 // suite. A complete document; a slower commit's higher ratio; the build cache; the user's tree
-// and HEAD untouched; concurrent runs apart; a crash, a missing or unreadable image and a hang
-// recorded per scene (exit 3); usage errors (exit 2); goldens compared only when made from the
-// same scene settings (an image unlike its golden: exit 1).
+// and HEAD untouched; concurrent runs apart; a crash, a missing image and a hang recorded per
+// scene (exit 3); an unreadable image failed (exit 1); usage errors (exit 2); goldens compared
+// only when made from the same scene settings (an image unlike its golden: exit 1).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -277,12 +277,13 @@ TEST_F(RunCli, TracerThatWritesNoImageFailsEveryScene) {
   EXPECT_TRUE(has(r.out, "wrote no image")) << r.out;
 }
 
-TEST_F(RunCli, UnreadableImageIsAnErrorEvenWithoutGoldens) {
+// The tracer exited 0 but wrote no image: its failure (exit 1), not raygate's (3).
+TEST_F(RunCli, UnreadableImageFailsEvenWithoutGoldens) {
   commit(sources_.garbling, "write text, not an image");
   const CliRun r = run("HEAD", dir_.path() / "r.json", quick());
-  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_EQ(r.exit_code, 1) << r.out;
   const ImageCheck& check = read_results(dir_.path() / "r.json").scenes.at(0).images.at(0);
-  EXPECT_EQ(check.verdict, "error");
+  EXPECT_EQ(check.verdict, "fail");
   EXPECT_TRUE(has(check.error, "cannot read image")) << check.error;
   EXPECT_TRUE(has(r.out, "cannot read image")) << r.out;
 }
@@ -341,7 +342,7 @@ TEST_F(RunCli, BrokenAdapterIsAUsageErrorNamingTheField) {
 TEST_F(RunCli, GoldensOfOtherSceneSettingsAreNotCompared) {
   commit(sources_.fast, "tracer");
   Options options;
-  options.golden_dir = (kSource / "golden").string();
+  options.golden_dir = (kSource / "golden" / "raygate-baseline").string();
   options.max_rounds = "1";
   options.warmup = "0";
   const CliRun r = run("HEAD", dir_.path() / "r.json", options);

@@ -102,7 +102,8 @@ TEST_F(ImageCheckTest, TruncatedPngFailsWithOneLine) {
   const std::string png = read_file(kGolden / "tetra.png");
   const fs::path truncated = dir_.path() / "tetra.png";
   write_file_atomically(truncated, png.substr(0, png.size() / 2));
-  for (const GoldenEntry& rendered : {ci_tetra(), GoldenEntry{"other", "tetra", 2, 0, 0, "", {}, {}, {}}}) {
+  const GoldenEntry other{"other", "tetra", 2, 0, 0, "", {}, {}, {}};
+  for (const GoldenEntry& rendered : {ci_tetra(), other}) {
     const ImageCheck c = check(truncated, rendered);
     EXPECT_EQ(c.verdict, "fail") << c.error;
     EXPECT_NE(c.error.find("cannot read image"), std::string::npos) << c.error;

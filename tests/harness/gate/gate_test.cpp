@@ -207,14 +207,16 @@ TEST(GateVerdict, ADocumentWithNoScenesCannotPass) {
 // A tracer without goldens: every scene's "no goldens" check becomes one note with the count
 // and how to bless; no scene warns or fails for it. Different reasons stay apart.
 TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
-  const ImageCheck none{"head", "golden", "a.png", "g", "missing", "no goldens in g (none blessed yet)", {}, {}};
+  const ImageCheck none{"head", "golden", "a.png", "g", "missing",
+                        "no goldens in g (none blessed yet)", {}, {}};
   const ImageCheck same{"head", "base", "a.png", "b.png", "pass", "", ImageMetrics{}, {}};
   std::vector<SceneResult> scenes;
   for (const char* id : {"balls", "gears", "tetra"}) {
     scenes.push_back(compared(id, 0.0, -0.01, 0.01));
     scenes.back().images = {none, same};
   }
-  scenes.back().images.push_back({"base", "golden", "b.png", "g", "missing", "no golden image for 'tetra'", {}, {}});
+  scenes.back().images.push_back(
+      {"base", "golden", "b.png", "g", "missing", "no golden image for 'tetra'", {}, {}});
   const GateResult gate = evaluate_gate(compare_document(scenes), GatePolicy{});
   EXPECT_EQ(gate.exit_code, 0);
   EXPECT_EQ(gate.count(GateOutcome::pass), 3u);
@@ -234,7 +236,8 @@ TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
 // An image that failed without metrics (unreadable) says why, and fails the change.
 TEST(GateVerdict, AnUnreadableImageFailsWithItsReason) {
   SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
-  scene.images = {{"head", "base", "a.ppm", "b.ppm", "fail", "a.ppm: cannot read image: bad", {}, {}}};
+  scene.images = {
+      {"head", "base", "a.ppm", "b.ppm", "fail", "a.ppm: cannot read image: bad", {}, {}}};
   const GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.exit_code, 1);
   ASSERT_EQ(gate.scenes[0].reasons.size(), 1u);

@@ -13,7 +13,8 @@ namespace raygate::test {
 namespace {
 
 namespace OIIO = OIIO_NAMESPACE;
-const std::filesystem::path kGolden = std::filesystem::path(RAYGATE_SOURCE_DIR) / "golden";
+const std::filesystem::path kGolden =
+    std::filesystem::path(RAYGATE_SOURCE_DIR) / "golden" / "raygate-baseline";
 
 RevisionRecord revision(const std::string& role, const std::string& sha, const std::string& subject) {
   RevisionRecord r;

@@ -1,6 +1,8 @@
 // `raygate import`, `history` and `export` as a user runs them: hand-made results documents go
 // in, the table, its JSON, the drift note and the HTML page come out, exports equal the files
-// imported byte for byte, and parallel imports into one store lose and duplicate nothing.
+// imported byte for byte, and parallel imports into one store lose and duplicate nothing. Two
+// tracers' repositories and two adapters give a table each, with trends (and the report's trend
+// plot) that stay in their series; a real run records its repository's root commit.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -11,6 +13,7 @@
 #include "cli_support.h"
 #include "results_fixture.h"
 #include "store/store.h"
+#include "tracer_fixture.h"
 
 namespace raygate::test {
 namespace {
@@ -234,6 +237,31 @@ TEST_F(HistoryCli, TheReportsTrendPlotStaysInTheDocumentsSeries) {
   // (find, not HasSubstr: a failure should not print the whole page)
   EXPECT_NE(html.find("Trend over 2 commits"), std::string::npos);
   EXPECT_EQ(html.find(fake_sha(3).substr(0, 7)), std::string::npos);
+}
+
+// End to end: `raygate run` records the tracer repository's root commit, and history heads the
+// table with it.
+class HistoryOfRuns : public TracerRepoTest {};
+
+TEST_F(HistoryOfRuns, ARunRecordsItsRepositorysRootCommitAndHistoryShowsIt) {
+  const std::string first = commit(sources_.fast, "first");
+  const std::string second = commit(sources_.fast + "\n// a comment\n", "second");
+  for (const std::string& rev : {first, second}) {
+    const std::filesystem::path out = dir_.path() / ("run-" + rev.substr(0, 7) + ".json");
+    const CliRun run = run_raygate(
+        {"run", "--repo", repo_.path().string(), "--rev", rev, "--adapter", "make-nff", "--suite",
+         suite_.string(), "--cache-dir", cache_.string(), "--golden-dir", "no-goldens",
+         "--max-rounds", "2", "--warmup", "0", "--out", out.string()},
+        dir_);
+    ASSERT_EQ(run.exit_code, 0) << run.out;
+    EXPECT_EQ(read_results(out).revisions.at(0).repository_id, "root:" + first);
+  }
+  const CliRun history =
+      run_raygate({"history", "--store", (cache_ / "results.db").string()}, dir_);
+  ASSERT_EQ(history.exit_code, 0) << history.out;
+  EXPECT_TRUE(has(history.out, "repository root:" + first.substr(0, 12) +
+                                   ", adapter make-nff: 2 commits"))
+      << history.out;
 }
 
 TEST_F(HistoryCli, ExportGivesBackTheImportedFilesByteForByte) {

@@ -64,11 +64,12 @@ std::optional<std::string> refused_for_ownership(const fs::path& path, int rc) {
     owner = fmt::format("uid {}{}", info.st_uid,
                         user != nullptr ? fmt::format(" ({})", user->pw_name) : "");
   }
+  const std::string asked = path.string() == root ? "" : " (holding " + path.string() + ")";
   throw UsageError(fmt::format(
-      "git refuses the repository {} (for {}): it is owned by {}, not by the user running "
-      "raygate (uid {}), and git's ownership check (safe.directory) does not trust it; if you "
-      "trust it, run: git config --global --add safe.directory {}",
-      root, path.string(), owner, ::getuid(), root));
+      "git refuses the repository {}{}: it is owned by {}, not by the user running raygate "
+      "(uid {}), and git's ownership check (safe.directory) does not trust it; if you trust it, "
+      "run: git config --global --add safe.directory {}",
+      root, asked, owner, ::getuid(), root));
 }
 
 git::RepositoryPtr open_local(const fs::path& path) {

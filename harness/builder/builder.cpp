@@ -144,9 +144,10 @@ BuildRecord build(const Worktree& worktree, const Adapter& adapter, const BuildO
     throw_if_interrupted("after the build steps");
   } catch (const Interrupted& stop) {
     discard_interrupted_build(entry);
-    throw Interrupted(stop.signal(), fmt::format("{} while building {}; the unfinished build was "
-                                                 "removed (the next run builds it again)",
-                                                 stop.what(), entry.key));
+    throw Interrupted(stop.signal(), fmt::format("interrupted by {} while building {}; the "
+                                                 "unfinished build was removed (the next run "
+                                                 "builds it again)",
+                                                 signal_name(stop.signal()), entry.key));
   }
   if (record.success) {
     if (!inputs.dirty) publish_build(entry, record);

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <thread>
 #include <vector>
@@ -37,7 +38,25 @@ pid_t parent_of(const std::filesystem::path& stat_file) {
   return parent;
 }
 
-std::vector<pid_t> own_children() {
+// From /proc/self/task/<tid>/children (one small file per thread of ours; children of raygate
+// are listed under the thread that started them or adopted them). nullopt where the kernel has
+// no such files (CONFIG_PROC_CHILDREN off).
+std::optional<std::vector<pid_t>> children_from_tasks() {
+  std::vector<pid_t> children;
+  std::error_code error;
+  bool any = false;
+  for (const auto& task : std::filesystem::directory_iterator("/proc/self/task", error)) {
+    std::ifstream in(task.path() / "children");
+    if (!in) continue;
+    any = true;
+    for (pid_t pid = 0; in >> pid;) children.push_back(pid);
+  }
+  if (!any) return std::nullopt;
+  return children;
+}
+
+// Scanning every process's parent: slower (about 0.1 ms a process), but needs nothing.
+std::vector<pid_t> children_from_scan() {
   const pid_t self = ::getpid();
   std::vector<pid_t> children;
   std::error_code error;
@@ -47,6 +66,11 @@ std::vector<pid_t> own_children() {
     if (parent_of(entry.path() / "stat") == self) children.push_back(std::stoi(name));
   }
   return children;
+}
+
+std::vector<pid_t> own_children() {
+  if (std::optional<std::vector<pid_t>> listed = children_from_tasks()) return *listed;
+  return children_from_scan();
 }
 
 // SIGKILL ends a process promptly unless it sits in uninterruptible sleep (a hung NFS read):

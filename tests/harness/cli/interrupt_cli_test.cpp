@@ -67,11 +67,13 @@ std::vector<std::string> lines_with(const std::string& text, const std::string& 
 class InterruptCli : public TracerRepoTest {
  protected:
   // make-nff with `run` wrapped: on balls, the tracer starts a grandchild in its group and a
-  // setsid stray outside it, writes the pids, and waits; other scenes render normally.
-  fs::path sleeping_adapter() const {
+  // setsid stray outside it, writes the pids, and waits; other scenes render normally. With
+  // `deaf`, all of them ignore SIGTERM.
+  fs::path sleeping_adapter(bool deaf = false) const {
     json adapter = json::parse(read_file(kSource / "adapters" / "make-nff.json"));
-    adapter["name"] = "make-nff-sleeping";
+    adapter["name"] = deaf ? "make-nff-deaf" : "make-nff-sleeping";
     adapter["run"] = {"sh", "-c",
+                      std::string(deaf ? "trap '' TERM\n" : "") +
                       "case \"$1\" in *balls*)\n"
                       "  sleep 100 & echo $! > \"$4/grandchild.pid\"\n"
                       "  setsid sleep 100 </dev/null >/dev/null 2>&1 & echo $! > \"$4/stray.pid\"\n"
@@ -110,8 +112,10 @@ class InterruptCli : public TracerRepoTest {
             "--out",        out_.string()};
   }
 
-  // Starts raygate with `args`; once `ready` appears, sends `sig`; returns the exit code.
-  int signal_when(const std::vector<std::string>& args, const fs::path& ready, int sig) {
+  // Starts raygate with `args`; once `ready` appears, sends `sig` (and `second` 200 ms later,
+  // unless 0); returns the exit code, or -1 if raygate died of a signal.
+  int signal_when(const std::vector<std::string>& args, const fs::path& ready, int sig,
+                  int second = 0) {
     ProcessSpec spec;
     spec.argv = {RAYGATE_EXE};
     spec.argv.insert(spec.argv.end(), args.begin(), args.end());
@@ -121,10 +125,16 @@ class InterruptCli : public TracerRepoTest {
     spec.timeout = std::chrono::minutes(4);
     Process raygate = Process::start(spec);
     EXPECT_TRUE(appears(ready, raygate)) << read_file(spec.stdout_path);
-    const auto sent = std::chrono::steady_clock::now();
     ::kill(raygate.pid(), sig);
+    if (second != 0) {
+      std::this_thread::sleep_for(200ms);
+      ::kill(raygate.pid(), second);
+    }
+    const auto sent = std::chrono::steady_clock::now();
     const ProcessResult r = raygate.wait();
-    EXPECT_LT(std::chrono::steady_clock::now() - sent, 10s) << "stopping took too long";
+    stop_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
+    EXPECT_LT(stop_seconds_, 10.0) << "stopping took too long";
+    died_of_ = r.outcome == ProcessOutcome::signaled ? r.signal : 0;
     output_ = read_file(spec.stdout_path);
     return r.outcome == ProcessOutcome::exited ? r.exit_code : -1;
   }
@@ -132,6 +142,8 @@ class InterruptCli : public TracerRepoTest {
   fs::path pids_ = dir_.path() / "pids";
   fs::path out_ = dir_.path() / "r.json";
   std::string output_;
+  double stop_seconds_ = 0.0;  // from the last signal sent to raygate's end
+  int died_of_ = 0;            // the signal raygate died of, if it did
 };
 
 TEST_F(InterruptCli, SignalsStopTheTracerItsChildrenAndStraysAndKeepTheFinishedScenes) {
@@ -157,6 +169,21 @@ TEST_F(InterruptCli, SignalsStopTheTracerItsChildrenAndStraysAndKeepTheFinishedS
     EXPECT_EQ(said[0], "raygate: interrupted by " + name + ": kept 1 of 2 scenes in " +
                            out_.string() + " (complete: false)");
   }
+}
+
+TEST_F(InterruptCli, SecondSignalEndsRaygateAtOnceWithItsChildren) {
+  commit(sources_.fast, "tracer");
+  fs::create_directories(pids_);
+  // The tracer ignores SIGTERM, so the first SIGINT alone would take the 2 s grace to SIGKILL.
+  EXPECT_EQ(signal_when(run_args(sleeping_adapter(true)), pids_ / "tracer.pid", SIGINT, SIGINT),
+            -1)
+      << output_;
+  EXPECT_EQ(died_of_, SIGINT);
+  EXPECT_LT(stop_seconds_, 1.5);
+  EXPECT_TRUE(ends(pid_in(pids_ / "tracer.pid"))) << "the tracer still runs";
+  EXPECT_TRUE(ends(pid_in(pids_ / "grandchild.pid"))) << "its grandchild still runs";
+  // The setsid stray is beyond a signal handler's reach (only the sweep finds it); end it here.
+  ::kill(pid_in(pids_ / "stray.pid"), SIGKILL);
 }
 
 TEST_F(InterruptCli, InterruptedBuildLeavesNoCompleteLookingEntryAndTheRerunBuilds) {

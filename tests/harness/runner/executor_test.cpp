@@ -4,8 +4,13 @@
 #include "runner/executor.h"
 
 #include <gtest/gtest.h>
+#include <signal.h>
+
+#include <chrono>
+#include <thread>
 
 #include "core/fs.h"
+#include "core/interrupt.h"
 
 namespace raygate {
 namespace {
@@ -62,6 +67,29 @@ TEST(SystemExecutor, RunTogetherKeepsTheOrderOfTheSpecs) {
       {shell("exit 3", dir.path() / "a.log"), shell("sleep 0.2; exit 5", dir.path() / "b.log")});
   EXPECT_EQ(results[0].exit_code, 3);
   EXPECT_EQ(results[1].exit_code, 5);
+}
+
+// SIGINT during a duet: both waiting threads wake (the signal reaches one thread only; the
+// self-pipe wakes every poller), both children are stopped, and Interrupted comes out.
+TEST(SystemExecutor, InterruptStopsEveryProcessOfARunTogether) {
+  install_interrupt_handlers();
+  TempDir dir;
+  SystemExecutor executor;
+  const fs::path a = dir.path() / "a.log";
+  const fs::path b = dir.path() / "b.log";
+  std::thread stopper([&] {
+    auto up = [](const fs::path& log) { return fs::exists(log) && fs::file_size(log) > 0; };
+    for (int i = 0; i < 1000 && !(up(a) && up(b)); ++i) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    ::kill(::getpid(), SIGINT);  // both children run: the handler only records it
+  });
+  const auto started = std::chrono::steady_clock::now();
+  EXPECT_THROW(executor.run_together({shell("echo up; sleep 20", a), shell("echo up; sleep 20", b)}),
+               Interrupted);
+  stopper.join();
+  EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(5));
+  clear_interrupt_for_testing();
 }
 
 }  // namespace

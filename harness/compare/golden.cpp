@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/path_component.h"
 
 namespace raygate {
 namespace {
@@ -52,6 +53,11 @@ GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir) {
       manifest.entries.push_back({e.at("id"), e.at("scene"), e.at("size"), e.at("width"),
                                   e.at("height"), e.at("sampling"), e.at("accel"), e.at("file"),
                                   e.at("sha256")});
+      // The file is read, compared and overwritten by bless: it must stay in the golden folder.
+      const std::string where = path.string() + ": $.images[" +
+                                std::to_string(manifest.entries.size() - 1) + "]";
+      checked_component(manifest.entries.back().id, where + ".id");
+      checked_component(manifest.entries.back().file, where + ".file");
     }
     if (doc.contains("shared_with")) {
       manifest.shared_with = doc.at("shared_with").get<std::vector<std::string>>();

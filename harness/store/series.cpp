@@ -28,13 +28,19 @@ std::string scene_settings(const SuiteScene& entry, const BaselineRecord& baseli
                      entry.height, baseline.sampling);
 }
 
+// The tracer's clock and the baseline's. Documents since the clocks were matched (issue 18) name
+// the tracer's in settings.tracer_clock; older ones only have the metric (wall/cpu), which with
+// their baseline timing ("in-process") keeps them a series of their own.
 std::string timing_identity(const ResultsDocument& document) {
-  std::string metric;
-  if (document.settings.is_object()) {
-    const auto found = document.settings.find("metric");
-    if (found != document.settings.end() && found->is_string()) metric = found->get<std::string>();
-  }
-  return (metric.empty() ? "-" : metric) + " " + document.baseline.timing;
+  const auto setting = [&](const char* key) -> std::string {
+    if (!document.settings.is_object()) return {};
+    const auto found = document.settings.find(key);
+    return found != document.settings.end() && found->is_string() ? found->get<std::string>()
+                                                                   : std::string{};
+  };
+  std::string tracer = setting("tracer_clock");
+  if (tracer.empty()) tracer = setting("metric");
+  return (tracer.empty() ? "-" : tracer) + " " + document.baseline.timing;
 }
 
 std::string baseline_identity(const BaselineRecord& baseline) {

@@ -143,5 +143,23 @@ TEST(GoldenManifest, RoundTripsAndRejectsOtherSchemas) {
   EXPECT_TRUE(load_golden_manifest(dir.path() / "empty").entries.empty());
 }
 
+// A crafted manifest must not make verify read, or bless overwrite, a file outside its folder.
+TEST(GoldenManifest, RefusesFileNamesThatLeaveTheGoldenFolder) {
+  TempDir dir;
+  GoldenManifest m;
+  m.suite = "ci";
+  m.upsert({"balls", "balls", 2, 96, 96, "center", "none", "../../etc/passwd", "ee"});
+  save_golden_manifest(m, dir.path());
+  try {
+    load_golden_manifest(dir.path());
+    FAIL() << "a manifest with a '../' file name was accepted";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("$.images[0].file"), std::string::npos) << e.what();
+  }
+  m.entries = {{"../x", "balls", 2, 96, 96, "center", "none", "balls.png", "ee"}};
+  save_golden_manifest(m, dir.path());
+  EXPECT_THROW(load_golden_manifest(dir.path()), UsageError);
+}
+
 }  // namespace
 }  // namespace raygate

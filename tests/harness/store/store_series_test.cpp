@@ -54,7 +54,8 @@ TEST(SeriesKey, EveryPartOfTheKeyStartsANewSeries) {
   EXPECT_NE(changed([](ResultsDocument& d) { d.scenes[0].entry.height = 128; }), id);
   EXPECT_NE(changed([](ResultsDocument& d) { d.baseline.sampling = "corners"; }), id);
   EXPECT_NE(changed([](ResultsDocument& d) { d.settings["metric"] = "cpu"; }), id);
-  EXPECT_NE(changed([](ResultsDocument& d) { d.baseline.timing = "process-wall"; }), id);
+  EXPECT_NE(changed([](ResultsDocument& d) { d.settings["tracer_clock"] = "process-cpu"; }), id);
+  EXPECT_NE(changed([](ResultsDocument& d) { d.baseline.timing = "in-process"; }), id);
   EXPECT_NE(changed([](ResultsDocument& d) { d.baseline.source_sha256 = std::string(64, 'c'); }),
             id);
   EXPECT_NE(changed([](ResultsDocument& d) { d.baseline.accel = "bvh"; }), id);
@@ -81,7 +82,7 @@ TEST(SeriesKey, RowsCarryTheirSeries) {
   EXPECT_EQ(rows.revisions.at(0).repository_key, kRepoA);
   EXPECT_EQ(rows.scenes.at(0).series_id, series_of(d));
   EXPECT_EQ(rows.scenes.at(0).scene_settings, "scene=teapot size=1 64x64 sampling=center");
-  EXPECT_EQ(rows.document.timing, "- in-process");
+  EXPECT_EQ(rows.document.timing, "- process-wall");
   EXPECT_EQ(rows.document.baseline_accel, "none");
 }
 

@@ -41,14 +41,6 @@ std::string percent_decoded(const std::string& text) {
   return out;
 }
 
-// Where the user part ends: libpq reads USER[:PASSWORD] up to an '@' that comes before any '/'.
-std::size_t user_part_end(const std::string& rest) {
-  const std::size_t at = rest.find('@');
-  const std::size_t slash = rest.find('/');
-  return at != std::string::npos && (slash == std::string::npos || at < slash) ? at
-                                                                               : std::string::npos;
-}
-
 // The query with every password=... parameter dropped ("" when none is left); `dropped` gets
 // their values.
 std::string query_without_password(const std::string& query, std::vector<std::string>& dropped) {
@@ -70,8 +62,9 @@ std::string query_without_password(const std::string& query, std::vector<std::st
 }
 
 // Where the user part ends for redaction: the last '@' before the query. Wider than libpq's
-// reading (user_part_end) on purpose: a password holding an unencoded '/' or '@' is not a valid
-// URL to libpq, and must still not be printed in the error that says so.
+// reading (USER[:PASSWORD] up to an '@' before any '/') on purpose: a password holding an
+// unencoded '/' or '@' is not a valid URL to libpq, and must still not be printed in the error
+// that says so.
 std::size_t redacted_user_part_end(const std::string& rest) {
   const std::size_t question = rest.find('?');
   const std::size_t at =

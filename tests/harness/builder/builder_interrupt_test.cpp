@@ -23,8 +23,8 @@ class BuilderInterrupt : public ::testing::Test {
   ~BuilderInterrupt() override { clear_interrupt_for_testing(); }
 
   // A step that counts its runs and, unless `go` exists, writes its pid and waits; on SIGTERM
-  // it finishes its output and exits 0, as a build tool that cleans up would. (No braces: they
-  // would read as placeholders.)
+  // it finishes its output and exits 0, as a build tool that cleans up would. The script uses
+  // no braces: the adapter would expand "{...}" as one of its own placeholders ({src}, {build}).
   Adapter waiting_adapter() const {
     const std::string script =
         "echo ran >> \"$1\"; trap 'touch \"$4\"/tracer; exit 0' TERM; "

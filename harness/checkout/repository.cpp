@@ -17,6 +17,7 @@
 #include "checkout/file_lock.h"
 #include "checkout/remote_cache.h"
 #include "checkout/resolve.h"
+#include "checkout/safe_directory.h"
 #include "checkout/submodules.h"
 #include "checkout/tree_stamp.h"
 #include "checkout/tree_writer.h"
@@ -37,23 +38,6 @@ std::string without_trailing_slash(std::string path) {
 std::string local_base(git_repository* repo) {
   const char* workdir = git_repository_workdir(repo);
   return without_trailing_slash(workdir != nullptr ? workdir : git_repository_path(repo));
-}
-
-// Whether `path` is in a repository that git's ownership check refused: libgit2 1.5 reports that
-// refusal as GIT_ENOTFOUND ("config value 'safe.directory' was not found"), later versions as
-// GIT_EOWNER. Asking again with the check off tells a refused repository from no repository;
-// the check is restored at once and the repository opened that way is never used.
-std::optional<std::string> refused_for_ownership(const fs::path& path, int rc) {
-  if (rc != GIT_ENOTFOUND && rc != GIT_EOWNER) return std::nullopt;
-  int validating = 1;
-  git_libgit2_opts(GIT_OPT_GET_OWNER_VALIDATION, &validating);
-  if (validating == 0) return std::nullopt;
-  git_libgit2_opts(GIT_OPT_SET_OWNER_VALIDATION, 0);
-  git::RepositoryPtr repo;
-  const int unchecked = git_repository_open_ext(repo.out(), path.c_str(), 0, nullptr);
-  git_libgit2_opts(GIT_OPT_SET_OWNER_VALIDATION, 1);
-  if (unchecked < 0) return std::nullopt;
-  return local_base(repo.get());
 }
 
 [[noreturn]] void throw_refused(const fs::path& path, const std::string& root) {
@@ -79,7 +63,7 @@ git::RepositoryPtr open_local(const fs::path& path) {
         "repository {} does not exist; give --repo a repository path or URL", path.string()));
   }
   git::RepositoryPtr repo;
-  const int rc = git_repository_open_ext(repo.out(), path.c_str(), 0, nullptr);
+  const int rc = open_repository_as_git_does(repo, path);
   if (const auto root = refused_for_ownership(path, rc)) throw_refused(path, *root);
   if (rc == GIT_ENOTFOUND) {
     throw UsageError(fmt::format(

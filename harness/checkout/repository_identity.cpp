@@ -6,6 +6,7 @@
 
 #include "checkout/git_handle.h"
 #include "checkout/remote_cache.h"
+#include "checkout/safe_directory.h"
 
 namespace raygate {
 
@@ -24,7 +25,7 @@ git::RepositoryPtr open_repository(const std::string& location,
     const std::filesystem::path clone = clone_cache_path(std::filesystem::absolute(cache_dir),
                                                          location);
     if (git_repository_open_bare(repo.out(), clone.c_str()) < 0) repo.reset();
-  } else if (git_repository_open_ext(repo.out(), location.c_str(), 0, nullptr) < 0) {
+  } else if (open_repository_as_git_does(repo, location) < 0) {
     repo.reset();
   }
   return repo;

@@ -3,6 +3,7 @@
 
 #include "checkout/describe.h"
 #include "checkout/git_handle.h"
+#include "checkout/safe_directory.h"
 #include "checkout/worktree.h"
 #include "core/error.h"
 
@@ -54,7 +55,7 @@ Worktree describe_uncommitted_worktree(const fs::path& path) {
   }
   git::Library library;
   git::RepositoryPtr repo;
-  if (git_repository_open_ext(repo.out(), absolute.c_str(), 0, nullptr) < 0 ||
+  if (open_repository_as_git_does(repo, absolute) < 0 ||
       git_repository_is_bare(repo.get())) {
     git_error_clear();
     return unknown_tree(absolute);

@@ -8,6 +8,7 @@
 
 #include "checkout/git_fixture.h"
 #include "checkout/repository.h"
+#include "checkout/safe_directory.h"
 #include "core/error.h"
 #include "core/fs.h"
 
@@ -68,6 +69,46 @@ TEST(CheckoutRefusal, RepositoryOwnedByAnotherUserNamesTheOwnershipCheck) {
   // A folder in no repository at all still says so.
   fs::create_directories(dir.path() / "plain");
   EXPECT_NE(open_error(dir.path() / "plain", dir.path() / "cache").find("not in a git repository"),
+            std::string::npos);
+}
+
+// The rules git applies to safe.directory values, which libgit2 1.5 applies only in part.
+TEST(CheckoutRefusal, SafeDirectoryValuesFollowGitsRules) {
+  EXPECT_FALSE(safe_directory_trusts({}, "/w/repo"));
+  EXPECT_TRUE(safe_directory_trusts({"/w/repo"}, "/w/repo"));
+  EXPECT_TRUE(safe_directory_trusts({"/w/repo/"}, "/w/repo"));
+  EXPECT_TRUE(safe_directory_trusts({"*"}, "/w/repo"));
+  EXPECT_FALSE(safe_directory_trusts({"/w/other", "/w/rep"}, "/w/repo"));
+  EXPECT_FALSE(safe_directory_trusts({"*", ""}, "/w/repo")) << "an empty value resets the list";
+  EXPECT_TRUE(safe_directory_trusts({"", "*"}, "/w/repo"));
+}
+
+// `git config --global --add safe.directory '*'`, what CI containers commonly run, is honoured by
+// git and, since libgit2 1.5 ignores it, by raygate's own reading of the config.
+TEST(CheckoutRefusal, WildcardSafeDirectoryTrustsAForeignRepositoryLikeGit) {
+  if (::getuid() != 0) GTEST_SKIP() << "needs root to give a repository to another user";
+  TempDir dir("raygate-owner-wildcard");
+  const fs::path path = dir.path() / "theirs";
+  {
+    testing::GitFixture repo(path);
+    repo.write("a.txt", "a\n");
+    repo.commit("first");
+  }
+  for (const auto& entry : fs::recursive_directory_iterator(path)) {
+    ASSERT_EQ(::lchown(entry.path().c_str(), 65534, 65534), 0) << entry.path();
+  }
+  ASSERT_EQ(::lchown(path.c_str(), 65534, 65534), 0);
+  git::Library library;
+  const fs::path config = dir.path() / "config";
+  fs::create_directories(config);
+  use_config_dir(config);
+
+  write_file_atomically(config / ".gitconfig", "[safe]\n\tdirectory = *\n");
+  EXPECT_EQ(open_error(path, dir.path() / "cache"), "opened");
+
+  // An empty value after it forgets it, as in git: refused again, with the remedy.
+  write_file_atomically(config / ".gitconfig", "[safe]\n\tdirectory = *\n\tdirectory =\n");
+  EXPECT_NE(open_error(path, dir.path() / "cache").find("git config --global --add safe.directory"),
             std::string::npos);
 }
 

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Checks raygate's CI templates (ci/github/, ci/gitlab/) and the main job (ci/main-job):
+"""Checks raygate's CI templates (ci/github/, ci/gitlab/), the main job (ci/main-job) and the
+results branch script (ci/results-branch):
 
 1. every YAML template parses (python3-yaml) and has the structure its platform needs: the
    composite action `runs.using: composite`, the reusable workflow `on.workflow_call`, the
@@ -160,6 +161,11 @@ def check_structure(root):
     need(any(s.get("with", {}).get("fetch-depth") == 0 for s in caller_steps),
          "example-caller.yml: checkout needs fetch-depth: 0")
 
+    fork = yaml.safe_load((gh / "comment-from-fork.yml").read_text())
+    need("workflow_run" in workflow_on(fork), "comment-from-fork.yml: on.workflow_run expected")
+    fork_runs = [s.get("run", "") for job in fork.get("jobs", {}).values() for s in job.get("steps", [])]
+    need(any("ci/pr-comment github" in r for r in fork_runs), "comment-from-fork.yml: must post with ci/pr-comment")
+
     gl = root / "ci" / "gitlab"
     template = yaml.safe_load((gl / "raygate.gitlab-ci.yml").read_text())
     need("RAYGATE_ADAPTER" in template.get("variables", {}), "raygate.gitlab-ci.yml: variable RAYGATE_ADAPTER")
@@ -206,9 +212,10 @@ def main():
         found, count = check_commands(raygate, str(path.relative_to(root)), shell_texts(yaml.safe_load(path.read_text())))
         problems += found
         total += count
-    found, count = check_commands(raygate, "ci/main-job", [(root / "ci" / "main-job").read_text()])
-    problems += found
-    total += count
+    for script in ("main-job", "results-branch"):
+        found, count = check_commands(raygate, f"ci/{script}", [(root / "ci" / script).read_text()])
+        problems += found
+        total += count
     for problem in problems:
         print("FAIL " + problem)
     if total < 4:

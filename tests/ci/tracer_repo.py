@@ -1,6 +1,6 @@
 """The fixture tracer (tests/fixtures/nff_tracer) as a tracer project's repository for the CI
 template tests: branch main (the tracer), branch slower (every pixel traced four times: the same
-image, about four times the time), a two-scene suite in raygate/suite.json, and a bare `origin`
+image, about four times the time), a one-scene suite in raygate/suite.json, and a bare `origin`
 holding both branches, as a CI checkout has.
 """
 import pathlib
@@ -8,10 +8,9 @@ import subprocess
 
 SUITE = """{
   "name": "tiny",
-  "description": "the CI template tests: two small scenes",
+  "description": "the CI template tests: one small scene",
   "scenes": [
-    {"id": "tetra", "scene": "tetra", "size": 4, "resolution": [128, 128]},
-    {"id": "balls", "scene": "balls", "size": 2, "resolution": [128, 128]}
+    {"id": "tetra", "scene": "tetra", "size": 4, "resolution": [128, 128]}
   ]
 }
 """

@@ -29,17 +29,6 @@ namespace fs = std::filesystem;
 namespace raygate {
 namespace {
 
-std::string without_trailing_slash(std::string path) {
-  while (path.size() > 1 && path.back() == '/') path.pop_back();
-  return path;
-}
-
-// Where the user's files are (or the git dir of a bare repository): what "../sub" is relative to.
-std::string local_base(git_repository* repo) {
-  const char* workdir = git_repository_workdir(repo);
-  return without_trailing_slash(workdir != nullptr ? workdir : git_repository_path(repo));
-}
-
 [[noreturn]] void throw_refused(const fs::path& path, const std::string& root) {
   struct stat info {};
   std::string owner = "another user";
@@ -120,7 +109,7 @@ Repository Repository::open(const std::string& location, const fs::path& cache_d
     out.fallback_prefix_ = "origin/";
   } else {
     out.repo_ = open_local(fs::absolute(location));
-    out.url_base_ = local_base(out.repo_.get());
+    out.url_base_ = repository_root(out.repo_.get());  // what "../sub" is relative to
     out.where_ = out.url_base_;
   }
   return out;

@@ -29,6 +29,11 @@ void append_level(git_config* all, git_config_level_t level, std::vector<std::st
 
 }  // namespace
 
+std::string repository_root(git_repository* repo) {
+  const char* workdir = git_repository_workdir(repo);
+  return without_trailing_slash(workdir != nullptr ? workdir : git_repository_path(repo));
+}
+
 std::optional<std::string> refused_for_ownership(const fs::path& path, int rc) {
   if (rc != GIT_ENOTFOUND && rc != GIT_EOWNER) return std::nullopt;
   int validating = 1;
@@ -39,8 +44,7 @@ std::optional<std::string> refused_for_ownership(const fs::path& path, int rc) {
   const int unchecked = git_repository_open_ext(repo.out(), path.c_str(), 0, nullptr);
   git_libgit2_opts(GIT_OPT_SET_OWNER_VALIDATION, 1);
   if (unchecked < 0) return std::nullopt;
-  const char* workdir = git_repository_workdir(repo.get());
-  return without_trailing_slash(workdir != nullptr ? workdir : git_repository_path(repo.get()));
+  return repository_root(repo.get());
 }
 
 bool safe_directory_trusts(const std::vector<std::string>& values, const std::string& root) {

@@ -23,6 +23,10 @@ bool safe_directory_trusts(const std::vector<std::string>& values, const std::st
 // repository's own config), lowest precedence first.
 std::vector<std::string> protected_safe_directories();
 
+// Where a repository's files are (its work tree, or its git dir when bare), without a trailing
+// slash: the folder git's ownership check and safe.directory are about.
+std::string repository_root(git_repository* repo);
+
 // When `rc`, the code of opening `path`, is git's ownership check refusing a repository (libgit2
 // 1.5 reports it as GIT_ENOTFOUND, later versions as GIT_EOWNER): that repository's root, the
 // folder safe.directory must name (its work tree, or its git dir when bare). Asks once more with

@@ -4,7 +4,8 @@
 `origin`, and a local stand-in for the GitHub API (fake_forge.py):
 
 0. the workspace belongs to `nobody` and the job runs as root, as in a `container:` job; before
-   the action, raygate refuses it, names git's ownership check and the exact safe.directory fix;
+   the action, raygate refuses it, names git's ownership check and the exact safe.directory fix,
+   and opens it once the global git config says `safe.directory = *`;
 1. a push to main: the action trusts the workspace (safe.directory), runs and records the
    tracer, pushes the document and the dashboard to the `raygate-results` branch of origin,
    writes the job summary and the artifact (results.json, report.html, junit.xml, ...), and
@@ -57,6 +58,7 @@ def job(root, workspace, forge, event_name, event, github, bin_dir, source, env,
                               {"adapter": "make-nff", "suite": "raygate/suite.json",
                                "extra-args": f"--max-rounds {rounds} --max-seconds 20",
                                "raygate-bin": str(bin_dir)})
+    print("     " + ", ".join(f"{name} {seconds:.1f} s" for name, seconds in runner.durations if seconds >= 1))
     return runner, steps
 
 
@@ -84,6 +86,15 @@ def main():
         check(r.returncode == 2 and
               f"git config --global --add safe.directory {workspace}" in r.stderr + r.stdout,
               "a workspace owned by nobody is refused with the safe.directory fix, exit 2")
+        # git's `safe.directory = *`, which libgit2 1.5 ignores, is honoured: the repository opens
+        # (and the made-up revision is what fails).
+        (home / ".gitconfig").write_text("[safe]\n\tdirectory = *\n")
+        r = subprocess.run([str(bin_dir / "raygate"), "run", "--repo", str(workspace), "--rev", "no-such-rev",
+                            "--adapter", "make-nff", "--no-store"], env=dict(os.environ, **env),
+                           capture_output=True, text=True, timeout=60)
+        check(r.returncode == 2 and "no-such-rev" in r.stderr + r.stdout and "git refuses" not in r.stderr + r.stdout,
+              "safe.directory '*' in the global git config opens the foreign-owned workspace")
+        (home / ".gitconfig").unlink()
 
         # 1. A push to main: run, record, results branch, dashboard.
         main_sha = tracer_repo.git(workspace, "-c", "safe.directory=*", "rev-parse", "HEAD")

@@ -191,6 +191,7 @@ class Runner:
         self.log = []
         self.failed = False
         self.post_steps = []
+        self.durations = []   # (step name, seconds)
 
     def run_action(self, action_dir, with_inputs):
         action_dir = pathlib.Path(action_dir)
@@ -258,10 +259,12 @@ class Runner:
             steps_context[step_id] = {"outputs": {}, "outcome": "skipped", "conclusion": "skipped"}
             return
         self.log.append(f"run: {name}")
+        started = time.monotonic()
         if "run" in step:
             outputs, ok = self.run_shell(step, inputs, steps_context, action_dir)
         else:
             outputs, ok = self.run_uses(step, inputs, steps_context)
+        self.durations.append((name, time.monotonic() - started))
         outcome = "success" if ok else "failure"
         steps_context[step_id] = {"outputs": outputs, "outcome": outcome, "conclusion": outcome}
         if not ok:

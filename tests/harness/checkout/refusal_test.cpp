@@ -35,10 +35,9 @@ void use_config_dir(const fs::path& dir) {
   }
 }
 
-TEST(CheckoutRefusal, RepositoryOwnedByAnotherUserNamesTheOwnershipCheck) {
-  if (::getuid() != 0) GTEST_SKIP() << "needs root to give a repository to another user";
-  TempDir dir("raygate-owner");
-  const fs::path path = dir.path() / "theirs";
+// A repository of one commit at `path`, given to `nobody` (uid 65534), as a CI checkout made by
+// another user than the job's.
+void commit_and_give_to_nobody(const fs::path& path) {
   {
     testing::GitFixture repo(path);
     repo.write("a.txt", "a\n");
@@ -49,6 +48,13 @@ TEST(CheckoutRefusal, RepositoryOwnedByAnotherUserNamesTheOwnershipCheck) {
   for (const auto& entry : fs::recursive_directory_iterator(path)) {
     ASSERT_EQ(::lchown(entry.path().c_str(), nobody, nobody), 0) << entry.path();
   }
+}
+
+TEST(CheckoutRefusal, RepositoryOwnedByAnotherUserNamesTheOwnershipCheck) {
+  if (::getuid() != 0) GTEST_SKIP() << "needs root to give a repository to another user";
+  TempDir dir("raygate-owner");
+  const fs::path path = dir.path() / "theirs";
+  commit_and_give_to_nobody(path);
   git::Library library;  // keeps the search paths set below for the opens in this test
   const fs::path config = dir.path() / "config";
   fs::create_directories(config);
@@ -89,15 +95,7 @@ TEST(CheckoutRefusal, WildcardSafeDirectoryTrustsAForeignRepositoryLikeGit) {
   if (::getuid() != 0) GTEST_SKIP() << "needs root to give a repository to another user";
   TempDir dir("raygate-owner-wildcard");
   const fs::path path = dir.path() / "theirs";
-  {
-    testing::GitFixture repo(path);
-    repo.write("a.txt", "a\n");
-    repo.commit("first");
-  }
-  for (const auto& entry : fs::recursive_directory_iterator(path)) {
-    ASSERT_EQ(::lchown(entry.path().c_str(), 65534, 65534), 0) << entry.path();
-  }
-  ASSERT_EQ(::lchown(path.c_str(), 65534, 65534), 0);
+  commit_and_give_to_nobody(path);
   git::Library library;
   const fs::path config = dir.path() / "config";
   fs::create_directories(config);

@@ -69,7 +69,7 @@ def main():
     if os.getuid() != 0:
         print("SKIP: needs root, to give the workspace to another user as a container job has it")
         return SKIP
-    bin_dir, source = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
+    bin_dir, source = pathlib.Path(sys.argv[1]).resolve(), pathlib.Path(sys.argv[2]).resolve()
     with tempfile.TemporaryDirectory(prefix="raygate-gh-") as tmp, fake_forge.Forge("test-token") as forge:
         tmp = pathlib.Path(tmp)
         workspace = tracer_repo.make(tmp, source)

@@ -32,16 +32,19 @@ def main():
         job_b = tmp / "job-b"
         tracer_repo.git(tmp, "clone", "--quiet", str(origin), str(job_b))
         env = dict(os.environ, RAYGATE=str(raygate))
-        doc = tmp / "results.json"
-        doc.write_text('{"schema_version": 1}\n')   # results-branch stores bytes; pull parses them
+        # results-branch stores bytes; pull parses them. Two documents of the same commit, pushed
+        # within the same second: both must be kept.
+        doc_a, doc_b = tmp / "a.json", tmp / "b.json"
+        doc_a.write_text('{"schema_version": 1, "job": "a"}\n')
+        doc_b.write_text('{"schema_version": 1, "job": "b"}\n')
 
         # Job A's push, run from B's pre-push hook the first time B pushes.
         hook = job_b / ".git" / "hooks" / "pre-push"
         hook.write_text(f"#!/bin/sh\n[ -e {tmp}/raced ] && exit 0\ntouch {tmp}/raced\n"
-                        f"cd {job_a} && {script} push {doc} >/dev/null\n")
+                        f"cd {job_a} && {script} push {doc_a} >/dev/null\n")
         hook.chmod(0o755)
         head_before = tracer_repo.git(job_b, "rev-parse", "HEAD")
-        out = run(job_b, str(script), "push", str(doc), env=env)
+        out = run(job_b, str(script), "push", str(doc_b), env=env)
         assert (tmp / "raced").exists(), "the hook did not run: the race was not staged"
         assert "push attempt 1 refused" in out, out
         files = tracer_repo.git(origin, "ls-tree", "-r", "--name-only", "raygate-results").split()

@@ -148,7 +148,9 @@ def main():
         runner, _ = job(tmp / "job3", workspace, forge, "pull_request", pr_event, pr_github,
                         bin_dir, source, env, rounds=1)
         comments = forge.comments.get("7", [])
-        check(len(comments) == 1 and comments[0]["id"] == first_id and "REGRESSED" not in comments[0]["body"] and ("PATCH", f"/repos/octo/tracer/issues/comments/{first_id}") in forge.requests,
+        edit = ("PATCH", f"/repos/octo/tracer/issues/comments/{first_id}")
+        check(len(comments) == 1 and comments[0]["id"] == first_id
+              and "REGRESSED" not in comments[0]["body"] and edit in forge.requests,
               "pull request, second push: the same comment was updated in place", runner)
         print(json.dumps({"requests": forge.requests}))
     return 0

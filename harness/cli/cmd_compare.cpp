@@ -8,6 +8,7 @@
 
 #include "checkout/repository.h"
 #include "cli/commands.h"
+#include "cli/console.h"
 #include "cli/report_options.h"
 #include "cli/store_options.h"
 #include "cli/measure_options.h"
@@ -48,7 +49,7 @@ int compare_command(const CompareArgs& args) {
   }
   const MeasureContext context = load_measure_context(args.measure);
   check_report_specs(args.reports);
-  check_output_path(args.out, "--out");
+  check_output_path(args.out, "--output");
   const BaselineTool baseline(context.tools.baseline);
   const Repository repository = Repository::open(args.measure.repo, context.cache_dir);
   const Worktree head = repository.checkout(args.head);
@@ -78,8 +79,11 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   command->add_option("--base-branch", args->base_branch,
                       "use the merge base of head and this branch as the base");
   command->add_option("--head", args->head, "head revision")->capture_default_str();
-  command->add_option("--out", args->out,
-                      "results document (default: <cache-dir>/runs/<time>-<base>-<head>/results.json)");
+  add_deprecated_alias(*command, "--out",
+                       command->add_option("-o,--output", args->out,
+                                           "results document (default: "
+                                           "<cache-dir>/runs/<time>-<base>-<head>/results.json)"),
+                       args->out);
   command->add_flag("--fail-on-inconclusive", args->fail_on_inconclusive,
                     "an INCONCLUSIVE change fails the gate instead of warning");
   add_record_options(*command, args->record);

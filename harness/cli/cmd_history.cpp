@@ -1,12 +1,13 @@
 // `raygate history`: the normalized ratio and image error of each scene over commits, from the
 // results store, one table per repository and adapter with each series' trend (store/series.h),
-// and a note when the machine drifted rather than the code. `--json` for machines, `--html DIR`
+// and a note when the machine drifted rather than the code. `--format json` for machines, `--html DIR`
 // for a page of plots. Exit 0, 2 for a bad store.
 #include <fmt/core.h>
 
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/console.h"
 #include "cli/history_view.h"
 #include "cli/store_commands.h"
 #include "cli/store_options.h"
@@ -27,7 +28,7 @@ struct HistoryArgs {
   std::string suite;
   std::string series;
   bool include_dirty = false;
-  bool json = false;
+  std::string format;  // text, json
   std::string html_dir;
 };
 
@@ -73,7 +74,7 @@ int history_command(const HistoryArgs& args) {
   view.role = args.role;
   view.branch = args.branch;
   if (!args.html_dir.empty()) write_html(view, args.html_dir);
-  if (args.json) {
+  if (args.format == "json") {
     fmt::print("{}\n", history_json(view).dump(1));
   } else {
     fmt::print("{}", history_table(view));
@@ -96,7 +97,7 @@ void add_history_command(CLI::App& app, int& exit_code) {
   command->add_option("--adapter", args->adapter, "only results measured with this adapter");
   command->add_option("--suite", args->suite, "only results of this suite");
   command->add_option("--series", args->series,
-                      "only this series (an id from --json, or its first digits)");
+                      "only this series (an id from --format json, or its first digits)");
   command
       ->add_option("--role", args->role,
                    "which revision of a document: tracer (run), head or base (compare), any")
@@ -104,7 +105,7 @@ void add_history_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_flag("--include-dirty", args->include_dirty,
                     "also trees measured with local changes (each its own point)");
-  command->add_flag("--json", args->json, "machine-readable output on stdout");
+  add_format_option(*command, args->format, {"text", "json"}, true);
   command->add_option("--html", args->html_dir, "also write DIR/history.html with SVG plots");
   command->callback([args, &exit_code] { exit_code = history_command(*args); });
 }

@@ -8,8 +8,10 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/console.h"
 #include "cli/report_options.h"
 #include "cli/store_options.h"
+#include "core/error.h"
 #include "gate/policy.h"
 #include "gate/verdict.h"
 #include "store/merge.h"
@@ -37,6 +39,7 @@ void print_scores(const ResultsDocument& document) {
 }
 
 int merge_command(const MergeArgs& args) {
+  if (args.out.empty()) throw UsageError("merge: --output is required (the merged document)");
   check_report_specs(args.reports);
   std::vector<MergeInput> inputs;
   for (const std::string& path : args.documents) inputs.push_back({path, read_results(path)});
@@ -81,7 +84,10 @@ void add_merge_command(CLI::App& app, int& exit_code) {
                "and gate it");
   command->add_option("documents", args->documents, "the shards' results documents")
       ->required();
-  command->add_option("-o,--out", args->out, "the merged results document")->required();
+  add_deprecated_alias(*command, "--out",
+                       command->add_option("-o,--output", args->out,
+                                           "the merged results document (required)"),
+                       args->out);
   command->add_option("--cache-dir", args->cache_dir,
                       "the default store is <cache-dir>/results.db, as for run")
       ->capture_default_str();

@@ -8,6 +8,7 @@
 
 #include "checkout/repository.h"
 #include "cli/commands.h"
+#include "cli/console.h"
 #include "cli/report_options.h"
 #include "cli/measure_options.h"
 #include "cli/measure_session.h"
@@ -46,7 +47,7 @@ std::pair<Worktree, std::string> locate_tree(const RunArgs& args, const MeasureC
 int run_command(const RunArgs& args) {
   const MeasureContext context = load_measure_context(args.measure);
   check_report_specs(args.reports);
-  check_output_path(args.out, "--out");
+  check_output_path(args.out, "--output");
   const BaselineTool baseline(context.tools.baseline);
   const auto [worktree, repository] = locate_tree(args, context);
   const PreparedRevision tracer = prepare_revision("tracer", repository, worktree, context,
@@ -102,8 +103,11 @@ void add_run_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_option("--worktree", args->worktree,
                       "measure this directory as it is, uncommitted changes included");
-  command->add_option("--out", args->out,
-                      "results document (default: <cache-dir>/runs/<time>-<sha>/results.json)");
+  add_deprecated_alias(*command, "--out",
+                       command->add_option("-o,--output", args->out,
+                                           "results document (default: "
+                                           "<cache-dir>/runs/<time>-<sha>/results.json)"),
+                       args->out);
   add_record_options(*command, args->record);
   add_report_options(*command, args->reports);
   command->callback([args, &exit_code] { exit_code = run_command(*args); });

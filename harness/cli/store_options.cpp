@@ -45,7 +45,7 @@ std::filesystem::path record_store_path(const RecordArgs& args,
 
 void record_results(const ResultsDocument& document, const RecordArgs& args,
                     const std::filesystem::path& cache_dir,
-                    const std::filesystem::path& document_path) {
+                    const std::filesystem::path& document_path, const Console& console) {
   if (args.no_store) return;
   const std::string location = record_store_path(args, cache_dir).string();
   const std::string printable = redact_postgresql_url(location);  // a URL's password stays out
@@ -53,9 +53,10 @@ void record_results(const ResultsDocument& document, const RecordArgs& args,
     const auto store = open_store(location, StoreOpen::create_if_missing);
     const std::string branch = branch_of(document, args.branch);
     const AddOutcome outcome = store->add(document, branch);
-    fmt::print("{} {} as document {}{}\n", outcome.duplicate ? "already stored in" : "stored in",
-               store->location(), outcome.document_id,
-               branch.empty() ? "" : " (branch " + branch + ")");
+    console.info(fmt::format("{} {} as document {}{}",
+                             outcome.duplicate ? "already stored in" : "stored in",
+                             store->location(), outcome.document_id,
+                             branch.empty() ? "" : " (branch " + branch + ")"));
   } catch (const std::exception& e) {  // raygate's errors and the file system's
     fmt::print(stderr,
                "raygate: warning: results not stored: {}\n  the document is kept at {}; store it "

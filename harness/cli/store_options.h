@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <string>
 
+#include "cli/console.h"
 #include "store/results.h"
 
 namespace raygate::cli {
@@ -29,11 +30,11 @@ void add_record_options(CLI::App& command, RecordArgs& args);
 std::filesystem::path record_store_path(const RecordArgs& args,
                                         const std::filesystem::path& cache_dir);
 
-// Stores the finished document (complete or not: the store keeps the flag) and prints where.
+// Stores the finished document (complete or not: the store keeps the flag) and says where.
 // A store that cannot be written is a warning on stderr, not a failure of the measurement: the
 // document file stays, and the warning says how to import it later.
 void record_results(const ResultsDocument& document, const RecordArgs& args,
                     const std::filesystem::path& cache_dir,
-                    const std::filesystem::path& document_path);
+                    const std::filesystem::path& document_path, const Console& console);
 
 }  // namespace raygate::cli

@@ -176,7 +176,7 @@ TEST_F(Conventions, RunReportJsonToStandardOutputIsPureJson) {
   EXPECT_EQ(report["verdict"], "pass");
   EXPECT_EQ(report["scenes"][0]["id"], "tetra");
   EXPECT_THAT(r.err, HasSubstr("measuring make-nff"));
-  EXPECT_THAT(r.err, HasSubstr("gate: PASS"));
+  EXPECT_THAT(r.err, HasSubstr("raygate: pass (1 scene"));  // the console table
 
   std::vector<std::string> quiet = run;
   quiet.insert(quiet.begin() + 1, "--quiet");

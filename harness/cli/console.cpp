@@ -75,7 +75,7 @@ CLI::Option* add_deprecated_alias(CLI::App& command, const std::string& old_name
                                   CLI::Option* current, std::string& variable) {
   const std::string current_name = "--" + current->get_lnames().front();
   CLI::Option* alias = command.add_option(old_name, variable, "deprecated: use " + current_name);
-  alias->group("")->excludes(current)->each([old_name, current_name](const std::string&) {
+  alias->group("Deprecated")->excludes(current)->each([old_name, current_name](const std::string&) {
     deprecation_note(old_name, current_name);
   });
   return alias;
@@ -98,7 +98,7 @@ CLI::Option* add_format_option(CLI::App& command, std::string& format,
                              format = "json";
                            },
                            "deprecated: use --format json")
-        ->group("")
+        ->group("Deprecated")
         ->excludes(option);
   }
   return option;

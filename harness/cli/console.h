@@ -48,7 +48,7 @@ class Console {
 Console console_of(const CLI::App& command);
 
 // `old_name` as a deprecated spelling of the option `current` (already added): the same
-// variable, hidden from --help, exclusive with `current`, and a one-line note on standard
+// variable, listed under "Deprecated" in --help, exclusive with `current`, and a one-line note on standard
 // error when used.
 CLI::Option* add_deprecated_alias(CLI::App& command, const std::string& old_name,
                                   CLI::Option* current, std::string& variable);

@@ -18,37 +18,24 @@ namespace {
 
 struct AlertArgs {
   std::string store = kDefaultStorePath;
-  std::string branch;
-  std::vector<std::string> scenes;
-  std::string repository;
-  std::string adapter;
-  std::string suite;
-  std::string role = "tracer";
-  std::size_t last = 30;
+  HistoryQuery query = [] {
+    HistoryQuery q;
+    q.last_commits = 30;  // enough for a change point with history on both sides
+    return q;
+  }();
   std::string policy;
   std::string on_regression = "fail";
   std::string format;
   EDivisiveOptions detection;
 };
 
-HistoryQuery alert_query(const AlertArgs& args) {
-  HistoryQuery query;
-  query.branch = args.branch;
-  query.scenes = args.scenes;
-  query.role = args.role;
-  query.last_commits = args.last;
-  query.repository = args.repository;
-  query.adapter = args.adapter;
-  query.suite = args.suite;
-  return query;
-}
-
 int alert_command(const AlertArgs& args, const Console& console) {
   const GatePolicy policy = args.policy.empty() ? GatePolicy{} : load_policy(args.policy);
   const auto store = open_store(args.store, StoreOpen::must_exist);
-  const std::vector<HistoryRow> rows = store->history(alert_query(args));
-  console.info(fmt::format("judging the last {} commits{} of {}: {} measurements", args.last,
-                           args.branch.empty() ? "" : " of branch " + args.branch,
+  const std::vector<HistoryRow> rows = store->history(args.query);
+  console.info(fmt::format("judging the last {} commits{} of {}: {} measurements",
+                           args.query.last_commits,
+                           args.query.branch.empty() ? "" : " of branch " + args.query.branch,
                            store->location(), rows.size()));
   const AlertJudgement judgement = judge_history(
       rows, policy, args.detection, parse_alert_action(args.on_regression));
@@ -72,18 +59,9 @@ void add_alert_command(CLI::App& app, int& exit_code) {
   CLI::App* command = app.add_subcommand(
       "alert", "flag a slowdown that landed: change points in each series' history (docs/gate.md)");
   add_store_option(*command, args->store, kDefaultStorePath);
-  command->add_option("--branch", args->branch, "only results recorded under this branch");
-  command->add_option("--scene", args->scenes, "only these suite scene ids (repeatable)");
-  command->add_option("--repository", args->repository,
-                      "only the repository whose key contains this text");
-  command->add_option("--adapter", args->adapter, "only results measured with this adapter");
-  command->add_option("--suite", args->suite, "only results of this suite");
-  command
-      ->add_option("--role", args->role,
-                   "which revision of a document: tracer (run), head or base (compare), any")
-      ->check(CLI::IsMember({"tracer", "head", "base", "any"}))
-      ->capture_default_str();
-  command->add_option("--last", args->last, "the newest N commits are the history judged")
+  add_history_filters(*command, args->query);
+  command->add_option("--last", args->query.last_commits,
+                      "the newest N commits are the history judged")
       ->check(CLI::Range(2, 100000))
       ->capture_default_str();
   command->add_option("--policy", args->policy,

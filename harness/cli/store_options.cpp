@@ -29,6 +29,21 @@ CLI::Option* add_store_option(CLI::App& command, std::string& store,
       ->check(CLI::Validator(check_store_location, "PATH", "store location"));
 }
 
+void add_history_filters(CLI::App& command, HistoryQuery& query) {
+  command.add_option("--branch", query.branch, "only results recorded under this branch");
+  command.add_option("--scene", query.scenes, "only these suite scene ids (repeatable)");
+  command.add_option("--repository", query.repository,
+                     "only the repository whose key contains this text (its root commit sha or "
+                     "URL, as history's table headings show)");
+  command.add_option("--adapter", query.adapter, "only results measured with this adapter");
+  command.add_option("--suite", query.suite, "only results of this suite");
+  command
+      .add_option("--role", query.role,
+                  "which revision of a document: tracer (run), head or base (compare), any")
+      ->check(CLI::IsMember({"tracer", "head", "base", "any"}))
+      ->capture_default_str();
+}
+
 void add_record_options(CLI::App& command, RecordArgs& args) {
   CLI::Option* store = add_store_option(command, args.store, "<cache-dir>/results.db");
   command.add_flag("--no-store", args.no_store, "do not record the results in the store")

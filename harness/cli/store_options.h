@@ -10,12 +10,17 @@
 
 #include "cli/console.h"
 #include "store/results.h"
+#include "store/store.h"
 
 namespace raygate::cli {
 
 // --store PATH: `default_text` is shown in --help (where the store is when it is not given).
 CLI::Option* add_store_option(CLI::App& command, std::string& store,
                               const std::string& default_text);
+
+// The filters of the commands that read history (history, alert), bound straight into `query`:
+// --branch, --scene, --repository, --adapter, --suite, --role.
+void add_history_filters(CLI::App& command, HistoryQuery& query);
 
 struct RecordArgs {
   std::string store;  // "" -> <cache-dir>/results.db

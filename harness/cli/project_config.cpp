@@ -39,11 +39,12 @@ std::string line_of(const std::string& text, const std::string& key) {
 std::string resolve(const std::string& key, const std::string& value,
                     const std::filesystem::path& folder) {
   if (value.empty() || is_url(value) || std::filesystem::path(value).is_absolute()) return value;
-  const std::filesystem::path beside = folder / value;
-  if (key == "adapter" || key == "suite") {  // a name of a shipped one, or a file
-    return std::filesystem::exists(beside) ? beside.lexically_normal().string() : value;
+  std::filesystem::path beside = (folder / value).lexically_normal();
+  if (!beside.has_filename()) beside = beside.parent_path();  // "dir/.." is "/tmp/", not "/tmp"
+  if (key == "adapter" || key == "suite") {  // the name of a shipped one, or a file (not a folder)
+    return std::filesystem::is_regular_file(beside) ? beside.string() : value;
   }
-  return beside.lexically_normal().string();
+  return beside.string();
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 // good commit in the same job (compare_session), so every decision is a paired measurement, not
 // a comparison of numbers taken at different times. A commit that does not build is skipped,
 // as `git bisect skip` would; if skips hide the answer, the range that holds it is printed.
+// Each step is said on standard error; the answer goes to standard output, as text or, with
+// --format json, as one JSON object with every step.
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -12,6 +14,7 @@
 #include "checkout/repository.h"
 #include "cli/commands.h"
 #include "cli/compare_session.h"
+#include "cli/console.h"
 #include "cli/revision_setup.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
@@ -25,15 +28,41 @@ struct BisectArgs {
   std::string good;
   std::string bad;
   std::string metric = "ratio";  // ratio | image
+  std::string format;            // text | json
 };
 
 enum class Step { good, bad, skipped };
+
+std::string_view step_name(Step step) {
+  return step == Step::good ? "good" : step == Step::bad ? "bad" : "skipped";
+}
+
+nlohmann::json revision_json(const Revision& r) {
+  return {{"sha", r.sha}, {"short_sha", r.short_sha}, {"subject", r.subject},
+          {"author", r.author}, {"commit_time", r.commit_time}};
+}
+
+// One judged commit, for --format json.
+nlohmann::json step_json(const Revision& candidate, Step step, const SceneResult* scene,
+                         const std::string& why) {
+  nlohmann::json j = revision_json(candidate);
+  j["outcome"] = step_name(step);
+  if (!why.empty()) j["reason"] = why;
+  if (scene != nullptr && scene->change) {
+    j["change"] = scene->change->change;
+    j["change_interval"] = {scene->change->change_interval.lower,
+                            scene->change->change_interval.upper};
+    j["verdict"] = scene->change_verdict;
+  }
+  return j;
+}
 
 struct Bisector {
   const BisectArgs& args;
   const MeasureContext& context;
   const BaselineTool& baseline;
   const Repository& repository;
+  const Console& console;
   Worktree good;
   // The slowdown that separates good from bad. The bad end is judged against the policy's limit;
   // after that a step is bad when its change is above half of what the bad end's surely is (the
@@ -41,34 +70,39 @@ struct Bisector {
   // split at +13.6% called the culprit good). So a commit with a small unrelated change (+1%
   // where the culprit made +10%) is not called the culprit by a median straying over 3%.
   std::optional<double> split;
+  nlohmann::json steps = nlohmann::json::array();  // every judged commit, in the order judged
 
   // Measures `candidate` against the good commit on the one scene and says which side it is on.
   Step judge(const Revision& candidate) {
     const Worktree tree = repository.materialize(candidate);
     const BuildRecord build = build_revision(tree, context, baseline.source_hash(), context.jobs);
     if (!build.success) {
-      fmt::print("  {} {}: does not build ({}), skipped\n", candidate.short_sha, candidate.subject,
-                 build.failure);
+      console.info(fmt::format("  {} {}: does not build ({}), skipped", candidate.short_sha,
+                               candidate.subject, build.failure));
+      steps.push_back(step_json(candidate, Step::skipped, nullptr, "does not build: " + build.failure));
       return Step::skipped;
     }
     const ResultsDocument document =
         measure_compare({context, baseline, repository.location(), good, tree, {}}, nullptr);
     const SceneResult& scene = document.scenes.front();
     if (scene.runs.failed()) {
-      fmt::print("  {} {}: could not be measured ({}), skipped\n", candidate.short_sha,
-                 candidate.subject, scene.runs.failed_run->failure);
+      console.info(fmt::format("  {} {}: could not be measured ({}), skipped", candidate.short_sha,
+                               candidate.subject, scene.runs.failed_run->failure));
+      steps.push_back(step_json(candidate, Step::skipped, &scene,
+                                "could not be measured: " + scene.runs.failed_run->failure));
       return Step::skipped;
     }
     const bool bad = args.metric == "image" ? image_failed(scene) : speed_regressed(scene);
-    fmt::print("  {} {}: {} -> {}\n", candidate.short_sha, candidate.subject, describe(scene),
-               bad ? "bad" : "good");
+    console.info(fmt::format("  {} {}: {} -> {}", candidate.short_sha, candidate.subject,
+                             describe(scene), bad ? "bad" : "good"));
+    steps.push_back(step_json(candidate, bad ? Step::bad : Step::good, &scene, ""));
     if (bad && !split && scene.change) {
       const double limit = context.policy.for_scene(scene.entry.id).max_slowdown;
       split = std::max(limit, scene.change->change_interval.lower / 2);
       if (args.metric == "ratio") {
-        fmt::print("  later steps are bad above {:+.1f}% (half the lower end of this one's CI, "
-                   "or the limit)\n",
-                   100 * *split);
+        console.info(fmt::format("  later steps are bad above {:+.1f}% (half the lower end of "
+                                 "this one's CI, or the limit)",
+                                 100 * *split));
       }
     }
     return bad ? Step::bad : Step::good;
@@ -112,26 +146,46 @@ std::optional<std::size_t> next_probe(const std::vector<std::optional<Step>>& st
   return std::nullopt;
 }
 
-int bisect_command(const BisectArgs& args) {
+// The answer on standard output: text, or the whole bisection as JSON.
+int answer(const BisectArgs& args, const Bisector& bisector, const std::string& scene,
+           std::size_t candidates, const std::string& text, const nlohmann::json& found,
+           ExitCode code) {
+  if (args.format == "json") {
+    const nlohmann::json j = {{"scene", scene},          {"metric", args.metric},
+                              {"good", bisector.good.sha}, {"bad", args.bad},
+                              {"candidates", candidates}, {"steps", bisector.steps},
+                              {"result", found},          {"exit_code", to_int(code)}};
+    fmt::print("{}\n", j.dump(1));
+  } else {
+    fmt::print("{}\n", text);
+  }
+  return to_int(code);
+}
+
+int bisect_command(const BisectArgs& args, const Console& console) {
   if (args.measure.scenes.size() != 1) {
     throw UsageError("bisect follows one scene: pass exactly one --scene");
   }
-  const MeasureContext context = load_measure_context(args.measure);
+  MeasureContext context = load_measure_context(args.measure);
+  context.quiet = console.quiet();
   const BaselineTool baseline(context.tools.baseline);
   const Repository repository = Repository::open(args.measure.repo, context.cache_dir);
   const std::vector<Revision> candidates = repository.first_parent_history(args.good, args.bad);
-  Bisector bisector{args, context, baseline, repository, repository.checkout(args.good),
-                    std::nullopt};
-  fmt::print("bisecting {} commits after {} on scene {} by {}\n", candidates.size(),
-             bisector.good.short_sha, context.scenes.front().id, args.metric);
+  Bisector bisector{args,    context, baseline, repository, console, repository.checkout(args.good),
+                    std::nullopt, nlohmann::json::array()};
+  const std::string scene = context.scenes.front().id;
+  console.info(fmt::format("bisecting {} commits after {} on scene {} by {}", candidates.size(),
+                           bisector.good.short_sha, scene, args.metric));
 
   std::vector<std::optional<Step>> steps(candidates.size());
   const std::size_t last = candidates.size() - 1;
   steps[last] = bisector.judge(candidates[last]);
   if (steps[last] != Step::bad) {
-    fmt::print("{} is not worse than {} on this scene; nothing to bisect\n",
-               candidates[last].short_sha, bisector.good.short_sha);
-    return to_int(steps[last] == Step::skipped ? ExitCode::infrastructure : ExitCode::usage);
+    return answer(args, bisector, scene, candidates.size(),
+                  fmt::format("{} is not worse than {} on this scene; nothing to bisect",
+                              candidates[last].short_sha, bisector.good.short_sha),
+                  {{"kind", "not_worse"}, {"bad", revision_json(candidates[last])}},
+                  steps[last] == Step::skipped ? ExitCode::infrastructure : ExitCode::usage);
   }
   long low = -1;  // index of the last known good (-1: the good revision itself)
   long high = static_cast<long>(last);  // index of the first known bad
@@ -142,14 +196,19 @@ int bisect_command(const BisectArgs& args) {
   }
   const Revision& first_bad = candidates[static_cast<std::size_t>(high)];
   if (high - low > 1) {
-    fmt::print("the first bad commit is {} or one of the {} commits before it that could not be "
-               "measured\n",
-               first_bad.short_sha, high - low - 1);
-    return to_int(ExitCode::infrastructure);
+    return answer(args, bisector, scene, candidates.size(),
+                  fmt::format("the first bad commit is {} or one of the {} commits before it "
+                              "that could not be measured",
+                              first_bad.short_sha, high - low - 1),
+                  {{"kind", "range"},
+                   {"first_bad", revision_json(first_bad)},
+                   {"unmeasured_before", high - low - 1}},
+                  ExitCode::infrastructure);
   }
-  fmt::print("first bad commit: {} {} ({}, {})\n", first_bad.sha, first_bad.subject,
-             first_bad.author, first_bad.commit_time);
-  return to_int(ExitCode::pass);
+  return answer(args, bisector, scene, candidates.size(),
+                fmt::format("first bad commit: {} {} ({}, {})", first_bad.sha, first_bad.subject,
+                            first_bad.author, first_bad.commit_time),
+                {{"kind", "first_bad"}, {"first_bad", revision_json(first_bad)}}, ExitCode::pass);
 }
 
 }  // namespace
@@ -165,7 +224,10 @@ void add_bisect_command(CLI::App& app, int& exit_code) {
                       "image that differs from the good commit's")
       ->check(CLI::IsMember({"ratio", "image"}))
       ->capture_default_str();
-  command->callback([args, &exit_code] { exit_code = bisect_command(*args); });
+  add_format_option(*command, args->format, {"text", "json"});
+  command->callback([args, command, &exit_code] {
+    exit_code = bisect_command(*args, console_of(*command));
+  });
 }
 
 }  // namespace raygate::cli

@@ -8,6 +8,7 @@
 
 #include "checkout/repository.h"
 #include "cli/commands.h"
+#include "cli/console.h"
 #include "cli/report_options.h"
 #include "cli/store_options.h"
 #include "cli/measure_options.h"
@@ -42,13 +43,14 @@ Worktree base_worktree(const CompareArgs& args, const Repository& repository) {
   return repository.materialize(named);
 }
 
-int compare_command(const CompareArgs& args) {
+int compare_command(const CompareArgs& args, const Console& console) {
   if (args.base.empty() == args.base_branch.empty()) {
     throw UsageError("name the base: --base REV or --base-branch BRANCH (exactly one)");
   }
-  const MeasureContext context = load_measure_context(args.measure);
+  MeasureContext context = load_measure_context(args.measure);
+  context.quiet = console.quiet();
   check_report_specs(args.reports);
-  check_output_path(args.out, "--out");
+  check_output_path(args.out, "--output");
   const BaselineTool baseline(context.tools.baseline);
   const Repository repository = Repository::open(args.measure.repo, context.cache_dir);
   const Worktree head = repository.checkout(args.head);
@@ -56,12 +58,12 @@ int compare_command(const CompareArgs& args) {
   std::filesystem::path document_path;
   const ResultsDocument document = measure_compare(
       {context, baseline, repository.location(), base, head, args.out}, &document_path);
-  fmt::print("results: {}\n", document_path.string());
-  record_results(document, args.record, context.cache_dir, document_path);
+  console.info(fmt::format("results: {}", document_path.string()));
+  record_results(document, args.record, context.cache_dir, document_path, console);
   GatePolicy policy = context.policy;
   policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
   const GateResult gate = evaluate_gate(document, policy);
-  emit_reports(document, gate, policy, args.reports, document_path,
+  emit_reports(document, gate, policy, args.reports, document_path, console,
                trends_from_store(record_store_path(args.record, context.cache_dir), document));
   return gate.exit_code;
 }
@@ -78,13 +80,18 @@ void add_compare_command(CLI::App& app, int& exit_code) {
   command->add_option("--base-branch", args->base_branch,
                       "use the merge base of head and this branch as the base");
   command->add_option("--head", args->head, "head revision")->capture_default_str();
-  command->add_option("--out", args->out,
-                      "results document (default: <cache-dir>/runs/<time>-<base>-<head>/results.json)");
+  add_deprecated_alias(*command, "--out",
+                       command->add_option("-o,--output", args->out,
+                                           "results document (default: "
+                                           "<cache-dir>/runs/<time>-<base>-<head>/results.json)"),
+                       args->out);
   command->add_flag("--fail-on-inconclusive", args->fail_on_inconclusive,
                     "an INCONCLUSIVE change fails the gate instead of warning");
   add_record_options(*command, args->record);
   add_report_options(*command, args->reports);
-  command->callback([args, &exit_code] { exit_code = compare_command(*args); });
+  command->callback([args, command, &exit_code] {
+    exit_code = compare_command(*args, console_of(*command));
+  });
 }
 
 }  // namespace raygate::cli

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/console.h"
 #include "consistency/consistency.h"
 #include "consistency/consistency_report.h"
 #include "core/error.h"
@@ -21,7 +22,7 @@ namespace {
 struct ConsistencyArgs {
   std::vector<std::string> documents;
   ConsistencyOptions options;
-  bool json = false;
+  std::string format;  // text, json
   std::string markdown;
 };
 
@@ -51,7 +52,7 @@ int consistency_command(const ConsistencyArgs& args) {
   }
   const ConsistencyResult result = analyse_consistency(std::move(documents), args.options);
   if (!args.markdown.empty()) write_file_atomically(args.markdown, consistency_markdown(result));
-  if (args.json) {
+  if (args.format == "json") {
     fmt::print("{}\n", consistency_json(result).dump(1));
   } else {
     fmt::print("{}", consistency_table(result));
@@ -80,7 +81,7 @@ void add_consistency_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_flag("--allow-mixed", args->options.allow_mixed,
                     "compare documents of different baselines or tracer revisions anyway");
-  command->add_flag("--json", args->json, "machine-readable output on standard output");
+  add_format_option(*command, args->format, {"text", "json"}, true);
   command->add_option("--markdown", args->markdown, "also write the result as Markdown to PATH");
   command->callback([args, &exit_code] { exit_code = consistency_command(*args); });
 }

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/console.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/paths.h"
@@ -17,7 +18,7 @@ namespace raygate::cli {
 namespace {
 
 struct DoctorArgs {
-  bool json = false;
+  std::string format;  // text, json
   int rounds = kDefaultNoiseRounds;
   std::string baseline;
 };
@@ -32,7 +33,7 @@ void measure(const DoctorArgs& args, DoctorReport& report) {
     options.baseline = tools.baseline;
     options.rounds = args.rounds;
     options.work_dir = work.path();
-    if (!args.json) {
+    if (args.format != "json") {
       fmt::print(stderr, "measuring noise: {} rounds of two raygate-baseline runs...\n",
                  args.rounds);
     }
@@ -51,7 +52,7 @@ int doctor_command(const DoctorArgs& args) {
   report.facts = probe_system_facts();  // before measuring: the load must not be our own
   report.findings = diagnose(report.facts);
   measure(args, report);
-  if (args.json) {
+  if (args.format == "json") {
     fmt::print("{}\n", doctor_json(report).dump(1));
   } else {
     fmt::print("{}", doctor_text(report));
@@ -67,7 +68,7 @@ void add_doctor_command(CLI::App& app, int& exit_code) {
       "doctor",
       "is this machine fit to measure? checks governor, turbo, load, CPUs, SMT, perf, "
       "ASLR, swap, virtualization, and measures a noise score");
-  command->add_flag("--json", args->json, "machine-readable output on standard output");
+  add_format_option(*command, args->format, {"text", "json"}, true);
   command
       ->add_option("--rounds", args->rounds,
                    "A/A pairs of raygate-baseline runs for the noise score")

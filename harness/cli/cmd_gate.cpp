@@ -1,14 +1,17 @@
 // `raygate gate RESULTS.json [--policy FILE]`: the verdict on a results document that was
-// measured earlier (or on another machine, or merged from shards), under a policy. The exit code
-// is the gate's: 0 pass, 1 regression, 2 usage, 3 the document says something was not measured.
+// measured earlier (or on another machine, or merged from shards), under a policy; --format json
+// prints the JSON report (docs/reports.md) instead of the summary. The exit code is the gate's:
+// 0 pass, 1 regression, 2 usage, 3 the document says something was not measured.
 #include <fmt/core.h>
 
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/console.h"
 #include "cli/gate_summary.h"
 #include "gate/policy.h"
 #include "gate/verdict.h"
+#include "report/reporter.h"
 #include "store/results.h"
 
 namespace raygate::cli {
@@ -18,17 +21,24 @@ struct GateArgs {
   std::string results;
   std::string policy;
   bool fail_on_inconclusive = false;
+  std::string format;  // text, json
 };
 
-int gate_command(const GateArgs& args) {
-  const ResultsDocument document = read_results(args.results);
+int gate_command(const GateArgs& args, const Console& console) {
+  const std::filesystem::path results = std::filesystem::absolute(args.results);
+  const ResultsDocument document = read_results(results);
   std::string note;
   GatePolicy policy =
       args.policy.empty() ? recorded_policy(document.settings, note) : load_policy(args.policy);
-  if (!note.empty()) fmt::print("gate policy: {}\n", note);
+  if (!note.empty()) console.info(fmt::format("gate policy: {}", note));
   policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
   const GateResult gate = evaluate_gate(document, policy);
-  print_gate_summary(gate, stdout);
+  if (args.format == "json") {
+    write_reports({document, gate, policy, {}, results.parent_path()},
+                  {{ReportFormat::json, "-"}}, {});
+  } else {
+    print_gate_summary(gate, stdout);
+  }
   return gate.exit_code;
 }
 
@@ -43,7 +53,10 @@ void add_gate_command(CLI::App& app, int& exit_code) {
   command->add_option("--policy", args->policy, "gate policy file (docs/gate.md)");
   command->add_flag("--fail-on-inconclusive", args->fail_on_inconclusive,
                     "an INCONCLUSIVE change fails the gate instead of warning");
-  command->callback([args, &exit_code] { exit_code = gate_command(*args); });
+  add_format_option(*command, args->format, {"text", "json"});
+  command->callback([args, command, &exit_code] {
+    exit_code = gate_command(*args, console_of(*command));
+  });
 }
 
 }  // namespace raygate::cli

@@ -7,6 +7,7 @@
 #include <cctype>
 #include <memory>
 
+#include "cli/console.h"
 #include "cli/store_commands.h"
 #include "cli/store_options.h"
 #include "core/error.h"
@@ -121,6 +122,7 @@ void export_to(const std::vector<StoredDocument>& documents, const std::filesyst
 }
 
 int export_command(const ExportArgs& args) {
+  if (args.out.empty()) throw UsageError("export: --output is required (a directory or FILE.json)");
   const auto store = open_store(args.store, StoreOpen::must_exist);
   DocumentQuery query;
   query.sha_prefix = checked_sha_prefix(args.sha);
@@ -158,8 +160,11 @@ void add_export_command(CLI::App& app, int& exit_code) {
       command->add_option("--sha", args->sha, "documents that measured a commit (sha or prefix)");
   command->add_option("--last", args->last, "the N most recently stored documents")->excludes(sha);
   command->add_option("--branch", args->branch, "only documents recorded under this branch");
-  command->add_option("-o,--out", args->out, "a directory (one file per document) or FILE.json")
-      ->required();
+  add_deprecated_alias(*command, "--out",
+                       command->add_option("-o,--output", args->out,
+                                           "a directory (one file per document) or FILE.json "
+                                           "(required)"),
+                       args->out);
   command->callback([args, &exit_code] { exit_code = export_command(*args); });
 }
 

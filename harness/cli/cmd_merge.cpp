@@ -8,8 +8,10 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/console.h"
 #include "cli/report_options.h"
 #include "cli/store_options.h"
+#include "core/error.h"
 #include "gate/policy.h"
 #include "gate/verdict.h"
 #include "store/merge.h"
@@ -28,15 +30,17 @@ struct MergeArgs {
   std::vector<std::string> reports;  // --report FORMAT:PATH
 };
 
-void print_scores(const ResultsDocument& document) {
+void print_scores(const ResultsDocument& document, const Console& console) {
   for (const auto& [role, score] : document.scores) {
-    fmt::print("suite score {} (geometric mean of normalized ratios): {:.3f} [{:.3f}, {:.3f}] "
-               "over {} scenes\n",
-               role, score.score, score.interval.lower, score.interval.upper, score.scenes);
+    console.info(fmt::format("suite score {} (geometric mean of normalized ratios): {:.3f} "
+                             "[{:.3f}, {:.3f}] over {} scenes",
+                             role, score.score, score.interval.lower, score.interval.upper,
+                             score.scenes));
   }
 }
 
-int merge_command(const MergeArgs& args) {
+int merge_command(const MergeArgs& args, const Console& console) {
+  if (args.out.empty()) throw UsageError("merge: --output is required (the merged document)");
   check_report_specs(args.reports);
   std::vector<MergeInput> inputs;
   for (const std::string& path : args.documents) inputs.push_back({path, read_results(path)});
@@ -47,7 +51,7 @@ int merge_command(const MergeArgs& args) {
                                                            : inputs.front().document.settings,
                                             note)
                           : load_policy(args.policy);
-  if (!note.empty()) fmt::print("gate policy: {}\n", note);
+  if (!note.empty()) console.info(fmt::format("gate policy: {}", note));
   policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
 
   MergeOptions options;
@@ -59,15 +63,16 @@ int merge_command(const MergeArgs& args) {
   const ResultsDocument& document = merged.document;
   const std::filesystem::path out = std::filesystem::absolute(args.out);
   write_results(document, out);
-  fmt::print("merged {} shard documents of suite {}: {} scenes{}\n", inputs.size(),
-             document.suite, document.scenes.size(), document.complete ? "" : " (incomplete)");
-  print_scores(document);
-  fmt::print("results: {}\n", out.string());
+  console.info(fmt::format("merged {} shard documents of suite {}: {} scenes{}", inputs.size(),
+                           document.suite, document.scenes.size(),
+                           document.complete ? "" : " (incomplete)"));
+  print_scores(document, console);
+  console.info(fmt::format("results: {}", out.string()));
 
   const std::filesystem::path cache_dir = std::filesystem::absolute(args.cache_dir);
-  record_results(document, args.record, cache_dir, out);
+  record_results(document, args.record, cache_dir, out, console);
   const GateResult gate = evaluate_gate(document, policy);
-  emit_reports(document, gate, policy, args.reports, out,
+  emit_reports(document, gate, policy, args.reports, out, console,
                trends_from_store(record_store_path(args.record, cache_dir), document));
   return gate.exit_code;
 }
@@ -81,7 +86,10 @@ void add_merge_command(CLI::App& app, int& exit_code) {
                "and gate it");
   command->add_option("documents", args->documents, "the shards' results documents")
       ->required();
-  command->add_option("-o,--out", args->out, "the merged results document")->required();
+  add_deprecated_alias(*command, "--out",
+                       command->add_option("-o,--output", args->out,
+                                           "the merged results document (required)"),
+                       args->out);
   command->add_option("--cache-dir", args->cache_dir,
                       "the default store is <cache-dir>/results.db, as for run")
       ->capture_default_str();
@@ -92,7 +100,9 @@ void add_merge_command(CLI::App& app, int& exit_code) {
                     "merge even if whole shards are missing (the result is incomplete: exit 3)");
   add_record_options(*command, args->record);
   add_report_options(*command, args->reports);
-  command->callback([args, &exit_code] { exit_code = merge_command(*args); });
+  command->callback([args, command, &exit_code] {
+    exit_code = merge_command(*args, console_of(*command));
+  });
 }
 
 }  // namespace raygate::cli

@@ -5,7 +5,7 @@
 #include <memory>
 
 #include "cli/commands.h"
-#include "cli/progress.h"
+#include "cli/console.h"
 #include "core/error.h"
 #include "gate/policy.h"
 #include "gate/verdict.h"
@@ -20,17 +20,10 @@ struct ReportArgs {
   std::string format = "console";
   std::string output = "-";
   std::string policy;
-  std::string colour = "auto";
   bool exit_code = false;
 };
 
-bool use_colour(const ReportArgs& args) {
-  if (args.colour == "always") return true;
-  if (args.colour == "never") return false;
-  return (args.output.empty() || args.output == "-") && is_terminal(stdout);
-}
-
-int report_command(const ReportArgs& args) {
+int report_command(const ReportArgs& args, const Console& console) {
   const ReportFormat format = parse_report_format(args.format);
   const std::filesystem::path results = std::filesystem::absolute(args.results);
   const ResultsDocument document = read_results(results);
@@ -38,7 +31,7 @@ int report_command(const ReportArgs& args) {
   const GateResult gate = evaluate_gate(document, policy);
   ReportInput input{document, gate, policy, {}, results.parent_path()};
   ReportOptions options;
-  options.colour = use_colour(args);
+  options.colour = console.colour(args.output.empty() || args.output == "-" ? stdout : nullptr);
   write_reports(input, {{format, args.output}}, options);
   return args.exit_code ? gate.exit_code : 0;
 }
@@ -60,12 +53,12 @@ void add_report_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_option("--policy", args->policy, "gate policy file (default: built-in defaults)")
       ->check(CLI::ExistingFile);
-  command->add_option("--color", args->colour, "console colours: auto (on a terminal), always, never")
-      ->check(CLI::IsMember({"auto", "always", "never"}))
-      ->capture_default_str();
   command->add_flag("--exit-code", args->exit_code,
                     "exit with the gate's code (0 pass, 1 regression, 3 not measured)");
-  command->callback([args, &exit_code] { exit_code = report_command(*args); });
+  // --color is the global option (cli/console.h), accepted after `report` too.
+  command->callback([args, command, &exit_code] {
+    exit_code = report_command(*args, console_of(*command));
+  });
 }
 
 }  // namespace raygate::cli

@@ -8,6 +8,7 @@
 
 #include "checkout/repository.h"
 #include "cli/commands.h"
+#include "cli/console.h"
 #include "cli/report_options.h"
 #include "cli/measure_options.h"
 #include "cli/measure_session.h"
@@ -43,10 +44,11 @@ std::pair<Worktree, std::string> locate_tree(const RunArgs& args, const MeasureC
   return {repository.checkout(args.rev), repository.location()};
 }
 
-int run_command(const RunArgs& args) {
-  const MeasureContext context = load_measure_context(args.measure);
+int run_command(const RunArgs& args, const Console& console) {
+  MeasureContext context = load_measure_context(args.measure);
+  context.quiet = console.quiet();
   check_report_specs(args.reports);
-  check_output_path(args.out, "--out");
+  check_output_path(args.out, "--output");
   const BaselineTool baseline(context.tools.baseline);
   const auto [worktree, repository] = locate_tree(args, context);
   const PreparedRevision tracer = prepare_revision("tracer", repository, worktree, context,
@@ -65,27 +67,28 @@ int run_command(const RunArgs& args) {
 
   ResultsDocument document = new_document("run", context, baseline);
   document.revisions.push_back(tracer.record);
-  fmt::print("measuring {} {} ({}) against {} on suite {}: {} scenes{}\n", context.adapter.name,
-             worktree.short_sha, worktree.subject, baseline.version_line(), context.suite.name,
-             m.scenes.size(), shard_note(context));
+  console.info(fmt::format("measuring {} {} ({}) against {} on suite {}: {} scenes{}",
+                           context.adapter.name, worktree.short_sha, worktree.subject,
+                           baseline.version_line(), context.suite.name, m.scenes.size(),
+                           shard_note(context)));
   SystemExecutor executor;
   SteadyClock clock;
   {
-    Progress progress(stdout, is_terminal(stdout));
+    Progress progress(context.quiet ? nullptr : stderr, is_terminal(stderr));
     measure_suite(document, m, executor, clock, progress);
   }
   document.finished_at = utc_timestamp();
   write_results(document, m.out);
   if (const auto score = document.scores.find("tracer"); score != document.scores.end()) {
-    fmt::print("suite score (geometric mean of normalized ratios): {:.3f} [{:.3f}, {:.3f}] over "
-               "{} scenes\n",
-               score->second.score, score->second.interval.lower, score->second.interval.upper,
-               score->second.scenes);
+    console.info(fmt::format("suite score (geometric mean of normalized ratios): {:.3f} [{:.3f}, "
+                             "{:.3f}] over {} scenes",
+                             score->second.score, score->second.interval.lower,
+                             score->second.interval.upper, score->second.scenes));
   }
-  fmt::print("results: {}\n", m.out.string());
-  record_results(document, args.record, context.cache_dir, m.out);
+  console.info(fmt::format("results: {}", m.out.string()));
+  record_results(document, args.record, context.cache_dir, m.out, console);
   const GateResult gate = evaluate_gate(document, context.policy);
-  emit_reports(document, gate, context.policy, args.reports, m.out,
+  emit_reports(document, gate, context.policy, args.reports, m.out, console,
                trends_from_store(record_store_path(args.record, context.cache_dir), document));
   return gate.exit_code;
 }
@@ -102,11 +105,16 @@ void add_run_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   command->add_option("--worktree", args->worktree,
                       "measure this directory as it is, uncommitted changes included");
-  command->add_option("--out", args->out,
-                      "results document (default: <cache-dir>/runs/<time>-<sha>/results.json)");
+  add_deprecated_alias(*command, "--out",
+                       command->add_option("-o,--output", args->out,
+                                           "results document (default: "
+                                           "<cache-dir>/runs/<time>-<sha>/results.json)"),
+                       args->out);
   add_record_options(*command, args->record);
   add_report_options(*command, args->reports);
-  command->callback([args, &exit_code] { exit_code = run_command(*args); });
+  command->callback([args, command, &exit_code] {
+    exit_code = run_command(*args, console_of(*command));
+  });
 }
 
 }  // namespace raygate::cli

@@ -7,7 +7,10 @@
 #include <sstream>
 #include <stdexcept>
 
+#include <nlohmann/json.hpp>
+
 #include "cli/commands.h"
+#include "cli/console.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "nff/parser.h"
@@ -45,7 +48,22 @@ void parse_resolution(const std::string& text, scenes::GenerateOptions& options)
   options.height = h;
 }
 
-void run_list() {
+nlohmann::json scenes_json() {
+  nlohmann::json scenes = nlohmann::json::array();
+  for (const scenes::SceneGenerator& g : scenes::all_generators()) {
+    nlohmann::json scene = {{"name", g.name}, {"description", g.description}};
+    scene["default_size"] = g.uses_size ? nlohmann::json(g.default_size) : nlohmann::json(nullptr);
+    scene["max_size"] = g.uses_size ? nlohmann::json(scenes::max_size(g)) : nlohmann::json(nullptr);
+    scenes.push_back(scene);
+  }
+  return {{"scenes", scenes}};
+}
+
+void run_list(const std::string& format) {
+  if (format == "json") {
+    fmt::print("{}\n", scenes_json().dump(1));
+    return;
+  }
   fmt::print("{:<10} {:>7} {:>5}  {}\n", "scene", "default", "max", "description");
   for (const scenes::SceneGenerator& g : scenes::all_generators()) {
     fmt::print("{:<10} {:>7} {:>5}  {}\n", g.name, g.uses_size ? std::to_string(g.default_size) : "-",
@@ -119,11 +137,14 @@ void add_scenes_command(CLI::App& app, int& exit_code) {
       "scenes", "List, generate and convert SPD scenes (NFF; POV-Ray, OBJ, pbrt-v4)");
   scenes->require_subcommand(1);
 
-  scenes->add_subcommand("list", "The 13 SPD scenes with default and largest size factors")
-      ->callback([&exit_code] {
-        run_list();
-        exit_code = 0;
-      });
+  auto list_format = std::make_shared<std::string>();
+  CLI::App* list =
+      scenes->add_subcommand("list", "The 13 SPD scenes with default and largest size factors");
+  add_format_option(*list, *list_format, {"text", "json"});
+  list->callback([list_format, &exit_code] {
+    run_list(*list_format);
+    exit_code = 0;
+  });
 
   auto args = std::make_shared<GenerateArgs>();
   CLI::App* generate = scenes->add_subcommand("generate", "Write one SPD scene as NFF");

@@ -80,14 +80,16 @@ ResultsDocument measure_compare(const CompareSetup& setup, std::filesystem::path
 
   ResultsDocument document = new_document("compare", context, setup.baseline);
   document.revisions = {base.record, head.record};
-  fmt::print("comparing {} {} (base) with {} (head) against {} on suite {}: {} scenes{}\n",
+  if (!context.quiet) {
+    fmt::print(stderr, "comparing {} {} (base) with {} (head) against {} on suite {}: {} scenes{}\n",
              context.adapter.name, setup.base.short_sha, setup.head.short_sha,
              setup.baseline.version_line(), context.suite.name, m.scenes.size(),
              shard_note(context));
+  }
   SystemExecutor executor;
   SteadyClock clock;
   {
-    Progress progress(stdout, is_terminal(stdout));
+    Progress progress(context.quiet ? nullptr : stderr, is_terminal(stderr));
     measure_suite(document, m, executor, clock, progress);
   }
   document.finished_at = utc_timestamp();

@@ -6,6 +6,8 @@
 #include <exception>
 
 #include "cli/commands.h"
+#include "cli/console.h"
+#include "cli/project_config.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
 #include "core/interrupt.h"
@@ -19,6 +21,7 @@ int main(int argc, char** argv) {
   // orphans of children re-parent to raygate, to be swept (core/interrupt.h, core/strays.h).
   raygate::install_interrupt_handlers();
   raygate::become_subreaper();
+  raygate::cli::add_global_options(app);
   int exit_code = 0;
   raygate::cli::add_scenes_command(app, exit_code);
   raygate::cli::add_golden_command(app, exit_code);
@@ -33,7 +36,11 @@ int main(int argc, char** argv) {
   raygate::cli::add_consistency_command(app, exit_code);
   raygate::cli::add_doctor_command(app, exit_code);
   raygate::cli::add_merge_command(app, exit_code);
+  raygate::cli::add_alert_command(app, exit_code);
   try {
+    // Before parsing: the command line overrides these (cli/project_config.h).
+    raygate::cli::apply_project_defaults(
+        app, raygate::cli::load_project_defaults(raygate::cli::find_config_argument(argc, argv)));
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
     return app.exit(e);  // --help, --version

@@ -63,6 +63,7 @@ struct MeasureContext {
   std::optional<TimingMetric> metric;
   GatePolicy policy;
   int jobs = 0;  // parallel build jobs; 0 = every allowed CPU
+  bool quiet = false;  // --quiet: builds and measurements say nothing on standard error
 };
 
 MeasureContext load_measure_context(const MeasureArgs& args);

@@ -10,7 +10,7 @@ namespace raygate::cli {
 Progress::~Progress() { clear(); }
 
 void Progress::clear() {
-  if (interactive_ && dirty_) {
+  if (stream_ != nullptr && interactive_ && dirty_) {
     fmt::print(stream_, "\r\033[K");
     std::fflush(stream_);
     dirty_ = false;
@@ -18,7 +18,7 @@ void Progress::clear() {
 }
 
 void Progress::update(const ProgressState& s) {
-  if (!interactive_) return;  // CI logs get the per-scene lines only
+  if (stream_ == nullptr || !interactive_) return;  // CI logs get the per-scene lines only
   std::string text = fmt::format("[{}/{}] {:<10} round {:>2}", s.scene_index, s.scene_count,
                                  s.scene_id, s.round);
   if (s.ratio > 0.0) {
@@ -31,6 +31,7 @@ void Progress::update(const ProgressState& s) {
 }
 
 void Progress::line(const std::string& text) {
+  if (stream_ == nullptr) return;
   clear();
   fmt::print(stream_, "{}\n", text);
   std::fflush(stream_);

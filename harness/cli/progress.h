@@ -20,7 +20,8 @@ struct ProgressState {
 
 class Progress {
  public:
-  // interactive: rewrite one line (use is_terminal(stream) to decide).
+  // interactive: rewrite one line (use is_terminal(stream) to decide). A null stream says
+  // nothing (--quiet).
   Progress(std::FILE* stream, bool interactive) : stream_(stream), interactive_(interactive) {}
   ~Progress();
 

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <iostream>
 #include <cstring>
 
 #include "cli/progress.h"
@@ -38,6 +39,12 @@ void add_report_options(CLI::App& command, std::vector<std::string>& reports) {
   command.add_option("--report", reports,
                      "also write a report: FORMAT:PATH with FORMAT markdown, junit, json, html or "
                      "console (repeatable; PATH - is standard output)");
+  command
+      .add_option_function<std::string>(
+          "--format", [&reports](const std::string& format) { reports.push_back(format + ":-"); },
+          "print a report on standard output: console, markdown, junit, json or html (the "
+          "same as --report FORMAT:-)")
+      ->check(CLI::IsMember({"console", "markdown", "junit", "json", "html"}));
 }
 
 void check_report_specs(const std::vector<std::string>& reports) {
@@ -117,16 +124,24 @@ std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
 
 void emit_reports(const ResultsDocument& document, const GateResult& gate,
                   const GatePolicy& policy, const std::vector<std::string>& reports,
-                  const std::filesystem::path& document_path, std::vector<TrendSeries> trends) {
-  std::vector<ReportTarget> targets = parse_specs(reports);
-  targets.insert(targets.begin(), ReportTarget{ReportFormat::console, "-"});
+                  const std::filesystem::path& document_path, const Console& console,
+                  std::vector<TrendSeries> trends) {
+  const std::vector<ReportTarget> targets = parse_specs(reports);
   ReportInput input{document, gate, policy, std::move(trends), document_path.parent_path()};
+  if (!console.quiet()) {  // the table for whoever watches: standard error, as all chatter
+    ReportOptions table;
+    table.colour = console.colour(stderr);
+    std::fflush(stderr);
+    make_reporter(ReportFormat::console, table)->write(input, std::cerr);
+    std::cerr.flush();
+  }
   ReportOptions options;
-  options.colour = is_terminal(stdout);
-  std::fflush(stdout);
+  options.colour = console.colour(stdout);
   write_reports(input, targets, options);
-  for (std::size_t i = 1; i < targets.size(); ++i) {
-    fmt::print("{} report: {}\n", to_string(targets[i].format), targets[i].path.string());
+  for (const ReportTarget& target : targets) {
+    if (target.path != "-") {
+      console.info(fmt::format("{} report: {}", to_string(target.format), target.path.string()));
+    }
   }
 }
 

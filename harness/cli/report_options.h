@@ -1,6 +1,7 @@
-// The reports a measuring command writes when it ends: the console table on standard output
-// (colour on a terminal) and any `--report FORMAT:PATH` the user asked for (markdown for a PR
-// comment or $GITHUB_STEP_SUMMARY, junit, json, html). Shared by run and compare.
+// The reports a measuring command writes when it ends: the console table on standard error
+// (colour on a terminal; none with --quiet) and the reports the user asked for: `--format FORMAT`
+// on standard output, `--report FORMAT:PATH` in files or on standard output (PATH -) (markdown
+// for a PR comment or $GITHUB_STEP_SUMMARY, junit, json, html). Shared by run, compare, merge.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -9,12 +10,14 @@
 #include <vector>
 
 #include "gate/policy.h"
+#include "cli/console.h"
 #include "gate/verdict.h"
 #include "report/reporter.h"
 #include "store/results.h"
 
 namespace raygate::cli {
 
+// --report FORMAT:PATH (repeatable) and --format FORMAT (the same as --report FORMAT:-).
 void add_report_options(CLI::App& command, std::vector<std::string>& reports);
 
 // Throws UsageError for a spec that is not FORMAT:PATH with a known format, or whose PATH cannot
@@ -37,7 +40,7 @@ std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
 
 void emit_reports(const ResultsDocument& document, const GateResult& gate,
                   const GatePolicy& policy, const std::vector<std::string>& reports,
-                  const std::filesystem::path& document_path,
+                  const std::filesystem::path& document_path, const Console& console,
                   std::vector<TrendSeries> trends = {});
 
 }  // namespace raygate::cli

@@ -31,10 +31,12 @@ BuildRecord build_revision(const Worktree& worktree, const MeasureContext& conte
   if (builds_raygate_source(context.adapter)) {
     options.key_extra = "raygate-baseline-source:" + baseline_source_hash;
   }
-  fmt::print(stderr, "building {} ({}) with adapter {} ...\n", worktree.short_sha,
-             worktree.revision, context.adapter.name);
+  if (!context.quiet) {
+    fmt::print(stderr, "building {} ({}) with adapter {} ...\n", worktree.short_sha,
+               worktree.revision, context.adapter.name);
+  }
   BuildRecord record = build(worktree, context.adapter, options);
-  if (record.success) {
+  if (record.success && !context.quiet) {
     fmt::print(stderr, "  {} in {}\n", record.cached ? "cached build" : "built",
                record.build_dir.string());
   }

@@ -29,6 +29,21 @@ CLI::Option* add_store_option(CLI::App& command, std::string& store,
       ->check(CLI::Validator(check_store_location, "PATH", "store location"));
 }
 
+void add_history_filters(CLI::App& command, HistoryQuery& query) {
+  command.add_option("--branch", query.branch, "only results recorded under this branch");
+  command.add_option("--scene", query.scenes, "only these suite scene ids (repeatable)");
+  command.add_option("--repository", query.repository,
+                     "only the repository whose key contains this text (its root commit sha or "
+                     "URL, as history's table headings show)");
+  command.add_option("--adapter", query.adapter, "only results measured with this adapter");
+  command.add_option("--suite", query.suite, "only results of this suite");
+  command
+      .add_option("--role", query.role,
+                  "which revision of a document: tracer (run), head or base (compare), any")
+      ->check(CLI::IsMember({"tracer", "head", "base", "any"}))
+      ->capture_default_str();
+}
+
 void add_record_options(CLI::App& command, RecordArgs& args) {
   CLI::Option* store = add_store_option(command, args.store, "<cache-dir>/results.db");
   command.add_flag("--no-store", args.no_store, "do not record the results in the store")
@@ -45,7 +60,7 @@ std::filesystem::path record_store_path(const RecordArgs& args,
 
 void record_results(const ResultsDocument& document, const RecordArgs& args,
                     const std::filesystem::path& cache_dir,
-                    const std::filesystem::path& document_path) {
+                    const std::filesystem::path& document_path, const Console& console) {
   if (args.no_store) return;
   const std::string location = record_store_path(args, cache_dir).string();
   const std::string printable = redact_postgresql_url(location);  // a URL's password stays out
@@ -53,9 +68,10 @@ void record_results(const ResultsDocument& document, const RecordArgs& args,
     const auto store = open_store(location, StoreOpen::create_if_missing);
     const std::string branch = branch_of(document, args.branch);
     const AddOutcome outcome = store->add(document, branch);
-    fmt::print("{} {} as document {}{}\n", outcome.duplicate ? "already stored in" : "stored in",
-               store->location(), outcome.document_id,
-               branch.empty() ? "" : " (branch " + branch + ")");
+    console.info(fmt::format("{} {} as document {}{}",
+                             outcome.duplicate ? "already stored in" : "stored in",
+                             store->location(), outcome.document_id,
+                             branch.empty() ? "" : " (branch " + branch + ")"));
   } catch (const std::exception& e) {  // raygate's errors and the file system's
     fmt::print(stderr,
                "raygate: warning: results not stored: {}\n  the document is kept at {}; store it "

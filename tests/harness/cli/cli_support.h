@@ -1,6 +1,7 @@
 // Running the built raygate binary from tests: exit code and captured output.
 #pragma once
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,29 @@ inline CliRun run_raygate(const std::vector<std::string>& args, const TempDir& d
   spec.timeout = std::chrono::minutes(5);
   const ProcessResult r = run_process(spec);
   return {r.outcome == ProcessOutcome::exited ? r.exit_code : -1, read_file(spec.stdout_path)};
+}
+
+// Standard output and standard error apart, for what a command promises about each; `env` is
+// set on top of the test's environment.
+struct CliStreams {
+  int exit_code = -1;
+  std::string out;
+  std::string err;
+};
+
+inline CliStreams run_raygate_streams(const std::vector<std::string>& args, const TempDir& dir,
+                                      const std::map<std::string, std::string>& env = {}) {
+  ProcessSpec spec;
+  spec.argv = {RAYGATE_EXE};
+  spec.argv.insert(spec.argv.end(), args.begin(), args.end());
+  spec.environment = env;
+  spec.stdout_path = dir.path() / "cli.out";
+  spec.stderr_path = dir.path() / "cli.err";
+  spec.working_directory = dir.path();
+  spec.timeout = std::chrono::minutes(5);
+  const ProcessResult r = run_process(spec);
+  return {r.outcome == ProcessOutcome::exited ? r.exit_code : -1, read_file(spec.stdout_path),
+          read_file(spec.stderr_path)};
 }
 
 }  // namespace raygate::test

@@ -124,9 +124,18 @@ TEST_F(CompareCli, BisectNamesTheCommitThatMadeTheTracerSlower) {
   std::vector<std::string> args{"bisect", "--good", good, "--bad", bad, "--policy", policy.string()};
   const std::vector<std::string> shared = common({"tetra"});
   args.insert(args.end(), shared.begin(), shared.end());
-  const CliRun r = run_raygate(args, dir_);
-  EXPECT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_TRUE(has(r.out, "first bad commit: " + culprit)) << r.out;
+  // --format json: the answer and every step on standard output, as one JSON object; the steps
+  // as they happen on standard error. (The text answer: gate_scenario_cli_test.)
+  args.insert(args.end(), {"--format", "json"});
+  const CliStreams j = run_raygate_streams(args, dir_);
+  EXPECT_EQ(j.exit_code, 0) << j.err;
+  const nlohmann::json answer = nlohmann::json::parse(j.out);
+  EXPECT_EQ(answer["result"]["kind"], "first_bad");
+  EXPECT_EQ(answer["result"]["first_bad"]["sha"], culprit);
+  EXPECT_EQ(answer["scene"], "tetra");
+  EXPECT_GE(answer["steps"].size(), 2u);
+  EXPECT_EQ(answer["steps"][0]["outcome"], "bad");  // the bad end is judged first
+  EXPECT_TRUE(has(j.err, "bisecting 4 commits after")) << j.err;
 }
 
 }  // namespace

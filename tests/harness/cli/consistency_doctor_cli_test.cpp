@@ -50,7 +50,7 @@ TEST_F(ConsistencyCli, SameRatiosOnTwoMachinesExitZero) {
 
 TEST_F(ConsistencyCli, AMovedSceneExitsOneAndNamesIt) {
   const CliRun r = run_raygate({"consistency", write("a.json", machine("straylight", 1.2)),
-                                write("b.json", machine("neolith", 1.6)), "--json"},
+                                write("b.json", machine("neolith", 1.6)), "--format", "json"},
                                dir);
   EXPECT_EQ(r.exit_code, 1) << r.out;
   const nlohmann::json json = nlohmann::json::parse(r.out);
@@ -84,7 +84,7 @@ TEST_F(ConsistencyCli, UnreadableDocumentExitsThree) {
 
 TEST(DoctorCli, JsonWithAMeasuredNoiseScore) {
   TempDir dir;
-  const CliRun r = run_raygate({"doctor", "--rounds", "3", "--json"}, dir);
+  const CliRun r = run_raygate({"doctor", "--rounds", "3", "--format", "json"}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const nlohmann::json json = nlohmann::json::parse(r.out);
   ASSERT_TRUE(json["noise"].is_object()) << r.out;

@@ -101,7 +101,7 @@ TEST_F(HistoryCli, TableNewestFirstWithRatiosImageErrorsAndTrend) {
 TEST_F(HistoryCli, JsonForMachines) {
   ASSERT_EQ(import(three_commits()).exit_code, 0);
   const CliRun r =
-      run_raygate({"history", "--store", "store.db", "--json", "--scene", "balls"}, dir);
+      run_raygate({"history", "--store", "store.db", "--format", "json", "--scene", "balls"}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const nlohmann::json all = nlohmann::json::parse(r.out);
   ASSERT_EQ(all["tables"].size(), 1u);
@@ -132,7 +132,7 @@ TEST_F(HistoryCli, SaysWhenTheMachineMovedAndTheCodeDidNot) {
   EXPECT_THAT(r.out, HasSubstr("machine drift: on ci-runner-1 (Test CPU 3000) the baseline took "
                                "20.0% less time"));
   EXPECT_THAT(r.out, HasSubstr("the machine got faster, not the code"));
-  const CliRun j = run_raygate({"history", "--store", "store.db", "--json"}, dir);
+  const CliRun j = run_raygate({"history", "--store", "store.db", "--format", "json"}, dir);
   EXPECT_EQ(nlohmann::json::parse(j.out)["machine_drift"]["machine_got"], "faster");
 }
 
@@ -209,7 +209,7 @@ TEST_F(HistoryCli, OneTablePerRepositoryAndAdapterWithTrendsThatStayInTheirSerie
   EXPECT_EQ(count(b.out, "\nrepository "), 1u) << b.out;
   EXPECT_THAT(b.out, HasSubstr(fake_sha(6).substr(0, 7)));
   EXPECT_THAT(b.out, Not(HasSubstr(fake_sha(4).substr(0, 7))));
-  const CliRun json = run_raygate({"history", "--store", "store.db", "--json"}, dir);
+  const CliRun json = run_raygate({"history", "--store", "store.db", "--format", "json"}, dir);
   const nlohmann::json tables = nlohmann::json::parse(json.out)["tables"];
   ASSERT_EQ(tables.size(), 4u);
   EXPECT_EQ(tables[0]["repository"], kRepoB);  // the newest first

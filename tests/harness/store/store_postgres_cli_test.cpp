@@ -56,7 +56,7 @@ TEST_F(StorePostgresCli, ImportHistoryAndExportThroughTheBinary) {
   for (int seed : {1, 2, 3}) EXPECT_THAT(history.out, HasSubstr(fake_sha(seed).substr(0, 7)));
   EXPECT_THAT(history.out, HasSubstr("0.880 ±1.0%"));
   EXPECT_THAT(history.out, HasSubstr("+10.0% ↑ vs " + fake_sha(2).substr(0, 7)));
-  const CliRun json = run_raygate({"history", "--store", url, "--json"}, dir);
+  const CliRun json = run_raygate({"history", "--store", url, "--format", "json"}, dir);
   ASSERT_EQ(json.exit_code, 0) << json.out;
   EXPECT_EQ(nlohmann::json::parse(json.out)["tables"].at(0)["commits"].size(), 3u) << json.out;
 

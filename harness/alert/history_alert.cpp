@@ -1,0 +1,160 @@
+#include "alert/history_alert.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <map>
+
+#include "core/error.h"
+
+namespace raygate {
+
+namespace {
+
+CommitRef commit_of(const HistoryRow& row) {
+  return {row.sha, row.short_sha, row.subject, row.commit_time};
+}
+
+// The series' measured rows, oldest first.
+std::vector<HistoryRow> oldest_first(const std::vector<HistoryRow>& rows,
+                                     const std::string& series_id) {
+  std::vector<HistoryRow> points;
+  for (const HistoryRow& row : rows) {
+    if (row.series_id == series_id && row.ratio) points.push_back(row);
+  }
+  std::reverse(points.begin(), points.end());  // history() gives them newest first
+  return points;
+}
+
+SeriesJudgement judge_series(const SeriesColumn& column, const std::vector<HistoryRow>& rows,
+                             const GatePolicy& policy, const EDivisiveOptions& detection) {
+  SeriesJudgement judgement;
+  judgement.column = column;
+  judgement.limit = policy.for_scene(column.scene_id).max_slowdown;
+  const std::vector<HistoryRow> points = oldest_first(rows, column.series_id);
+  judgement.points = points.size();
+  std::vector<double> ratios;
+  for (const HistoryRow& row : points) ratios.push_back(*row.ratio);
+  for (const ChangePoint& change : e_divisive(ratios, detection)) {
+    judgement.changes.push_back({commit_of(points[change.index - 1]),
+                                 commit_of(points[change.index]), points.size() - change.index,
+                                 change});
+  }
+  if (!judgement.changes.empty() &&
+      judgement.changes.back().change.relative_change() > judgement.limit) {
+    judgement.alert = judgement.changes.back();
+  }
+  return judgement;
+}
+
+nlohmann::json commit_json(const CommitRef& commit) {
+  return {{"sha", commit.sha},
+          {"short_sha", commit.short_sha},
+          {"subject", commit.subject},
+          {"commit_time", commit.commit_time}};
+}
+
+nlohmann::json change_json(const SeriesChange& change) {
+  return {{"last_before", commit_json(change.last_before)},
+          {"first_after", commit_json(change.first_after)},
+          {"commits_after", change.commits_after},
+          {"mean_before", change.change.mean_before},
+          {"mean_after", change.change.mean_after},
+          {"relative_change", change.change.relative_change()},
+          {"statistic", change.change.statistic},
+          {"p_value", change.change.p_value}};
+}
+
+nlohmann::json series_json(const SeriesJudgement& s) {
+  nlohmann::json changes = nlohmann::json::array();
+  for (const SeriesChange& change : s.changes) changes.push_back(change_json(change));
+  const HistoryRow& parts = s.column.sample;
+  return {{"series_id", s.column.series_id},
+          {"scene", s.column.scene_id},
+          {"label", s.column.label},
+          {"repository", parts.repository_key},
+          {"adapter", parts.adapter_name},
+          {"suite", parts.suite},
+          {"timing", parts.timing},
+          {"points", s.points},
+          {"max_slowdown", s.limit},
+          {"change_points", changes},
+          {"alert", s.alert ? change_json(*s.alert) : nlohmann::json(nullptr)}};
+}
+
+std::string range_text(const SeriesChange& c) {
+  return fmt::format("{}..{} ({} \"{}\" .. {} \"{}\")", c.last_before.short_sha,
+                     c.first_after.short_sha, c.last_before.short_sha, c.last_before.subject,
+                     c.first_after.short_sha, c.first_after.subject);
+}
+
+}  // namespace
+
+std::size_t AlertJudgement::alerts() const {
+  return static_cast<std::size_t>(std::count_if(
+      series.begin(), series.end(), [](const SeriesJudgement& s) { return s.alert.has_value(); }));
+}
+
+int AlertJudgement::exit_code() const {
+  return alerts() > 0 && action == AlertAction::fail ? 1 : 0;
+}
+
+AlertJudgement judge_history(const std::vector<HistoryRow>& rows, const GatePolicy& policy,
+                             const EDivisiveOptions& detection, AlertAction action) {
+  AlertJudgement judgement;
+  judgement.action = action;
+  for (const SeriesColumn& column : series_columns(rows)) {
+    judgement.series.push_back(judge_series(column, rows, policy, detection));
+  }
+  return judgement;
+}
+
+std::string_view to_string(AlertAction action) {
+  return action == AlertAction::fail ? "fail" : "annotate";
+}
+
+AlertAction parse_alert_action(std::string_view text) {
+  if (text == "fail") return AlertAction::fail;
+  if (text == "annotate") return AlertAction::annotate;
+  throw UsageError(fmt::format("alert action '{}': expected fail or annotate", text));
+}
+
+nlohmann::json alert_json(const AlertJudgement& judgement, const EDivisiveOptions& detection) {
+  nlohmann::json series = nlohmann::json::array();
+  for (const SeriesJudgement& s : judgement.series) series.push_back(series_json(s));
+  return {{"method", "e-divisive means"},
+          {"min_segment", detection.min_segment},
+          {"permutations", detection.permutations},
+          {"significance", detection.significance},
+          {"seed", detection.seed},
+          {"action", std::string(to_string(judgement.action))},
+          {"alerts", judgement.alerts()},
+          {"exit_code", judgement.exit_code()},
+          {"series", series}};
+}
+
+std::string alert_text(const AlertJudgement& judgement) {
+  std::string out;
+  for (const SeriesJudgement& s : judgement.series) {
+    if (!s.alert) continue;
+    const SeriesChange& c = *s.alert;
+    out += fmt::format(
+        "REGRESSED  {:<10} {:+.1f}% ({:.3f} -> {:.3f}, limit {:+.1f}%, p = {:.3f}) between {}; "
+        "{} commits since\n",
+        s.column.label, 100 * c.change.relative_change(), c.change.mean_before,
+        c.change.mean_after, 100 * s.limit, c.change.p_value, range_text(c), c.commits_after);
+  }
+  const std::size_t alerts = judgement.alerts();
+  std::size_t changes = 0;
+  for (const SeriesJudgement& s : judgement.series) changes += s.changes.size();
+  out += fmt::format("alert: {}: {} series, {} in alert, {} change points{}\n",
+                     alerts == 0 ? "OK" : judgement.action == AlertAction::fail ? "FAIL"
+                                                                                : "ANNOTATE",
+                     judgement.series.size(), alerts, changes,
+                     alerts > 0 && judgement.action == AlertAction::annotate
+                         ? " (annotate: not failing)"
+                         : "");
+  return out;
+}
+
+}  // namespace raygate

@@ -1,0 +1,67 @@
+// Alerts on a default branch: each history series' ratios over its commits (store/series.h:
+// one series per repository, adapter, suite, scene settings, timing and baseline) searched for
+// change points (alert/e_divisive.h). A series is in alert when its newest change point made it
+// slower by more than the policy allows for its scene: the commit range is named (the last
+// commit before the change and the first after it), to be bisected or reverted.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "alert/e_divisive.h"
+#include "gate/policy.h"
+#include "store/history.h"
+#include "store/store.h"
+
+namespace raygate {
+
+struct CommitRef {
+  std::string sha;
+  std::string short_sha;
+  std::string subject;
+  std::string commit_time;
+};
+
+// A change point placed between two commits of the series.
+struct SeriesChange {
+  CommitRef last_before;  // the newest commit measured before the change
+  CommitRef first_after;  // the first commit measured after it: the suspect, or the end of
+                          // the range when commits between them were not measured
+  std::size_t commits_after = 0;  // measured commits from first_after to the newest
+  ChangePoint change;
+};
+
+struct SeriesJudgement {
+  SeriesColumn column;  // the series: id, scene, label and a row with its parts
+  std::size_t points = 0;
+  double limit = 0.0;  // the scene's max_slowdown
+  std::vector<SeriesChange> changes;  // oldest first
+  std::optional<SeriesChange> alert;  // the newest change, when it is a slowdown over the limit
+};
+
+enum class AlertAction { fail, annotate };
+
+struct AlertJudgement {
+  std::vector<SeriesJudgement> series;
+  AlertAction action = AlertAction::fail;
+  std::size_t alerts() const;
+  int exit_code() const;  // 1 when a series is in alert and the action is fail, else 0
+};
+
+// `rows` as ResultsStore::history gives them (one per commit and series, newest first). Series
+// with fewer than two segments' worth of points are judged too (no change can be found in them).
+AlertJudgement judge_history(const std::vector<HistoryRow>& rows, const GatePolicy& policy,
+                             const EDivisiveOptions& detection, AlertAction action);
+
+// "fail" / "annotate", for flags and JSON.
+std::string_view to_string(AlertAction action);
+AlertAction parse_alert_action(std::string_view text);
+
+nlohmann::json alert_json(const AlertJudgement& judgement, const EDivisiveOptions& detection);
+// One line per series in alert, and a summary line: what a CI log shows.
+std::string alert_text(const AlertJudgement& judgement);
+
+}  // namespace raygate

@@ -1,0 +1,94 @@
+// `raygate alert`: judges what landed on a branch against its history. Each series of the
+// store (one per repository, adapter, suite, scene settings, timing and baseline) over its last
+// N commits is searched for change points (alert/); a series whose newest change point is a
+// slowdown beyond the policy's limit is in alert, and the suspected commit range is named. Exit
+// 1 when a series is in alert (--on-regression fail, the default), 0 with annotate; 2 usage.
+#include <fmt/core.h>
+
+#include <memory>
+
+#include "alert/history_alert.h"
+#include "cli/commands.h"
+#include "cli/console.h"
+#include "cli/store_options.h"
+#include "core/error.h"
+
+namespace raygate::cli {
+namespace {
+
+struct AlertArgs {
+  std::string store = kDefaultStorePath;
+  HistoryQuery query = [] {
+    HistoryQuery q;
+    q.last_commits = 30;  // enough for a change point with history on both sides
+    return q;
+  }();
+  std::string policy;
+  std::string on_regression = "fail";
+  std::string format;
+  EDivisiveOptions detection;
+};
+
+int alert_command(const AlertArgs& args, const Console& console) {
+  const GatePolicy policy = args.policy.empty() ? GatePolicy{} : load_policy(args.policy);
+  const auto store = open_store(args.store, StoreOpen::must_exist);
+  const std::vector<HistoryRow> rows = store->history(args.query);
+  console.info(fmt::format("judging the last {} commits{} of {}: {} measurements",
+                           args.query.last_commits,
+                           args.query.branch.empty() ? "" : " of branch " + args.query.branch,
+                           store->location(), rows.size()));
+  const AlertJudgement judgement = judge_history(
+      rows, policy, args.detection, parse_alert_action(args.on_regression));
+  if (judgement.series.empty()) {
+    throw UsageError(fmt::format("no measured commits in {} match the filters; record some "
+                                 "with raygate run (or raygate import)",
+                                 store->location()));
+  }
+  if (args.format == "json") {
+    fmt::print("{}\n", alert_json(judgement, args.detection).dump(1));
+  } else {
+    fmt::print("{}", alert_text(judgement));
+  }
+  return judgement.exit_code();
+}
+
+}  // namespace
+
+void add_alert_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<AlertArgs>();
+  CLI::App* command = app.add_subcommand(
+      "alert", "flag a slowdown that landed: change points in each series' history (docs/gate.md)");
+  add_store_option(*command, args->store, kDefaultStorePath);
+  add_history_filters(*command, args->query);
+  command->add_option("--last", args->query.last_commits,
+                      "the newest N commits are the history judged")
+      ->check(CLI::Range(2, 100000))
+      ->capture_default_str();
+  command->add_option("--policy", args->policy,
+                      "gate policy file: each scene's max_slowdown is its alert limit")
+      ->check(CLI::ExistingFile);
+  command->add_option("--on-regression", args->on_regression,
+                      "fail: exit 1 when a series is in alert; annotate: report it, exit 0")
+      ->check(CLI::IsMember({"fail", "annotate"}))
+      ->capture_default_str();
+  command->add_option("--min-segment", args->detection.min_segment,
+                      "commits needed on each side of a change point")
+      ->check(CLI::Range(1, 1000))
+      ->capture_default_str();
+  command->add_option("--permutations", args->detection.permutations,
+                      "random orders of the series for the significance test")
+      ->check(CLI::Range(9, 100000))
+      ->capture_default_str();
+  command->add_option("--significance", args->detection.significance,
+                      "a change point needs a permutation p-value below this")
+      ->check(CLI::Range(0.0001, 0.5))
+      ->capture_default_str();
+  command->add_option("--seed", args->detection.seed, "seed of the permutations")
+      ->capture_default_str();
+  add_format_option(*command, args->format, {"text", "json"});
+  command->callback([args, command, &exit_code] {
+    exit_code = alert_command(*args, console_of(*command));
+  });
+}
+
+}  // namespace raygate::cli

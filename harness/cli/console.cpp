@@ -1,0 +1,107 @@
+#include "cli/console.h"
+
+#include <fmt/core.h>
+
+#include <cstdlib>
+
+#include "cli/progress.h"
+#include "core/error.h"
+
+namespace raygate::cli {
+
+namespace {
+
+const CLI::App& root_of(const CLI::App& command) {
+  const CLI::App* app = &command;
+  while (app->get_parent() != nullptr) app = app->get_parent();
+  return *app;
+}
+
+void deprecation_note(const std::string& old_name, const std::string& current) {
+  fmt::print(stderr, "raygate: note: {} is deprecated; use {}\n", old_name, current);
+}
+
+}  // namespace
+
+ColourChoice parse_colour_choice(std::string_view text) {
+  if (text == "auto") return ColourChoice::automatic;
+  if (text == "always") return ColourChoice::always;
+  if (text == "never") return ColourChoice::never;
+  throw UsageError(fmt::format("--color {}: expected auto, always or never", text));
+}
+
+bool colour_wanted(ColourChoice choice, bool terminal, const char* no_color) {
+  if (choice == ColourChoice::always) return true;
+  if (choice == ColourChoice::never) return false;
+  return terminal && (no_color == nullptr || *no_color == '\0');
+}
+
+void add_global_options(CLI::App& app) {
+  app.add_option("--color", "colour: auto (a terminal, unless NO_COLOR is set), always, never")
+      ->check(CLI::IsMember({"auto", "always", "never"}))
+      ->default_str("auto");
+  const std::string quiet_help = "say nothing but warnings, errors and the results asked for";
+  app.add_flag("-q,--quiet", quiet_help);
+  // Read before parsing (cli/project_config.h); declared here for --help and to be accepted.
+  app.add_option("--config",
+                 "project config file (default: ./raygate.toml when it exists; docs/cli.md)");
+  app.fallthrough();  // `raygate run --quiet ...` as well as `raygate --quiet run ...`
+}
+
+bool Console::colour(std::FILE* stream) const {
+  return colour_wanted(choice_, stream != nullptr && is_terminal(stream),
+                       no_color_ ? "1" : nullptr);
+}
+
+void Console::info(const std::string& text) const {
+  if (!quiet_) fmt::print(stderr, "{}\n", text);
+}
+
+void Console::warning(const std::string& text) const {
+  fmt::print(stderr, "raygate: warning: {}\n", text);
+}
+
+Console console_of(const CLI::App& command) {
+  const CLI::App& root = root_of(command);
+  const CLI::Option* colour = root.get_option_no_throw("--color");
+  const CLI::Option* quiet = root.get_option_no_throw("--quiet");
+  const ColourChoice choice = colour != nullptr && colour->count() > 0
+                                  ? parse_colour_choice(colour->as<std::string>())
+                                  : ColourChoice::automatic;
+  return Console(choice, quiet != nullptr && quiet->count() > 0, std::getenv("NO_COLOR"));
+}
+
+CLI::Option* add_deprecated_alias(CLI::App& command, const std::string& old_name,
+                                  CLI::Option* current, std::string& variable) {
+  const std::string current_name = "--" + current->get_lnames().front();
+  CLI::Option* alias = command.add_option(old_name, variable, "deprecated: use " + current_name);
+  alias->group("Deprecated")->excludes(current)->each([old_name, current_name](const std::string&) {
+    deprecation_note(old_name, current_name);
+  });
+  return alias;
+}
+
+CLI::Option* add_format_option(CLI::App& command, std::string& format,
+                               const std::vector<std::string>& formats, bool json_alias) {
+  format = formats.front();
+  std::string names;
+  for (const std::string& f : formats) names += (names.empty() ? "" : ", ") + f;
+  CLI::Option* option = command.add_option("--format", format, "what to print on standard "
+                                                               "output: " + names)
+                            ->check(CLI::IsMember(formats))
+                            ->capture_default_str();
+  if (json_alias) {
+    command
+        .add_flag_callback("--json",
+                           [&format] {
+                             deprecation_note("--json", "--format json");
+                             format = "json";
+                           },
+                           "deprecated: use --format json")
+        ->group("Deprecated")
+        ->excludes(option);
+  }
+  return option;
+}
+
+}  // namespace raygate::cli

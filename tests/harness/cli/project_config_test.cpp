@@ -1,0 +1,75 @@
+// Project defaults (cli/project_config.h) without running raygate: paths in the file relative to
+// its folder, names of shipped adapters and suites kept, URLs kept, the environment over the
+// file, empty variables unset, --config found among the arguments, sections refused.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <map>
+
+#include "cli/project_config.h"
+#include "core/error.h"
+#include "core/fs.h"
+
+namespace raygate::cli {
+namespace {
+
+using ::testing::HasSubstr;
+
+TEST(ProjectConfig, PathsAreRelativeToTheFileNamesAndUrlsStay) {
+  const TempDir dir;
+  write_file_atomically(dir.path() / "ci" / "tracer.json", "{}");
+  write_file_atomically(dir.path() / "raygate.toml",
+                        "repo = \"..\"\nadapter = \"ci/tracer.json\"\nsuite = \"ci\"\n"
+                        "policy = \"ci/gate.json\"\nstore = \"postgresql://ci@db/raygate\"\n");
+  const ProjectDefaults d = read_project_config(dir.path() / "raygate.toml");
+  EXPECT_EQ(d.at("repo").value, dir.path().parent_path().string());
+  EXPECT_EQ(d.at("adapter").value, (dir.path() / "ci" / "tracer.json").string());
+  EXPECT_EQ(d.at("suite").value, "ci");  // no such file beside it: a shipped suite's name
+  EXPECT_EQ(d.at("policy").value, (dir.path() / "ci" / "gate.json").string());
+  EXPECT_EQ(d.at("store").value, "postgresql://ci@db/raygate");
+  EXPECT_EQ(d.at("suite").origin, (dir.path() / "raygate.toml").string() + ":3");
+}
+
+TEST(ProjectConfig, EnvironmentOverTheFileAndEmptyIsUnset) {
+  const TempDir dir;
+  write_file_atomically(dir.path() / "p.toml", "adapter = \"cmake-nff\"\nsuite = \"full\"\n");
+  const std::map<std::string, std::string> env{{"RAYGATE_CONFIG", (dir.path() / "p.toml").string()},
+                                               {"RAYGATE_ADAPTER", "povray"},
+                                               {"RAYGATE_SUITE", ""}};
+  const auto getenv = [&](const char* name) -> const char* {
+    const auto at = env.find(name);
+    return at == env.end() ? nullptr : at->second.c_str();
+  };
+  const ProjectDefaults d = load_project_defaults("", getenv);
+  EXPECT_EQ(d.at("adapter").value, "povray");
+  EXPECT_EQ(d.at("adapter").origin, "RAYGATE_ADAPTER");
+  EXPECT_EQ(d.at("suite").value, "full");
+  EXPECT_FALSE(d.contains("store"));
+  EXPECT_THROW(load_project_defaults((dir.path() / "none.toml").string(), getenv), UsageError);
+}
+
+TEST(ProjectConfig, SectionsAndListsAreRefusedWithTheLine) {
+  const TempDir dir;
+  write_file_atomically(dir.path() / "a.toml", "store = \"x.db\"\n[run]\nadapter = \"y\"\n");
+  try {
+    read_project_config(dir.path() / "a.toml");
+    FAIL() << "a section was accepted";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("sections are not read"));
+  }
+  write_file_atomically(dir.path() / "b.toml", "suite = [\"ci\", \"full\"]\n");
+  EXPECT_THROW(read_project_config(dir.path() / "b.toml"), UsageError);
+}
+
+TEST(ProjectConfig, ConfigArgumentIsFoundBeforeParsing) {
+  const char* spaced[] = {"raygate", "history", "--config", "x.toml"};
+  EXPECT_EQ(find_config_argument(4, spaced), "x.toml");
+  const char* joined[] = {"raygate", "--config=y.toml", "run"};
+  EXPECT_EQ(find_config_argument(3, joined), "y.toml");
+  const char* none[] = {"raygate", "run", "--", "--config", "z"};
+  EXPECT_EQ(find_config_argument(5, none), "");
+  EXPECT_EQ(environment_name("store"), "RAYGATE_STORE");
+}
+
+}  // namespace
+}  // namespace raygate::cli

@@ -33,6 +33,7 @@ int main(int argc, char** argv) {
   raygate::cli::add_consistency_command(app, exit_code);
   raygate::cli::add_doctor_command(app, exit_code);
   raygate::cli::add_merge_command(app, exit_code);
+  raygate::cli::add_scaling_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

@@ -180,3 +180,20 @@ TEST(GrowthGateTest, ARegressedExponentFailsTheWholeGate) {
 
 }  // namespace
 }  // namespace raygate
+
+namespace raygate {
+namespace {
+
+TEST(GrowthPolicyTest, MaxExponentIncreaseIsReadAndChecked) {
+  EXPECT_DOUBLE_EQ(GatePolicy{}.max_exponent_increase, 0.1);
+  EXPECT_DOUBLE_EQ(parse_policy(R"({"max_exponent_increase": 0.25})", "p.json").max_exponent_increase,
+                   0.25);
+  EXPECT_THROW(parse_policy(R"({"max_exponent_increase": -1})", "p.json"), UsageError);
+  std::string note;
+  EXPECT_DOUBLE_EQ(
+      recorded_policy(nlohmann::json{{"max_exponent_increase", 0.4}}, note).max_exponent_increase,
+      0.4);
+}
+
+}  // namespace
+}  // namespace raygate

@@ -15,10 +15,12 @@
 #include "cli/revision_setup.h"
 #include "cli/store_options.h"
 #include "core/time_text.h"
+#include "gate/growth_gate.h"
 #include "gate/verdict.h"
 #include "runner/baseline_contender.h"
 #include "runner/baseline_tool.h"
 #include "runner/tracer_contender.h"
+#include "scaling/scaling_stage.h"
 
 namespace raygate::cli {
 namespace {
@@ -78,6 +80,7 @@ int run_command(const RunArgs& args, const Console& console) {
     measure_suite(document, m, executor, clock, progress);
   }
   document.finished_at = utc_timestamp();
+  attach_scaling(document, scaling_limits(context.policy), context.quiet ? nullptr : stderr);
   write_results(document, m.out);
   if (const auto score = document.scores.find("tracer"); score != document.scores.end()) {
     console.info(fmt::format("suite score (geometric mean of normalized ratios): {:.3f} [{:.3f}, "

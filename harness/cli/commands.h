@@ -20,5 +20,6 @@ void add_consistency_command(CLI::App& app, int& exit_code);  // ratios across m
 void add_doctor_command(CLI::App& app, int& exit_code);       // is this machine fit to measure
 void add_merge_command(CLI::App& app, int& exit_code);  // shards of a CI matrix
 void add_alert_command(CLI::App& app, int& exit_code);  // change points on a branch's history
+void add_scaling_command(CLI::App& app, int& exit_code);  // growth exponents per scene family
 
 }  // namespace raygate::cli

@@ -7,8 +7,10 @@
 #include "cli/measure_session.h"
 #include "cli/revision_setup.h"
 #include "core/time_text.h"
+#include "gate/growth_gate.h"
 #include "runner/baseline_contender.h"
 #include "runner/tracer_contender.h"
+#include "scaling/scaling_stage.h"
 
 namespace raygate::cli {
 
@@ -93,6 +95,7 @@ ResultsDocument measure_compare(const CompareSetup& setup, std::filesystem::path
     measure_suite(document, m, executor, clock, progress);
   }
   document.finished_at = utc_timestamp();
+  attach_scaling(document, scaling_limits(context.policy), context.quiet ? nullptr : stderr);
   write_results(document, m.out);
   if (document_path != nullptr) *document_path = m.out;
   return document;

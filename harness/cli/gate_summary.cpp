@@ -19,14 +19,24 @@ std::string counts(const GateResult& gate) {
     parts.push_back(fmt::format("{} unmeasured", unmeasured));
   }
   parts.push_back(fmt::format("{} warnings", gate.count(GateOutcome::warn)));
+  if (!gate.families.empty()) {
+    parts.push_back(fmt::format("{} growth exponents judged", gate.families.size()));
+  }
   return fmt::format("{}", fmt::join(parts, ", "));
+}
+
+// The scenes, then the growth exponents of scene families (gate/growth_gate.h).
+std::vector<SceneGate> all_gates(const GateResult& gate) {
+  std::vector<SceneGate> all = gate.scenes;
+  all.insert(all.end(), gate.families.begin(), gate.families.end());
+  return all;
 }
 
 }  // namespace
 
 void print_gate_summary(const GateResult& gate, std::FILE* stream) {
   for (const GateOutcome outcome : {GateOutcome::fail, GateOutcome::unmeasured, GateOutcome::warn}) {
-    for (const SceneGate& scene : gate.scenes) {
+    for (const SceneGate& scene : all_gates(gate)) {
       if (scene.outcome != outcome) continue;
       for (const std::string& reason : scene.reasons) {
         fmt::print(stream, "{:<10} {:<10} {}\n", to_string(outcome), scene.id, reason);

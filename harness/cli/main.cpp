@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   raygate::cli::add_doctor_command(app, exit_code);
   raygate::cli::add_merge_command(app, exit_code);
   raygate::cli::add_alert_command(app, exit_code);
+  raygate::cli::add_scaling_command(app, exit_code);
   try {
     // Before parsing: the command line overrides these (cli/project_config.h).
     raygate::cli::apply_project_defaults(

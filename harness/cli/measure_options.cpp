@@ -178,7 +178,8 @@ nlohmann::json measure_settings(const MeasureContext& c) {
       {"golden_dir", c.golden_dir.string()},
       {"policy_file", c.policy.file.string()},
       {"max_slowdown", c.policy.defaults.max_slowdown},
-      {"significance", c.policy.defaults.significance}};
+      {"significance", c.policy.defaults.significance},
+      {"max_exponent_increase", c.policy.max_exponent_increase}};
   if (c.shard) settings["shard"] = shard_to_json(*c.shard);
   return settings;
 }

@@ -53,10 +53,14 @@ GatePolicy parse_policy(std::string_view text, const std::string& origin) {
   GatePolicy policy;
   try {
     const JsonField root(document, "$");
-    root.expect_object({"max_slowdown", "significance", "image", "fail_on_inconclusive", "scenes"});
+    root.expect_object({"max_slowdown", "significance", "image", "fail_on_inconclusive",
+                        "max_exponent_increase", "scenes"});
     read_scene_keys(root, policy.defaults);
     if (root.has("fail_on_inconclusive")) {
       policy.fail_on_inconclusive = root.member("fail_on_inconclusive").as_bool();
+    }
+    if (root.has("max_exponent_increase")) {
+      policy.max_exponent_increase = fraction(root.member("max_exponent_increase"), 0.0, 10.0);
     }
     if (root.has("scenes")) {
       const JsonField scenes = root.member("scenes");
@@ -92,6 +96,8 @@ GatePolicy recorded_policy(const nlohmann::json& settings, std::string& note) {
   GatePolicy policy;
   policy.defaults.max_slowdown = settings.value("max_slowdown", policy.defaults.max_slowdown);
   policy.defaults.significance = settings.value("significance", policy.defaults.significance);
+  policy.max_exponent_increase =
+      settings.value("max_exponent_increase", policy.max_exponent_increase);
   note = fmt::format("the limits it was measured under (max_slowdown {}, significance {}){}",
                      policy.defaults.max_slowdown, policy.defaults.significance,
                      file.empty() ? "" : "; its policy file " + file +

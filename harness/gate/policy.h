@@ -26,6 +26,8 @@ struct GatePolicy {
   ScenePolicy defaults;
   std::map<std::string, ScenePolicy> scenes;  // by suite scene id, defaults already applied
   bool fail_on_inconclusive = false;
+  // A scene family's growth exponent may rise this much from base to head (docs/scaling.md).
+  double max_exponent_increase = 0.1;
   std::filesystem::path file;  // where it came from; empty for the built-in defaults
 
   const ScenePolicy& for_scene(const std::string& id) const;

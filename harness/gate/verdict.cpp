@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/exit_codes.h"
+#include "gate/growth_gate.h"
 #include "measure/change.h"
 
 namespace raygate {
@@ -116,6 +117,11 @@ std::vector<std::string> document_problems(const ResultsDocument& document) {
   return {};
 }
 
+bool failed_growth(const GateResult& result) {
+  return std::any_of(result.families.begin(), result.families.end(),
+                     [](const SceneGate& g) { return g.outcome == GateOutcome::fail; });
+}
+
 }  // namespace
 
 std::size_t GateResult::count(GateOutcome outcome) const {
@@ -137,9 +143,10 @@ GateResult evaluate_gate(const ResultsDocument& document, const GatePolicy& poli
     judge_images(scene, gate, missing);
     result.scenes.push_back(std::move(gate));
   }
+  result.families = judge_growth(document, policy);
   result.notes = missing_golden_notes(missing, document);
   result.problems = document_problems(document);
-  if (result.count(GateOutcome::fail) > 0) {
+  if (result.count(GateOutcome::fail) > 0 || failed_growth(result)) {
     result.exit_code = to_int(ExitCode::regression);
   } else if (result.count(GateOutcome::unmeasured) > 0 || !result.problems.empty()) {
     result.exit_code = to_int(ExitCode::infrastructure);

@@ -29,6 +29,8 @@ struct SceneGate {
 
 struct GateResult {
   std::vector<SceneGate> scenes;
+  // A compare's growth exponents by scene family, "scaling:<family>" (gate/growth_gate.h).
+  std::vector<SceneGate> families;
   int exit_code = 0;  // 0 pass (warnings allowed), 1 regression, 3 could not measure
   // About the document as a whole, said once: why it cannot pass though no scene failed (no
   // scenes, incomplete), and notes that judge nothing (no goldens: "… (4 scenes); bless …").

@@ -45,6 +45,10 @@ std::string change_bar_svg(double change, const Interval& interval, double thres
 // The normalized ratio over commits: CI band, line, points with tooltips.
 std::string trend_svg(const TrendSeries& series);
 
+// <section> of the scaling analysis (html_scaling.cpp): a log-log plot per scene family with
+// the fitted growth; "" when the document has none.
+std::string scaling_section(const ResultsDocument& document);
+
 // <section> of one scene: badge, reasons, numbers, plots, images, metrics.
 std::string scene_section(const ReportInput& input, const SceneView& view);
 

@@ -141,7 +141,7 @@ class HtmlReporter final : public Reporter {
         << "<header class=\"top card\"><div class=\"brand\">raygate <span>" << escape(d.kind)
         << " report</span></div><h1>" << escape(title) << "</h1>" << banner(input, views)
         << meta_list(input) << "</header>\n"
-        << overview(input, views) << '\n';
+        << overview(input, views) << '\n' << scaling_section(d) << '\n';
     for (const SceneView& view : views) out << scene_section(input, view) << '\n';
     out << "<footer>raygate " << escape(d.raygate_version)
         << " · normalized ratio = time(tracer) / time(baseline), medians of paired rounds with "

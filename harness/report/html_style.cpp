@@ -114,6 +114,11 @@ svg.plot{display:block;max-width:100%;height:auto;margin:2px 0 4px;overflow:visi
 .mark.role-base{stroke:#6e7781;fill:#6e7781}.mark.role-tracer{stroke:var(--accent);fill:var(--accent)}
 .band{fill:var(--pass-bg)}
 .zero{stroke:#8c959f;stroke-dasharray:3 3}
+.scl-fit{stroke-width:2;fill:none}
+.scl-baseline{stroke:#6e7781;fill:#6e7781}.scl-tracer,.scl-head{stroke:var(--accent);fill:var(--accent)}
+.scl-base{stroke:#bf8700;fill:#bf8700}.scl-head .scl-fit{stroke-dasharray:6 3}
+.scaling-plot circle{stroke:#fff;stroke-width:1}.scaling-plot text{stroke:none}
+ul.scaling-fits{font-size:13px;margin:4px 0 14px;padding-left:18px}
 .trend-band{fill:#ddf4ff}
 .trend-line{fill:none;stroke:var(--accent);stroke-width:2}
 .trend-point{fill:var(--accent);stroke:#fff;stroke-width:1.5}

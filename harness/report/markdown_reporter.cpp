@@ -8,6 +8,8 @@
 
 #include "report/report_model.h"
 #include "report/reporters.h"
+#include "scaling/scaling_json.h"
+#include "scaling/scaling_text.h"
 
 namespace raygate::report {
 namespace {
@@ -143,6 +145,13 @@ std::string MarkdownReporter::compose(const ReportInput& input,
   }
   for (const std::string& note : input.gate.notes) notes += "- note: " + md(note) + "\n";
   if (!notes.empty()) text.append("\n").append(notes);
+  if (!d.scaling.is_null()) {
+    text += "\n**Growth with scene size** (exponent k of t ≈ c·n^k, 95% CI)\n\n```\n";
+    for (const std::string& line : scaling_lines(scaling_from_json(d.scaling, "document"))) {
+      text += line + "\n";
+    }
+    text += "```\n";
+  }
   if (with_details) text.append("\n").append(details(input));
   return text;
 }

@@ -123,6 +123,17 @@ std::string primary_role(const ResultsDocument& document) {
   return document.kind == "compare" ? "head" : "tracer";
 }
 
+namespace {
+
+// Growth exponents that failed the gate (gate/growth_gate.h): a regression with no scene failed.
+std::size_t failed_families(const GateResult& gate) {
+  return static_cast<std::size_t>(std::count_if(
+      gate.families.begin(), gate.families.end(),
+      [](const SceneGate& g) { return g.outcome == GateOutcome::fail; }));
+}
+
+}  // namespace
+
 Headline headline(const ReportInput& input, const std::vector<SceneView>& views) {
   const GateResult& gate = input.gate;
   const std::size_t failed = gate.count(GateOutcome::fail);
@@ -136,6 +147,9 @@ Headline headline(const ReportInput& input, const std::vector<SceneView>& views)
   } else if (unmeasured > 0) {
     line.title = "raygate: could not measure " + plural(unmeasured, "scene", "scenes");
     line.detail = ids_of(views, GateOutcome::unmeasured, false);
+  } else if (const std::size_t growth = failed_families(gate); growth > 0) {
+    line.title = "raygate: growth regressed in " + plural(growth, "scene family", "scene families");
+    line.detail = "the exponent of time against scene size rose beyond the policy's limit";
   } else if (views.empty() && gate.exit_code != 0) {
     line.title = "raygate: no scenes";
     line.detail = "nothing was measured";

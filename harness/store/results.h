@@ -76,6 +76,9 @@ struct ResultsDocument {
   std::vector<RevisionRecord> revisions;
   std::vector<SceneResult> scenes;
   std::map<std::string, SuiteScore> scores;  // by role: geometric mean over measured scenes
+  // Growth exponents per scene family (scaling/scaling_json.h), when the suite measured a family
+  // at 3 sizes or more; null otherwise. Kept as JSON here: the store does not depend on scaling/.
+  nlohmann::json scaling;
 
   const RevisionRecord* revision(const std::string& role) const;
 };

@@ -293,7 +293,7 @@ const RevisionRecord* ResultsDocument::revision(const std::string& role) const {
 }
 
 nlohmann::json to_json(const ResultsDocument& d) {
-  return json{{"schema_version", d.schema_version},
+  json j{{"schema_version", d.schema_version},
               {"kind", d.kind},
               {"raygate_version", d.raygate_version},
               {"started_at", d.started_at},
@@ -307,6 +307,8 @@ nlohmann::json to_json(const ResultsDocument& d) {
               {"revisions", d.revisions},
               {"scenes", d.scenes},
               {"scores", d.scores}};
+  if (!d.scaling.is_null()) j["scaling"] = d.scaling;
+  return j;
 }
 
 ResultsDocument results_from_json(const nlohmann::json& j, const std::string& origin) {
@@ -333,6 +335,7 @@ ResultsDocument results_from_json(const nlohmann::json& j, const std::string& or
     d.revisions = j.at("revisions").get<std::vector<RevisionRecord>>();
     d.scenes = j.at("scenes").get<std::vector<SceneResult>>();
     d.scores = j.at("scores").get<std::map<std::string, SuiteScore>>();
+    d.scaling = j.value("scaling", json());
     return d;
   } catch (const nlohmann::json::exception& e) {
     throw UsageError(origin + ": not a raygate results document: " + e.what());

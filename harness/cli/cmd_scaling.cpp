@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "cli/commands.h"
+#include "cli/console.h"
 #include "cli/gate_summary.h"
 #include "cli/report_options.h"
 #include "core/error.h"
@@ -25,7 +26,7 @@ struct ScalingArgs {
   std::vector<std::string> reports;
 };
 
-int scaling_command(const ScalingArgs& args) {
+int scaling_command(const ScalingArgs& args, const Console& console) {
   check_report_specs(args.reports);
   ResultsDocument document = read_results(args.results);
   std::string note;
@@ -45,7 +46,8 @@ int scaling_command(const ScalingArgs& args) {
   gate.exit_code = failed ? 1 : 0;
   print_gate_summary(gate, stdout);
   if (!args.reports.empty()) {  // the scene table is run's and compare's; shown only on request
-    emit_reports(document, evaluate_gate(document, policy), policy, args.reports, args.results);
+    emit_reports(document, evaluate_gate(document, policy), policy, args.reports, args.results,
+                 console);
   }
   return gate.exit_code;
 }
@@ -63,7 +65,9 @@ void add_scaling_command(CLI::App& app, int& exit_code) {
                       "gate policy file (max_exponent_increase, max_slowdown; docs/gate.md)");
   command->add_flag("--no-write", args->no_write, "do not write the fits into the document");
   add_report_options(*command, args->reports);
-  command->callback([args, &exit_code] { exit_code = scaling_command(*args); });
+  command->callback([args, command, &exit_code] {
+    exit_code = scaling_command(*args, console_of(*command));
+  });
 }
 
 }  // namespace raygate::cli

@@ -147,8 +147,8 @@ std::string MarkdownReporter::compose(const ReportInput& input,
   if (!notes.empty()) text.append("\n").append(notes);
   if (!d.scaling.is_null()) {
     text += "\n**Growth with scene size** (exponent k of t ≈ c·n^k, 95% CI)\n\n```\n";
-    for (const std::string& line : scaling_lines(scaling_from_json(d.scaling, "document"))) {
-      text += line + "\n";
+    for (const std::string& fit : scaling_lines(scaling_from_json(d.scaling, "document"))) {
+      text += fit + "\n";
     }
     text += "```\n";
   }

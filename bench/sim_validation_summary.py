@@ -45,7 +45,7 @@ def determinism(doc):
     same = total = 0
     for scene in doc["scenes"] if doc else []:
         costs = {}
-        for rnd in scene["runs"]["rounds"]:
+        for rnd in scene["rounds"]:
             for role, run in rnd["runs"].items():
                 costs.setdefault(role, set()).add(run["seconds"])
         if costs:
@@ -101,13 +101,46 @@ def main():
             exits.append(w[1])
             walls.append(w[0])
             changes += [f"{s['scene']['id']} {100 * s['change']['change']:+.4f}%"
-                        f"{' exact' if s['change'].get('exact') else ''} {s['change_verdict']}"
+                        f"{' exact' if s['change'].get('exact') else ''} {s['change'].get('verdict', '?')}"
                         for s in doc["scenes"] if s.get("change")]
         if not exits:
             continue
+        costs = {}
+        for i in range(1, compares + 1):
+            doc = load(f"{out}/compare-{kind}-{i}.json")
+            for scene in doc["scenes"] if doc else []:
+                for rnd in scene["rounds"]:
+                    for role in ("base", "head"):
+                        costs.setdefault((scene["scene"]["id"], role), set()).add(
+                            rnd["runs"][role]["seconds"])
+        distinct = max((len(v) for v in costs.values()), default=0)
+        print(f"- {label}: every base and head run of every compare, per scene: at most {distinct} "
+              f"distinct cost(s) over {2 * len(exits)} runs each")
         print(f"- {label}: {len(exits)} compares, exit 1 in {sum(e == 1 for e in exits)}, "
               f"exit codes {sorted(set(exits))}; wall s min {min(walls):.0f} max {max(walls):.0f}; "
               f"changes seen: {sorted(set(changes))}")
+
+
+    print("\n## 4. What a simulated run costs: CPU seconds of the tracer's runs\n")
+    print("| tracer | scenes | one sim round, CPU s (valgrind) | one timed round, CPU s | slowdown |")
+    print("|---|---|---|---|---|")
+    for tracer in tracers:
+        sim = load(f"{out}/run-{tracer}-sim.json")
+        cpu = load(f"{out}/run-{tracer}-cpu.json")
+        if not sim or not cpu:
+            continue
+        def per_round(doc):
+            total = {}
+            for scene in doc["scenes"]:
+                runs = [r["runs"]["tracer"] for r in scene["rounds"]]
+                if runs:
+                    total[scene["scene"]["id"]] = sum(
+                        r["user_seconds"] + r["system_seconds"] for r in runs) / len(runs)
+            return total
+        a, b = per_round(sim), per_round(cpu)
+        ids = [i for i in a if i in b]
+        sa, sb = sum(a[i] for i in ids), sum(b[i] for i in ids)
+        print(f"| {tracer} | {len(ids)} | {sa:.1f} | {sb:.2f} | {sa / sb:.0f}x |")
 
 
 main()

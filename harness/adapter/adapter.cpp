@@ -152,12 +152,16 @@ Timing read_timing(const JsonField& field) {
   Timing timing;
   if (field.has("source")) {
     timing.source = static_cast<TimingSource>(read_choice(field.member("source"),
-                                                          {"process", "reported"}));
+                                                          {"process", "reported", "simulated"}));
   }
   const bool reported = timing.source == TimingSource::reported;
   if (!reported) {
     for (const char* key : {"regex", "unit"}) {
       if (field.has(key)) field.member(key).fail("only used with \"source\": \"reported\"");
+    }
+    if (field.has("metric") && timing.source == TimingSource::simulated) {
+      field.member("metric").fail("only used with \"source\": \"process\" (a simulated cost "
+                                  "is counted, not timed)");
     }
     if (field.has("metric")) {
       timing.metric = static_cast<TimingMetric>(read_choice(field.member("metric"),
@@ -342,7 +346,12 @@ std::string_view to_string(SceneFormat format) {
 }
 
 std::string_view to_string(TimingSource source) {
-  return source == TimingSource::process ? "process" : "reported";
+  switch (source) {
+    case TimingSource::process: return "process";
+    case TimingSource::reported: return "reported";
+    case TimingSource::simulated: return "simulated";
+  }
+  return "?";
 }
 
 std::string_view to_string(TimingMetric metric) {

@@ -18,6 +18,7 @@ enum class SceneFormat { nff, pov, obj, pbrt };
 enum class TimingSource {
   process,   // measured by raygate from wait4 (wall or user+sys CPU)
   reported,  // parsed from the tracer's own output with a regex
+  simulated,  // estimated cycles counted by Valgrind's cachegrind (docs/simulated-timing.md)
 };
 enum class TimingMetric { wall, cpu };  // for TimingSource::process
 enum class TimeUnit { seconds, milliseconds };  // for TimingSource::reported

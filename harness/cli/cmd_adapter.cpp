@@ -35,6 +35,9 @@ std::string command_line(const std::vector<std::string>& argv) {
 }
 
 std::string timing_line(const Timing& timing) {
+  if (timing.source == TimingSource::simulated) {
+    return "simulated cycles under valgrind's cachegrind (docs/simulated-timing.md)";
+  }
   if (timing.source == TimingSource::process) {
     return timing.metric == TimingMetric::wall ? "process wall-clock seconds (wait4)"
                                                : "process CPU seconds, user + system (wait4)";

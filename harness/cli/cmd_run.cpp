@@ -13,6 +13,7 @@
 #include "cli/measure_options.h"
 #include "cli/measure_session.h"
 #include "cli/revision_setup.h"
+#include "cli/simulated_mode.h"
 #include "cli/store_options.h"
 #include "core/time_text.h"
 #include "gate/growth_gate.h"
@@ -61,9 +62,7 @@ int run_command(const RunArgs& args, const Console& console) {
   m.stop = [&](const SuiteScene&) { return ratio_stop_rule(context.stopping, "tracer"); };
   m.tracer_roles = {"tracer"};
 
-  const BaselineContender baseline_runs(context.tools.baseline, context.suite.sampling,
-                                        std::chrono::minutes(30), "none",
-                                        baseline_clock(context));
+  const BaselineContender baseline_runs = make_baseline_contender(context, baseline.source_hash());
   const TracerContender tracer_runs(tracer.setup);
   m.contenders = {&baseline_runs, &tracer_runs};
 

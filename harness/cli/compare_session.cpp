@@ -6,6 +6,8 @@
 
 #include "cli/measure_session.h"
 #include "cli/revision_setup.h"
+#include "cli/simulated_mode.h"
+#include "measure/simulated_cost.h"
 #include "core/time_text.h"
 #include "gate/growth_gate.h"
 #include "runner/baseline_contender.h"
@@ -22,11 +24,22 @@ BootstrapOptions bootstrap_for(const ScenePolicy& policy) {
   return options;
 }
 
+// The change head vs base: exact when counted (sim mode) and every run repeated its count, else
+// the statistics of timed rounds.
+ChangeSummary measured_change(const std::vector<Round>& rounds, const ScenePolicy& policy,
+                              bool counted) {
+  const std::vector<CompareRound> samples = compare_samples(rounds);
+  if (counted) {
+    if (std::optional<ChangeSummary> exact = exact_change(samples)) return *exact;
+  }
+  return summarize_change(samples, bootstrap_for(policy));
+}
+
 // The change head vs base, and head's image against base's.
 void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy,
-                          const std::filesystem::path& evidence_dir) {
+                          const std::filesystem::path& evidence_dir, bool counted) {
   const ScenePolicy& policy = gate_policy.for_scene(scene.entry.id);
-  scene.change = summarize_change(compare_samples(scene.runs.rounds), bootstrap_for(policy));
+  scene.change = measured_change(scene.runs.rounds, policy, counted);
   scene.change_verdict = std::string(to_string(classify_change(*scene.change, policy.max_slowdown)));
   const RunRecord* base = scene.runs.first_run("base");
   const RunRecord* head = scene.runs.first_run("head");
@@ -38,11 +51,12 @@ void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy,
 
 }  // namespace
 
-StopRule change_stop_rule(const StoppingPolicy& stopping, const ScenePolicy& policy) {
+StopRule change_stop_rule(const StoppingPolicy& stopping, const ScenePolicy& policy,
+                          bool counted) {
   return [=](const std::vector<Round>& rounds, double seconds_spent) {
     // One round's interval is a point: never call that decided.
     if (rounds.size() >= std::max<std::size_t>(stopping.min_rounds, 2)) {
-      const ChangeSummary change = summarize_change(compare_samples(rounds), bootstrap_for(policy));
+      const ChangeSummary change = measured_change(rounds, policy, counted);
       if (classify_change(change, policy.max_slowdown) != ChangeVerdict::inconclusive) {
         return StopDecision::stop_converged;
       }
@@ -68,14 +82,13 @@ ResultsDocument measure_compare(const CompareSetup& setup, std::filesystem::path
   const std::filesystem::path work_dir = m.work_dir;
   m.tracer_roles = {"base", "head"};
   m.stop = [&](const SuiteScene& scene) {
-    return change_stop_rule(context.stopping, context.policy.for_scene(scene.id));
+    return change_stop_rule(context.stopping, context.policy.for_scene(scene.id),
+                            simulated(context));
   };
   m.finish_scene = [&](SceneResult& scene) {
-    finish_compare_scene(scene, context.policy, work_dir / "evidence");
+    finish_compare_scene(scene, context.policy, work_dir / "evidence", simulated(context));
   };
-  const BaselineContender baseline_runs(context.tools.baseline, context.suite.sampling,
-                                        std::chrono::minutes(30), "none",
-                                        baseline_clock(context));
+  const BaselineContender baseline_runs = make_baseline_contender(context, source_hash);
   const TracerContender base_runs(base.setup);
   const TracerContender head_runs(head.setup);
   m.contenders = {&baseline_runs, &base_runs, &head_runs};

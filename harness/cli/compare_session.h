@@ -29,6 +29,8 @@ ResultsDocument measure_compare(const CompareSetup& setup, std::filesystem::path
 
 // Stops a scene once its verdict is decided (REGRESSED, IMPROVED or UNCHANGED); an
 // INCONCLUSIVE scene gets rounds until the budget is spent.
-StopRule change_stop_rule(const StoppingPolicy& stopping, const ScenePolicy& policy);
+// `counted`: sim mode, where rounds whose counts all repeat decide exactly (measure/simulated_cost.h).
+StopRule change_stop_rule(const StoppingPolicy& stopping, const ScenePolicy& policy,
+                          bool counted = false);
 
 }  // namespace raygate::cli

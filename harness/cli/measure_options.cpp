@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "cli/simulated_mode.h"
 #include "compare/golden.h"
 #include "core/error.h"
 #include "core/sha256.h"
@@ -51,8 +52,9 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
       ->check(CLI::Range(0.0, 1e7))
       ->capture_default_str();
   command.add_option("--timing", args.metric,
-                     "time of a process-timed tracer: wall or cpu (default: the adapter's)")
-      ->check(CLI::IsMember({"wall", "cpu"}));
+                     "time of a process-timed tracer: wall or cpu; sim: simulated cycles under "
+                     "cachegrind (default: the adapter's)")
+      ->check(CLI::IsMember({"wall", "cpu", "sim"}));
   command.add_option("--jobs", args.jobs, "parallel build jobs (default: all allowed CPUs)");
   command.add_option("--policy", args.policy,
                      "gate policy file: slowdown limit, significance, image thresholds "
@@ -141,6 +143,7 @@ MeasureContext load_measure_context(const MeasureArgs& args) {
   if (args.metric == "cpu") c.metric = TimingMetric::cpu;
   if (!args.policy.empty()) c.policy = load_policy(args.policy);
   c.jobs = args.jobs;
+  apply_simulated_mode(args, c);
   return c;
 }
 
@@ -168,8 +171,9 @@ nlohmann::json measure_settings(const MeasureContext& c) {
       {"min_rounds", c.stopping.min_rounds},
       {"max_rounds", c.stopping.max_rounds},
       {"max_seconds_per_scene", c.stopping.max_seconds},
-      {"metric", c.metric ? std::string(to_string(*c.metric))
-                          : std::string(to_string(c.adapter.timing.metric))},
+      {"metric", simulated(c)  ? std::string(tracer_clock_name(c.adapter.timing.source, {}))
+                 : c.metric ? std::string(to_string(*c.metric))
+                            : std::string(to_string(c.adapter.timing.metric))},
       {"timing_source", std::string(to_string(c.adapter.timing.source))},
       {"tracer_clock",
        std::string(tracer_clock_name(c.adapter.timing.source, tracer_metric(c)))},

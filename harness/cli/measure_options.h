@@ -15,6 +15,7 @@
 #include "gate/policy.h"
 #include "measure/stopping.h"
 #include "runner/baseline_contender.h"
+#include "runner/cachegrind.h"
 #include "runner/scheduler.h"
 #include "runner/suite.h"
 #include "store/shard.h"
@@ -37,7 +38,7 @@ struct MeasureArgs {
   std::size_t min_rounds = 3;
   std::size_t max_rounds = 30;
   double max_seconds = 300;
-  std::string metric;  // "" (the adapter's), wall, cpu
+  std::string metric;  // "" (the adapter's), wall, cpu, sim
   int jobs = 0;
   std::string policy;  // gate policy file; "" = the defaults
   std::string shard;        // "K/N" (run and compare only); "" = every selected scene
@@ -64,6 +65,7 @@ struct MeasureContext {
   GatePolicy policy;
   int jobs = 0;  // parallel build jobs; 0 = every allowed CPU
   bool quiet = false;  // --quiet: builds and measurements say nothing on standard error
+  std::optional<Cachegrind> cachegrind;  // sim mode (cli/simulated_mode.h)
 };
 
 MeasureContext load_measure_context(const MeasureArgs& args);

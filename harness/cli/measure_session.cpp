@@ -10,6 +10,7 @@
 #include "core/sha256.h"
 #include "core/time_text.h"
 #include "measure/machine_context.h"
+#include "runner/cachegrind.h"
 #include "runner/scene_files.h"
 #include "store/scores.h"
 
@@ -187,6 +188,7 @@ std::string scene_line(const SceneResult& scene, const std::vector<std::string>&
     }
   }
   text += fmt::format("  {} rounds, {}", scene.runs.rounds.size(), scene.runs.stop_reason);
+  if (const std::string note = determinism_note(scene.runs); !note.empty()) text += "  " + note;
   if (scene.runs.failed()) {
     const RunRecord& run = *scene.runs.failed_run;
     text += fmt::format("  FAILED {}: {} (log: {})", scene.runs.failed_role, run.failure,

@@ -63,6 +63,7 @@ PreparedRevision prepare_revision(const std::string& role, const std::string& re
   prepared.setup.repo_root = worktree.path;
   prepared.setup.raygate_source = context.tools.data_root;
   prepared.setup.metric = context.metric;
+  prepared.setup.cachegrind = context.cachegrind;
   if (context.adapter.pin_cpus && context.schedule.pin_cpus.empty()) {
     // The adapter asks raygate to pin: the first `threads` CPUs this process may use.
     const std::vector<int> allowed = allowed_cpu_list();

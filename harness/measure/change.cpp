@@ -83,7 +83,7 @@ ChangeVerdict classify_change(double change, const Interval& change_interval, do
 }
 
 ChangeVerdict classify_change(const ChangeSummary& summary, double threshold) {
-  if (summary.rounds < min_values_for_median_interval(summary.confidence)) {
+  if (!summary.exact && summary.rounds < min_values_for_median_interval(summary.confidence)) {
     return ChangeVerdict::inconclusive;
   }
   return classify_change(summary.change, summary.change_interval, threshold);

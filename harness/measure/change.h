@@ -34,6 +34,9 @@ struct ChangeSummary {
   RatioSummary base;  // each revision's normalized ratio against the baseline
   RatioSummary head;
   MannWhitneyResult mann_whitney;  // a = head's per-round ratios, b = base's
+  // Counted, not sampled (--timing sim, measure/simulated_cost.h): every run of each contender
+  // cost exactly the same, so `change` is exact and its interval a point, however few rounds.
+  bool exact = false;
 };
 
 // Throws std::invalid_argument for no rounds, InfraError for a time that is not positive.
@@ -54,7 +57,7 @@ ChangeVerdict classify_change(double change, const Interval& change_interval,
                               double threshold = kDefaultChangeThreshold);
 
 // The rule above, and INCONCLUSIVE whatever the numbers while there are fewer rounds than an
-// interval at the summary's confidence needs (6 at 95%).
+// interval at the summary's confidence needs (6 at 95%), unless the summary is exact.
 ChangeVerdict classify_change(const ChangeSummary& summary,
                               double threshold = kDefaultChangeThreshold);
 

@@ -184,6 +184,8 @@ std::string percent(double fraction, int decimals) {
 std::string change_text(const SceneResult& scene) {
   if (!scene.change || scene.runs.failed()) return "";
   const ChangeSummary& c = *scene.change;
+  // Counted in simulated cycles, every count repeated: the change is a fact, not an estimate.
+  if (c.exact) return percent(c.change, 3) + " exact (simulated cycles)";
   return fmt::format("{} [{}, {}]", percent(c.change), percent(c.change_interval.lower),
                      percent(c.change_interval.upper));
 }

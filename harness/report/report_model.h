@@ -41,7 +41,8 @@ std::string verdict_word(int exit_code);
 
 // "+7.9%" (sign always shown).
 std::string percent(double fraction, int decimals = 1);
-// "+7.9% [+6.1%, +9.8%]"; "" when the scene has no change (a run, or a failed scene).
+// "+7.9% [+6.1%, +9.8%]", or "+0.912% exact (simulated cycles)" when counted (--timing sim);
+// "" when the scene has no change (a run, or a failed scene).
 std::string change_text(const SceneResult& scene);
 // A run: "0.512 [0.507, 0.518]"; a compare: "0.512 -> 0.553" (arrow as given).
 std::string ratio_text(const ResultsDocument& document, const SceneResult& scene,

@@ -2,7 +2,9 @@
 
 #include <cmath>
 
+#include "core/error.h"
 #include "core/fs.h"
+#include "core/sha256.h"
 
 namespace raygate {
 
@@ -30,17 +32,20 @@ std::string_view to_string(BaselineClock clock) {
     case BaselineClock::process_wall: return "process-wall";
     case BaselineClock::process_cpu: return "process-cpu";
     case BaselineClock::in_process: return "in-process";
+    case BaselineClock::simulated: return "simulated-cycles";
   }
   return "unknown";
 }
 
 std::string_view tracer_clock_name(TimingSource source, TimingMetric metric) {
   if (source == TimingSource::reported) return "reported";
+  if (source == TimingSource::simulated) return "simulated-cycles";
   return metric == TimingMetric::cpu ? "process-cpu" : "process-wall";
 }
 
 BaselineClock matching_baseline_clock(TimingSource source, TimingMetric metric) {
   if (source == TimingSource::reported) return BaselineClock::in_process;
+  if (source == TimingSource::simulated) return BaselineClock::simulated;
   return metric == TimingMetric::cpu ? BaselineClock::process_cpu : BaselineClock::process_wall;
 }
 
@@ -59,21 +64,51 @@ ProcessSpec BaselineContender::command(const SceneInput& scene,
   ProcessSpec spec;
   spec.argv = {executable_.string(),       scene.nff.string(), "-o",
                (run_dir / kImageName).string(), "--accel", accel_,
-               "--sampling",               sampling_,          "--stats",
-               (run_dir / kStatsName).string()};
+               "--sampling",               sampling_};
   spec.working_directory = run_dir;
   spec.stdout_path = run_dir / "log.txt";
   spec.stderr_path = spec.stdout_path;
   spec.timeout = timeout_;
-  return spec;
+  if (clock_ != BaselineClock::simulated) {
+    spec.argv.insert(spec.argv.end(), {"--stats", (run_dir / kStatsName).string()});
+    return spec;
+  }
+  // No --stats: formatting its measured seconds costs a different number of instructions each
+  // run (41 in 1.1e9 on tetra, measured), and would make the baseline's count unrepeatable.
+  if (!simulation_) throw std::logic_error("BaselineContender: simulated clock without simulate()");
+  return under_cachegrind(std::move(spec), simulation_->cachegrind, cachegrind_dir(run_dir));
 }
 
-RunRecord BaselineContender::interpret(const SceneInput& /*scene*/, const ProcessResult& result,
+BaselineCostKey BaselineContender::cost_key(const SceneInput& scene) const {
+  return {simulation_->source_sha256, simulation_->cachegrind.version, sha256_file_hex(scene.nff),
+          sampling_, accel_};
+}
+
+std::optional<RunRecord> BaselineContender::known_run(const SceneInput& scene) const {
+  if (clock_ != BaselineClock::simulated || !simulation_ || !simulation_->cache) {
+    return std::nullopt;
+  }
+  const std::optional<SimulatedCounters> counters = simulation_->cache->find(cost_key(scene));
+  if (!counters) return std::nullopt;
+  RunRecord run;
+  run.ok = true;
+  run.outcome = "not run: simulated cost cached in " + simulation_->cache->dir().string();
+  run.simulated = counters;
+  run.seconds = estimated_cycles(*counters);
+  return run;
+}
+
+RunRecord BaselineContender::interpret(const SceneInput& scene, const ProcessResult& result,
                                        const ProcessSpec& spec,
                                        const std::filesystem::path& run_dir) const {
   RunRecord run = record_process(result, spec);
   run.image = run_dir / kImageName;
   if (!run.ok) return run;
+  if (clock_ == BaselineClock::simulated) {
+    record_simulated_cost(run, cachegrind_dir(run_dir));
+    if (run.ok && simulation_->cache) simulation_->cache->observe(cost_key(scene), *run.simulated);
+    return run;
+  }
   try {
     run.reported_seconds = in_process_seconds(run_dir / kStatsName);
   } catch (const std::exception& e) {
@@ -86,6 +121,7 @@ RunRecord BaselineContender::interpret(const SceneInput& /*scene*/, const Proces
     case BaselineClock::process_wall: run.seconds = run.wall_seconds; break;
     case BaselineClock::process_cpu: run.seconds = run.cpu_seconds(); break;
     case BaselineClock::in_process: run.seconds = *run.reported_seconds; break;
+    case BaselineClock::simulated: break;  // returned above
   }
   if (!(run.seconds > 0.0)) {  // the denominator of every ratio
     run.ok = false;

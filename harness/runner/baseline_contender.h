@@ -8,9 +8,13 @@
 
 #include <chrono>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 
+#include "runner/baseline_cost_cache.h"
+#include "runner/cachegrind.h"
 #include "runner/contender.h"
 
 namespace raygate {
@@ -20,9 +24,18 @@ enum class BaselineClock {
   process_wall,  // wall seconds of the whole process (fork to wait4)
   process_cpu,   // user + system CPU seconds of the whole process (wait4's rusage)
   in_process,    // parse + prepare + render wall seconds, measured inside the process
+  simulated,     // estimated cycles under cachegrind (--timing sim), like the tracer's
 };
 
-// "process-wall", "process-cpu", "in-process": the names results documents carry
+// --timing sim: the simulator, and where the baseline's costs are cached (per
+// BaselineCostKey; source_sha256 is the baseline's). A null cache simulates every run.
+struct BaselineSimulation {
+  Cachegrind cachegrind;
+  std::shared_ptr<BaselineCostCache> cache;
+  std::string source_sha256;
+};
+
+// "process-wall", "process-cpu", "in-process", "simulated-cycles": the names results documents carry
 // (BaselineRecord::timing). Documents written before the clocks were matched say "in-process"
 // (or "in-process-cpu", against CPU-timed tracers).
 std::string_view to_string(BaselineClock clock);
@@ -48,12 +61,21 @@ class BaselineContender final : public Contender {
 
   BaselineClock clock() const { return clock_; }
 
+  // Required before measuring with BaselineClock::simulated.
+  void simulate(BaselineSimulation simulation) { simulation_ = std::move(simulation); }
+
+  // The cached simulated cost on this scene, as a run that did not have to happen.
+  std::optional<RunRecord> known_run(const SceneInput& scene) const override;
+
  private:
   std::filesystem::path executable_;
   std::string sampling_;
   std::chrono::milliseconds timeout_;
   std::string accel_;
   BaselineClock clock_;
+  std::optional<BaselineSimulation> simulation_;
+
+  BaselineCostKey cost_key(const SceneInput& scene) const;
 };
 
 }  // namespace raygate

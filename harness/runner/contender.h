@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "adapter/adapter.h"
@@ -37,6 +38,12 @@ class Contender {
 
   // The process of one run whose files go in `run_dir` (created by the caller, empty).
   virtual ProcessSpec command(const SceneInput& scene, const std::filesystem::path& run_dir) const = 0;
+
+  // A run whose result is already known, so the scheduler need not start it (the baseline's
+  // cached simulated cost); nullopt, the default: run it.
+  virtual std::optional<RunRecord> known_run(const SceneInput& /*scene*/) const {
+    return std::nullopt;
+  }
 
   // The record of that run once its process ended.
   virtual RunRecord interpret(const SceneInput& scene, const ProcessResult& result,

@@ -15,6 +15,7 @@ void to_json(nlohmann::json& json, const RunRecord& run) {
                         {"log", run.log.string()}};
   if (run.reported_seconds) json["reported_seconds"] = *run.reported_seconds;
   if (!run.failure.empty()) json["failure"] = run.failure;
+  if (run.simulated) json["cachegrind"] = *run.simulated;
 }
 
 void from_json(const nlohmann::json& json, RunRecord& run) {
@@ -29,6 +30,9 @@ void from_json(const nlohmann::json& json, RunRecord& run) {
   const nlohmann::json& reported = json.at("reported_seconds");
   run.reported_seconds =
       reported.is_null() ? std::nullopt : std::optional<double>(reported.get<double>());
+  if (const auto found = json.find("cachegrind"); found != json.end()) {
+    run.simulated = found->get<SimulatedCounters>();
+  }
   run.image = json.at("image").get<std::string>();
   run.log = json.at("log").get<std::string>();
 }

@@ -9,6 +9,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "measure/simulated_cost.h"
+
 namespace raygate {
 
 struct RunRecord {
@@ -23,6 +25,8 @@ struct RunRecord {
   // The contender's own account of its time, when it gives one: the baseline's parse + prepare +
   // render seconds from --stats, or a tracer's time parsed with the adapter's regex.
   std::optional<double> reported_seconds;
+  // --timing sim: cachegrind's counters of the run (seconds then holds their estimated cycles).
+  std::optional<SimulatedCounters> simulated;
   std::filesystem::path image;
   std::filesystem::path log;  // stdout and stderr together
 

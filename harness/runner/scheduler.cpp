@@ -56,6 +56,7 @@ class RunLauncher {
 
   RunRecord run(const Contender& contender, const std::string& label,
                 const std::vector<int>& cpus) const {
+    if (std::optional<RunRecord> known = contender.known_run(scene_)) return *known;
     const std::filesystem::path dir = prepare(contender, label);
     ProcessSpec spec = contender.command(scene_, dir);
     if (!cpus.empty()) spec.cpu_affinity = cpus;

@@ -63,7 +63,9 @@ ProcessSpec TracerContender::command(const SceneInput& scene,
   spec.stderr_path = spec.stdout_path;
   spec.timeout = std::chrono::milliseconds(static_cast<long long>(adapter.timeouts.run_seconds * 1000));
   spec.cpu_affinity = setup_.cpus;
-  return spec;
+  if (adapter.timing.source != TimingSource::simulated) return spec;
+  if (!setup_.cachegrind) throw std::logic_error("TracerContender: simulated timing, no cachegrind");
+  return under_cachegrind(std::move(spec), *setup_.cachegrind, cachegrind_dir(run_dir));
 }
 
 namespace {
@@ -105,6 +107,8 @@ RunRecord TracerContender::interpret(const SceneInput& scene, const ProcessResul
     }
     run.reported_seconds = reported;
     run.seconds = *reported;
+  } else if (adapter.timing.source == TimingSource::simulated) {
+    record_simulated_cost(run, cachegrind_dir(run_dir));
   } else {
     run.seconds = metric == TimingMetric::cpu ? run.cpu_seconds() : run.wall_seconds;
   }

@@ -11,6 +11,7 @@
 #include "adapter/adapter.h"
 #include "adapter/placeholders.h"
 #include "builder/build_record.h"
+#include "runner/cachegrind.h"
 #include "runner/contender.h"
 
 namespace raygate {
@@ -24,6 +25,8 @@ struct TracerSetup {
   // Overrides the adapter's process metric (raygate run --metric); nullopt: the adapter's own.
   std::optional<TimingMetric> metric;
   std::vector<int> cpus;  // pin runs to these CPUs; empty: no pinning
+  // The simulator, for an adapter timed by "simulated" (--timing sim); required then.
+  std::optional<Cachegrind> cachegrind;
 };
 
 class TracerContender final : public Contender {

@@ -82,6 +82,7 @@ void to_json(json& j, const ChangeSummary& c) {
             {{"u", number(c.mann_whitney.u)},
              {"z", number(c.mann_whitney.z)},
              {"p_value", number(c.mann_whitney.p_value)}}}};
+  if (c.exact) j["exact"] = true;  // --timing sim with identical counts: no interval needed
 }
 void from_json(const json& j, ChangeSummary& c) {
   c.rounds = j.at("rounds").get<std::size_t>();
@@ -94,6 +95,7 @@ void from_json(const json& j, ChangeSummary& c) {
   c.head = j.at("head").get<RatioSummary>();
   const json& mw = j.at("mann_whitney");
   c.mann_whitney = {number_at(mw, "u"), number_at(mw, "z"), number_at(mw, "p_value", 1.0)};
+  c.exact = j.value("exact", false);
 }
 
 void to_json(json& j, const ImageMetrics& m) {

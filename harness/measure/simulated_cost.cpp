@@ -1,0 +1,90 @@
+#include "measure/simulated_cost.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace raygate {
+
+namespace {
+
+// The members in cachegrind's event order, with their names: one table for JSON both ways.
+struct CounterField {
+  const char* name;
+  std::uint64_t SimulatedCounters::*member;
+};
+constexpr CounterField kFields[] = {
+    {"Ir", &SimulatedCounters::ir},     {"I1mr", &SimulatedCounters::i1mr},
+    {"ILmr", &SimulatedCounters::ilmr}, {"Dr", &SimulatedCounters::dr},
+    {"D1mr", &SimulatedCounters::d1mr}, {"DLmr", &SimulatedCounters::dlmr},
+    {"Dw", &SimulatedCounters::dw},     {"D1mw", &SimulatedCounters::d1mw},
+    {"DLmw", &SimulatedCounters::dlmw},
+};
+
+bool all_equal(const std::vector<double>& values) {
+  return std::all_of(values.begin(), values.end(), [&](double v) { return v == values.front(); });
+}
+
+}  // namespace
+
+SimulatedCounters& SimulatedCounters::operator+=(const SimulatedCounters& other) {
+  for (const CounterField& field : kFields) this->*field.member += other.*field.member;
+  processes += other.processes;
+  return *this;
+}
+
+double estimated_cycles(const SimulatedCounters& c) {
+  const double l1_misses = static_cast<double>(c.i1mr + c.d1mr + c.d1mw);
+  const double ll_misses = static_cast<double>(c.ilmr + c.dlmr + c.dlmw);
+  return static_cast<double>(c.ir) + kL1MissCycles * l1_misses +
+         kLastLevelMissCycles * ll_misses;
+}
+
+void to_json(nlohmann::json& json, const SimulatedCounters& counters) {
+  json = nlohmann::json::object();
+  for (const CounterField& field : kFields) json[field.name] = counters.*field.member;
+  json["processes"] = counters.processes;
+  json["estimated_cycles"] = estimated_cycles(counters);
+}
+
+void from_json(const nlohmann::json& json, SimulatedCounters& counters) {
+  for (const CounterField& field : kFields) {
+    counters.*field.member = json.at(field.name).get<std::uint64_t>();
+  }
+  counters.processes = json.value("processes", 1);
+}
+
+double relative_spread(std::span<const double> costs) {
+  if (costs.empty()) return 0.0;
+  const auto [lowest, highest] = std::minmax_element(costs.begin(), costs.end());
+  return *lowest > 0.0 ? (*highest - *lowest) / *lowest : 0.0;
+}
+
+std::optional<ChangeSummary> exact_change(std::span<const CompareRound> rounds) {
+  if (rounds.size() < 2) return std::nullopt;
+  std::vector<double> baseline, base, head;
+  for (const CompareRound& round : rounds) {
+    baseline.push_back(round.baseline_seconds);
+    base.push_back(round.base_seconds);
+    head.push_back(round.head_seconds);
+  }
+  if (!all_equal(baseline) || !all_equal(base) || !all_equal(head)) return std::nullopt;
+  // Every round is the same round, so the median of the log-changes is that round's and the
+  // observed range a point: summarize_change already yields the exact numbers.
+  ChangeSummary summary = summarize_change(rounds);
+  summary.change = head.front() / base.front() - 1.0;
+  summary.change_interval = {summary.change, summary.change};
+  summary.exact = true;
+  return summary;
+}
+
+bool costs_identical(std::span<const RoundSample> rounds) {
+  if (rounds.size() < 2) return false;
+  std::vector<double> tracer, baseline;
+  for (const RoundSample& round : rounds) {
+    tracer.push_back(round.tracer_seconds);
+    baseline.push_back(round.baseline_seconds);
+  }
+  return all_equal(tracer) && all_equal(baseline);
+}
+
+}  // namespace raygate

@@ -8,12 +8,13 @@
 
 #include "checkout/repository.h"
 #include "cli/commands.h"
+#include "cli/measure_options.h"
 #include "cli/report_options.h"
 #include "cli/store_options.h"
-#include "cli/measure_options.h"
-#include "cli/compare_session.h"
+#include "cli/terminal_io.h"
 #include "core/error.h"
 #include "gate/verdict.h"
+#include "pipeline/compare_measurement.h"
 
 namespace raygate::cli {
 namespace {
@@ -53,9 +54,9 @@ int compare_command(const CompareArgs& args) {
   const Repository repository = Repository::open(args.measure.repo, context.cache_dir);
   const Worktree head = repository.checkout(args.head);
   const Worktree base = base_worktree(args, repository);
-  std::filesystem::path document_path;
-  const ResultsDocument document = measure_compare(
-      {context, baseline, repository.location(), base, head, args.out}, &document_path);
+  TerminalIo terminal;
+  const auto [document, document_path] = measure_compare(
+      {context, baseline, repository.location(), base, head, args.out}, terminal.io);
   fmt::print("results: {}\n", document_path.string());
   record_results(document, args.record, context.cache_dir, document_path);
   GatePolicy policy = context.policy;

@@ -9,7 +9,7 @@
 #include "cli/gate_summary.h"
 #include "gate/policy.h"
 #include "gate/verdict.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate::cli {
 namespace {

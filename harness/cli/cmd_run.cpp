@@ -1,23 +1,21 @@
 // `raygate run`: measure one revision of a tracer against the baseline on a suite and write the
-// results document. Reads as the pipeline: checkout -> build -> measure (per scene: runs,
-// ratios, image checks, document rewritten) -> summary. Exit 0 measured and images pass, 1 an
-// image check failed, 3 a scene could not be measured (the document says which and why).
+// results document. Options -> a run request -> the pipeline (pipeline/run_measurement.h:
+// build, then per scene runs, ratios, image checks, document rewritten) -> summary, store,
+// gate, reports. Exit 0 measured and images pass, 1 an image check failed, 3 a scene could not
+// be measured (the document says which and why).
 #include <fmt/core.h>
 
 #include <memory>
 
 #include "checkout/repository.h"
 #include "cli/commands.h"
-#include "cli/report_options.h"
 #include "cli/measure_options.h"
-#include "cli/measure_session.h"
-#include "cli/revision_setup.h"
+#include "cli/report_options.h"
 #include "cli/store_options.h"
-#include "core/time_text.h"
+#include "cli/terminal_io.h"
 #include "gate/verdict.h"
-#include "runner/baseline_contender.h"
+#include "pipeline/run_measurement.h"
 #include "runner/baseline_tool.h"
-#include "runner/tracer_contender.h"
 
 namespace raygate::cli {
 namespace {
@@ -49,43 +47,19 @@ int run_command(const RunArgs& args) {
   check_output_path(args.out, "--out");
   const BaselineTool baseline(context.tools.baseline);
   const auto [worktree, repository] = locate_tree(args, context);
-  const PreparedRevision tracer = prepare_revision("tracer", repository, worktree, context,
-                                                   baseline.source_hash(), args.measure.jobs);
-
-  SuiteMeasurement m = suite_measurement(
-      context, compact_utc_timestamp() + "-" + worktree.short_sha, args.out);
-  m.stop = [&](const SuiteScene&) { return ratio_stop_rule(context.stopping, "tracer"); };
-  m.tracer_roles = {"tracer"};
-
-  const BaselineContender baseline_runs(context.tools.baseline, context.suite.sampling,
-                                        std::chrono::minutes(30), "none",
-                                        baseline_clock(context));
-  const TracerContender tracer_runs(tracer.setup);
-  m.contenders = {&baseline_runs, &tracer_runs};
-
-  ResultsDocument document = new_document("run", context, baseline);
-  document.revisions.push_back(tracer.record);
-  fmt::print("measuring {} {} ({}) against {} on suite {}: {} scenes{}\n", context.adapter.name,
-             worktree.short_sha, worktree.subject, baseline.version_line(), context.suite.name,
-             m.scenes.size(), shard_note(context));
-  SystemExecutor executor;
-  SteadyClock clock;
-  {
-    Progress progress(stdout, is_terminal(stdout));
-    measure_suite(document, m, executor, clock, progress);
-  }
-  document.finished_at = utc_timestamp();
-  write_results(document, m.out);
+  TerminalIo terminal;
+  const auto [document, out] =
+      measure_run({context, baseline, repository, worktree, args.out}, terminal.io);
   if (const auto score = document.scores.find("tracer"); score != document.scores.end()) {
     fmt::print("suite score (geometric mean of normalized ratios): {:.3f} [{:.3f}, {:.3f}] over "
                "{} scenes\n",
                score->second.score, score->second.interval.lower, score->second.interval.upper,
                score->second.scenes);
   }
-  fmt::print("results: {}\n", m.out.string());
-  record_results(document, args.record, context.cache_dir, m.out);
+  fmt::print("results: {}\n", out.string());
+  record_results(document, args.record, context.cache_dir, out);
   const GateResult gate = evaluate_gate(document, context.policy);
-  emit_reports(document, gate, context.policy, args.reports, m.out,
+  emit_reports(document, gate, context.policy, args.reports, out,
                trends_from_store(record_store_path(args.record, context.cache_dir), document));
   return gate.exit_code;
 }

@@ -8,7 +8,7 @@
 #include <filesystem>
 #include <string>
 
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate::cli {
 

@@ -15,7 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate {
 

@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "store/results.h"
+#include "results/results.h"
 #include "store/store.h"
 
 namespace raygate {

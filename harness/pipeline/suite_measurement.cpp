@@ -1,4 +1,4 @@
-#include "cli/measure_session.h"
+#include "pipeline/suite_measurement.h"
 
 #include <fmt/core.h>
 
@@ -11,9 +11,9 @@
 #include "core/time_text.h"
 #include "measure/machine_context.h"
 #include "runner/scene_files.h"
-#include "store/scores.h"
+#include "results/scores.h"
 
-namespace raygate::cli {
+namespace raygate {
 
 namespace {
 
@@ -51,7 +51,7 @@ void check_images(SceneResult& result, const SuiteMeasurement& m, const GoldenMa
   }
 }
 
-// The same computation `raygate merge` makes over shards (store/scores.h).
+// The same computation `raygate merge` makes over shards (results/scores.h).
 void update_scores(ResultsDocument& document, const std::vector<std::string>& roles) {
   document.scores = suite_scores(document.scenes, roles);
 }
@@ -118,8 +118,9 @@ std::string kept_message(const Interrupted& stop, const ResultsDocument& documen
                      m.out.string());
 }
 
-void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
-                    Clock& clock, Progress& progress) {
+void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io) {
+  Clock& clock = io.clock;
+  ProgressSink& progress = io.progress;
   const GoldenManifest manifest = load_golden_manifest(m.golden_dir);
   const double started = clock.now_seconds();
   double elapsed_done = 0.0;
@@ -144,8 +145,8 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Execut
       state.eta_seconds = eta_seconds(elapsed_done, index, m.scenes.size(), spent);
       progress.update(state);
     };
-    result.runs = measure_scene(input, m.contenders, m.schedule, m.stop(entry), executor, clock,
-                                join_component(m.work_dir / "scenes", entry.id, "scene id"),
+    result.runs = measure_scene(input, m.contenders, m.schedule, m.stop(entry), io.executor,
+                                clock, join_component(m.work_dir / "scenes", entry.id, "scene id"),
                                 observe);
     result.status = result.runs.failed() ? "failed" : "measured";
     summarize_ratios(result, m);
@@ -163,19 +164,32 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Execut
 
 }  // namespace
 
-void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
-                   Clock& clock, Progress& progress) {
+void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io) {
   // Within it a signal is not fatal at once: the running child's group is killed, the scenes
   // finished so far are written, and Interrupted says where.
   const InterruptScope stop_here;
   try {
-    measure_scenes(document, m, executor, clock, progress);
+    measure_scenes(document, m, io);
   } catch (const Interrupted& stop) {
     document.complete = false;
     write_results(document, m.out);
     throw Interrupted(stop.signal(), kept_message(stop, document, m));
   }
   document.complete = true;
+}
+
+MeasuredDocument measure_document(ResultsDocument document, const SuiteMeasurement& m,
+                                  const std::string& opening, PipelineIo& io) {
+  io.progress.line(opening);
+  measure_suite(document, m, io);
+  document.finished_at = utc_timestamp();
+  write_results(document, m.out);
+  return {std::move(document), m.out};
+}
+
+BaselineContender baseline_contender(const MeasureContext& context) {
+  return BaselineContender(context.tools.baseline, context.suite.sampling,
+                           std::chrono::minutes(30), "none", baseline_clock(context));
 }
 
 std::string scene_line(const SceneResult& scene, const std::vector<std::string>& tracer_roles) {
@@ -205,4 +219,4 @@ std::string scene_line(const SceneResult& scene, const std::vector<std::string>&
   return text;
 }
 
-}  // namespace raygate::cli
+}  // namespace raygate

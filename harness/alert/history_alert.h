@@ -1,4 +1,4 @@
-// Alerts on a default branch: each history series' ratios over its commits (store/series.h:
+// Alerts on a default branch: each history series' ratios over its commits (results/series.h:
 // one series per repository, adapter, suite, scene settings, timing and baseline) searched for
 // change points (alert/e_divisive.h). A series is in alert when its newest change point made it
 // slower by more than the policy allows for its scene: the commit range is named (the last

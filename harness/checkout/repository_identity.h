@@ -1,6 +1,6 @@
 // Which repository a measured commit came from, told apart from every other tracer's repository
 // however it was reached (a local path, a clone by URL, a CI checkout elsewhere): the results
-// store keeps one history series per repository (store/series.h), so two tracers' commits never
+// store keeps one history series per repository (results/series.h), so two tracers' commits never
 // share a trend.
 #pragma once
 

@@ -9,12 +9,13 @@
 #include "checkout/repository.h"
 #include "cli/commands.h"
 #include "cli/console.h"
+#include "cli/measure_options.h"
 #include "cli/report_options.h"
 #include "cli/store_options.h"
-#include "cli/measure_options.h"
-#include "cli/compare_session.h"
+#include "cli/terminal_io.h"
 #include "core/error.h"
 #include "gate/verdict.h"
+#include "pipeline/compare_measurement.h"
 
 namespace raygate::cli {
 namespace {
@@ -47,17 +48,16 @@ int compare_command(const CompareArgs& args, const Console& console) {
   if (args.base.empty() == args.base_branch.empty()) {
     throw UsageError("name the base: --base REV or --base-branch BRANCH (exactly one)");
   }
-  MeasureContext context = load_measure_context(args.measure);
-  context.quiet = console.quiet();
+  const MeasureContext context = load_measure_context(args.measure);
   check_report_specs(args.reports);
   check_output_path(args.out, "--output");
   const BaselineTool baseline(context.tools.baseline);
   const Repository repository = Repository::open(args.measure.repo, context.cache_dir);
   const Worktree head = repository.checkout(args.head);
   const Worktree base = base_worktree(args, repository);
-  std::filesystem::path document_path;
-  const ResultsDocument document = measure_compare(
-      {context, baseline, repository.location(), base, head, args.out}, &document_path);
+  TerminalIo terminal(console);
+  const auto [document, document_path] = measure_compare(
+      {context, baseline, repository.location(), base, head, args.out}, terminal.io);
   console.info(fmt::format("results: {}", document_path.string()));
   record_results(document, args.record, context.cache_dir, document_path, console);
   GatePolicy policy = context.policy;

@@ -14,7 +14,7 @@
 #include "consistency/consistency_report.h"
 #include "core/error.h"
 #include "core/fs.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate::cli {
 namespace {

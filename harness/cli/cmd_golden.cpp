@@ -20,7 +20,7 @@
 #include "runner/baseline_tool.h"
 #include "runner/scene_files.h"
 #include "runner/suite.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate::cli {
 namespace {

@@ -1,5 +1,5 @@
 // `raygate history`: the normalized ratio and image error of each scene over commits, from the
-// results store, one table per repository and adapter with each series' trend (store/series.h),
+// results store, one table per repository and adapter with each series' trend (results/series.h),
 // and a note when the machine drifted rather than the code. `--format json` for machines, `--html DIR`
 // for a page of plots. Exit 0, 2 for a bad store.
 #include <fmt/core.h>

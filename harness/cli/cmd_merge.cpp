@@ -1,6 +1,6 @@
 // `raygate merge A.json B.json ... -o OUT.json`: the documents of the shards of one CI matrix
 // (run or compare with --shard K/N) joined into the document one job measuring every scene
-// would have written (store/merge.h): written atomically, stored and reported like run's, and
+// would have written (results/merge.h): written atomically, stored and reported like run's, and
 // gated like `raygate gate` does, whose exit code it returns (0 pass, 1 regression, 3 not
 // everything measured). Shards that do not belong together are refused with exit 2.
 #include <fmt/core.h>
@@ -14,7 +14,7 @@
 #include "core/error.h"
 #include "gate/policy.h"
 #include "gate/verdict.h"
-#include "store/merge.h"
+#include "results/merge.h"
 
 namespace raygate::cli {
 namespace {

@@ -1,7 +1,8 @@
 // `raygate run`: measure one revision of a tracer against the baseline on a suite and write the
-// results document. Reads as the pipeline: checkout -> build -> measure (per scene: runs,
-// ratios, image checks, document rewritten) -> summary. Exit 0 measured and images pass, 1 an
-// image check failed, 3 a scene could not be measured (the document says which and why).
+// results document. Options -> a run request -> the pipeline (pipeline/run_measurement.h:
+// build, then per scene runs, ratios, image checks, document rewritten) -> summary, store,
+// gate, reports. Exit 0 measured and images pass, 1 an image check failed, 3 a scene could not
+// be measured (the document says which and why).
 #include <fmt/core.h>
 
 #include <memory>
@@ -9,19 +10,13 @@
 #include "checkout/repository.h"
 #include "cli/commands.h"
 #include "cli/console.h"
-#include "cli/report_options.h"
 #include "cli/measure_options.h"
-#include "cli/measure_session.h"
-#include "cli/revision_setup.h"
-#include "cli/simulated_mode.h"
+#include "cli/report_options.h"
 #include "cli/store_options.h"
-#include "core/time_text.h"
-#include "gate/growth_gate.h"
+#include "cli/terminal_io.h"
 #include "gate/verdict.h"
-#include "runner/baseline_contender.h"
+#include "pipeline/run_measurement.h"
 #include "runner/baseline_tool.h"
-#include "runner/tracer_contender.h"
-#include "scaling/scaling_stage.h"
 
 namespace raygate::cli {
 namespace {
@@ -48,49 +43,24 @@ std::pair<Worktree, std::string> locate_tree(const RunArgs& args, const MeasureC
 }
 
 int run_command(const RunArgs& args, const Console& console) {
-  MeasureContext context = load_measure_context(args.measure);
-  context.quiet = console.quiet();
+  const MeasureContext context = load_measure_context(args.measure);
   check_report_specs(args.reports);
   check_output_path(args.out, "--output");
   const BaselineTool baseline(context.tools.baseline);
   const auto [worktree, repository] = locate_tree(args, context);
-  const PreparedRevision tracer = prepare_revision("tracer", repository, worktree, context,
-                                                   baseline.source_hash(), args.measure.jobs);
-
-  SuiteMeasurement m = suite_measurement(
-      context, compact_utc_timestamp() + "-" + worktree.short_sha, args.out);
-  m.stop = [&](const SuiteScene&) { return ratio_stop_rule(context.stopping, "tracer"); };
-  m.tracer_roles = {"tracer"};
-
-  const BaselineContender baseline_runs = make_baseline_contender(context, baseline.source_hash());
-  const TracerContender tracer_runs(tracer.setup);
-  m.contenders = {&baseline_runs, &tracer_runs};
-
-  ResultsDocument document = new_document("run", context, baseline);
-  document.revisions.push_back(tracer.record);
-  console.info(fmt::format("measuring {} {} ({}) against {} on suite {}: {} scenes{}",
-                           context.adapter.name, worktree.short_sha, worktree.subject,
-                           baseline.version_line(), context.suite.name, m.scenes.size(),
-                           shard_note(context)));
-  SystemExecutor executor;
-  SteadyClock clock;
-  {
-    Progress progress(context.quiet ? nullptr : stderr, is_terminal(stderr));
-    measure_suite(document, m, executor, clock, progress);
-  }
-  document.finished_at = utc_timestamp();
-  attach_scaling(document, scaling_limits(context.policy), context.quiet ? nullptr : stderr);
-  write_results(document, m.out);
+  TerminalIo terminal(console);
+  const auto [document, out] =
+      measure_run({context, baseline, repository, worktree, args.out}, terminal.io);
   if (const auto score = document.scores.find("tracer"); score != document.scores.end()) {
     console.info(fmt::format("suite score (geometric mean of normalized ratios): {:.3f} [{:.3f}, "
                              "{:.3f}] over {} scenes",
                              score->second.score, score->second.interval.lower,
                              score->second.interval.upper, score->second.scenes));
   }
-  console.info(fmt::format("results: {}", m.out.string()));
-  record_results(document, args.record, context.cache_dir, m.out, console);
+  console.info(fmt::format("results: {}", out.string()));
+  record_results(document, args.record, context.cache_dir, out, console);
   const GateResult gate = evaluate_gate(document, context.policy);
-  emit_reports(document, gate, context.policy, args.reports, m.out, console,
+  emit_reports(document, gate, context.policy, args.reports, out, console,
                trends_from_store(record_store_path(args.record, context.cache_dir), document));
   return gate.exit_code;
 }

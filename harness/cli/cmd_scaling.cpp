@@ -15,6 +15,7 @@
 #include "core/error.h"
 #include "gate/growth_gate.h"
 #include "scaling/scaling_stage.h"
+#include "scaling/scaling_text.h"
 
 namespace raygate::cli {
 namespace {
@@ -32,12 +33,13 @@ int scaling_command(const ScalingArgs& args, const Console& console) {
   std::string note;
   const GatePolicy policy =
       args.policy.empty() ? recorded_policy(document.settings, note) : load_policy(args.policy);
-  const ScalingAnalysis analysis = attach_scaling(document, scaling_limits(policy), stdout);
+  const ScalingAnalysis analysis = attach_scaling(document, scaling_limits(policy));
   if (analysis.families.empty()) {
     throw UsageError(fmt::format("{}: no scene family was measured at 3 sizes or more (suite {}); "
                                  "measure the scaling suite: --suite scaling",
                                  args.results, document.suite));
   }
+  for (const std::string& line : scaling_lines(analysis)) fmt::print("{}\n", line);
   if (!args.no_write) write_results(document, args.results);
   GateResult gate;
   gate.families = judge_growth(document, policy);

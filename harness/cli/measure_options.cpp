@@ -38,17 +38,19 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
   command.add_option("--warmup", args.warmup, "untimed runs per program before the rounds")
       ->check(CLI::Range(0, 10))
       ->capture_default_str();
-  command.add_option("--target", args.target,
+  command.add_option("--target", args.stopping.target_relative_half_width,
                      "stop a scene once the ratio's 95% CI half-width is below this fraction")
       ->check(CLI::Range(0.0001, 1.0))
       ->capture_default_str();
-  command.add_option("--min-rounds", args.min_rounds, "rounds before the stopping rule applies")
+  command.add_option("--min-rounds", args.stopping.min_rounds,
+                     "rounds before the stopping rule applies")
       ->check(CLI::Range(2, 1000))
       ->capture_default_str();
-  command.add_option("--max-rounds", args.max_rounds, "round budget per scene")
+  command.add_option("--max-rounds", args.stopping.max_rounds, "round budget per scene")
       ->check(CLI::Range(1, 100000))
       ->capture_default_str();
-  command.add_option("--max-seconds", args.max_seconds, "time budget per scene, in seconds")
+  command.add_option("--max-seconds", args.stopping.max_seconds,
+                     "time budget per scene, in seconds")
       ->check(CLI::Range(0.0, 1e7))
       ->capture_default_str();
   command.add_option("--timing", args.metric,
@@ -134,58 +136,15 @@ MeasureContext load_measure_context(const MeasureArgs& args) {
       (args.duet_cpus.size() != 2 || args.duet_cpus[0] == args.duet_cpus[1])) {
     throw UsageError("--duet-cpus needs two different CPUs, e.g. --duet-cpus 0,1");
   }
-  c.stopping.target_relative_half_width = args.target;
-  c.stopping.min_rounds = args.min_rounds;
-  c.stopping.max_rounds = std::max(args.max_rounds, std::size_t{1});
+  c.stopping = args.stopping;
+  c.stopping.max_rounds = std::max(c.stopping.max_rounds, std::size_t{1});
   if (c.stopping.max_rounds < c.stopping.min_rounds) c.stopping.min_rounds = c.stopping.max_rounds;
-  c.stopping.max_seconds = args.max_seconds;
   if (args.metric == "wall") c.metric = TimingMetric::wall;
   if (args.metric == "cpu") c.metric = TimingMetric::cpu;
   if (!args.policy.empty()) c.policy = load_policy(args.policy);
   c.jobs = args.jobs;
   apply_simulated_mode(args, c);
   return c;
-}
-
-TimingMetric tracer_metric(const MeasureContext& context) {
-  return context.metric.value_or(context.adapter.timing.metric);
-}
-
-BaselineClock baseline_clock(const MeasureContext& context) {
-  return matching_baseline_clock(context.adapter.timing.source, tracer_metric(context));
-}
-
-std::string shard_note(const MeasureContext& context) {
-  if (!context.shard) return {};
-  return fmt::format(", shard {} of {} selected scenes", to_string(context.shard->spec),
-                     context.shard->suite_scenes.size());
-}
-
-nlohmann::json measure_settings(const MeasureContext& c) {
-  nlohmann::json settings = {
-      {"schedule", std::string(to_string(c.schedule.kind))},
-      {"warmup_runs", c.schedule.warmup_runs},
-      {"pin_cpus", c.schedule.pin_cpus},
-      {"duet_cpus", c.schedule.duet_cpus},
-      {"target_relative_half_width", c.stopping.target_relative_half_width},
-      {"min_rounds", c.stopping.min_rounds},
-      {"max_rounds", c.stopping.max_rounds},
-      {"max_seconds_per_scene", c.stopping.max_seconds},
-      {"metric", simulated(c)  ? std::string(tracer_clock_name(c.adapter.timing.source, {}))
-                 : c.metric ? std::string(to_string(*c.metric))
-                            : std::string(to_string(c.adapter.timing.metric))},
-      {"timing_source", std::string(to_string(c.adapter.timing.source))},
-      {"tracer_clock",
-       std::string(tracer_clock_name(c.adapter.timing.source, tracer_metric(c)))},
-      {"baseline_clock", std::string(to_string(baseline_clock(c)))},
-      {"threads", c.adapter.threads},
-      {"golden_dir", c.golden_dir.string()},
-      {"policy_file", c.policy.file.string()},
-      {"max_slowdown", c.policy.defaults.max_slowdown},
-      {"significance", c.policy.defaults.significance},
-      {"max_exponent_increase", c.policy.max_exponent_increase}};
-  if (c.shard) settings["shard"] = shard_to_json(*c.shard);
-  return settings;
 }
 
 }  // namespace raygate::cli

@@ -37,6 +37,8 @@ void Progress::line(const std::string& text) {
   std::fflush(stream_);
 }
 
+void Progress::status(const std::string& text) { line(text); }
+
 bool is_terminal(std::FILE* stream) { return ::isatty(::fileno(stream)) == 1; }
 
 std::string format_duration(double seconds) {

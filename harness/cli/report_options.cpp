@@ -11,7 +11,7 @@
 #include "core/error.h"
 #include "report/reporter.h"
 #include "store/postgres_url.h"
-#include "store/series.h"
+#include "results/series.h"
 #include "store/store.h"
 
 #include <algorithm>

@@ -13,7 +13,7 @@
 #include "cli/console.h"
 #include "gate/verdict.h"
 #include "report/reporter.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate::cli {
 
@@ -32,7 +32,7 @@ void check_report_specs(const std::vector<std::string>& reports);
 void check_output_path(const std::filesystem::path& path, const std::string& option);
 
 // The normalized ratio of each of the document's scenes over the last `commits` commits in the
-// store (oldest first), within the scene's series (store/series.h: the same repository,
+// store (oldest first), within the scene's series (results/series.h: the same repository,
 // adapter, suite, scene settings, timing and baseline); empty when there is no store.
 std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
                                            const ResultsDocument& document,

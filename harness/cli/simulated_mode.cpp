@@ -2,13 +2,7 @@
 
 #include <fmt/core.h>
 
-#include <memory>
-
 namespace raygate::cli {
-
-bool simulated(const MeasureContext& context) {
-  return context.adapter.timing.source == TimingSource::simulated;
-}
 
 void apply_simulated_mode(const MeasureArgs& args, MeasureContext& context) {
   if (args.metric == "sim") context.adapter.timing.source = TimingSource::simulated;
@@ -26,18 +20,6 @@ void apply_simulated_mode(const MeasureArgs& args, MeasureContext& context) {
                "the simulated cost counts all their work, not the parallel speed-up\n",
                context.adapter.file.string(), context.adapter.threads);
   }
-}
-
-BaselineContender make_baseline_contender(const MeasureContext& context,
-                                          const std::string& baseline_source_sha256) {
-  BaselineContender baseline(context.tools.baseline, context.suite.sampling,
-                             std::chrono::minutes(30), "none", baseline_clock(context));
-  if (simulated(context)) {
-    baseline.simulate({*context.cachegrind,
-                       std::make_shared<BaselineCostCache>(context.cache_dir / "simulated-baseline"),
-                       baseline_source_sha256});
-  }
-  return baseline;
 }
 
 }  // namespace raygate::cli

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "cli/console.h"
-#include "store/results.h"
+#include "results/results.h"
 #include "store/store.h"
 
 namespace raygate::cli {

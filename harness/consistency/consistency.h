@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "measure/bootstrap.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate {
 

@@ -8,7 +8,7 @@
 #include "gate/policy.h"
 #include "gate/verdict.h"
 #include "scaling/scaling_analysis.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate {
 

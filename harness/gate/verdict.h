@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "gate/policy.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate {
 

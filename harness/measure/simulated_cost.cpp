@@ -77,6 +77,14 @@ std::optional<ChangeSummary> exact_change(std::span<const CompareRound> rounds) 
   return summary;
 }
 
+ChangeSummary measured_change(std::span<const CompareRound> rounds, const BootstrapOptions& options,
+                              bool counted) {
+  if (counted) {
+    if (std::optional<ChangeSummary> exact = exact_change(rounds)) return *exact;
+  }
+  return summarize_change(rounds, options);
+}
+
 bool costs_identical(std::span<const RoundSample> rounds) {
   if (rounds.size() < 2) return false;
   std::vector<double> tracer, baseline;

@@ -51,6 +51,11 @@ double relative_spread(std::span<const double> costs);
 // of timed rounds (docs/simulated-timing.md).
 std::optional<ChangeSummary> exact_change(std::span<const CompareRound> rounds);
 
+// The change of a compare scene: exact when `counted` (sim mode) and every run repeated its
+// count, else the statistics of timed rounds.
+ChangeSummary measured_change(std::span<const CompareRound> rounds, const BootstrapOptions& options,
+                              bool counted);
+
 // The same question for `run`: true when tracer and baseline each had identical costs in at least
 // two rounds.
 bool costs_identical(std::span<const RoundSample> rounds);

@@ -1,5 +1,8 @@
 #include "measure/stopping.h"
 
+#include "measure/simulated_cost.h"
+
+#include <algorithm>
 #include <limits>
 
 namespace raygate {
@@ -14,15 +17,36 @@ std::string_view to_string(StopDecision decision) {
   return "unknown";
 }
 
+StopDecision should_stop(const StoppingState& state, const StoppingPolicy& policy) {
+  if (state.decided) return StopDecision::stop_converged;
+  if (state.rounds >= policy.max_rounds) return StopDecision::stop_budget_rounds;
+  if (state.seconds_spent >= policy.max_seconds) return StopDecision::stop_budget_time;
+  return StopDecision::continue_measuring;
+}
+
+std::size_t rounds_to_decide(const StoppingPolicy& policy) {
+  return std::max<std::size_t>(policy.min_rounds, 2);
+}
+
+bool ratio_decided(std::span<const RoundSample> rounds, const StoppingPolicy& policy,
+                   const BootstrapOptions& options) {
+  if (rounds.size() < rounds_to_decide(policy)) return false;
+  return summarize_ratio(rounds, options).relative_half_width <=
+         policy.target_relative_half_width;
+}
+
+bool change_decided(std::span<const CompareRound> rounds, const StoppingPolicy& policy,
+                    double max_slowdown, const BootstrapOptions& options, bool counted) {
+  if (rounds.size() < rounds_to_decide(policy)) return false;
+  return classify_change(measured_change(rounds, options, counted), max_slowdown) !=
+         ChangeVerdict::inconclusive;
+}
+
 StopDecision decide_stopping(std::size_t rounds, double relative_half_width,
                              const StoppingPolicy& policy, double seconds_spent) {
-  if (rounds >= policy.min_rounds && rounds > 0 &&
-      relative_half_width <= policy.target_relative_half_width) {
-    return StopDecision::stop_converged;
-  }
-  if (rounds >= policy.max_rounds) return StopDecision::stop_budget_rounds;
-  if (seconds_spent >= policy.max_seconds) return StopDecision::stop_budget_time;
-  return StopDecision::continue_measuring;
+  const bool decided = rounds >= policy.min_rounds && rounds > 0 &&
+                       relative_half_width <= policy.target_relative_half_width;
+  return should_stop({rounds, seconds_spent, decided}, policy);
 }
 
 StopDecision decide_stopping(std::span<const RoundSample> rounds, const StoppingPolicy& policy,

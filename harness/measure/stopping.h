@@ -1,6 +1,12 @@
-// When to stop adding rounds for a scene (DESIGN.md §6): as soon as the normalized ratio is known
-// to the target precision, or when the budget is spent. Pure functions of the rounds so far, so
-// the runner's loop stays trivial and the rule is tested without timing anything.
+// When to stop adding rounds for a scene (DESIGN.md §6): the one stopping policy of run, compare
+// and bisect. A rule in two parts, kept apart on purpose:
+//  - a verdict function answers "is this scene's question decided by its rounds so far?" (run:
+//    the ratio is known to the target precision; compare and bisect: the change's verdict is no
+//    longer INCONCLUSIVE). A new way of deciding (a sequential test, a deterministic timing mode
+//    that is decided after one round) is a new verdict function, nothing else.
+//  - should_stop() turns a verdict and the budget (rounds, seconds) into a StopDecision.
+// Pure functions of the rounds so far, so the runner's loop stays trivial and the rule is tested
+// without timing anything. pipeline/stopping.h binds them to a scene's rounds.
 #pragma once
 
 #include <cstddef>
@@ -8,10 +14,12 @@
 #include <string_view>
 
 #include "measure/bootstrap.h"
+#include "measure/change.h"
 #include "measure/ratio.h"
 
 namespace raygate {
 
+// The defaults of --target, --min-rounds, --max-rounds and --max-seconds: here and nowhere else.
 struct StoppingPolicy {
   double target_relative_half_width = 0.01;  // stop once the 95% CI is within +-1% of the ratio
   std::size_t min_rounds = 3;    // below this the bootstrap CI is too coarse to trust
@@ -28,8 +36,34 @@ enum class StopDecision {
 
 std::string_view to_string(StopDecision decision);
 
-// The rule on numbers: converged wins over a budget that ran out in the same round (the result
-// is good either way, and "converged" is the more useful thing to report); then rounds, then time.
+// What the rule knows after a round.
+struct StoppingState {
+  std::size_t rounds = 0;       // complete rounds of the scene
+  double seconds_spent = 0.0;   // wall time of all its runs so far
+  bool decided = false;         // the verdict function's answer on those rounds
+};
+
+// The rule: decided wins over a budget that ran out in the same round (the result is good
+// either way, and "converged" is the more useful thing to report); then rounds, then time.
+StopDecision should_stop(const StoppingState& state, const StoppingPolicy& policy);
+
+// The fewest rounds a statistical verdict decides on: min_rounds, and never one (one round's
+// interval is a point, which would always look decided).
+std::size_t rounds_to_decide(const StoppingPolicy& policy);
+
+// Verdict of `run`: the ratio's CI half-width is within the target, on rounds_to_decide() rounds
+// or more.
+bool ratio_decided(std::span<const RoundSample> rounds, const StoppingPolicy& policy,
+                   const BootstrapOptions& options = {});
+
+// Verdict of `compare` and `bisect`: the change of head against base is REGRESSED, IMPROVED or
+// UNCHANGED at `max_slowdown` (not INCONCLUSIVE), on rounds_to_decide() rounds or more.
+// `counted` (sim mode): rounds whose counts all repeat decide exactly (measure/simulated_cost.h).
+bool change_decided(std::span<const CompareRound> rounds, const StoppingPolicy& policy,
+                    double max_slowdown, const BootstrapOptions& options, bool counted = false);
+
+// The rule on a ratio's numbers (converged: at least min_rounds and the half-width within the
+// target), for callers that already summarized the rounds.
 StopDecision decide_stopping(std::size_t rounds, double relative_half_width,
                              const StoppingPolicy& policy, double seconds_spent);
 

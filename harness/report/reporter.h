@@ -14,7 +14,7 @@
 
 #include "gate/policy.h"
 #include "gate/verdict.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate {
 

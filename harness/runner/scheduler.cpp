@@ -196,18 +196,6 @@ std::vector<CompareRound> compare_samples(const std::vector<Round>& rounds) {
   return samples;
 }
 
-StopRule ratio_stop_rule(const StoppingPolicy& policy, const std::string& tracer_role,
-                         const std::string& baseline_role) {
-  // One round's CI is a point: it says nothing, so it never counts as converged (with
-  // --max-rounds 1 the scene stops on its round budget, not as "converged").
-  StoppingPolicy rule = policy;
-  rule.min_rounds = std::max<std::size_t>(rule.min_rounds, 2);
-  return [=](const std::vector<Round>& rounds, double seconds_spent) {
-    const std::vector<RoundSample> samples = round_samples(rounds, tracer_role, baseline_role);
-    return decide_stopping(samples, rule, seconds_spent);
-  };
-}
-
 std::string_view to_string(ScheduleKind kind) {
   return kind == ScheduleKind::duet ? "duet" : "alternate";
 }

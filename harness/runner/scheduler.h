@@ -3,7 +3,7 @@
 // tracer, baseline; with three contenders baseline, base, head; base, head, baseline; ...), so a
 // slow drift of the machine hits all of them alike. In the duet schedule the contenders of a
 // round start together, each pinned to its own CPU, and the CPUs rotate too. Rounds continue
-// until a stop rule (usually the stopping policy on the normalized ratio) says enough.
+// until a stop rule (pipeline/stopping.h: the one stopping policy) says enough.
 //
 // Processes and time come through Executor and Clock, so the loop is tested with fakes.
 #pragma once
@@ -78,10 +78,6 @@ std::vector<RoundSample> round_samples(const std::vector<Round>& rounds,
 
 // The rounds as (baseline, base, head) triples of their `seconds`, for compare.
 std::vector<CompareRound> compare_samples(const std::vector<Round>& rounds);
-
-// The usual rule for `raygate run`: the stopping policy on the tracer's normalized ratio.
-StopRule ratio_stop_rule(const StoppingPolicy& policy, const std::string& tracer_role,
-                         const std::string& baseline_role = "baseline");
 
 std::string_view to_string(ScheduleKind kind);
 

@@ -6,7 +6,7 @@
 #include <cmath>
 
 #include "spd.h"
-#include "store/series.h"
+#include "results/series.h"
 
 namespace raygate {
 namespace {

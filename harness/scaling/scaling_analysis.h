@@ -13,7 +13,7 @@
 
 #include "measure/change.h"
 #include "scaling/power_fit.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate {
 
@@ -59,7 +59,7 @@ struct ExponentChange {
 
 struct FamilyScaling {
   std::string family;     // the SPD generator
-  std::string series_id;  // of the family's sizes for the measured revision (store/series.h)
+  std::string series_id;  // of the family's sizes for the measured revision (results/series.h)
   std::vector<ScalingPoint> points;  // by size
   PowerFit baseline;
   std::map<std::string, RoleScaling> roles;

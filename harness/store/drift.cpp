@@ -52,7 +52,7 @@ std::optional<SceneDrift> scene_drift(const HistoryRow& latest,
   std::vector<double> baselines;
   std::vector<double> ratios;
   for (const HistoryRow& row : rows) {
-    // Only the same series (store/series.h): another tracer's ratios or another scene size's
+    // Only the same series (results/series.h): another tracer's ratios or another scene size's
     // seconds are not this series' history.
     if (!usable(row) || row.scene_id != latest.scene_id || row.series_id != latest.series_id ||
         row.role != latest.role ||

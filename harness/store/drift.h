@@ -2,7 +2,7 @@
 // history while the normalized ratios held, the machine changed (governor, turbo, a neighbour,
 // new hardware under the same name), not the code. The rule (docs/store.md): compare the latest
 // document with earlier documents of the same machine (hostname + CPU model), series by series
-// (store/series.h: same repository, adapter, suite, scene settings, timing and baseline),
+// (results/series.h: same repository, adapter, suite, scene settings, timing and baseline),
 // against the median of the earlier values.
 #pragma once
 

@@ -1,7 +1,7 @@
 // History over commits from stored measurements, the same for every backend: which measurement
 // stands for a commit (the latest one of each series, so CI shards of one commit join up and a
 // re-run supersedes), one table per repository and adapter, the commits as lines of a table, and
-// each series' trend. Nothing here compares rows of different series (store/series.h).
+// each series' trend. Nothing here compares rows of different series (results/series.h).
 #pragma once
 
 #include <cstddef>

@@ -15,7 +15,7 @@ struct Migration {
   bool backfills_series = false;
 };
 
-// Migration 2 of both backends: the parts of each row's series (store/series.h) as columns, so
+// Migration 2 of both backends: the parts of each row's series (results/series.h) as columns, so
 // history filters and groups by them. Valid SQL in both dialects; the rows already stored are
 // filled in from their documents (backfills_series).
 inline constexpr const char* kSeriesColumnsSql = R"sql(

@@ -9,7 +9,7 @@
 
 #include "core/error.h"
 #include "core/time_text.h"
-#include "store/series.h"
+#include "results/series.h"
 #include "store/store_rows.h"
 
 namespace raygate {

@@ -15,7 +15,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate {
 
@@ -68,7 +68,7 @@ struct HistoryRow {
   std::string machine_hostname;
   std::string machine_cpu_model;
   std::string baseline_sha256;  // ratios compare only across the same baseline
-  // The series (store/series.h): trends, drift and comparisons stay within one series_id.
+  // The series (results/series.h): trends, drift and comparisons stay within one series_id.
   std::string repository_key;
   std::string adapter_name;
   std::string suite;

@@ -8,7 +8,7 @@
 
 #include "core/error.h"
 #include "core/sha256.h"
-#include "store/series.h"
+#include "results/series.h"
 
 namespace raygate {
 

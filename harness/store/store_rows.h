@@ -11,7 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "store/results.h"
+#include "results/results.h"
 #include "store/store.h"
 
 namespace raygate {
@@ -32,7 +32,7 @@ struct DocumentRow {
   std::string baseline_sha256;
   std::string machine_hostname;
   std::string machine_cpu_model;
-  std::string timing;          // store/series.h timing_identity()
+  std::string timing;          // results/series.h timing_identity()
   std::string baseline_accel;  // with baseline_sha256, the baseline's identity
   std::string document_json;  // canonical: compact, keys sorted
 };
@@ -50,7 +50,7 @@ struct RevisionRow {
   bool dirty = false;
   std::string adapter_name;
   std::string adapter_hash;
-  std::string repository_key;  // store/series.h
+  std::string repository_key;  // results/series.h
 };
 
 // One scene as one revision (role) saw it. Numbers that are absent or not finite are nullopt.
@@ -71,7 +71,7 @@ struct SceneRow {
   std::optional<double> change_lower;
   std::optional<double> change_upper;
   std::string change_verdict;
-  std::string scene_settings;  // store/series.h
+  std::string scene_settings;  // results/series.h
   std::string series_id;       // SeriesKey::id() of this scene as this revision measured it
 };
 
@@ -89,7 +89,7 @@ DocumentRows document_rows(const ResultsDocument& document, const std::string& b
 
 // The series columns (store migration 2) of a document stored before they existed, worked out
 // from its stored text. `known` is false for a document that no longer reads back: its rows get
-// unknown_series_id(id) (store/series.h).
+// unknown_series_id(id) (results/series.h).
 struct StoredSeries {
   bool known = false;
   DocumentRows rows;  // the columns of document_rows(); the others are left as computed

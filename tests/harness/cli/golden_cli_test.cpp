@@ -13,7 +13,7 @@
 #include "compare/golden.h"
 #include "compare/image_compare.h"
 #include "core/sha256.h"
-#include "store/results.h"
+#include "results/results.h"
 #include "tracer_fixture.h"
 
 namespace raygate::test {

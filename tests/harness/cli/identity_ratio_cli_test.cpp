@@ -12,7 +12,7 @@
 
 #include "checkout/git_fixture.h"
 #include "cli_support.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate::test {
 namespace {

@@ -16,7 +16,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_support.h"
-#include "store/results.h"
+#include "results/results.h"
 #include "tracer_fixture.h"
 
 namespace raygate::test {

@@ -11,7 +11,7 @@
 
 #include "cli_support.h"
 #include "results_fixture.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate::test {
 namespace {

@@ -16,7 +16,7 @@
 #include "cli_support.h"
 #include "compare/golden.h"
 #include "core/sha256.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate::test {
 namespace {

@@ -13,7 +13,7 @@
 #include "core/fs.h"
 #include "core/process.h"
 #include "scaling/scaling_json.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate::test {
 namespace {

@@ -9,8 +9,8 @@
 
 #include "checkout/git_fixture.h"
 #include "cli_support.h"
-#include "store/results.h"
-#include "store/shard.h"
+#include "results/results.h"
+#include "results/shard.h"
 #include "tracer_fixture.h"
 
 namespace raygate::test {

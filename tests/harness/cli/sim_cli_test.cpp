@@ -11,7 +11,7 @@
 
 #include "checkout/git_fixture.h"
 #include "cli_support.h"
-#include "store/results.h"
+#include "results/results.h"
 #include "tracer_fixture.h"
 
 namespace raygate::test {

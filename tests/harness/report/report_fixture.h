@@ -11,7 +11,7 @@
 #include "gate/policy.h"
 #include "gate/verdict.h"
 #include "report/reporter.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate::test {
 

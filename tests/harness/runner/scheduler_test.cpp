@@ -10,108 +10,18 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "pipeline/stopping.h"
+#include "fake_executor.h"
 
 namespace raygate {
 namespace {
 
 namespace fs = std::filesystem;
-
-// Time stands still unless a fake process runs.
-class FakeClock final : public Clock {
- public:
-  double now_seconds() override { return now_; }
-  void advance(double seconds) { now_ += seconds; }
-
- private:
-  double now_ = 1000.0;
-};
-
-// One process the fake executor was asked to run.
-struct Call {
-  std::string role;       // argv[0]
-  std::vector<int> cpus;  // its cpu_affinity
-  int batch = 0;          // executor call it came in; specs of one run_together share it
-  fs::path log;           // its stdout_path, which names the run directory
-};
-
-ProcessResult exited_with(int code, double wall_seconds) {
-  ProcessResult result;
-  result.outcome = ProcessOutcome::exited;
-  result.exit_code = code;
-  result.wall_seconds = wall_seconds;
-  result.user_seconds = wall_seconds * 0.75;
-  result.system_seconds = wall_seconds * 0.25;
-  return result;
-}
-
-ProcessResult killed_by(int signal) {
-  ProcessResult result;
-  result.outcome = ProcessOutcome::signaled;
-  result.signal = signal;
-  result.wall_seconds = 0.5;
-  return result;
-}
-
-// A process table keyed by argv[0] (the fake contenders put their role there): every run of a
-// role succeeds in its scripted wall seconds (cycled), except runs scripted to end otherwise.
-// Each run advances the clock by its wall time; a run_together by the longest of its runs.
-class FakeExecutor final : public Executor {
- public:
-  explicit FakeExecutor(FakeClock& clock) : clock_(clock) {}
-
-  void set_seconds(const std::string& role, std::vector<double> seconds) {
-    seconds_[role] = std::move(seconds);
-  }
-  // The nth (1-based) run of `role` ends with `result`.
-  void script(const std::string& role, int nth, ProcessResult result) {
-    scripted_[{role, nth}] = std::move(result);
-  }
-
-  ProcessResult run(const ProcessSpec& spec) override {
-    ProcessResult result = next(spec, batches_++);
-    clock_.advance(result.wall_seconds);
-    return result;
-  }
-
-  std::vector<ProcessResult> run_together(const std::vector<ProcessSpec>& specs) override {
-    const int batch = batches_++;
-    std::vector<ProcessResult> results;
-    double longest = 0.0;
-    for (const ProcessSpec& spec : specs) {
-      results.push_back(next(spec, batch));
-      longest = std::max(longest, results.back().wall_seconds);
-    }
-    clock_.advance(longest);
-    return results;
-  }
-
-  const std::vector<Call>& calls() const { return calls_; }
-  std::vector<std::string> roles() const {
-    std::vector<std::string> out;
-    for (const Call& call : calls_) out.push_back(call.role);
-    return out;
-  }
-
- private:
-  ProcessResult next(const ProcessSpec& spec, int batch) {
-    const std::string& role = spec.argv.at(0);
-    const int nth = ++runs_[role];
-    calls_.push_back({role, spec.cpu_affinity, batch, spec.stdout_path});
-    if (const auto found = scripted_.find({role, nth}); found != scripted_.end()) {
-      return found->second;
-    }
-    const std::vector<double>& seconds = seconds_[role];
-    const double wall = seconds.empty() ? 1.0 : seconds[static_cast<std::size_t>(nth - 1) % seconds.size()];
-    return exited_with(0, wall);
-  }
-
-  FakeClock& clock_;
-  std::map<std::string, std::vector<double>> seconds_;
-  std::map<std::pair<std::string, int>, ProcessResult> scripted_;
-  std::map<std::string, int> runs_;
-  std::vector<Call> calls_;
-  int batches_ = 0;
-};
+using testing::Call;
+using testing::exited_with;
+using testing::FakeClock;
+using testing::FakeExecutor;
+using testing::killed_by;
 
 // Runs "<role>" and is timed by the process's wall seconds.
 class FakeContender final : public Contender {

@@ -8,7 +8,7 @@
 #include "core/fs.h"
 #include "results_fixture.h"
 #include "store/history.h"
-#include "store/series.h"
+#include "results/series.h"
 #include "store/sqlite_schema.h"
 #include "store/store.h"
 #include "store/store_rows.h"

@@ -7,7 +7,7 @@
 #include "results_fixture.h"
 #include "store/history.h"
 #include "store/postgres_schema.h"
-#include "store/series.h"
+#include "results/series.h"
 #include "store/store.h"
 #include "store/store_rows.h"
 

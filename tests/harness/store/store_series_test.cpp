@@ -1,4 +1,4 @@
-// History series (store/series.h): which measurements may be compared over commits. Two tracers'
+// History series (results/series.h): which measurements may be compared over commits. Two tracers'
 // repositories and two adapters in one store give four separate tables and trends; any part of
 // the key (repository, adapter, suite, scene settings, timing, baseline) starts a new series;
 // drift compares a series only with itself; history filters by the parts.
@@ -8,7 +8,7 @@
 #include "results_fixture.h"
 #include "store/drift.h"
 #include "store/history.h"
-#include "store/series.h"
+#include "results/series.h"
 #include "store/store.h"
 #include "store/store_rows.h"
 

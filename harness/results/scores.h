@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate {
 

@@ -7,7 +7,7 @@
 
 #include <string>
 
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate {
 

@@ -9,19 +9,19 @@
 #include <string>
 #include <vector>
 
-#include "cli/measure_options.h"
-#include "cli/progress.h"
 #include "compare/golden.h"
 #include "compare/image_compare.h"
 #include "gate/policy.h"
+#include "runner/baseline_contender.h"
 #include "runner/baseline_tool.h"
 #include "runner/contender.h"
-#include "runner/executor.h"
 #include "runner/scheduler.h"
+#include "pipeline/measure_context.h"
+#include "pipeline/progress.h"
+#include "results/results.h"
 #include "runner/suite.h"
-#include "store/results.h"
 
-namespace raygate::cli {
+namespace raygate {
 
 struct SuiteMeasurement {
   std::vector<SuiteScene> scenes;
@@ -57,11 +57,27 @@ ResultsDocument new_document(const std::string& kind, const MeasureContext& cont
 // m.out after each scene and once more, complete, at the end. On SIGINT or SIGTERM it stops the
 // running child, writes the scenes finished so far (complete: false) and throws Interrupted
 // saying what was kept and where.
-void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
-                   Clock& clock, Progress& progress);
+void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io);
+
+// A finished measurement: its document and where it was written.
+struct MeasuredDocument {
+  ResultsDocument document;
+  std::filesystem::path path;
+};
+
+// The end run and compare share: `opening` said, measure_suite(), the finish time stamped, the
+// growth of each scene family fitted and said when the suite measured one at 3 sizes or more
+// (scaling/), the complete document written to m.out.
+MeasuredDocument measure_document(ResultsDocument document, const SuiteMeasurement& m,
+                                  const std::string& opening, PipelineIo& io);
+
+// The baseline as the context times it (its sampling and the clock matched to the tracer's); in
+// sim mode simulated under cachegrind, its costs cached in <cache-dir>/simulated-baseline under
+// the baseline's source hash.
+BaselineContender baseline_contender(const MeasureContext& context,
+                                     const std::string& baseline_source_sha256);
 
 // One line per scene for logs and the end-of-run table.
 std::string scene_line(const SceneResult& scene, const std::vector<std::string>& tracer_roles);
 
-
-}  // namespace raygate::cli
+}  // namespace raygate

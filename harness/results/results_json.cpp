@@ -7,8 +7,8 @@
 
 #include "core/error.h"
 #include "core/fs.h"
-#include "store/results.h"
-#include "store/shard.h"
+#include "results/results.h"
+#include "results/shard.h"
 
 namespace raygate {
 

@@ -14,7 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "runner/suite.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate {
 

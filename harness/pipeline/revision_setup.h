@@ -6,11 +6,12 @@
 #include <string>
 
 #include "checkout/repository.h"
-#include "cli/measure_options.h"
+#include "pipeline/measure_context.h"
+#include "pipeline/progress.h"
+#include "results/results.h"
 #include "runner/tracer_contender.h"
-#include "store/results.h"
 
-namespace raygate::cli {
+namespace raygate {
 
 struct PreparedRevision {
   RevisionRecord record;
@@ -20,10 +21,12 @@ struct PreparedRevision {
 // Builds `worktree` for `role`; throws InfraError (exit 3) with the log tail if the build fails.
 PreparedRevision prepare_revision(const std::string& role, const std::string& repository,
                                   const Worktree& worktree, const MeasureContext& context,
-                                  const std::string& baseline_source_hash, int jobs);
+                                  const std::string& baseline_source_hash, int jobs,
+                                  ProgressSink& progress);
 
 // The build record for `worktree` without throwing on failure (bisect skips such commits).
 BuildRecord build_revision(const Worktree& worktree, const MeasureContext& context,
-                           const std::string& baseline_source_hash, int jobs);
+                           const std::string& baseline_source_hash, int jobs,
+                           ProgressSink& progress);
 
-}  // namespace raygate::cli
+}  // namespace raygate

@@ -1,4 +1,4 @@
-#include "store/shard.h"
+#include "results/shard.h"
 
 #include <fmt/core.h>
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate {
 

@@ -7,7 +7,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
-#include "store/results.h"
+#include "results/results.h"
 
 namespace raygate {
 namespace {

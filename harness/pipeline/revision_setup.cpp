@@ -1,4 +1,4 @@
-#include "cli/revision_setup.h"
+#include "pipeline/revision_setup.h"
 
 #include <fmt/core.h>
 
@@ -6,7 +6,7 @@
 #include "builder/builder.h"
 #include "checkout/repository_identity.h"
 
-namespace raygate::cli {
+namespace raygate {
 
 namespace {
 
@@ -22,7 +22,8 @@ bool builds_raygate_source(const Adapter& adapter) {
 }  // namespace
 
 BuildRecord build_revision(const Worktree& worktree, const MeasureContext& context,
-                           const std::string& baseline_source_hash, int jobs) {
+                           const std::string& baseline_source_hash, int jobs,
+                           ProgressSink& progress) {
   BuildOptions options;
   options.cache_dir = context.cache_dir;
   options.raygate_source = context.tools.data_root;
@@ -31,22 +32,22 @@ BuildRecord build_revision(const Worktree& worktree, const MeasureContext& conte
   if (builds_raygate_source(context.adapter)) {
     options.key_extra = "raygate-baseline-source:" + baseline_source_hash;
   }
-  if (!context.quiet) {
-    fmt::print(stderr, "building {} ({}) with adapter {} ...\n", worktree.short_sha,
-               worktree.revision, context.adapter.name);
-  }
+  progress.status(fmt::format("building {} ({}) with adapter {} ...", worktree.short_sha,
+                              worktree.revision, context.adapter.name));
   BuildRecord record = build(worktree, context.adapter, options);
-  if (record.success && !context.quiet) {
-    fmt::print(stderr, "  {} in {}\n", record.cached ? "cached build" : "built",
-               record.build_dir.string());
+  if (record.success) {
+    progress.status(fmt::format("  {} in {}", record.cached ? "cached build" : "built",
+                                record.build_dir.string()));
   }
   return record;
 }
 
 PreparedRevision prepare_revision(const std::string& role, const std::string& repository,
                                   const Worktree& worktree, const MeasureContext& context,
-                                  const std::string& baseline_source_hash, int jobs) {
-  BuildRecord build_record = build_revision(worktree, context, baseline_source_hash, jobs);
+                                  const std::string& baseline_source_hash, int jobs,
+                                  ProgressSink& progress) {
+  BuildRecord build_record =
+      build_revision(worktree, context, baseline_source_hash, jobs, progress);
   require_success(build_record);
   PreparedRevision prepared;
   prepared.record.role = role;
@@ -74,4 +75,4 @@ PreparedRevision prepare_revision(const std::string& role, const std::string& re
   return prepared;
 }
 
-}  // namespace raygate::cli
+}  // namespace raygate

@@ -1,20 +1,25 @@
-#include "cli/measure_session.h"
+#include "pipeline/suite_measurement.h"
 
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <memory>
 
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/path_component.h"
 #include "core/sha256.h"
 #include "core/time_text.h"
+#include "gate/growth_gate.h"
 #include "measure/machine_context.h"
+#include "runner/baseline_cost_cache.h"
 #include "runner/cachegrind.h"
 #include "runner/scene_files.h"
-#include "store/scores.h"
+#include "results/scores.h"
+#include "scaling/scaling_stage.h"
+#include "scaling/scaling_text.h"
 
-namespace raygate::cli {
+namespace raygate {
 
 namespace {
 
@@ -52,7 +57,7 @@ void check_images(SceneResult& result, const SuiteMeasurement& m, const GoldenMa
   }
 }
 
-// The same computation `raygate merge` makes over shards (store/scores.h).
+// The same computation `raygate merge` makes over shards (results/scores.h).
 void update_scores(ResultsDocument& document, const std::vector<std::string>& roles) {
   document.scores = suite_scores(document.scenes, roles);
 }
@@ -119,8 +124,9 @@ std::string kept_message(const Interrupted& stop, const ResultsDocument& documen
                      m.out.string());
 }
 
-void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
-                    Clock& clock, Progress& progress) {
+void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io) {
+  Clock& clock = io.clock;
+  ProgressSink& progress = io.progress;
   const GoldenManifest manifest = load_golden_manifest(m.golden_dir);
   const double started = clock.now_seconds();
   double elapsed_done = 0.0;
@@ -145,8 +151,8 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Execut
       state.eta_seconds = eta_seconds(elapsed_done, index, m.scenes.size(), spent);
       progress.update(state);
     };
-    result.runs = measure_scene(input, m.contenders, m.schedule, m.stop(entry), executor, clock,
-                                join_component(m.work_dir / "scenes", entry.id, "scene id"),
+    result.runs = measure_scene(input, m.contenders, m.schedule, m.stop(entry), io.executor,
+                                clock, join_component(m.work_dir / "scenes", entry.id, "scene id"),
                                 observe);
     result.status = result.runs.failed() ? "failed" : "measured";
     summarize_ratios(result, m);
@@ -164,19 +170,41 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Execut
 
 }  // namespace
 
-void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
-                   Clock& clock, Progress& progress) {
+void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io) {
   // Within it a signal is not fatal at once: the running child's group is killed, the scenes
   // finished so far are written, and Interrupted says where.
   const InterruptScope stop_here;
   try {
-    measure_scenes(document, m, executor, clock, progress);
+    measure_scenes(document, m, io);
   } catch (const Interrupted& stop) {
     document.complete = false;
     write_results(document, m.out);
     throw Interrupted(stop.signal(), kept_message(stop, document, m));
   }
   document.complete = true;
+}
+
+MeasuredDocument measure_document(ResultsDocument document, const SuiteMeasurement& m,
+                                  const std::string& opening, PipelineIo& io) {
+  io.progress.line(opening);
+  measure_suite(document, m, io);
+  document.finished_at = utc_timestamp();
+  const ScalingAnalysis scaling = attach_scaling(document, scaling_limits(m.policy));
+  for (const std::string& line : scaling_lines(scaling)) io.progress.line(line);
+  write_results(document, m.out);
+  return {std::move(document), m.out};
+}
+
+BaselineContender baseline_contender(const MeasureContext& context,
+                                     const std::string& baseline_source_sha256) {
+  BaselineContender baseline(context.tools.baseline, context.suite.sampling,
+                             std::chrono::minutes(30), "none", baseline_clock(context));
+  if (simulated(context)) {
+    baseline.simulate({*context.cachegrind,
+                       std::make_shared<BaselineCostCache>(context.cache_dir / "simulated-baseline"),
+                       baseline_source_sha256});
+  }
+  return baseline;
 }
 
 std::string scene_line(const SceneResult& scene, const std::vector<std::string>& tracer_roles) {
@@ -207,4 +235,4 @@ std::string scene_line(const SceneResult& scene, const std::vector<std::string>&
   return text;
 }
 
-}  // namespace raygate::cli
+}  // namespace raygate

@@ -11,9 +11,9 @@
 #include "core/fs.h"
 #include "gate/verdict.h"
 #include "results_fixture.h"
-#include "store/merge.h"
-#include "store/scores.h"
-#include "store/shard.h"
+#include "results/merge.h"
+#include "results/scores.h"
+#include "results/shard.h"
 
 namespace raygate {
 namespace {

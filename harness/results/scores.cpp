@@ -1,4 +1,4 @@
-#include "store/scores.h"
+#include "results/scores.h"
 
 #include "runner/scheduler.h"
 

@@ -8,13 +8,15 @@
 #include <string>
 
 #include "checkout/worktree.h"
-#include "cli/measure_options.h"
+#include "pipeline/measure_context.h"
+#include "pipeline/progress.h"
+#include "pipeline/revision_setup.h"
+#include "pipeline/suite_measurement.h"
 #include "runner/baseline_tool.h"
-#include "store/results.h"
 
-namespace raygate::cli {
+namespace raygate {
 
-struct CompareSetup {
+struct CompareRequest {
   const MeasureContext& context;
   const BaselineTool& baseline;
   std::string repository;  // for the document
@@ -24,13 +26,12 @@ struct CompareSetup {
 };
 
 // Builds both (InfraError with the log tail if either build fails), measures, and returns the
-// complete document, also written to its path (document_path says where).
-ResultsDocument measure_compare(const CompareSetup& setup, std::filesystem::path* document_path);
+// complete document, also written to its path.
+MeasuredDocument measure_compare(const CompareRequest& request, PipelineIo& io);
 
-// Stops a scene once its verdict is decided (REGRESSED, IMPROVED or UNCHANGED); an
-// INCONCLUSIVE scene gets rounds until the budget is spent.
-// `counted`: sim mode, where rounds whose counts all repeat decide exactly (measure/simulated_cost.h).
-StopRule change_stop_rule(const StoppingPolicy& stopping, const ScenePolicy& policy,
-                          bool counted = false);
+// The measuring half of measure_compare, on revisions already built.
+MeasuredDocument measure_prepared_compare(const CompareRequest& request,
+                                          const PreparedRevision& base,
+                                          const PreparedRevision& head, PipelineIo& io);
 
-}  // namespace raygate::cli
+}  // namespace raygate

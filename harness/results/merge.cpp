@@ -1,4 +1,4 @@
-#include "store/merge.h"
+#include "results/merge.h"
 
 #include <fmt/core.h>
 #include <fmt/format.h>
@@ -10,8 +10,8 @@
 
 #include "core/error.h"
 #include "core/path_component.h"
-#include "store/scores.h"
-#include "store/shard.h"
+#include "results/scores.h"
+#include "results/shard.h"
 
 namespace raygate {
 

@@ -7,8 +7,8 @@
 
 #include "core/error.h"
 #include "results_fixture.h"
-#include "store/merge.h"
-#include "store/shard.h"
+#include "results/merge.h"
+#include "results/shard.h"
 
 namespace raygate {
 namespace {

@@ -1,5 +1,5 @@
 // Series keys from a results document.
-#include "store/series.h"
+#include "results/series.h"
 
 #include <fmt/core.h>
 

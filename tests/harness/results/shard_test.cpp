@@ -11,7 +11,7 @@
 
 #include "core/error.h"
 #include "results_fixture.h"
-#include "store/shard.h"
+#include "results/shard.h"
 
 namespace raygate {
 namespace {

@@ -1,0 +1,162 @@
+#include "pipeline/bisect.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+
+#include "measure/change.h"
+#include "pipeline/compare_measurement.h"
+#include "pipeline/revision_setup.h"
+
+namespace raygate {
+
+namespace {
+
+// Measures candidates against the good commit on the one scene and says which side each is on.
+struct Bisector {
+  const BisectRequest& request;
+  PipelineIo& io;
+  Worktree good;
+  // The slowdown that separates good from bad. The bad end is judged against the policy's limit;
+  // after that a step is bad when its change is above half of what the bad end's surely is (the
+  // lower end of its CI: its estimate alone once came out +27% for a +11% culprit, and the
+  // split at +13.6% called the culprit good). So a commit with a small unrelated change (+1%
+  // where the culprit made +10%) is not called the culprit by a median straying over 3%.
+  std::optional<double> split;
+  std::vector<BisectStepRecord> steps;
+
+  BisectStep judge(const Revision& candidate) {
+    BisectStepRecord record = judge_step(candidate);
+    const BisectStep step = record.step;
+    steps.push_back(std::move(record));
+    return step;
+  }
+
+  BisectStepRecord judge_step(const Revision& candidate) {
+    const MeasureContext& context = request.context;
+    const Worktree tree = request.repository.materialize(candidate);
+    const BuildRecord build = build_revision(tree, context, request.baseline.source_hash(),
+                                             context.jobs, io.progress);
+    if (!build.success) {
+      io.progress.line(fmt::format("  {} {}: does not build ({}), skipped", candidate.short_sha,
+                                   candidate.subject, build.failure));
+      return {candidate, BisectStep::skipped, "does not build: " + build.failure, {}, {}};
+    }
+    const MeasuredDocument measured = measure_compare(
+        {context, request.baseline, request.repository.location(), good, tree, {}}, io);
+    const SceneResult& scene = measured.document.scenes.front();
+    if (scene.runs.failed()) {
+      io.progress.line(fmt::format("  {} {}: could not be measured ({}), skipped",
+                                   candidate.short_sha, candidate.subject,
+                                   scene.runs.failed_run->failure));
+      return {candidate, BisectStep::skipped,
+              "could not be measured: " + scene.runs.failed_run->failure, scene.change,
+              scene.change_verdict};
+    }
+    const bool bad =
+        request.metric == BisectMetric::image ? image_failed(scene) : speed_regressed(scene);
+    io.progress.line(fmt::format("  {} {}: {} -> {}", candidate.short_sha, candidate.subject,
+                                 describe(scene), bad ? "bad" : "good"));
+    if (bad && !split && scene.change) {
+      const double limit = context.policy.for_scene(scene.entry.id).max_slowdown;
+      split = std::max(limit, scene.change->change_interval.lower / 2);
+      if (request.metric == BisectMetric::ratio) {
+        io.progress.line(fmt::format("  later steps are bad above {:+.1f}% (half the lower end "
+                                     "of this one's CI, or the limit)",
+                                     100 * *split));
+      }
+    }
+    return {candidate, bad ? BisectStep::bad : BisectStep::good, {}, scene.change,
+            scene.change_verdict};
+  }
+
+  bool speed_regressed(const SceneResult& scene) const {
+    // An INCONCLUSIVE step is decided by its point estimate against the limit: bisect must
+    // choose a side, and the printed numbers show how close the call was.
+    const double limit =
+        split.value_or(request.context.policy.for_scene(scene.entry.id).max_slowdown);
+    const ChangeVerdict verdict = classify_change(*scene.change, limit);
+    return verdict == ChangeVerdict::regressed ||
+           (verdict == ChangeVerdict::inconclusive && scene.change->change > limit);
+  }
+
+  static bool image_failed(const SceneResult& scene) {
+    for (const ImageCheck& check : scene.images) {
+      if (check.reference == "base" && check.verdict == "fail") return true;
+    }
+    return false;
+  }
+
+  static std::string describe(const SceneResult& scene) {
+    const ChangeSummary& c = *scene.change;
+    return fmt::format("{:+.1f}% [{:+.1f}%, {:+.1f}%] {}", 100 * c.change,
+                       100 * c.change_interval.lower, 100 * c.change_interval.upper,
+                       scene.change_verdict);
+  }
+};
+
+// The untested index in (low, high) nearest the middle, or nullopt.
+std::optional<std::size_t> next_probe(const std::vector<std::optional<BisectStep>>& steps,
+                                      long low, long high) {
+  const long middle = low + (high - low) / 2;
+  for (long offset = 0; offset < high - low; ++offset) {
+    for (const long index : {middle - offset, middle + offset}) {
+      if (index > low && index < high && !steps[static_cast<std::size_t>(index)]) {
+        return static_cast<std::size_t>(index);
+      }
+    }
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+std::string_view to_string(BisectStep step) {
+  switch (step) {
+    case BisectStep::good: return "good";
+    case BisectStep::bad: return "bad";
+    case BisectStep::skipped: break;
+  }
+  return "skipped";
+}
+
+BisectResult bisect_search(const std::vector<Revision>& candidates, const BisectJudge& judge) {
+  std::vector<std::optional<BisectStep>> steps(candidates.size());
+  const std::size_t last = candidates.size() - 1;
+  steps[last] = judge(candidates[last]);
+  if (steps[last] != BisectStep::bad) {
+    return {steps[last] == BisectStep::skipped ? BisectOutcome::bad_unmeasurable
+                                               : BisectOutcome::bad_not_worse,
+            candidates[last], 0, {}, candidates.size(), {}};
+  }
+  long low = -1;  // index of the last known good (-1: the good revision itself)
+  long high = static_cast<long>(last);  // index of the first known bad
+  while (const std::optional<std::size_t> probe = next_probe(steps, low, high)) {
+    steps[*probe] = judge(candidates[*probe]);
+    if (steps[*probe] == BisectStep::good) low = static_cast<long>(*probe);
+    if (steps[*probe] == BisectStep::bad) high = static_cast<long>(*probe);
+  }
+  const Revision& first_bad = candidates[static_cast<std::size_t>(high)];
+  if (high - low > 1) {
+    return {BisectOutcome::hidden_by_skips, first_bad, static_cast<std::size_t>(high - low - 1),
+            {}, candidates.size(), {}};
+  }
+  return {BisectOutcome::found, first_bad, 0, {}, candidates.size(), {}};
+}
+
+BisectResult bisect(const BisectRequest& request, PipelineIo& io) {
+  const std::vector<Revision> candidates =
+      request.repository.first_parent_history(request.good, request.bad);
+  Bisector bisector{request, io, request.repository.checkout(request.good), std::nullopt, {}};
+  io.progress.line(fmt::format("bisecting {} commits after {} on scene {} by {}",
+                               candidates.size(), bisector.good.short_sha,
+                               request.context.scenes.front().id,
+                               request.metric == BisectMetric::image ? "image" : "ratio"));
+  BisectResult result = bisect_search(
+      candidates, [&](const Revision& candidate) { return bisector.judge(candidate); });
+  result.good = bisector.good;
+  result.steps = std::move(bisector.steps);
+  return result;
+}
+
+}  // namespace raygate

@@ -1,0 +1,75 @@
+#include "pipeline/compare_measurement.h"
+
+#include <fmt/core.h>
+
+#include "core/time_text.h"
+#include "measure/simulated_cost.h"
+#include "pipeline/stopping.h"
+#include "runner/baseline_contender.h"
+#include "runner/tracer_contender.h"
+
+namespace raygate {
+
+namespace {
+
+// The change head vs base, and head's image against base's.
+void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy,
+                          const std::filesystem::path& evidence_dir, bool counted) {
+  const ScenePolicy& policy = gate_policy.for_scene(scene.entry.id);
+  scene.change =
+      measured_change(compare_samples(scene.runs.rounds), change_bootstrap(policy), counted);
+  scene.change_verdict =
+      std::string(to_string(classify_change(*scene.change, policy.max_slowdown)));
+  const RunRecord* base = scene.runs.first_run("base");
+  const RunRecord* head = scene.runs.first_run("head");
+  if (base != nullptr && head != nullptr) {
+    scene.images.push_back(check_image("head", "base", head->image, base->image, policy.image,
+                                       evidence_dir, scene.entry.id + ".head-vs-base"));
+  }
+}
+
+}  // namespace
+
+MeasuredDocument measure_compare(const CompareRequest& request, PipelineIo& io) {
+  const MeasureContext& context = request.context;
+  const std::string source_hash = request.baseline.source_hash();
+  const PreparedRevision base = prepare_revision("base", request.repository, request.base,
+                                                 context, source_hash, context.jobs, io.progress);
+  const PreparedRevision head = prepare_revision("head", request.repository, request.head,
+                                                 context, source_hash, context.jobs, io.progress);
+  return measure_prepared_compare(request, base, head, io);
+}
+
+MeasuredDocument measure_prepared_compare(const CompareRequest& request,
+                                          const PreparedRevision& base,
+                                          const PreparedRevision& head, PipelineIo& io) {
+  const MeasureContext& context = request.context;
+  SuiteMeasurement m = suite_measurement(
+      context,
+      compact_utc_timestamp() + "-" + request.base.short_sha + "-" + request.head.short_sha,
+      request.out);
+  const std::filesystem::path work_dir = m.work_dir;
+  m.tracer_roles = {"base", "head"};
+  m.stop = [&](const SuiteScene& scene) {
+    return change_stop_rule(context.stopping, context.policy.for_scene(scene.id),
+                            simulated(context));
+  };
+  m.finish_scene = [&](SceneResult& scene) {
+    finish_compare_scene(scene, context.policy, work_dir / "evidence", simulated(context));
+  };
+  const BaselineContender baseline_runs =
+      baseline_contender(context, request.baseline.source_hash());
+  const TracerContender base_runs(base.setup);
+  const TracerContender head_runs(head.setup);
+  m.contenders = {&baseline_runs, &base_runs, &head_runs};
+
+  ResultsDocument document = new_document("compare", context, request.baseline);
+  document.revisions = {base.record, head.record};
+  const std::string opening = fmt::format(
+      "comparing {} {} (base) with {} (head) against {} on suite {}: {} scenes{}",
+      context.adapter.name, request.base.short_sha, request.head.short_sha,
+      request.baseline.version_line(), context.suite.name, m.scenes.size(), shard_note(context));
+  return measure_document(std::move(document), m, opening, io);
+}
+
+}  // namespace raygate

@@ -1,0 +1,52 @@
+#include "pipeline/measure_context.h"
+
+#include <fmt/core.h>
+
+namespace raygate {
+
+bool simulated(const MeasureContext& context) {
+  return context.adapter.timing.source == TimingSource::simulated;
+}
+
+TimingMetric tracer_metric(const MeasureContext& context) {
+  return context.metric.value_or(context.adapter.timing.metric);
+}
+
+BaselineClock baseline_clock(const MeasureContext& context) {
+  return matching_baseline_clock(context.adapter.timing.source, tracer_metric(context));
+}
+
+std::string shard_note(const MeasureContext& context) {
+  if (!context.shard) return {};
+  return fmt::format(", shard {} of {} selected scenes", to_string(context.shard->spec),
+                     context.shard->suite_scenes.size());
+}
+
+nlohmann::json measure_settings(const MeasureContext& c) {
+  nlohmann::json settings = {
+      {"schedule", std::string(to_string(c.schedule.kind))},
+      {"warmup_runs", c.schedule.warmup_runs},
+      {"pin_cpus", c.schedule.pin_cpus},
+      {"duet_cpus", c.schedule.duet_cpus},
+      {"target_relative_half_width", c.stopping.target_relative_half_width},
+      {"min_rounds", c.stopping.min_rounds},
+      {"max_rounds", c.stopping.max_rounds},
+      {"max_seconds_per_scene", c.stopping.max_seconds},
+      {"metric", simulated(c)  ? std::string(tracer_clock_name(c.adapter.timing.source, {}))
+                 : c.metric ? std::string(to_string(*c.metric))
+                            : std::string(to_string(c.adapter.timing.metric))},
+      {"timing_source", std::string(to_string(c.adapter.timing.source))},
+      {"tracer_clock",
+       std::string(tracer_clock_name(c.adapter.timing.source, tracer_metric(c)))},
+      {"baseline_clock", std::string(to_string(baseline_clock(c)))},
+      {"threads", c.adapter.threads},
+      {"golden_dir", c.golden_dir.string()},
+      {"policy_file", c.policy.file.string()},
+      {"max_slowdown", c.policy.defaults.max_slowdown},
+      {"significance", c.policy.defaults.significance},
+      {"max_exponent_increase", c.policy.max_exponent_increase}};
+  if (c.shard) settings["shard"] = shard_to_json(*c.shard);
+  return settings;
+}
+
+}  // namespace raygate

@@ -1,0 +1,58 @@
+// Everything a measurement needs, loaded and checked: the tools, the adapter, the suite and its
+// selected scenes (or one shard of them), the schedule, the stopping policy and the gate policy.
+// The command line builds it from options (cli/measure_options.h); the pipeline reads it.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "adapter/adapter.h"
+#include "core/paths.h"
+#include "gate/policy.h"
+#include "measure/stopping.h"
+#include "results/shard.h"
+#include "runner/baseline_contender.h"
+#include "runner/cachegrind.h"
+#include "runner/scheduler.h"
+#include "runner/suite.h"
+
+namespace raygate {
+
+struct MeasureContext {
+  ToolPaths tools;
+  Adapter adapter;
+  Suite suite;
+  std::vector<SuiteScene> scenes;
+  std::optional<ShardRecord> shard;  // --shard: `scenes` is this shard of the selection
+  std::filesystem::path cache_dir;
+  std::filesystem::path golden_dir;
+  ScheduleOptions schedule;
+  StoppingPolicy stopping;
+  std::optional<TimingMetric> metric;
+  GatePolicy policy;
+  int jobs = 0;  // parallel build jobs; 0 = every allowed CPU
+  std::optional<Cachegrind> cachegrind;  // sim mode (docs/simulated-timing.md)
+};
+
+// Sim mode: every run counted under cachegrind (--timing sim or an adapter timed "simulated").
+bool simulated(const MeasureContext& context);
+
+// How the tracer is timed in this measurement: the adapter's timing, --timing overriding its
+// process metric.
+TimingMetric tracer_metric(const MeasureContext& context);
+
+// How the baseline is timed: by the tracer's clock (process wall or CPU), or by its in-process
+// seconds when the tracer reports its own time (DESIGN.md §11).
+BaselineClock baseline_clock(const MeasureContext& context);
+
+// ", shard K/N of M selected scenes" with --shard, else "": for the line that opens a run.
+std::string shard_note(const MeasureContext& context);
+
+// The settings object of a results document: how this measurement was made.
+nlohmann::json measure_settings(const MeasureContext& context);
+
+}  // namespace raygate

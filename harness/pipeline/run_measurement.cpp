@@ -1,0 +1,41 @@
+#include "pipeline/run_measurement.h"
+
+#include <fmt/core.h>
+
+#include "core/time_text.h"
+#include "pipeline/stopping.h"
+#include "runner/tracer_contender.h"
+
+namespace raygate {
+
+MeasuredDocument measure_run(const RunRequest& request, PipelineIo& io) {
+  const MeasureContext& context = request.context;
+  const PreparedRevision tracer =
+      prepare_revision("tracer", request.repository, request.worktree, context,
+                       request.baseline.source_hash(), context.jobs, io.progress);
+  return measure_prepared_run(request, tracer, io);
+}
+
+MeasuredDocument measure_prepared_run(const RunRequest& request, const PreparedRevision& tracer,
+                                      PipelineIo& io) {
+  const MeasureContext& context = request.context;
+  const Worktree& worktree = request.worktree;
+  SuiteMeasurement m = suite_measurement(
+      context, compact_utc_timestamp() + "-" + worktree.short_sha, request.out);
+  m.stop = [&](const SuiteScene&) { return ratio_stop_rule(context.stopping, "tracer"); };
+  m.tracer_roles = {"tracer"};
+  const BaselineContender baseline_runs =
+      baseline_contender(context, request.baseline.source_hash());
+  const TracerContender tracer_runs(tracer.setup);
+  m.contenders = {&baseline_runs, &tracer_runs};
+
+  ResultsDocument document = new_document("run", context, request.baseline);
+  document.revisions.push_back(tracer.record);
+  const std::string opening = fmt::format(
+      "measuring {} {} ({}) against {} on suite {}: {} scenes{}", context.adapter.name,
+      worktree.short_sha, worktree.subject, request.baseline.version_line(), context.suite.name,
+      m.scenes.size(), shard_note(context));
+  return measure_document(std::move(document), m, opening, io);
+}
+
+}  // namespace raygate

@@ -1,0 +1,141 @@
+// `raygate bisect` as a library call (pipeline/bisect.h): the search on its own with a judge of
+// the test's, then the whole driver on a fixture history, each probe built for real and
+// measured through the fake executor and clock.
+#include "pipeline/bisect.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+
+#include "pipeline_fixture.h"
+
+namespace raygate::testing {
+namespace {
+
+// "c7": the name of the 8th commit of a made-up history.
+std::string commit_name(int index) {
+  std::string name(1, 'c');
+  name += std::to_string(index);
+  return name;
+}
+
+std::vector<Revision> history(int count) {
+  std::vector<Revision> revisions(static_cast<std::size_t>(count));
+  for (int i = 0; i < count; ++i) {
+    revisions[static_cast<std::size_t>(i)].sha = commit_name(i);
+    revisions[static_cast<std::size_t>(i)].short_sha = commit_name(i);
+  }
+  return revisions;
+}
+
+// A judge that says bad from `first_bad` on, skips `skipped`, and counts its calls.
+struct ScriptedJudge {
+  int first_bad;
+  std::vector<int> skipped;
+  std::map<std::string, int> asked;
+
+  BisectStep operator()(const Revision& candidate) {
+    ++asked[candidate.sha];
+    const int index = std::stoi(candidate.sha.substr(1));
+    if (std::find(skipped.begin(), skipped.end(), index) != skipped.end()) {
+      return BisectStep::skipped;
+    }
+    return index >= first_bad ? BisectStep::bad : BisectStep::good;
+  }
+};
+
+TEST(BisectSearch, FindsTheFirstBadInLogarithmicSteps) {
+  const std::vector<Revision> candidates = history(16);
+  for (int culprit = 0; culprit < 16; ++culprit) {
+    ScriptedJudge judge{culprit, {}, {}};
+    const BisectResult result =
+        bisect_search(candidates, [&](const Revision& r) { return judge(r); });
+    EXPECT_EQ(result.outcome, BisectOutcome::found) << culprit;
+    EXPECT_EQ(result.first_bad.sha, commit_name(culprit));
+    EXPECT_LE(judge.asked.size(), 6u) << culprit;  // the last, then at most log2(16) + 1
+    for (const auto& [sha, times] : judge.asked) EXPECT_EQ(times, 1) << sha;
+  }
+}
+
+TEST(BisectSearch, ABadEndThatIsNotWorseOrNotMeasurableEndsTheSearch) {
+  const std::vector<Revision> candidates = history(5);
+  ScriptedJudge never{99, {}, {}};
+  EXPECT_EQ(bisect_search(candidates, [&](const Revision& r) { return never(r); }).outcome,
+            BisectOutcome::bad_not_worse);
+  ScriptedJudge broken{0, {4}, {}};
+  EXPECT_EQ(bisect_search(candidates, [&](const Revision& r) { return broken(r); }).outcome,
+            BisectOutcome::bad_unmeasurable);
+  EXPECT_EQ(broken.asked.size(), 1u);
+}
+
+TEST(BisectSearch, SkipsAroundTheCulpritLeaveARange) {
+  const std::vector<Revision> candidates = history(8);
+  ScriptedJudge judge{5, {3, 4}, {}};  // c3, c4 do not build; c5 is the culprit
+  const BisectResult result = bisect_search(candidates, [&](const Revision& r) { return judge(r); });
+  EXPECT_EQ(result.outcome, BisectOutcome::hidden_by_skips);
+  EXPECT_EQ(result.first_bad.sha, "c5");
+  EXPECT_EQ(result.unmeasured, 2u);
+  // A skip away from the culprit does not hide it.
+  ScriptedJudge clear{5, {1}, {}};
+  EXPECT_EQ(bisect_search(candidates, [&](const Revision& r) { return clear(r); }).first_bad.sha,
+            "c5");
+}
+
+class BisectPipelineTest : public PipelineTest {
+ protected:
+  BisectResult bisect_range(const std::string& good, const std::string& bad) {
+    context_.scenes.resize(1);  // bisect follows one scene
+    const Repository repository = Repository::open(repo_.path().string(), context_.cache_dir);
+    return bisect({context_, baseline_, repository, good, bad, BisectMetric::ratio}, io_);
+  }
+};
+
+TEST_F(BisectPipelineTest, FindsTheCommitThatMadeTheSceneSlower) {
+  const std::string good = commit_tracer("2.0", "good");
+  commit_tracer("2.0", "docs");
+  commit_tracer("2.01", "a harmless 0.5%");
+  const std::string culprit = commit_tracer("2.4", "the culprit: 20% slower");
+  commit_tracer("2.4", "later");
+  const std::string bad = commit_tracer("2.4", "bad");
+  const BisectResult result = bisect_range(good, bad);
+  EXPECT_EQ(result.outcome, BisectOutcome::found);
+  EXPECT_EQ(result.first_bad.sha, culprit);
+  EXPECT_EQ(result.good.sha, good);
+  EXPECT_EQ(progress_.lines_with("bisecting 5 commits").size(), 1u);
+  EXPECT_FALSE(progress_.lines_with("-> bad").empty());
+  EXPECT_FALSE(progress_.lines_with("-> good").empty());
+}
+
+TEST_F(BisectPipelineTest, ACommitThatDoesNotBuildIsSkipped) {
+  const std::string good = commit_tracer("2.0", "good");
+  commit_tracer("2.0", "docs");
+  commit_tracer("", "broken build");  // probed first: the middle of the range
+  commit_tracer("2.0", "fixed");
+  const std::string culprit = commit_tracer("2.4", "the culprit");
+  const std::string bad = commit_tracer("2.4", "bad");
+  const BisectResult result = bisect_range(good, bad);
+  EXPECT_EQ(result.outcome, BisectOutcome::found);
+  EXPECT_EQ(result.first_bad.sha, culprit);
+  EXPECT_EQ(progress_.lines_with("does not build").size(), 1u);
+}
+
+TEST_F(BisectPipelineTest, ACommitThatDoesNotBuildRightBeforeTheCulpritHidesIt) {
+  const std::string good = commit_tracer("2.0", "good");
+  commit_tracer("", "broken build");
+  const std::string culprit = commit_tracer("2.4", "the culprit");
+  const std::string bad = commit_tracer("2.4", "bad");
+  const BisectResult result = bisect_range(good, bad);
+  EXPECT_EQ(result.outcome, BisectOutcome::hidden_by_skips);
+  EXPECT_EQ(result.first_bad.sha, culprit);
+  EXPECT_EQ(result.unmeasured, 1u);
+}
+
+TEST_F(BisectPipelineTest, ABadEndThatIsNotSlowerHasNothingToBisect) {
+  const std::string good = commit_tracer("2.0", "good");
+  const std::string bad = commit_tracer("2.0", "not slower");
+  EXPECT_EQ(bisect_range(good, bad).outcome, BisectOutcome::bad_not_worse);
+}
+
+}  // namespace
+}  // namespace raygate::testing

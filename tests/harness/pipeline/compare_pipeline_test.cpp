@@ -1,0 +1,87 @@
+// `raygate compare` as a library call (pipeline/compare_measurement.h): base and head of the
+// fixture repository built for real, their runs answered by the fake executor and clock.
+#include "pipeline/compare_measurement.h"
+
+#include <gtest/gtest.h>
+
+#include "pipeline_fixture.h"
+
+namespace raygate::testing {
+namespace {
+
+class ComparePipelineTest : public PipelineTest {
+ protected:
+  MeasuredDocument compare(const std::string& base, const std::string& head) {
+    const Repository repository = Repository::open(repo_.path().string(), context_.cache_dir);
+    return measure_compare({context_, baseline_, repository.location(),
+                            repository.checkout(base), repository.checkout(head), {}},
+                           io_);
+  }
+};
+
+TEST_F(ComparePipelineTest, ASlowerHeadIsRegressedOnEveryScene) {
+  const std::string base = commit_tracer("2.0", "base");
+  const std::string head = commit_tracer("2.4", "head: 20% slower");
+  const auto [document, path] = compare(base, head);
+  EXPECT_EQ(document.kind, "compare");
+  EXPECT_TRUE(document.complete);
+  ASSERT_EQ(document.revisions.size(), 2u);
+  EXPECT_EQ(document.revisions[0].role, "base");
+  EXPECT_EQ(document.revisions[0].worktree.sha, base);
+  EXPECT_EQ(document.revisions[1].role, "head");
+  ASSERT_EQ(document.scenes.size(), 2u);
+  for (const SceneResult& scene : document.scenes) {
+    ASSERT_TRUE(scene.change.has_value()) << scene.entry.id;
+    EXPECT_NEAR(scene.change->change, 0.2, 1e-9);
+    EXPECT_EQ(scene.change_verdict, "REGRESSED");
+    // The change's interval needs 6 rounds at 95%; with exact times the verdict is decided then.
+    EXPECT_EQ(scene.runs.rounds.size(), 6u);
+    EXPECT_EQ(scene.runs.stop_reason, "stop_converged");
+    EXPECT_DOUBLE_EQ(scene.ratio("base")->ratio, 2.0);
+    EXPECT_DOUBLE_EQ(scene.ratio("head")->ratio, 2.4);
+  }
+  EXPECT_TRUE(std::filesystem::exists(path));
+}
+
+TEST_F(ComparePipelineTest, AnEqualHeadIsUnchangedAndItsImageMatchesBase) {
+  const std::string base = commit_tracer("2.0", "base");
+  const std::string head = commit_tracer("2.0", "head: a comment");
+  const auto [document, path] = compare(base, head);
+  for (const SceneResult& scene : document.scenes) {
+    EXPECT_EQ(scene.change_verdict, "UNCHANGED") << scene.entry.id;
+    bool checked_against_base = false;
+    for (const ImageCheck& check : scene.images) {
+      if (check.reference != "base") continue;
+      checked_against_base = true;
+      EXPECT_EQ(check.verdict, "pass");
+    }
+    EXPECT_TRUE(checked_against_base);
+  }
+}
+
+TEST_F(ComparePipelineTest, AnUndecidedChangeGetsRoundsUntilTheBudget) {
+  const std::string base = commit_tracer("2.0", "base");
+  const std::string head = commit_tracer("2.06", "head: 3% slower, right at the limit");
+  set_tracer_noise({1.0, 1.0, 1.04, 0.97});  // base and head alternate through these
+  context_.stopping.max_rounds = 12;
+  const auto [document, path] = compare(base, head);
+  for (const SceneResult& scene : document.scenes) {
+    EXPECT_EQ(scene.change_verdict, "INCONCLUSIVE") << scene.entry.id;
+    EXPECT_EQ(scene.runs.rounds.size(), 12u);
+    EXPECT_EQ(scene.runs.stop_reason, "stop_budget_rounds");
+  }
+}
+
+TEST_F(ComparePipelineTest, OpensWithWhatItCompares) {
+  const std::string base = commit_tracer("2.0", "base");
+  const std::string head = commit_tracer("2.0", "head");
+  compare(base, head);
+  ASSERT_FALSE(progress_.lines.empty());
+  EXPECT_EQ(progress_.lines.front().rfind("comparing fake-cost-tracer " + base.substr(0, 7), 0),
+            0u)
+      << progress_.lines.front();
+  EXPECT_EQ(progress_.lines_with("(base) with").size(), 1u);
+}
+
+}  // namespace
+}  // namespace raygate::testing

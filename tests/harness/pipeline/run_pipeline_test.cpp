@@ -1,0 +1,101 @@
+// `raygate run` as a library call (pipeline/run_measurement.h): a real checkout and build of the
+// fixture repository, runs answered by the fake executor and clock.
+#include "pipeline/run_measurement.h"
+
+#include <gtest/gtest.h>
+
+#include "pipeline_fixture.h"
+#include "results/results.h"
+
+namespace raygate::testing {
+namespace {
+
+class RunPipelineTest : public PipelineTest {
+ protected:
+  MeasuredDocument run(const std::string& sha) {
+    const Repository repository = Repository::open(repo_.path().string(), context_.cache_dir);
+    return measure_run({context_, baseline_, repository.location(), repository.checkout(sha),
+                        dir_.path() / "out" / "results.json"},
+                       io_);
+  }
+};
+
+TEST_F(RunPipelineTest, MeasuresEverySceneToTheRatioOfTheCommittedCost) {
+  const std::string sha = commit_tracer("2.5", "a tracer at 2.5 s per render");
+  const auto [document, path] = run(sha);
+  EXPECT_EQ(path, dir_.path() / "out" / "results.json");
+  EXPECT_TRUE(document.complete);
+  EXPECT_EQ(document.kind, "run");
+  ASSERT_EQ(document.scenes.size(), 2u);
+  for (const SceneResult& scene : document.scenes) {
+    EXPECT_EQ(scene.status, "measured") << scene.entry.id;
+    ASSERT_NE(scene.ratio("tracer"), nullptr);
+    EXPECT_DOUBLE_EQ(scene.ratio("tracer")->ratio, 2.5);  // 2.5 s against the baseline's 1 s
+    // Constant times: the CI is a point, so the rule stops as soon as it may (min_rounds).
+    EXPECT_EQ(scene.runs.rounds.size(), context_.stopping.min_rounds);
+    EXPECT_EQ(scene.runs.stop_reason, "stop_converged");
+  }
+  EXPECT_DOUBLE_EQ(document.scores.at("tracer").score, 2.5);
+  ASSERT_EQ(document.revisions.size(), 1u);
+  EXPECT_EQ(document.revisions[0].role, "tracer");
+  EXPECT_EQ(document.revisions[0].worktree.sha, sha);
+  // Written as returned.
+  EXPECT_EQ(to_json(read_results(path)), to_json(document));
+}
+
+TEST_F(RunPipelineTest, RunsEachSceneThroughTheExecutorOnly) {
+  commit_tracer("2.0", "tracer");
+  run("HEAD");
+  // Per scene: one warm-up each, then min_rounds rounds of (baseline, tracer).
+  const std::size_t per_scene = 2 * (1 + context_.stopping.min_rounds);
+  EXPECT_EQ(executor_.calls().size(), 2 * per_scene);
+  // The fake clock moved only by the fake runs: 1 s baseline + 2 s tracer per pair.
+  const double pairs = static_cast<double>(2 * (1 + context_.stopping.min_rounds));
+  EXPECT_DOUBLE_EQ(clock_.now_seconds() - 1000.0, 3.0 * pairs);
+}
+
+TEST_F(RunPipelineTest, SaysWhatItDoesThroughTheProgressSinkOnly) {
+  commit_tracer("2.0", "tracer");
+  run("HEAD");
+  EXPECT_EQ(progress_.lines_with("measuring fake-cost-tracer").size(), 1u);
+  EXPECT_EQ(progress_.lines_with("[1/2] tetra").size(), 1u);
+  EXPECT_EQ(progress_.lines_with("[2/2] balls").size(), 1u);
+  ASSERT_FALSE(progress_.statuses.empty());
+  EXPECT_NE(progress_.statuses.front().find("building"), std::string::npos);
+  // One update when a scene starts and one per round.
+  EXPECT_EQ(progress_.updates.size(), 2 * (1 + context_.stopping.min_rounds));
+  EXPECT_EQ(progress_.updates.back().scene_id, "balls");
+  EXPECT_DOUBLE_EQ(progress_.updates.back().ratio, 2.0);
+}
+
+TEST_F(RunPipelineTest, ANoisyTracerSpendsTheRoundBudget) {
+  commit_tracer("2.0", "tracer");
+  set_tracer_noise({1.0, 1.5});  // far wider than the 1% target
+  context_.stopping.max_rounds = 7;
+  const auto [document, path] = run("HEAD");
+  for (const SceneResult& scene : document.scenes) {
+    EXPECT_EQ(scene.runs.rounds.size(), 7u) << scene.entry.id;
+    EXPECT_EQ(scene.runs.stop_reason, "stop_budget_rounds");
+  }
+}
+
+TEST_F(RunPipelineTest, TheTimeBudgetIsTheFakeClocks) {
+  commit_tracer("10", "a slow tracer");
+  set_tracer_noise({1.0, 1.5});
+  context_.stopping.max_seconds = 60.0;  // warm-up 11 s, then 11 s or 16 s a round
+  const auto [document, path] = run("HEAD");
+  for (const SceneResult& scene : document.scenes) {
+    EXPECT_EQ(scene.runs.stop_reason, "stop_budget_time") << scene.entry.id;
+    EXPECT_GE(scene.runs.seconds_spent, 60.0);
+    EXPECT_LT(scene.runs.seconds_spent, 60.0 + 16.0);
+  }
+}
+
+TEST_F(RunPipelineTest, ABuildThatFailsIsAnInfrastructureError) {
+  commit_tracer("", "no cost file: the build's copy fails");
+  EXPECT_THROW(run("HEAD"), InfraError);
+  EXPECT_TRUE(executor_.calls().empty());
+}
+
+}  // namespace
+}  // namespace raygate::testing

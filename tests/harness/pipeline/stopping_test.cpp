@@ -1,0 +1,92 @@
+// The stopping policy bound to a scene's rounds (pipeline/stopping.h): the rules of run and of
+// compare/bisect are one rule with different verdicts, and a verdict of one's own plugs in.
+#include "pipeline/stopping.h"
+
+#include <gtest/gtest.h>
+
+#include <vector>
+
+namespace raygate {
+namespace {
+
+RunRecord timed(double seconds) {
+  RunRecord run;
+  run.ok = true;
+  run.seconds = seconds;
+  run.wall_seconds = seconds;
+  return run;
+}
+
+// `count` rounds of (baseline, base, head) where head takes `factor` times base's time, with a
+// small alternating wobble so intervals are not points.
+std::vector<Round> compare_rounds(int count, double factor) {
+  std::vector<Round> rounds;
+  for (int i = 0; i < count; ++i) {
+    const double wobble = 1.0 + 0.002 * (i % 3);
+    Round round;
+    round.order = {"baseline", "base", "head"};
+    round.runs["baseline"] = timed(1.0 * wobble);
+    round.runs["base"] = timed(2.0 * wobble);
+    round.runs["head"] = timed(2.0 * factor * wobble * (1.0 + 0.001 * (i % 2)));
+    rounds.push_back(round);
+  }
+  return rounds;
+}
+
+TEST(PipelineStopping, ChangeRuleStopsWhenTheVerdictIsDecided) {
+  const StoppingPolicy policy;
+  const ScenePolicy scene;  // 3% limit at 5% significance
+  const StopRule rule = change_stop_rule(policy, scene);
+  // Fewer than 6 rounds cannot give a 95% interval of the median: keep measuring.
+  EXPECT_EQ(rule(compare_rounds(5, 1.2), 10.0), StopDecision::continue_measuring);
+  EXPECT_EQ(rule(compare_rounds(6, 1.2), 10.0), StopDecision::stop_converged);
+  EXPECT_EQ(rule(compare_rounds(6, 1.0), 10.0), StopDecision::stop_converged);
+}
+
+TEST(PipelineStopping, ChangeRuleSpendsTheBudgetOnAnInconclusiveScene) {
+  StoppingPolicy policy;
+  policy.max_rounds = 8;
+  policy.max_seconds = 100.0;
+  const ScenePolicy scene;
+  const StopRule rule = change_stop_rule(policy, scene);
+  // Alternating +1% / +5%: the interval straddles the 3% limit, so no verdict.
+  std::vector<Round> rounds = compare_rounds(7, 1.0);
+  for (std::size_t i = 0; i < rounds.size(); ++i) {
+    rounds[i].runs["head"] = timed(2.0 * (i % 2 == 0 ? 1.01 : 1.05));
+  }
+  EXPECT_EQ(rule(rounds, 10.0), StopDecision::continue_measuring);
+  EXPECT_EQ(rule(rounds, 100.0), StopDecision::stop_budget_time);
+  rounds.push_back(rounds.front());
+  EXPECT_EQ(rule(rounds, 10.0), StopDecision::stop_budget_rounds);
+}
+
+TEST(PipelineStopping, RatioRuleIsTheSameRuleWithTheRatioVerdict) {
+  StoppingPolicy policy;
+  policy.max_rounds = 4;
+  std::vector<Round> rounds;
+  for (int i = 0; i < 4; ++i) {
+    Round round;
+    round.runs["baseline"] = timed(1.0);
+    round.runs["tracer"] = timed(i % 2 == 0 ? 1.0 : 3.0);  // far too noisy for a 1% target
+    rounds.push_back(round);
+    const std::vector<Round> so_far = rounds;
+    EXPECT_EQ(ratio_stop_rule(policy, "tracer")(so_far, 1.0),
+              stop_rule(policy, ratio_verdict(policy, "tracer"))(so_far, 1.0));
+  }
+  EXPECT_EQ(ratio_stop_rule(policy, "tracer")(rounds, 1.0), StopDecision::stop_budget_rounds);
+}
+
+TEST(PipelineStopping, AVerdictOfOnesOwnDecidesOnItsOwnTerms) {
+  // The seam another timing mode uses: decided after one round when it says so.
+  const StopRule rule = stop_rule(StoppingPolicy{}, [](const std::vector<Round>& rounds) {
+    return rounds.size() == 1 && rounds.front().runs.at("tracer").seconds == 7.0;
+  });
+  Round round;
+  round.runs["tracer"] = timed(7.0);
+  EXPECT_EQ(rule({round}, 0.0), StopDecision::stop_converged);
+  round.runs["tracer"] = timed(8.0);
+  EXPECT_EQ(rule({round}, 0.0), StopDecision::continue_measuring);
+}
+
+}  // namespace
+}  // namespace raygate

@@ -169,10 +169,4 @@ double JsonField::as_number() const {
   return value_->get<double>();
 }
 
-std::vector<std::string> JsonField::as_strings() const {
-  std::vector<std::string> out;
-  for (const JsonField& element : elements()) out.push_back(element.as_string());
-  return out;
-}
-
 }  // namespace raygate

@@ -52,7 +52,6 @@ class JsonField {
   bool as_bool() const;
   long long as_integer() const;
   double as_number() const;  // integer or floating point
-  std::vector<std::string> as_strings() const;  // an array of strings
 
  private:
   [[noreturn]] void fail_type(std::string_view expected) const;

@@ -59,13 +59,10 @@ int compare_command(const CompareArgs& args, const Console& console) {
   const auto [document, document_path] = measure_compare(
       {context, baseline, repository.location(), base, head, args.out}, terminal.io);
   console.info(fmt::format("results: {}", document_path.string()));
-  record_results(document, args.record, context.cache_dir, document_path, console);
   GatePolicy policy = context.policy;
   policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
-  const GateResult gate = evaluate_gate(document, policy);
-  emit_reports(document, gate, policy, args.reports, document_path, console,
-               trends_from_store(record_store_path(args.record, context.cache_dir), document));
-  return gate.exit_code;
+  return record_gate_and_report(document, document_path, args.record, context.cache_dir, policy,
+                                args.reports, console);
 }
 
 }  // namespace

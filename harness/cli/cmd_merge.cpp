@@ -69,12 +69,9 @@ int merge_command(const MergeArgs& args, const Console& console) {
   print_scores(document, console);
   console.info(fmt::format("results: {}", out.string()));
 
-  const std::filesystem::path cache_dir = std::filesystem::absolute(args.cache_dir);
-  record_results(document, args.record, cache_dir, out, console);
-  const GateResult gate = evaluate_gate(document, policy);
-  emit_reports(document, gate, policy, args.reports, out, console,
-               trends_from_store(record_store_path(args.record, cache_dir), document));
-  return gate.exit_code;
+  return record_gate_and_report(document, out, args.record,
+                                std::filesystem::absolute(args.cache_dir), policy, args.reports,
+                                console);
 }
 
 }  // namespace

@@ -58,11 +58,8 @@ int run_command(const RunArgs& args, const Console& console) {
                              score->second.interval.upper, score->second.scenes));
   }
   console.info(fmt::format("results: {}", out.string()));
-  record_results(document, args.record, context.cache_dir, out, console);
-  const GateResult gate = evaluate_gate(document, context.policy);
-  emit_reports(document, gate, context.policy, args.reports, out, console,
-               trends_from_store(record_store_path(args.record, context.cache_dir), document));
-  return gate.exit_code;
+  return record_gate_and_report(document, out, args.record, context.cache_dir, context.policy,
+                                args.reports, console);
 }
 
 }  // namespace

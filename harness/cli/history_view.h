@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "store/drift.h"
+#include "report/reporter.h"
 #include "store/history.h"
 
 namespace raygate::cli {
@@ -43,6 +44,9 @@ std::string short_repository(const std::string& repository_key);
 std::string history_table(const HistoryView& view);
 nlohmann::json history_json(const HistoryView& view);
 std::string history_html(const HistoryView& view);
+
+// A measured row (ratio set) as a point of the report's trend plot (report/reporter.h).
+TrendPoint trend_point(const HistoryRow& row);
 
 // Text helpers, public for tests: width in code points, not bytes.
 std::string pad_right(const std::string& text, std::size_t width);

@@ -13,6 +13,26 @@
 #include "core/interrupt.h"
 #include "core/strays.h"
 
+namespace {
+
+using AddCommand = void (*)(CLI::App& app, int& exit_code);
+
+// Every subcommand, in the order `raygate --help` lists them: the inputs (scenes, goldens,
+// adapters), measuring (run, compare, bisect), the documents (history, gate, report), then across
+// documents and machines (consistency, doctor, merge), and history's alerts and growth (alert,
+// scaling).
+constexpr AddCommand kCommands[] = {
+    raygate::cli::add_scenes_command,      raygate::cli::add_golden_command,
+    raygate::cli::add_validate_command,    raygate::cli::add_adapter_command,
+    raygate::cli::add_run_command,         raygate::cli::add_history_commands,
+    raygate::cli::add_compare_command,     raygate::cli::add_gate_command,
+    raygate::cli::add_bisect_command,      raygate::cli::add_report_command,
+    raygate::cli::add_consistency_command, raygate::cli::add_doctor_command,
+    raygate::cli::add_merge_command,       raygate::cli::add_alert_command,
+    raygate::cli::add_scaling_command};
+
+}  // namespace
+
 int main(int argc, char** argv) {
   CLI::App app{"raygate: ray tracer regression harness, normalized against a baseline tracer"};
   app.require_subcommand(1);
@@ -23,21 +43,7 @@ int main(int argc, char** argv) {
   raygate::become_subreaper();
   raygate::cli::add_global_options(app);
   int exit_code = 0;
-  raygate::cli::add_scenes_command(app, exit_code);
-  raygate::cli::add_golden_command(app, exit_code);
-  raygate::cli::add_validate_command(app, exit_code);
-  raygate::cli::add_adapter_command(app, exit_code);
-  raygate::cli::add_run_command(app, exit_code);
-  raygate::cli::add_history_commands(app, exit_code);
-  raygate::cli::add_compare_command(app, exit_code);
-  raygate::cli::add_gate_command(app, exit_code);
-  raygate::cli::add_bisect_command(app, exit_code);
-  raygate::cli::add_report_command(app, exit_code);
-  raygate::cli::add_consistency_command(app, exit_code);
-  raygate::cli::add_doctor_command(app, exit_code);
-  raygate::cli::add_merge_command(app, exit_code);
-  raygate::cli::add_alert_command(app, exit_code);
-  raygate::cli::add_scaling_command(app, exit_code);
+  for (const AddCommand add : kCommands) add(app, exit_code);
   try {
     // Before parsing: the command line overrides these (cli/project_config.h).
     raygate::cli::apply_project_defaults(

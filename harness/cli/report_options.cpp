@@ -1,5 +1,7 @@
 #include "cli/report_options.h"
 
+#include "cli/history_view.h"
+
 #include <fmt/core.h>
 #include <unistd.h>
 
@@ -111,15 +113,24 @@ std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
     if (!row.ratio || wanted == wanted_series.end() || row.series_id != wanted->second) continue;
     TrendSeries& series = by_scene[row.scene_id];
     series.scene = row.scene_id;
-    series.points.push_back({row.short_sha, row.subject, row.commit_time, *row.ratio,
-                             row.ratio_lower.value_or(*row.ratio),
-                             row.ratio_upper.value_or(*row.ratio)});
+    series.points.push_back(trend_point(row));
   }
   std::vector<TrendSeries> trends;
   for (auto& [scene, series] : by_scene) {
     if (series.points.size() >= 2) trends.push_back(std::move(series));
   }
   return trends;
+}
+
+int record_gate_and_report(const ResultsDocument& document, const std::filesystem::path& path,
+                           const RecordArgs& record, const std::filesystem::path& cache_dir,
+                           const GatePolicy& policy, const std::vector<std::string>& reports,
+                           const Console& console) {
+  record_results(document, record, cache_dir, path, console);
+  const GateResult gate = evaluate_gate(document, policy);
+  emit_reports(document, gate, policy, reports, path, console,
+               trends_from_store(record_store_path(record, cache_dir), document));
+  return gate.exit_code;
 }
 
 void emit_reports(const ResultsDocument& document, const GateResult& gate,

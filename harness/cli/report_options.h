@@ -9,8 +9,9 @@
 #include <string>
 #include <vector>
 
-#include "gate/policy.h"
 #include "cli/console.h"
+#include "cli/store_options.h"
+#include "gate/policy.h"
 #include "gate/verdict.h"
 #include "report/reporter.h"
 #include "results/results.h"
@@ -37,6 +38,13 @@ void check_output_path(const std::filesystem::path& path, const std::string& opt
 std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
                                            const ResultsDocument& document,
                                            std::size_t commits = 20);
+
+// The end of every command that writes a document (run, compare, merge): the document recorded in
+// the store (store_options.h), gated by `policy`, and reported; returns the gate's exit code.
+int record_gate_and_report(const ResultsDocument& document, const std::filesystem::path& path,
+                           const RecordArgs& record, const std::filesystem::path& cache_dir,
+                           const GatePolicy& policy, const std::vector<std::string>& reports,
+                           const Console& console);
 
 void emit_reports(const ResultsDocument& document, const GateResult& gate,
                   const GatePolicy& policy, const std::vector<std::string>& reports,

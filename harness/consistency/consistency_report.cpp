@@ -4,16 +4,17 @@
 
 #include <cmath>
 
+#include "core/format.h"
+#include "results/json_number.h"
+
 namespace raygate {
 namespace {
 
 using nlohmann::json;
 
-std::string percent(double fraction) { return fmt::format("{:.1f}%", 100.0 * fraction); }
 
 std::string r2_text(double r2) { return std::isfinite(r2) ? fmt::format("{:.4f}", r2) : "n/a"; }
 
-json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
 
 std::string labels(const ConsistencyResult& result, const std::vector<std::size_t>& indices) {
   std::string text;
@@ -120,17 +121,20 @@ json consistency_json(const ConsistencyResult& result) {
     pairs.push_back({{"a", result.documents[p.a].label},
                      {"b", result.documents[p.b].label},
                      {"scenes", p.scenes},
-                     {"r2", number(p.r2)},
-                     {"slope", number(p.slope)},
-                     {"intercept", number(p.intercept)},
-                     {"mean_abs_relative_difference", number(p.mean_abs_relative_difference)},
+                     {"r2", finite_number(p.r2)},
+                     {"slope", finite_number(p.slope)},
+                     {"intercept", finite_number(p.intercept)},
+                     {"mean_abs_relative_difference",
+                      finite_number(p.mean_abs_relative_difference)},
                      {"passes", p.passes}});
   }
   json scenes = json::array();
   json unstable = json::array();
   for (const SceneConsistency& s : result.scenes) {
     json intervals = json::array();
-    for (const Interval& i : s.intervals) intervals.push_back({number(i.lower), number(i.upper)});
+    for (const Interval& i : s.intervals) {
+      intervals.push_back({finite_number(i.lower), finite_number(i.upper)});
+    }
     scenes.push_back({{"id", s.id},
                       {"ratios", s.ratios},
                       {"intervals", intervals},
@@ -158,8 +162,8 @@ json consistency_json(const ConsistencyResult& result) {
           {"mixed", result.mixed},
           {"notes", result.notes},
           {"pairs", pairs},
-          {"overall_r2", number(result.overall_r2)},
-          {"min_pair_r2", number(result.min_pair_r2)},
+          {"overall_r2", finite_number(result.overall_r2)},
+          {"min_pair_r2", finite_number(result.min_pair_r2)},
           {"scenes", scenes},
           {"missing", missing},
           {"unstable", unstable},

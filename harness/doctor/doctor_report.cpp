@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/format.h"
+
 namespace raygate {
 namespace {
 
@@ -17,7 +19,6 @@ std::string machine_line(const SystemFacts& facts) {
                      m.online_cpus ? std::to_string(*m.online_cpus) : "?", m.kernel);
 }
 
-std::string percent(double fraction) { return fmt::format("{:.2f}%", 100.0 * fraction); }
 
 void noise_text(const DoctorReport& report, std::string& out) {
   if (!report.noise) {
@@ -27,11 +28,11 @@ void noise_text(const DoctorReport& report, std::string& out) {
   const NoiseScore& n = *report.noise;
   out += fmt::format("\nnoise: {} rounds of two raygate-baseline runs on {}\n", n.rounds, n.scene);
   out += fmt::format("  run time     median {:.4f} s  CV {}  spread (max/min) {:.3f}x\n",
-                     n.seconds.median, percent(n.seconds.cv), n.seconds.spread);
+                     n.seconds.median, percent(n.seconds.cv, 2), n.seconds.spread);
   out += fmt::format("  CPU time     median {:.4f} s  CV {}  spread (max/min) {:.3f}x\n",
-                     n.cpu_seconds.median, percent(n.cpu_seconds.cv), n.cpu_seconds.spread);
+                     n.cpu_seconds.median, percent(n.cpu_seconds.cv, 2), n.cpu_seconds.spread);
   out += fmt::format("  A/A ratio    {:.4f}  CV {}  spread (max/min) {:.3f}x\n", n.aa_ratio,
-                     percent(n.ratio_cv), n.ratio_spread);
+                     percent(n.ratio_cv, 2), n.ratio_spread);
   if (n.waiting_fraction() > kWaitingWarnFraction) {
     out += fmt::format(
         "  waiting      {:.0f}% of a run's time went by without it on a CPU: other "
@@ -40,10 +41,10 @@ void noise_text(const DoctorReport& report, std::string& out) {
   }
   if (n.steal_fraction) {
     out += fmt::format("  steal        {} of CPU time went to other guests while measuring\n",
-                       percent(*n.steal_fraction));
+                       percent(*n.steal_fraction, 2));
   }
   out += fmt::format("  noise score  {} (CV of the A/A ratio {}; good < {:.0f}%, fair < {:.0f}%)\n",
-                     to_string(n.grade), percent(n.ratio_cv), 100.0 * kNoiseGoodCv,
+                     to_string(n.grade), percent(n.ratio_cv, 2), 100.0 * kNoiseGoodCv,
                      100.0 * kNoiseFairCv);
   out += "  -> " + n.advice() + "\n";
 }

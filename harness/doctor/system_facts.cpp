@@ -9,6 +9,7 @@
 
 #include "core/fs.h"
 #include "core/process.h"
+#include "measure/machine_context.h"
 
 namespace raygate {
 namespace {
@@ -70,16 +71,14 @@ void probe_cpus(const fs::path& root, SystemFacts& facts) {
   for (const auto& [cpu, dir] : cpu_directories(root)) {
     std::error_code error;
     if (fs::is_directory(dir / "cpufreq", error)) facts.cpufreq_present = true;
-    if (auto text = read_pseudo_file(dir / "cpufreq" / "scaling_governor")) {
-      if (std::string governor = trimmed(*text); !governor.empty()) {
-        facts.governors.push_back({cpu, governor});
-      }
-    }
     if (auto text = read_pseudo_file(dir / "topology" / "thread_siblings_list")) {
       if (auto siblings = parse_cpu_list(*text); siblings.size() > 1) groups.insert(siblings);
     }
   }
   facts.smt_sibling_groups.assign(groups.begin(), groups.end());
+  for (const auto& [cpu, governor] : cpu_governors(root)) {
+    facts.governors.push_back({cpu, governor});
+  }
   if (auto text = read_pseudo_file(under_root(root, "/sys/devices/system/cpu/smt/active"))) {
     if (auto value = parse_int(*text)) facts.smt_active = *value != 0;
   }

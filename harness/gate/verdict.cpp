@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/exit_codes.h"
+#include "core/format.h"
 #include "gate/growth_gate.h"
 #include "measure/change.h"
 
@@ -16,8 +17,6 @@ void raise(SceneGate& gate, GateOutcome outcome, std::string reason) {
   gate.outcome = std::max(gate.outcome, outcome);
   gate.reasons.push_back(std::move(reason));
 }
-
-std::string percent(double fraction) { return fmt::format("{:+.1f}%", 100.0 * fraction); }
 
 // A crash of head where base ran is the change's doing; anything else failing is not.
 void judge_failure(const ResultsDocument& document, const SceneResult& scene, SceneGate& gate) {
@@ -42,9 +41,10 @@ void judge_speed(const SceneResult& scene, const ScenePolicy& policy, bool fail_
   gate.speed = std::string(to_string(verdict));
   const std::string numbers = fmt::format(
       "head vs base {} (95% CI {} to {}), ratio {:.3f} -> {:.3f}, {} rounds, limit {}",
-      percent(change.change), percent(change.change_interval.lower),
-      percent(change.change_interval.upper), change.base.ratio, change.head.ratio, change.rounds,
-      percent(policy.max_slowdown));
+      signed_percent(change.change), signed_percent(change.change_interval.lower),
+      signed_percent(change.change_interval.upper), change.base.ratio, change.head.ratio,
+      change.rounds,
+      signed_percent(policy.max_slowdown));
   if (verdict == ChangeVerdict::regressed) raise(gate, GateOutcome::fail, "slower: " + numbers);
   if (verdict == ChangeVerdict::inconclusive) {
     raise(gate, fail_on_inconclusive ? GateOutcome::fail : GateOutcome::warn,

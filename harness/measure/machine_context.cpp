@@ -68,15 +68,7 @@ bool is_cpu_directory_name(const std::string& name) {
 
 std::vector<std::string> probe_governors(const fs::path& root) {
   std::set<std::string> governors;
-  std::error_code error;
-  for (fs::directory_iterator it(under_root(root, "/sys/devices/system/cpu"), error), end;
-       !error && it != end; it.increment(error)) {
-    if (!is_cpu_directory_name(it->path().filename().string())) continue;
-    if (auto text = read_pseudo_file(it->path() / "cpufreq" / "scaling_governor")) {
-      const std::string_view governor = trim(*text);
-      if (!governor.empty()) governors.emplace(governor);
-    }
-  }
+  for (const auto& [cpu, governor] : cpu_governors(root)) governors.insert(governor);
   return {governors.begin(), governors.end()};
 }
 
@@ -231,6 +223,21 @@ std::string compiler_description() {
 #else
   return "unknown";
 #endif
+}
+
+std::map<int, std::string> cpu_governors(const fs::path& root) {
+  std::map<int, std::string> governors;
+  std::error_code error;
+  for (fs::directory_iterator it(under_root(root, "/sys/devices/system/cpu"), error), end;
+       !error && it != end; it.increment(error)) {
+    const std::string name = it->path().filename().string();
+    if (!is_cpu_directory_name(name)) continue;
+    if (auto text = read_pseudo_file(it->path() / "cpufreq" / "scaling_governor")) {
+      const std::string_view governor = trim(*text);
+      if (!governor.empty()) governors[std::stoi(name.substr(3))] = std::string(governor);
+    }
+  }
+  return governors;
 }
 
 MachineContext probe_machine_context(const fs::path& root) {

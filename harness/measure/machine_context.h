@@ -7,6 +7,7 @@
 #include <array>
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -37,6 +38,10 @@ struct MachineContext {
 // Probes this machine. `root` prefixes /proc and /sys paths (tests point it at a fake tree);
 // uname, hostname, affinity, perf and the environment always come from the live system.
 MachineContext probe_machine_context(const std::filesystem::path& root = "/");
+
+// The scaling governor of each CPU that has one (<root>/sys/devices/system/cpu/cpuN/cpufreq), by
+// CPU number: the one probe behind a document's scaling_governors and the doctor's check.
+std::map<int, std::string> cpu_governors(const std::filesystem::path& root);
 
 // Pieces of the probe, pure so they are tested on fixed text.
 std::string parse_cpu_model(std::string_view cpuinfo);

@@ -48,7 +48,7 @@ std::string overrides_html(const GatePolicy& policy) {
   std::string html;
   for (const auto& [id, scene] : policy.scenes) {
     html += fmt::format(R"(<div class="override"><code>{}</code>: max slowdown {} — {}</div>)",
-                        escape(id), percent(scene.max_slowdown), escape(scene.reason));
+                        escape(id), signed_percent(scene.max_slowdown), escape(scene.reason));
   }
   return html;
 }

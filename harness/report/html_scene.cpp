@@ -175,6 +175,11 @@ std::string run_facts(const ReportInput& input, const SceneResult& scene) {
                                 r->tracer_median_seconds));
   }
   if (!scene.runs.stop_reason.empty()) facts.push_back("stopped: " + scene.runs.stop_reason);
+  if (scene.change && !scene.runs.failed()) {
+    // The pairing-free second opinion (docs/statistics.md §5); the verdict does not use it.
+    facts.push_back(fmt::format("Mann–Whitney U {:.1f}, p {:.3g}", scene.change->mann_whitney.u,
+                                scene.change->mann_whitney.p_value));
+  }
   facts.push_back(fmt::format("{:.1f} s spent", scene.runs.seconds_spent));
   return fmt::format(R"(<p class="facts">{}</p>)", escape(fmt::format("{}", fmt::join(facts, " · "))));
 }

@@ -123,6 +123,8 @@ ul.scaling-fits{font-size:13px;margin:4px 0 14px;padding-left:18px}
 .trend-line{fill:none;stroke:var(--accent);stroke-width:2}
 .trend-point{fill:var(--accent);stroke:#fff;stroke-width:1.5}
 .trend-point.last{fill:#0550ae}
+.trend-point.flagged{fill:var(--fail)}
+.note{background:#fff8c5;padding:.6em;border-left:4px solid #d4a72c}
 .trend-last{font-size:11px;fill:#0550ae;font-weight:700;font-family:var(--mono)}
 .sha{fill:var(--muted)}
 footer{color:var(--muted);font-size:12px;text-align:center;padding:8px 0 24px}

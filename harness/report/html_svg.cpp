@@ -133,12 +133,13 @@ std::string change_bar_svg(double change, const Interval& interval, double thres
                      x(-threshold), x(threshold) - x(-threshold));
   out += fmt::format(R"(<line class="zero" x1="{0:.1f}" x2="{0:.1f}" y1="6" y2="38"/>)", x(0.0));
   out += text(50, y + 4, "svg-label", "change", "end");
-  const std::string numbers = fmt::format("{} [{}, {}]", percent(change),
-                                          percent(interval.lower), percent(interval.upper));
+  const std::string numbers = fmt::format("{} [{}, {}]", signed_percent(change),
+                                          signed_percent(interval.lower),
+                                          signed_percent(interval.upper));
   out += interval_mark(x, y, change, interval.lower, interval.upper, css_class,
                        "head vs base " + numbers);
   out += text(302, y + 4, "svg-value", numbers);
-  out += text(x(threshold) + 3, 16, "svg-note", "limit " + percent(threshold));
+  out += text(x(threshold) + 3, 16, "svg-note", "limit " + signed_percent(threshold));
   out += x_axis(x, 40, 4, std::max(0, decimals_for(-reach * 100, reach * 100, 4)), "%", 100.0);
   return out + "</svg>";
 }
@@ -177,11 +178,13 @@ std::string trend_svg(const TrendSeries& series) {
   const std::size_t label_every = (n + 11) / 12;
   for (std::size_t i = 0; i < n; ++i) {
     const TrendPoint& point = p[i];
+    std::string title = fmt::format("{} {}\nratio {:.3f} [{:.3f}, {:.3f}]", point.short_sha,
+                                    point.subject, point.ratio, point.lower, point.upper);
+    if (!point.note.empty()) title += "\n" + point.note;
     out += fmt::format(
-        R"(<circle class="trend-point{}" cx="{:.1f}" cy="{:.1f}" r="{}"><title>{}</title></circle>)",
-        i + 1 == n ? " last" : "", px(i), y(point.ratio), i + 1 == n ? 5 : 3.5,
-        escape(fmt::format("{} {}\nratio {:.3f} [{:.3f}, {:.3f}]", point.short_sha, point.subject,
-                           point.ratio, point.lower, point.upper)));
+        R"(<circle class="trend-point{}{}" cx="{:.1f}" cy="{:.1f}" r="{}"><title>{}</title></circle>)",
+        i + 1 == n ? " last" : "", point.flagged ? " flagged" : "", px(i), y(point.ratio),
+        i + 1 == n ? 5 : 3.5, escape(title));
     if ((n - 1 - i) % label_every != 0) continue;
     out += fmt::format(
         R"svg(<text class="svg-tick sha" transform="translate({:.1f},{:.1f}) rotate(-35)" text-anchor="end">{}</text>)svg",

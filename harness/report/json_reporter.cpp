@@ -5,15 +5,17 @@
 
 #include "report/report_model.h"
 #include "report/reporters.h"
+#include "results/json_number.h"
 
 namespace raygate::report {
 namespace {
 
 using nlohmann::json;
 
-json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
 
-json interval(const Interval& i) { return json{{"lower", number(i.lower)}, {"upper", number(i.upper)}}; }
+json interval(const Interval& i) {
+  return json{{"lower", finite_number(i.lower)}, {"upper", finite_number(i.upper)}};
+}
 
 json revisions(const ResultsDocument& d) {
   json out = json::object();
@@ -31,9 +33,9 @@ json revisions(const ResultsDocument& d) {
 json ratios(const SceneResult& scene) {
   json out = json::object();
   for (const auto& [role, r] : scene.ratios) {
-    out[role] = {{"ratio", number(r.ratio)},
+    out[role] = {{"ratio", finite_number(r.ratio)},
                  {"interval", interval(r.ratio_interval)},
-                 {"relative_half_width", number(r.relative_half_width)},
+                 {"relative_half_width", finite_number(r.relative_half_width)},
                  {"rounds", r.rounds}};
   }
   return out;
@@ -42,7 +44,7 @@ json ratios(const SceneResult& scene) {
 json change(const SceneResult& scene) {
   if (!scene.change) return nullptr;
   const ChangeSummary& c = *scene.change;
-  return {{"change", number(c.change)},
+  return {{"change", finite_number(c.change)},
           {"interval", interval(c.change_interval)},
           {"rounds", c.rounds},
           {"verdict", scene.change_verdict}};
@@ -54,10 +56,10 @@ json images(const SceneResult& scene) {
     json item = {{"role", check.role}, {"reference", check.reference}, {"verdict", check.verdict}};
     if (check.metrics) {
       const ImageMetrics& m = *check.metrics;
-      item["max_error"] = number(m.max_error);
-      item["percent_over_fail"] = number(m.percent_over_fail);
-      item["rms_error"] = number(m.rms_error);
-      item["psnr_db"] = number(m.psnr_db);
+      item["max_error"] = finite_number(m.max_error);
+      item["percent_over_fail"] = finite_number(m.percent_over_fail);
+      item["rms_error"] = finite_number(m.rms_error);
+      item["psnr_db"] = finite_number(m.psnr_db);
       item["summary"] = summarize(m);
     }
     if (!check.error.empty()) item["error"] = check.error;
@@ -96,7 +98,7 @@ json policy_json(const GatePolicy& policy) {
           {"image", {{"fail_threshold", d.image.fail_threshold},
                      {"fail_percent", d.image.fail_percent},
                      {"warn_threshold", d.image.warn_threshold},
-                     {"hard_fail", number(d.image.hard_fail)}}}};
+                     {"hard_fail", finite_number(d.image.hard_fail)}}}};
 }
 
 class JsonReporter final : public Reporter {
@@ -117,7 +119,7 @@ class JsonReporter final : public Reporter {
                    {"counts", counts(input.gate)},
                    {"complete", d.complete},
                    {"revisions", revisions(d)},
-                   {"suite_change", suite ? number(*suite) : json(nullptr)},
+                   {"suite_change", suite ? finite_number(*suite) : json(nullptr)},
                    {"policy", policy_json(input.policy)},
                    {"scenes", scenes}};
     out << report.dump(2, ' ', false, json::error_handler_t::replace) << '\n';

@@ -79,7 +79,7 @@ std::string failure_words(const SceneView& view) {
   std::vector<std::string> what;
   if (view.speed_outcome == GateOutcome::fail) {
     if (view.result->change && view.gate.speed != "FAILED") {
-      what.push_back(percent(view.result->change->change));
+      what.push_back(signed_percent(view.result->change->change));
     } else {
       what.push_back(view.result->runs.failed() ? "crashed" : view.gate.speed);
     }
@@ -162,7 +162,7 @@ Headline headline(const ReportInput& input, const std::vector<SceneView>& views)
     if (warned > 0) line.detail += ", " + plural(warned, "warning", "warnings");
   }
   if (const auto change = suite_change(input.document)) {
-    line.detail += fmt::format("; suite {}", percent(*change));
+    line.detail += fmt::format("; suite {}", signed_percent(*change));
   } else if (const auto score = input.document.scores.find("tracer");
              score != input.document.scores.end() && score->second.score > 0.0) {
     line.detail += fmt::format("; suite score {:.3f}", score->second.score);
@@ -176,18 +176,14 @@ std::string verdict_word(int exit_code) {
   return "could not measure";
 }
 
-std::string percent(double fraction, int decimals) {
-  if (!std::isfinite(fraction)) return "n/a";
-  return fmt::format("{:+.{}f}%", 100.0 * fraction, decimals);
-}
-
 std::string change_text(const SceneResult& scene) {
   if (!scene.change || scene.runs.failed()) return "";
   const ChangeSummary& c = *scene.change;
   // Counted in simulated cycles, every count repeated: the change is a fact, not an estimate.
-  if (c.exact) return percent(c.change, 3) + " exact (simulated cycles)";
-  return fmt::format("{} [{}, {}]", percent(c.change), percent(c.change_interval.lower),
-                     percent(c.change_interval.upper));
+  if (c.exact) return signed_percent(c.change, 3) + " exact (simulated cycles)";
+  return fmt::format("{} [{}, {}]", signed_percent(c.change),
+                     signed_percent(c.change_interval.lower),
+                     signed_percent(c.change_interval.upper));
 }
 
 std::string ratio_text(const ResultsDocument& document, const SceneResult& scene,
@@ -248,7 +244,7 @@ std::string policy_line(const GatePolicy& policy) {
   std::string line = fmt::format(
       "max slowdown {} at {:.0f}% confidence; image fail over {:.4g} on more than {:.4g}% of "
       "pixels, warn over {:.4g}",
-      percent(d.max_slowdown), 100.0 * (1.0 - d.significance), d.image.fail_threshold,
+      signed_percent(d.max_slowdown), 100.0 * (1.0 - d.significance), d.image.fail_threshold,
       d.image.fail_percent, d.image.warn_threshold);
   if (d.image.hard_fail < 1e29) line += fmt::format(", hard fail over {:.4g}", d.image.hard_fail);
   if (policy.fail_on_inconclusive) line += "; inconclusive fails";

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/format.h"
 #include "report/reporter.h"
 
 namespace raygate::report {
@@ -39,8 +40,6 @@ Headline headline(const ReportInput& input, const std::vector<SceneView>& views)
 // "pass", "fail" or "could not measure", from the gate's exit code.
 std::string verdict_word(int exit_code);
 
-// "+7.9%" (sign always shown).
-std::string percent(double fraction, int decimals = 1);
 // "+7.9% [+6.1%, +9.8%]", or "+0.912% exact (simulated cycles)" when counted (--timing sim);
 // "" when the scene has no change (a run, or a failed scene).
 std::string change_text(const SceneResult& scene);

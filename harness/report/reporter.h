@@ -26,6 +26,8 @@ struct TrendPoint {
   double ratio = 0.0;
   double lower = 0.0;  // the ratio's 95% CI
   double upper = 0.0;
+  std::string note;      // more for the point's tooltip (the image check); may be empty
+  bool flagged = false;  // drawn in the failure colour: the image check failed
 };
 
 // A scene's history, oldest commit first. The store fills these; a report without history

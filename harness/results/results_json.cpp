@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "results/json_number.h"
 #include "results/results.h"
 #include "results/shard.h"
 
@@ -17,7 +18,6 @@ namespace {
 using nlohmann::json;
 
 // Non-finite numbers have no JSON form: they are written as null and read back as `if_null`.
-json number(double value) { return std::isfinite(value) ? json(value) : json(nullptr); }
 double number_at(const json& object, const char* key, double if_null = 0.0) {
   const json& value = object.at(key);
   return value.is_null() ? if_null : value.get<double>();
@@ -32,7 +32,7 @@ json path_list(const std::vector<std::filesystem::path>& paths) {
 }  // namespace
 
 void to_json(json& j, const Interval& interval) {
-  j = json{{"lower", number(interval.lower)}, {"upper", number(interval.upper)}};
+  j = json{{"lower", finite_number(interval.lower)}, {"upper", finite_number(interval.upper)}};
 }
 void from_json(const json& j, Interval& interval) {
   interval.lower = number_at(j, "lower");
@@ -41,13 +41,13 @@ void from_json(const json& j, Interval& interval) {
 
 void to_json(json& j, const RatioSummary& r) {
   j = json{{"rounds", r.rounds},
-           {"normalized_ratio", number(r.ratio)},
+           {"normalized_ratio", finite_number(r.ratio)},
            {"ratio_interval", r.ratio_interval},
-           {"relative_half_width", number(r.relative_half_width)},
-           {"log_ratio_median", number(r.log_ratio_median)},
-           {"log_ratio_mad_scaled", number(r.log_ratio_mad_scaled)},
-           {"tracer_median_seconds", number(r.tracer_median_seconds)},
-           {"baseline_median_seconds", number(r.baseline_median_seconds)}};
+           {"relative_half_width", finite_number(r.relative_half_width)},
+           {"log_ratio_median", finite_number(r.log_ratio_median)},
+           {"log_ratio_mad_scaled", finite_number(r.log_ratio_mad_scaled)},
+           {"tracer_median_seconds", finite_number(r.tracer_median_seconds)},
+           {"baseline_median_seconds", finite_number(r.baseline_median_seconds)}};
 }
 void from_json(const json& j, RatioSummary& r) {
   r.rounds = j.at("rounds").get<std::size_t>();
@@ -61,7 +61,7 @@ void from_json(const json& j, RatioSummary& r) {
 }
 
 void to_json(json& j, const SuiteScore& s) {
-  j = json{{"scenes", s.scenes}, {"score", number(s.score)}, {"interval", s.interval}};
+  j = json{{"scenes", s.scenes}, {"score", finite_number(s.score)}, {"interval", s.interval}};
 }
 void from_json(const json& j, SuiteScore& s) {
   s.scenes = j.at("scenes").get<std::size_t>();
@@ -71,17 +71,17 @@ void from_json(const json& j, SuiteScore& s) {
 
 void to_json(json& j, const ChangeSummary& c) {
   j = json{{"rounds", c.rounds},
-           {"change", number(c.change)},
+           {"change", finite_number(c.change)},
            {"change_interval", c.change_interval},
-           {"confidence", number(c.confidence)},
-           {"log_change_median", number(c.log_change_median)},
-           {"log_change_mad_scaled", number(c.log_change_mad_scaled)},
+           {"confidence", finite_number(c.confidence)},
+           {"log_change_median", finite_number(c.log_change_median)},
+           {"log_change_mad_scaled", finite_number(c.log_change_mad_scaled)},
            {"base", c.base},
            {"head", c.head},
            {"mann_whitney",
-            {{"u", number(c.mann_whitney.u)},
-             {"z", number(c.mann_whitney.z)},
-             {"p_value", number(c.mann_whitney.p_value)}}}};
+            {{"u", finite_number(c.mann_whitney.u)},
+             {"z", finite_number(c.mann_whitney.z)},
+             {"p_value", finite_number(c.mann_whitney.p_value)}}}};
   if (c.exact) j["exact"] = true;  // --timing sim with identical counts: no interval needed
 }
 void from_json(const json& j, ChangeSummary& c) {
@@ -104,18 +104,18 @@ void to_json(json& j, const ImageMetrics& m) {
            {"height", m.height},
            {"expected_width", m.expected_width},
            {"expected_height", m.expected_height},
-           {"mean_error", number(m.mean_error)},
-           {"rms_error", number(m.rms_error)},
-           {"psnr_db", number(m.psnr_db)},  // null: identical images (infinite PSNR)
-           {"max_error", number(m.max_error)},
+           {"mean_error", finite_number(m.mean_error)},
+           {"rms_error", finite_number(m.rms_error)},
+           {"psnr_db", finite_number(m.psnr_db)},  // null: identical images (infinite PSNR)
+           {"max_error", finite_number(m.max_error)},
            {"max_pixel", {m.max_x, m.max_y, m.max_channel}},
-           {"max_actual_value", number(m.max_actual_value)},
-           {"max_expected_value", number(m.max_expected_value)},
+           {"max_actual_value", finite_number(m.max_actual_value)},
+           {"max_expected_value", finite_number(m.max_expected_value)},
            {"pixels_over_warn", m.pixels_over_warn},
            {"pixels_over_fail", m.pixels_over_fail},
-           {"percent_over_fail", number(m.percent_over_fail)},
-           {"mean_luminance_actual", number(m.mean_luminance_actual)},
-           {"mean_luminance_expected", number(m.mean_luminance_expected)},
+           {"percent_over_fail", finite_number(m.percent_over_fail)},
+           {"mean_luminance_actual", finite_number(m.mean_luminance_actual)},
+           {"mean_luminance_expected", finite_number(m.mean_luminance_expected)},
            {"nonfinite_values", m.nonfinite_values},
            {"nonfinite_pixels", m.nonfinite_pixels},
            {"first_nonfinite_pixel", {m.nonfinite_x, m.nonfinite_y}},
@@ -209,7 +209,7 @@ void to_json(json& j, const SceneResult& s) {
            {"scene_sha256", s.scene_sha256},
            {"status", s.status},
            {"stop_reason", s.runs.stop_reason},
-           {"seconds_spent", number(s.runs.seconds_spent)},
+           {"seconds_spent", finite_number(s.runs.seconds_spent)},
            {"failure", nullptr},
            {"warmup", s.runs.warmup},
            {"rounds", s.runs.rounds},

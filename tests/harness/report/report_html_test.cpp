@@ -64,6 +64,8 @@ TEST(HtmlReport, FailuresFirstWithBadgesAndReasons) {
   EXPECT_NE(html.find("raygate: 2 regressions"), std::string::npos);
   EXPECT_NE(html.find("Test CPU @ 3.0GHz (2 cores)"), std::string::npos);
   EXPECT_NE(html.find("max slowdown +3.0%"), std::string::npos);
+  // The pairing-free second opinion of each compare scene (docs/statistics.md §5).
+  EXPECT_EQ(count(html, "Mann–Whitney U "), 3u);
 }
 
 TEST(HtmlReport, EscapesText) {
@@ -83,7 +85,13 @@ TEST(HtmlReport, DrawsIntervalsAndTrendAsSvg) {
   html = f.render("html");
   EXPECT_EQ(count(html, R"(<svg class="plot trend-plot")"), 1u);
   EXPECT_EQ(count(html, R"(<circle class="trend-point)"), 20u);
+  EXPECT_EQ(count(html, R"(<circle class="trend-point flagged)"), 0u);
   EXPECT_NE(html.find("Trend over 20 commits"), std::string::npos);
+  f.input->trends.back().points[3].flagged = true;  // its image failed: the failure colour
+  f.input->trends.back().points[3].note = "image max error 0.5 (fail)";
+  html = f.render("html");
+  EXPECT_EQ(count(html, R"(<circle class="trend-point flagged)"), 1u);
+  EXPECT_EQ(count(html, "image max error 0.5 (fail)"), 1u);
 }
 
 TEST(HtmlReport, MissingImageIsShownNotFatal) {

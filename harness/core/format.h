@@ -1,0 +1,14 @@
+// Fractions as raygate prints them, in the console, the reports and the gate's reasons: one
+// formatter, so "3%" reads the same everywhere.
+#pragma once
+
+#include <string>
+
+namespace raygate {
+
+// 0.079 -> "7.9%" (decimals after the point); "n/a" when not finite.
+std::string percent(double fraction, int decimals = 1);
+// 0.079 -> "+7.9%", -0.02 -> "-2.0%": a change, its sign always shown; "n/a" when not finite.
+std::string signed_percent(double fraction, int decimals = 1);
+
+}  // namespace raygate

@@ -33,12 +33,12 @@ struct BuildRecord {
   std::string key;           // cache key: names <cache>/builds/<key>/
   std::filesystem::path build_dir;  // {build}
   std::filesystem::path src_dir;    // {src} of the worktree this record was handed out for
-  std::vector<BuildStepRecord> steps;  // those that ran; on failure the last one failed
+  std::vector<BuildStepRecord> steps{};  // those that ran; on failure the last one failed
   double total_seconds = 0.0;
   bool cached = false;       // reused from an earlier successful build; no step ran now
   bool success = false;
-  std::string failure;       // on failure: what went wrong, one line
-  std::string log_tail;      // on failure: the last lines of the failed step's log
+  std::string failure{};     // on failure: what went wrong, one line
+  std::string log_tail{};    // on failure: the last lines of the failed step's log
 
   bool operator==(const BuildRecord&) const = default;
 };

@@ -56,16 +56,9 @@ BuildKeyInputs key_inputs(const Worktree& worktree, const Adapter& adapter,
 
 BuildRecord new_record(const BuildKeyInputs& inputs, const BuildCacheEntry& entry,
                        const fs::path& src) {
-  BuildRecord record;
-  record.sha = inputs.sha;
-  record.dirty = inputs.dirty;
-  record.adapter_name = inputs.adapter_name;
-  record.adapter_hash = inputs.adapter_hash;
-  record.compiler = inputs.compiler;
-  record.key = entry.key;
-  record.build_dir = entry.build_dir;
-  record.src_dir = src;
-  return record;
+  return {.sha = inputs.sha, .dirty = inputs.dirty, .adapter_name = inputs.adapter_name,
+          .adapter_hash = inputs.adapter_hash, .compiler = inputs.compiler, .key = entry.key,
+          .build_dir = entry.build_dir, .src_dir = src};
 }
 
 std::vector<std::vector<std::string>> expanded_steps(const Adapter& adapter,

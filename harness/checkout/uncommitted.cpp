@@ -35,16 +35,9 @@ Worktree unknown_tree(const fs::path& path) {
 }  // namespace
 
 Worktree worktree_of(const fs::path& path, const Revision& revision) {
-  Worktree out;
-  out.path = path;
-  out.revision = revision.revision;
-  out.ref_name = revision.ref_name;
-  out.sha = revision.sha;
-  out.short_sha = revision.short_sha;
-  out.subject = revision.subject;
-  out.author = revision.author;
-  out.commit_time = revision.commit_time;
-  return out;
+  return {.path = path, .revision = revision.revision, .ref_name = revision.ref_name,
+          .sha = revision.sha, .short_sha = revision.short_sha, .subject = revision.subject,
+          .author = revision.author, .commit_time = revision.commit_time};
 }
 
 Worktree describe_uncommitted_worktree(const fs::path& path) {

@@ -44,11 +44,8 @@ int alert_command(const AlertArgs& args, const Console& console) {
                                  "with raygate run (or raygate import)",
                                  store->location()));
   }
-  if (args.format == "json") {
-    fmt::print("{}\n", alert_json(judgement, args.detection).dump(1));
-  } else {
-    fmt::print("{}", alert_text(judgement));
-  }
+  print_result(args.format, [&] { return alert_json(judgement, args.detection); },
+               [&] { return alert_text(judgement); });
   return judgement.exit_code();
 }
 

@@ -58,7 +58,6 @@ int compare_command(const CompareArgs& args, const Console& console) {
   TerminalIo terminal(console);
   const auto [document, document_path] = measure_compare(
       {context, baseline, repository.location(), base, head, args.out}, terminal.io);
-  console.info(fmt::format("results: {}", document_path.string()));
   GatePolicy policy = context.policy;
   policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
   return record_gate_and_report(document, document_path, args.record, context.cache_dir, policy,

@@ -52,11 +52,8 @@ int consistency_command(const ConsistencyArgs& args) {
   }
   const ConsistencyResult result = analyse_consistency(std::move(documents), args.options);
   if (!args.markdown.empty()) write_file_atomically(args.markdown, consistency_markdown(result));
-  if (args.format == "json") {
-    fmt::print("{}\n", consistency_json(result).dump(1));
-  } else {
-    fmt::print("{}", consistency_table(result));
-  }
+  print_result(args.format, [&] { return consistency_json(result); },
+               [&] { return consistency_table(result); });
   return result.exit_code();
 }
 

@@ -52,11 +52,8 @@ int doctor_command(const DoctorArgs& args) {
   report.facts = probe_system_facts();  // before measuring: the load must not be our own
   report.findings = diagnose(report.facts);
   measure(args, report);
-  if (args.format == "json") {
-    fmt::print("{}\n", doctor_json(report).dump(1));
-  } else {
-    fmt::print("{}", doctor_text(report));
-  }
+  print_result(args.format, [&] { return doctor_json(report); },
+               [&] { return doctor_text(report); });
   return report.noise ? to_int(ExitCode::pass) : to_int(ExitCode::infrastructure);
 }
 

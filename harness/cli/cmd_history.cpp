@@ -56,11 +56,8 @@ int history_command(const HistoryArgs& args) {
   view.role = query.role;
   view.branch = query.branch;
   if (!args.html_dir.empty()) write_html(view, args.html_dir);
-  if (args.format == "json") {
-    fmt::print("{}\n", history_json(view).dump(1));
-  } else {
-    fmt::print("{}", history_table(view));
-  }
+  print_result(args.format, [&] { return history_json(view); },
+               [&] { return history_table(view); });
   return 0;
 }
 

@@ -67,7 +67,6 @@ int merge_command(const MergeArgs& args, const Console& console) {
                            document.suite, document.scenes.size(),
                            document.complete ? "" : " (incomplete)"));
   print_scores(document, console);
-  console.info(fmt::format("results: {}", out.string()));
 
   return record_gate_and_report(document, out, args.record,
                                 std::filesystem::absolute(args.cache_dir), policy, args.reports,

@@ -57,7 +57,6 @@ int run_command(const RunArgs& args, const Console& console) {
                              score->second.score, score->second.interval.lower,
                              score->second.interval.upper, score->second.scenes));
   }
-  console.info(fmt::format("results: {}", out.string()));
   return record_gate_and_report(document, out, args.record, context.cache_dir, context.policy,
                                 args.reports, console);
 }

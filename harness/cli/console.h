@@ -53,6 +53,17 @@ Console console_of(const CLI::App& command);
 CLI::Option* add_deprecated_alias(CLI::App& command, const std::string& old_name,
                                   CLI::Option* current, std::string& variable);
 
+// A command's result on standard output: `json()` (indented one space) with --format json, else
+// `text()`; only the one asked for is computed.
+template <typename Json, typename Text>
+void print_result(const std::string& format, Json json, Text text) {
+  if (format == "json") {
+    std::fputs((json().dump(1) + "\n").c_str(), stdout);
+  } else {
+    std::fputs(std::string(text()).c_str(), stdout);
+  }
+}
+
 // --format FORMAT for what a command prints on standard output (`formats`, the first the
 // default), with the deprecated --json flag meaning --format json.
 CLI::Option* add_format_option(CLI::App& command, std::string& format,

@@ -126,6 +126,7 @@ int record_gate_and_report(const ResultsDocument& document, const std::filesyste
                            const RecordArgs& record, const std::filesystem::path& cache_dir,
                            const GatePolicy& policy, const std::vector<std::string>& reports,
                            const Console& console) {
+  console.info(fmt::format("results: {}", path.string()));
   record_results(document, record, cache_dir, path, console);
   const GateResult gate = evaluate_gate(document, policy);
   emit_reports(document, gate, policy, reports, path, console,

@@ -39,8 +39,9 @@ std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
                                            const ResultsDocument& document,
                                            std::size_t commits = 20);
 
-// The end of every command that writes a document (run, compare, merge): the document recorded in
-// the store (store_options.h), gated by `policy`, and reported; returns the gate's exit code.
+// The end of every command that writes a document (run, compare, merge): where the document is
+// said, the document recorded in the store (store_options.h), gated by `policy`, and reported;
+// returns the gate's exit code.
 int record_gate_and_report(const ResultsDocument& document, const std::filesystem::path& path,
                            const RecordArgs& record, const std::filesystem::path& cache_dir,
                            const GatePolicy& policy, const std::vector<std::string>& reports,

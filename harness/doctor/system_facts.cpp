@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <cctype>
 #include <fstream>
+#include <initializer_list>
 #include <map>
 #include <set>
 #include <sstream>
 
 #include "core/fs.h"
 #include "core/process.h"
+#include "core/text.h"
 #include "measure/machine_context.h"
 
 namespace raygate {
@@ -16,12 +18,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string trimmed(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(" \t\r\n");
-  return std::string(text.substr(first, last - first + 1));
-}
+std::string trimmed(std::string_view text) { return std::string(trim_blanks(text)); }
 
 std::string lower(std::string_view text) {
   std::string out(text);
@@ -284,39 +281,44 @@ std::optional<CpuTimes> parse_cpu_times(std::string_view proc_stat) {
   return times;
 }
 
-std::string vm_from_dmi(std::string_view product_name, std::string_view sys_vendor) {
-  const std::string text = lower(trimmed(product_name)) + " | " + lower(trimmed(sys_vendor));
-  static const std::pair<const char*, const char*> kKnown[] = {{"kvm", "kvm"},
-                                                               {"qemu", "qemu"},
-                                                               {"standard pc (", "qemu"},
-                                                               {"vmware", "vmware"},
-                                                               {"virtualbox", "oracle"},
-                                                               {"hvm domu", "xen"},
-                                                               {"xen", "xen"},
-                                                               {"virtual machine", "microsoft"},
-                                                               {"google compute engine", "google"},
-                                                               {"amazon ec2", "amazon"},
-                                                               {"openstack", "openstack"},
-                                                               {"bochs", "bochs"},
-                                                               {"parallels", "parallels"},
-                                                               {"bhyve", "bhyve"}};
-  for (const auto& [needle, name] : kKnown) {
-    if (text.find(needle) != std::string::npos) return name;
+namespace {
+
+using KnownNames = std::initializer_list<std::pair<std::string_view, std::string_view>>;
+
+// The name of the first needle found in `text` (lower case), or "".
+std::string first_known(const std::string& text, KnownNames known) {
+  for (const auto& [needle, name] : known) {
+    if (text.find(needle) != std::string::npos) return std::string(name);
   }
   return {};
 }
 
+}  // namespace
+
+std::string vm_from_dmi(std::string_view product_name, std::string_view sys_vendor) {
+  return first_known(lower(trimmed(product_name)) + " | " + lower(trimmed(sys_vendor)),
+                     {{"kvm", "kvm"},
+                      {"qemu", "qemu"},
+                      {"standard pc (", "qemu"},
+                      {"vmware", "vmware"},
+                      {"virtualbox", "oracle"},
+                      {"hvm domu", "xen"},
+                      {"xen", "xen"},
+                      {"virtual machine", "microsoft"},
+                      {"google compute engine", "google"},
+                      {"amazon ec2", "amazon"},
+                      {"openstack", "openstack"},
+                      {"bochs", "bochs"},
+                      {"parallels", "parallels"},
+                      {"bhyve", "bhyve"}});
+}
+
 std::string container_from_cgroup(std::string_view cgroup) {
-  const std::string text = lower(cgroup);
-  static const std::pair<const char*, const char*> kKnown[] = {{"kubepods", "kubernetes"},
-                                                               {"docker", "docker"},
-                                                               {"libpod", "podman"},
-                                                               {"lxc", "lxc"},
-                                                               {"containerd", "containerd"}};
-  for (const auto& [needle, name] : kKnown) {
-    if (text.find(needle) != std::string::npos) return name;
-  }
-  return {};
+  return first_known(lower(cgroup), {{"kubepods", "kubernetes"},
+                                     {"docker", "docker"},
+                                     {"libpod", "podman"},
+                                     {"lxc", "lxc"},
+                                     {"containerd", "containerd"}});
 }
 
 std::optional<CpuTimes> read_cpu_times(const fs::path& root) {

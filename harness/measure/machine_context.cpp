@@ -17,18 +17,12 @@
 #include <nlohmann/json.hpp>
 
 #include "core/fs.h"
+#include "core/text.h"
 
 namespace raygate {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string_view trim(std::string_view text) {
-  const auto first = text.find_first_not_of(" \t\r\n");
-  if (first == std::string_view::npos) return {};
-  const auto last = text.find_last_not_of(" \t\r\n");
-  return text.substr(first, last - first + 1);
-}
 
 // Calls visit(key, value) for each "key : value" line, trimmed.
 template <typename Visit>
@@ -40,14 +34,14 @@ void for_each_field(std::string_view text, Visit visit) {
     const std::string_view line = text.substr(start, end - start);
     const auto colon = line.find(':');
     if (colon != std::string_view::npos) {
-      visit(trim(line.substr(0, colon)), trim(line.substr(colon + 1)));
+      visit(trim_blanks(line.substr(0, colon)), trim_blanks(line.substr(colon + 1)));
     }
     start = end + 1;
   }
 }
 
 std::optional<long long> parse_integer(std::string_view text) {
-  text = trim(text);
+  text = trim_blanks(text);
   if (text.empty()) return std::nullopt;
   const std::string copy(text);
   char* end = nullptr;
@@ -171,7 +165,7 @@ std::optional<int> count_processors(std::string_view cpuinfo) {
 }
 
 std::optional<int> count_cpu_list(std::string_view list) {
-  list = trim(list);
+  list = trim_blanks(list);
   if (list.empty()) return std::nullopt;
   long long count = 0;
   std::size_t start = 0;
@@ -233,7 +227,7 @@ std::map<int, std::string> cpu_governors(const fs::path& root) {
     const std::string name = it->path().filename().string();
     if (!is_cpu_directory_name(name)) continue;
     if (auto text = read_pseudo_file(it->path() / "cpufreq" / "scaling_governor")) {
-      const std::string_view governor = trim(*text);
+      const std::string_view governor = trim_blanks(*text);
       if (!governor.empty()) governors[std::stoi(name.substr(3))] = std::string(governor);
     }
   }

@@ -18,8 +18,21 @@ struct Scale {
   double operator()(double v) const { return a + (v - lo) / (hi - lo) * (b - a); }
 };
 
+// The smallest [lo, hi] holding every item's value and interval (items with .lower and
+// .upper; `value` the member of the point estimate). Not empty.
+template <typename Item>
+std::pair<double, double> interval_span(const std::vector<Item>& items, double Item::*value) {
+  double lo = items.front().lower, hi = items.front().upper;
+  for (const Item& item : items) {
+    lo = std::min({lo, item.lower, item.*value});
+    hi = std::max({hi, item.upper, item.*value});
+  }
+  return {lo, hi};
+}
+
 // The data range of [lo, hi] with a margin, never empty.
-std::pair<double, double> padded_range(double lo, double hi, double margin) {
+std::pair<double, double> padded_range(std::pair<double, double> span, double margin) {
+  const auto [lo, hi] = span;
   if (!(hi > lo)) {
     const double half = std::max(std::abs(lo) * 0.05, 1e-3);
     return {lo - half, hi + half};
@@ -99,12 +112,7 @@ std::string interval_mark(const Scale& x, double y, double value, double lower, 
 
 std::string ratio_bars_svg(const std::vector<IntervalRow>& rows) {
   if (rows.empty()) return "";
-  double lo = rows.front().lower, hi = rows.front().upper;
-  for (const IntervalRow& row : rows) {
-    lo = std::min({lo, row.lower, row.value});
-    hi = std::max({hi, row.upper, row.value});
-  }
-  const auto [dlo, dhi] = padded_range(lo, hi, 0.15);
+  const auto [dlo, dhi] = padded_range(interval_span(rows, &IntervalRow::value), 0.15);
   const int width = 440, row_height = 26, top = 8;
   const int height = top + static_cast<int>(rows.size()) * row_height + 24;
   const Scale x{dlo, dhi, 58.0, 290.0};
@@ -147,12 +155,7 @@ std::string change_bar_svg(double change, const Interval& interval, double thres
 std::string trend_svg(const TrendSeries& series) {
   const std::vector<TrendPoint>& p = series.points;
   if (p.empty()) return "";
-  double lo = p.front().lower, hi = p.front().upper;
-  for (const TrendPoint& point : p) {
-    lo = std::min({lo, point.lower, point.ratio});
-    hi = std::max({hi, point.upper, point.ratio});
-  }
-  const auto [dlo, dhi] = padded_range(lo, hi, 0.1);
+  const auto [dlo, dhi] = padded_range(interval_span(p, &TrendPoint::ratio), 0.1);
   const int width = 560, height = 210;
   const double left = 52, right = width - 14, top = 12, bottom = height - 50;
   const std::size_t n = p.size();

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace raygate {
@@ -241,21 +242,28 @@ PowerFit fit_power_law(std::span<const SizePoint> points) {
   return fit;
 }
 
+namespace {
+
+// Each quality's name in results documents and reports: one table, read both ways.
+constexpr std::array<std::pair<FitQuality, std::string_view>, 5> kQualityNames{{
+    {FitQuality::power_law, "power-law"},
+    {FitQuality::startup_dominated, "startup-dominated"},
+    {FitQuality::curved, "curved"},
+    {FitQuality::scattered, "scattered"},
+    {FitQuality::too_few_points, "too-few-points"}}};
+
+}  // namespace
+
 std::string_view to_string(FitQuality quality) {
-  switch (quality) {
-    case FitQuality::power_law: return "power-law";
-    case FitQuality::startup_dominated: return "startup-dominated";
-    case FitQuality::curved: return "curved";
-    case FitQuality::scattered: return "scattered";
-    case FitQuality::too_few_points: return "too-few-points";
+  for (const auto& [known, name] : kQualityNames) {
+    if (known == quality) return name;
   }
   return "?";
 }
 
 FitQuality fit_quality_from_string(std::string_view text) {
-  for (const FitQuality q : {FitQuality::power_law, FitQuality::startup_dominated,
-                             FitQuality::curved, FitQuality::scattered, FitQuality::too_few_points}) {
-    if (to_string(q) == text) return q;
+  for (const auto& [quality, name] : kQualityNames) {
+    if (name == text) return quality;
   }
   throw std::invalid_argument("unknown fit quality '" + std::string(text) + "'");
 }

@@ -45,16 +45,8 @@ WHERE ($1::text = '' OR d.branch = $1::text)
                                 AND substr(r.sha, 1, length($2::text)) = $2::text))
 ORDER BY d.id DESC LIMIT $3::bigint)sql";
 
-const char* const kSelectMeasurements = R"sql(
-SELECT d.id, d.stored_at, d.started_at, d.complete, d.branch, r.role, r.sha, r.short_sha,
-  r.subject, r.commit_time, r.commit_unix, r.dirty, s.scene_id, s.status, s.normalized_ratio,
-  s.ratio_lower, s.ratio_upper, s.baseline_median_seconds, s.image_verdict, s.image_max_error,
-  s.image_rms_error, d.machine_hostname, d.machine_cpu_model, d.baseline_sha256,
-  r.repository_key, r.adapter_name, d.suite, s.scene_settings, d.timing, d.baseline_accel,
-  s.series_id
-FROM scene_results s
-JOIN revisions r ON r.document_id = s.document_id AND r.role = s.role
-JOIN documents d ON d.id = s.document_id
+// After kMeasurementsFrom (store_rows.h).
+const char* const kMeasurementsWhere = R"sql(
 WHERE ($1::text = '' OR d.branch = $1::text) AND ($2::text = 'any' OR s.role = $2::text)
   AND ($3::boolean OR NOT r.dirty)
   AND ($4::text = '' OR strpos(r.repository_key, $4::text) > 0)
@@ -188,7 +180,9 @@ std::vector<HistoryRow> PostgresStore::measurements(const HistoryQuery& query) {
   p.text(query.repository).text(query.adapter).text(query.suite).text(query.series);
   for (const std::string& scene : query.scenes) p.text(scene);
   const PgResult r =
-      db_.exec(kSelectMeasurements + scene_filter(query.scenes) + kMeasurementOrder, p);
+      db_.exec(kMeasurementsFrom + std::string(kMeasurementsWhere) +
+                   scene_filter(query.scenes) + kMeasurementOrder,
+               p);
   std::vector<HistoryRow> rows;
   for (int i = 0; i < r.rows(); ++i) rows.push_back(history_row_from(ResultColumns{r, i}));
   return rows;

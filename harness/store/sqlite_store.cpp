@@ -54,21 +54,13 @@ WHERE (?1 = '' OR d.branch = ?1)
                           WHERE r.document_id = d.id AND substr(r.sha, 1, length(?2)) = ?2))
 ORDER BY d.id DESC LIMIT ?3)sql";
 
-const char* const kSelectMeasurements = R"sql(
-SELECT d.id, d.stored_at, d.started_at, d.complete, d.branch, r.role, r.sha, r.short_sha,
-  r.subject, r.commit_time, r.commit_unix, r.dirty, s.scene_id, s.status, s.normalized_ratio,
-  s.ratio_lower, s.ratio_upper, s.baseline_median_seconds, s.image_verdict, s.image_max_error,
-  s.image_rms_error, d.machine_hostname, d.machine_cpu_model, d.baseline_sha256,
-  r.repository_key, r.adapter_name, d.suite, s.scene_settings, d.timing, d.baseline_accel,
-  s.series_id
-FROM scene_results s
-JOIN revisions r ON r.document_id = s.document_id AND r.role = s.role
-JOIN documents d ON d.id = s.document_id
+// After kMeasurementsFrom (store_rows.h).
+const char* const kMeasurementsWhere = R"sql(
 WHERE (?1 = '' OR d.branch = ?1) AND (?2 = 'any' OR s.role = ?2) AND (?3 = 1 OR r.dirty = 0)
   AND (?4 = '' OR instr(r.repository_key, ?4) > 0) AND (?5 = '' OR r.adapter_name = ?5)
   AND (?6 = '' OR d.suite = ?6) AND (?7 = '' OR substr(s.series_id, 1, length(?7)) = ?7))sql";
 
-constexpr std::size_t kFixedParameters = 7;  // of kSelectMeasurements
+constexpr std::size_t kFixedParameters = 7;  // of kMeasurementsWhere
 
 const char* const kMeasurementOrder =
     " ORDER BY r.commit_unix DESC NULLS LAST, d.started_at DESC, d.id DESC, s.scene_id";
@@ -182,7 +174,8 @@ std::vector<StoredDocument> SqliteStore::documents(const DocumentQuery& query) {
 }
 
 std::vector<HistoryRow> SqliteStore::measurements(const HistoryQuery& query) {
-  SqliteStatement s(db_, kSelectMeasurements + scene_filter(query.scenes) + kMeasurementOrder);
+  SqliteStatement s(db_, kMeasurementsFrom + std::string(kMeasurementsWhere) +
+                             scene_filter(query.scenes) + kMeasurementOrder);
   s.bind_text(1, query.branch).bind_text(2, query.role).bind_flag(3, query.include_dirty);
   s.bind_text(4, query.repository).bind_text(5, query.adapter).bind_text(6, query.suite);
   s.bind_text(7, query.series);

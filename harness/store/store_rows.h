@@ -107,6 +107,20 @@ std::string short_ref_name(const std::string& ref_name);
 nlohmann::json parse_stored_document(const std::string& text, std::int64_t id,
                                      const std::string& location);
 
+// The select list and joins of both backends' measurements() query, in the column order
+// history_row_from() reads; each backend adds its own WHERE (their parameter syntax differs).
+inline constexpr const char* kMeasurementsFrom = R"sql(
+SELECT d.id, d.stored_at, d.started_at, d.complete, d.branch, r.role, r.sha, r.short_sha,
+  r.subject, r.commit_time, r.commit_unix, r.dirty, s.scene_id, s.status, s.normalized_ratio,
+  s.ratio_lower, s.ratio_upper, s.baseline_median_seconds, s.image_verdict, s.image_max_error,
+  s.image_rms_error, d.machine_hostname, d.machine_cpu_model, d.baseline_sha256,
+  r.repository_key, r.adapter_name, d.suite, s.scene_settings, d.timing, d.baseline_accel,
+  s.series_id
+FROM scene_results s
+JOIN revisions r ON r.document_id = s.document_id AND r.role = s.role
+JOIN documents d ON d.id = s.document_id
+)sql";
+
 // One measurements() row from the columns of the backends' shared query (its select list, in
 // order), read through `columns`: text(c), integer(c), optional_integer(c), real(c), flag(c).
 template <class Columns>

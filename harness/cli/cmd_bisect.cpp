@@ -120,6 +120,7 @@ int bisect_command(const BisectArgs& args, const Console& console) {
 
 void add_bisect_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<BisectArgs>();
+  args->measure.stopping = change_stopping_policy();
   CLI::App* command = app.add_subcommand(
       "bisect", "find the first commit that made a scene slower (or its image wrong)");
   add_measure_options(*command, args->measure);

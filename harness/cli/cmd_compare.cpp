@@ -68,6 +68,7 @@ int compare_command(const CompareArgs& args, const Console& console) {
 
 void add_compare_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CompareArgs>();
+  args->measure.stopping = change_stopping_policy();
   CLI::App* command = app.add_subcommand(
       "compare", "measure base and head in the same job and gate the change");
   add_measure_options(*command, args->measure);

@@ -27,7 +27,8 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
   command.add_option("--baseline", args.baseline, "raygate-baseline executable to use");
   command.add_option("--schedule", args.schedule,
                      "alternate: one program at a time, order alternating per round; duet: "
-                     "baseline and tracer at once, each on its own CPU")
+                     "baseline and tracer at once, each on its own CPU (compare: the baseline "
+                     "alone, then base and head at once)")
       ->check(CLI::IsMember({"alternate", "duet"}))
       ->capture_default_str();
   command.add_option("--pin", args.pin_cpus, "pin every run to these CPUs (alternate schedule)")
@@ -52,6 +53,11 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
   command.add_option("--max-seconds", args.stopping.max_seconds,
                      "time budget per scene, in seconds")
       ->check(CLI::Range(0.0, 1e7))
+      ->capture_default_str();
+  command.add_option("--max-minutes", args.stopping.max_minutes,
+                     "time budget of the whole measurement, shared by the scenes still to "
+                     "measure; 0 = none")
+      ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
   command.add_option("--timing", args.metric,
                      "time of a process-timed tracer: wall or cpu; sim: simulated cycles under "

@@ -53,9 +53,12 @@ GatePolicy parse_policy(std::string_view text, const std::string& origin) {
   GatePolicy policy;
   try {
     const JsonField root(document, "$");
-    root.expect_object({"max_slowdown", "significance", "image", "fail_on_inconclusive",
-                        "max_exponent_increase", "scenes"});
+    root.expect_object({"max_slowdown", "significance", "family_significance", "image",
+                        "fail_on_inconclusive", "max_exponent_increase", "scenes"});
     read_scene_keys(root, policy.defaults);
+    if (root.has("family_significance")) {
+      policy.family_significance = fraction(root.member("family_significance"), 0.0001, 0.5);
+    }
     if (root.has("fail_on_inconclusive")) {
       policy.fail_on_inconclusive = root.member("fail_on_inconclusive").as_bool();
     }
@@ -98,6 +101,8 @@ GatePolicy recorded_policy(const nlohmann::json& settings, std::string& note) {
   policy.defaults.significance = settings.value("significance", policy.defaults.significance);
   policy.max_exponent_increase =
       settings.value("max_exponent_increase", policy.max_exponent_increase);
+  policy.family_significance =
+      settings.value("family_significance", policy.family_significance);
   note = fmt::format("the limits it was measured under (max_slowdown {}, significance {}){}",
                      policy.defaults.max_slowdown, policy.defaults.significance,
                      file.empty() ? "" : "; its policy file " + file +

@@ -12,12 +12,15 @@
 #include <string_view>
 
 #include "compare/image_compare.h"
+#include "measure/family.h"
 
 namespace raygate {
 
 struct ScenePolicy {
   double max_slowdown = 0.03;  // REGRESSED beyond +3% (and significant)
-  double significance = 0.05;  // the change's CI is the (1 - significance) order-statistic interval
+  // The reported ratios' CIs are at 1 - significance; in a compare it is also the chance per
+  // scene that a change beyond max_slowdown is called UNCHANGED (docs/statistics.md §6).
+  double significance = 0.05;
   ImageThresholds image;       // against the golden and against the base revision's image
   std::string reason;          // why this scene differs from the defaults (overrides only)
 };
@@ -28,6 +31,8 @@ struct GatePolicy {
   bool fail_on_inconclusive = false;
   // A scene family's growth exponent may rise this much from base to head (docs/scaling.md).
   double max_exponent_increase = 0.1;
+  // The chance that a compare of an unchanged commit calls any scene REGRESSED (docs/statistics.md §6c).
+  double family_significance = kDefaultFamilySignificance;
   std::filesystem::path file;  // where it came from; empty for the built-in defaults
 
   const ScenePolicy& for_scene(const std::string& id) const;

@@ -6,6 +6,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "measure/confidence_sequence.h"
 #include "measure/descriptive.h"
 #include "measure/median_interval.h"
 
@@ -20,10 +21,17 @@ std::vector<RoundSample> against_baseline(std::span<const CompareRound> rounds,
   return samples;
 }
 
+// An interval of log changes in change-fraction units (exp is monotone).
+std::optional<Interval> to_change(const std::optional<Interval>& log_interval) {
+  if (!log_interval) return std::nullopt;
+  return Interval{std::expm1(log_interval->lower), std::expm1(log_interval->upper)};
+}
+
 }  // namespace
 
 ChangeSummary summarize_change(std::span<const CompareRound> rounds,
-                               const BootstrapOptions& options) {
+                               const BootstrapOptions& options,
+                               const std::optional<SequenceLevels>& sequence) {
   if (rounds.empty()) throw std::invalid_argument("summarize_change: no rounds");
   const std::vector<RoundSample> base_rounds = against_baseline(rounds, &CompareRound::base_seconds);
   const std::vector<RoundSample> head_rounds = against_baseline(rounds, &CompareRound::head_seconds);
@@ -39,12 +47,22 @@ ChangeSummary summarize_change(std::span<const CompareRound> rounds,
   summary.log_change_median = median(log_changes);
   summary.change = std::expm1(summary.log_change_median);
   summary.confidence = options.confidence;
-  // Too few rounds for the interval: report the observed range, which classify_change will not
-  // decide on.
-  const std::optional<Interval> at_confidence = median_interval(log_changes, options.confidence);
+  // An interval still unbounded (too few rounds) is reported as the observed range, which
+  // classify_change will not decide on.
   const auto [lowest, highest] = std::minmax_element(log_changes.begin(), log_changes.end());
-  const Interval log_interval = at_confidence.value_or(Interval{*lowest, *highest});
-  summary.change_interval = {std::expm1(log_interval.lower), std::expm1(log_interval.upper)};
+  const Interval observed{std::expm1(*lowest), std::expm1(*highest)};
+  if (sequence) {
+    const SequentialIntervals s = sequential_intervals(log_changes, *sequence);
+    summary.interval_kind = ChangeIntervalKind::confidence_sequence;
+    summary.confidence = 1.0 - 2.0 * sequence->decision_alpha;
+    summary.change_interval = s.decision.value_or(observed);
+    summary.equivalence_confidence = 1.0 - 2.0 * sequence->equivalence_alpha;
+    summary.equivalence_interval = s.equivalence.value_or(observed);
+    summary.one_look_confidence = sequence->one_look_confidence;
+    summary.one_look_interval = s.one_look.value_or(observed);
+  } else {
+    summary.change_interval = to_change(median_interval(log_changes, options.confidence)).value_or(observed);
+  }
   summary.log_change_mad_scaled = mad_scaled(log_changes);
   summary.base = summarize_ratio(base_rounds, options);
   summary.head = summarize_ratio(head_rounds, options);
@@ -82,8 +100,67 @@ ChangeVerdict classify_change(double change, const Interval& change_interval, do
   return ChangeVerdict::inconclusive;
 }
 
+std::string_view to_string(ChangeIntervalKind kind) {
+  return kind == ChangeIntervalKind::confidence_sequence ? "confidence-sequence" : "order-statistic";
+}
+
+std::optional<ChangeIntervalKind> change_interval_kind(std::string_view text) {
+  if (text == "confidence-sequence") return ChangeIntervalKind::confidence_sequence;
+  if (text == "order-statistic") return ChangeIntervalKind::order_statistic;
+  return std::nullopt;
+}
+
+SequentialIntervals sequential_intervals(std::span<const double> log_changes,
+                                         const SequenceLevels& levels) {
+  SequentialIntervals s;
+  s.change = std::expm1(median(log_changes));
+  s.decision = to_change(median_sequence_interval(log_changes, levels.decision_alpha));
+  s.equivalence = to_change(median_sequence_interval(log_changes, levels.equivalence_alpha));
+  s.one_look = to_change(median_interval(log_changes, levels.one_look_confidence));
+  return s;
+}
+
+ChangeVerdict classify_sequential(const SequentialIntervals& s, double threshold) {
+  if (!(threshold >= 0.0)) throw std::invalid_argument("classify_change: negative threshold");
+  // The decision interval carries the error guarantee (REGRESSED only when it excludes 0); the
+  // one-look interval only says whether the median is known well enough to compare it with
+  // the limit, the job the decision interval did in the one-look rule.
+  if (s.decision && s.one_look) {
+    const Interval& d = *s.decision;
+    const bool precise = s.one_look->upper - s.one_look->lower <= 2.0 * threshold;
+    if (d.lower > 0.0 && s.change > threshold && (precise || d.lower > threshold)) {
+      return ChangeVerdict::regressed;
+    }
+    if (d.upper < 0.0 && s.change < -threshold && (precise || d.upper < -threshold)) {
+      return ChangeVerdict::improved;
+    }
+  }
+  if (s.equivalence && s.equivalence->lower >= -threshold && s.equivalence->upper <= threshold) {
+    return ChangeVerdict::unchanged;
+  }
+  return ChangeVerdict::inconclusive;
+}
+
 ChangeVerdict classify_change(const ChangeSummary& summary, double threshold) {
-  if (!summary.exact && summary.rounds < min_values_for_median_interval(summary.confidence)) {
+  // Counted and repeated (sim mode): the change is exact, its interval a point, however few
+  // rounds; it is judged against the limit directly.
+  if (summary.exact) return classify_change(summary.change, summary.change_interval, threshold);
+  if (summary.interval_kind == ChangeIntervalKind::confidence_sequence) {
+    const auto bounded = [&](const Interval& interval, std::size_t needed) {
+      return summary.rounds >= needed ? std::optional<Interval>(interval) : std::nullopt;
+    };
+    SequentialIntervals s;
+    s.change = summary.change;
+    s.decision = bounded(summary.change_interval,
+                         min_values_for_median_sequence((1.0 - summary.confidence) / 2.0));
+    s.equivalence =
+        bounded(summary.equivalence_interval,
+                min_values_for_median_sequence((1.0 - summary.equivalence_confidence) / 2.0));
+    s.one_look = bounded(summary.one_look_interval,
+                         min_values_for_median_interval(summary.one_look_confidence));
+    return classify_sequential(s, threshold);
+  }
+  if (summary.rounds < min_values_for_median_interval(summary.confidence)) {
     return ChangeVerdict::inconclusive;
   }
   return classify_change(summary.change, summary.change_interval, threshold);

@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 #include <span>
 #include <string_view>
 
@@ -21,14 +22,32 @@ struct CompareRound {
   double head_seconds = 0.0;
 };
 
+// Which interval the change carries: the fixed-n order-statistic interval (one look), or the
+// anytime-valid confidence sequence (any number of looks; what compare decides on).
+enum class ChangeIntervalKind { order_statistic, confidence_sequence };
+
+std::string_view to_string(ChangeIntervalKind kind);
+// "order-statistic" or "confidence-sequence"; nullopt for anything else.
+std::optional<ChangeIntervalKind> change_interval_kind(std::string_view text);
+
 struct ChangeSummary {
   std::size_t rounds = 0;
   double change = 0.0;  // exp(median of per-round ln(t_head / t_base)) - 1; +0.05 = 5% slower
-  // The distribution-free order-statistic interval of the median (measure/median_interval.h) at
-  // `confidence`, same units as `change`. With too few rounds to reach that confidence it is the
-  // whole observed range, and no verdict but INCONCLUSIVE may be drawn from it.
+  // The interval of the median at `confidence`, same units as `change`: the anytime-valid
+  // confidence sequence compare decides on (interval_kind), or in documents from before it the
+  // distribution-free order-statistic interval (measure/median_interval.h). With too few rounds
+  // to reach that confidence it is the whole observed range, and no verdict but INCONCLUSIVE may
+  // be drawn from it.
   Interval change_interval;
   double confidence = 0.95;
+  ChangeIntervalKind interval_kind = ChangeIntervalKind::order_statistic;
+  // Confidence sequences only (docs/statistics.md §6): the wider-level sequence that UNCHANGED
+  // must fit in, and the one-look order-statistic interval that says whether the point estimate
+  // is precise. Each is the observed range while it is unbounded (too few rounds).
+  Interval equivalence_interval;
+  double equivalence_confidence = 0.0;
+  Interval one_look_interval;
+  double one_look_confidence = 0.0;
   double log_change_median = 0.0;
   double log_change_mad_scaled = 0.0;
   RatioSummary base;  // each revision's normalized ratio against the baseline
@@ -39,9 +58,33 @@ struct ChangeSummary {
   bool exact = false;
 };
 
-// Throws std::invalid_argument for no rounds, InfraError for a time that is not positive.
+// The levels of the sequential rule, each alpha the chance of one side's error at any round.
+struct SequenceLevels {
+  double decision_alpha = 0.01;     // REGRESSED / IMPROVED: the scene's share of the family's
+  double equivalence_alpha = 0.05;  // UNCHANGED: the chance a change beyond the limit is missed
+  double one_look_confidence = 0.95;  // precision of the point estimate (not an error rate)
+};
+
+// With `sequence`, change_interval is the confidence sequence at decision_alpha
+// (measure/confidence_sequence.h), confidence = 1 - 2 decision_alpha, and the equivalence and
+// one-look intervals are filled in; the ratios keep `options`. Without it, the one-look
+// order-statistic interval at options.confidence. Throws std::invalid_argument for no rounds,
+// InfraError for a time that is not positive.
 ChangeSummary summarize_change(std::span<const CompareRound> rounds,
-                               const BootstrapOptions& options = {});
+                               const BootstrapOptions& options = {},
+                               const std::optional<SequenceLevels>& sequence = std::nullopt);
+
+// The sequential rule's inputs: the change and its three intervals, nullopt while unbounded.
+struct SequentialIntervals {
+  double change = 0.0;
+  std::optional<Interval> decision;
+  std::optional<Interval> equivalence;
+  std::optional<Interval> one_look;
+};
+
+// The same intervals from per-round ln(t_head / t_base), in measurement order (non-empty).
+SequentialIntervals sequential_intervals(std::span<const double> log_changes,
+                                         const SequenceLevels& levels);
 
 enum class ChangeVerdict { unchanged, improved, regressed, inconclusive };
 
@@ -56,8 +99,16 @@ inline constexpr double kDefaultChangeThreshold = 0.03;
 ChangeVerdict classify_change(double change, const Interval& change_interval,
                               double threshold = kDefaultChangeThreshold);
 
-// The rule above, and INCONCLUSIVE whatever the numbers while there are fewer rounds than an
-// interval at the summary's confidence needs (6 at 95%), unless the summary is exact.
+// The sequential rule (docs/statistics.md §6): REGRESSED when the decision interval lies above
+// 0, the point estimate is above +threshold, and either the one-look interval is no wider than
+// 2 x threshold or the decision interval lies wholly above +threshold; IMPROVED mirrors it;
+// UNCHANGED when the equivalence interval lies within +-threshold; INCONCLUSIVE otherwise and
+// while an interval it needs is unbounded.
+ChangeVerdict classify_sequential(const SequentialIntervals& intervals, double threshold);
+
+// By the summary: an exact summary (sim mode) judged by its change alone; else by its interval
+// kind, the one-look rule above (INCONCLUSIVE below the rounds its interval needs, 6 at 95%) or
+// the sequential rule on the stored intervals.
 ChangeVerdict classify_change(const ChangeSummary& summary,
                               double threshold = kDefaultChangeThreshold);
 

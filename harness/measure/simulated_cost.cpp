@@ -78,11 +78,11 @@ std::optional<ChangeSummary> exact_change(std::span<const CompareRound> rounds) 
 }
 
 ChangeSummary measured_change(std::span<const CompareRound> rounds, const BootstrapOptions& options,
-                              bool counted) {
+                              bool counted, const std::optional<SequenceLevels>& sequence) {
   if (counted) {
     if (std::optional<ChangeSummary> exact = exact_change(rounds)) return *exact;
   }
-  return summarize_change(rounds, options);
+  return summarize_change(rounds, options, sequence);
 }
 
 bool costs_identical(std::span<const RoundSample> rounds) {

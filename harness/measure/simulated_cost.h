@@ -52,9 +52,10 @@ double relative_spread(std::span<const double> costs);
 std::optional<ChangeSummary> exact_change(std::span<const CompareRound> rounds);
 
 // The change of a compare scene: exact when `counted` (sim mode) and every run repeated its
-// count, else the statistics of timed rounds.
+// count, else the statistics of timed rounds (on confidence sequences at `sequence`, if given).
 ChangeSummary measured_change(std::span<const CompareRound> rounds, const BootstrapOptions& options,
-                              bool counted);
+                              bool counted,
+                              const std::optional<SequenceLevels>& sequence = std::nullopt);
 
 // The same question for `run`: true when tracer and baseline each had identical costs in at least
 // two rounds.

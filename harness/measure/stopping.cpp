@@ -24,6 +24,13 @@ StopDecision should_stop(const StoppingState& state, const StoppingPolicy& polic
   return StopDecision::continue_measuring;
 }
 
+StoppingPolicy change_stopping_policy() {
+  StoppingPolicy policy;
+  policy.max_rounds = 60;
+  policy.max_minutes = 8.0;
+  return policy;
+}
+
 std::size_t rounds_to_decide(const StoppingPolicy& policy) {
   return std::max<std::size_t>(policy.min_rounds, 2);
 }
@@ -36,9 +43,10 @@ bool ratio_decided(std::span<const RoundSample> rounds, const StoppingPolicy& po
 }
 
 bool change_decided(std::span<const CompareRound> rounds, const StoppingPolicy& policy,
-                    double max_slowdown, const BootstrapOptions& options, bool counted) {
+                    double max_slowdown, const BootstrapOptions& options,
+                    const SequenceLevels& levels, bool counted) {
   if (rounds.size() < rounds_to_decide(policy)) return false;
-  return classify_change(measured_change(rounds, options, counted), max_slowdown) !=
+  return classify_change(measured_change(rounds, options, counted, levels), max_slowdown) !=
          ChangeVerdict::inconclusive;
 }
 

@@ -19,13 +19,22 @@
 
 namespace raygate {
 
-// The defaults of --target, --min-rounds, --max-rounds and --max-seconds: here and nowhere else.
+// The defaults of --target, --min-rounds, --max-rounds, --max-seconds and --max-minutes: here
+// (and in change_stopping_policy() below) and nowhere else.
 struct StoppingPolicy {
   double target_relative_half_width = 0.01;  // stop once the 95% CI is within +-1% of the ratio
   std::size_t min_rounds = 3;    // below this the bootstrap CI is too coarse to trust
   std::size_t max_rounds = 30;   // per scene
   double max_seconds = 300.0;    // per scene, wall time of all its runs so far
+  // The whole measurement, shared by the scenes in order (measure/compare_budget.h); 0 = none.
+  double max_minutes = 0.0;
 };
+
+// The defaults of compare and bisect. Their verdicts come from confidence sequences, which stay
+// unbounded for the first 12-19 rounds (docs/statistics.md §6a), so a scene may take 60 rounds;
+// the whole compare is bounded instead, by 8 minutes, so a full `ci` compare fits a 10-minute
+// CI step.
+StoppingPolicy change_stopping_policy();
 
 enum class StopDecision {
   continue_measuring,
@@ -57,10 +66,13 @@ bool ratio_decided(std::span<const RoundSample> rounds, const StoppingPolicy& po
                    const BootstrapOptions& options = {});
 
 // Verdict of `compare` and `bisect`: the change of head against base is REGRESSED, IMPROVED or
-// UNCHANGED at `max_slowdown` (not INCONCLUSIVE), on rounds_to_decide() rounds or more.
-// `counted` (sim mode): rounds whose counts all repeat decide exactly (measure/simulated_cost.h).
+// UNCHANGED at `max_slowdown` (not INCONCLUSIVE) on its confidence sequences at `levels`, on
+// rounds_to_decide() rounds or more. The sequences are valid at every round, so asking after each
+// one costs no error (docs/statistics.md §6a). `counted` (sim mode): rounds whose counts all
+// repeat decide exactly, without a sequence (measure/simulated_cost.h).
 bool change_decided(std::span<const CompareRound> rounds, const StoppingPolicy& policy,
-                    double max_slowdown, const BootstrapOptions& options, bool counted = false);
+                    double max_slowdown, const BootstrapOptions& options,
+                    const SequenceLevels& levels, bool counted = false);
 
 // The rule on a ratio's numbers (converged: at least min_rounds and the half-width within the
 // target), for callers that already summarized the rounds.

@@ -4,6 +4,7 @@
 
 #include "core/time_text.h"
 #include "measure/simulated_cost.h"
+#include "pipeline/compare_family.h"
 #include "pipeline/stopping.h"
 #include "runner/baseline_contender.h"
 #include "runner/tracer_contender.h"
@@ -12,12 +13,13 @@ namespace raygate {
 
 namespace {
 
-// The change head vs base, and head's image against base's.
-void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy,
+// The change head vs base at the scene's share `alpha` of the family, and head's image against
+// base's.
+void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, double alpha,
                           const std::filesystem::path& evidence_dir, bool counted) {
   const ScenePolicy& policy = gate_policy.for_scene(scene.entry.id);
-  scene.change =
-      measured_change(compare_samples(scene.runs.rounds), change_bootstrap(policy), counted);
+  scene.change = measured_change(compare_samples(scene.runs.rounds), change_bootstrap(policy),
+                                 counted, scene_levels(policy, alpha));
   scene.change_verdict =
       std::string(to_string(classify_change(*scene.change, policy.max_slowdown)));
   const RunRecord* base = scene.runs.first_run("base");
@@ -50,12 +52,31 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
       request.out);
   const std::filesystem::path work_dir = m.work_dir;
   m.tracer_roles = {"base", "head"};
+  // The family is the whole selection, so a shard's scenes get the share they would have had
+  // in one job (docs/statistics.md §6c).
+  const std::size_t family_size =
+      context.shard ? context.shard->suite_scenes.size() : m.scenes.size();
+  const double alpha = scene_decision_alpha(context.policy, family_size);
+  SuiteBudget budget(context.stopping, m.scenes.size(), io.clock);
   m.stop = [&](const SuiteScene& scene) {
-    return change_stop_rule(context.stopping, context.policy.for_scene(scene.id),
+    const ScenePolicy& policy = context.policy.for_scene(scene.id);
+    return change_stop_rule(budget.next_scene(), policy, scene_levels(policy, alpha),
                             simulated(context));
   };
   m.finish_scene = [&](SceneResult& scene) {
-    finish_compare_scene(scene, context.policy, work_dir / "evidence", simulated(context));
+    finish_compare_scene(scene, context.policy, alpha, work_dir / "evidence",
+                         simulated(context));
+  };
+  m.finish_suite = [&](ResultsDocument& document) {
+    std::vector<std::string> lines;
+    for (const std::string& id : apply_family_control(document, context.policy, family_size)) {
+      lines.push_back(id + ": REGRESSED at its Holm share of the family (other scenes regressed "
+                           "first)");
+    }
+    if (std::string undecided = undecided_line(document); !undecided.empty()) {
+      lines.push_back(std::move(undecided));
+    }
+    return lines;
   };
   const BaselineContender baseline_runs =
       baseline_contender(context, request.baseline.source_hash());

@@ -32,6 +32,7 @@ nlohmann::json measure_settings(const MeasureContext& c) {
       {"min_rounds", c.stopping.min_rounds},
       {"max_rounds", c.stopping.max_rounds},
       {"max_seconds_per_scene", c.stopping.max_seconds},
+      {"max_minutes", c.stopping.max_minutes},
       {"metric", simulated(c)  ? std::string(tracer_clock_name(c.adapter.timing.source, {}))
                  : c.metric ? std::string(to_string(*c.metric))
                             : std::string(to_string(c.adapter.timing.metric))},
@@ -44,6 +45,7 @@ nlohmann::json measure_settings(const MeasureContext& c) {
       {"policy_file", c.policy.file.string()},
       {"max_slowdown", c.policy.defaults.max_slowdown},
       {"significance", c.policy.defaults.significance},
+      {"family_significance", c.policy.family_significance},
       {"max_exponent_increase", c.policy.max_exponent_increase}};
   if (c.shard) settings["shard"] = shard_to_json(*c.shard);
   return settings;

@@ -22,7 +22,8 @@ MeasuredDocument measure_prepared_run(const RunRequest& request, const PreparedR
   const Worktree& worktree = request.worktree;
   SuiteMeasurement m = suite_measurement(
       context, compact_utc_timestamp() + "-" + worktree.short_sha, request.out);
-  m.stop = [&](const SuiteScene&) { return ratio_stop_rule(context.stopping, "tracer"); };
+  SuiteBudget budget(context.stopping, m.scenes.size(), io.clock);
+  m.stop = [&](const SuiteScene&) { return ratio_stop_rule(budget.next_scene(), "tracer"); };
   m.tracer_roles = {"tracer"};
   const BaselineContender baseline_runs =
       baseline_contender(context, request.baseline.source_hash());

@@ -1,6 +1,9 @@
 #include "pipeline/stopping.h"
 
+#include <algorithm>
 #include <utility>
+
+#include "measure/compare_budget.h"
 
 namespace raygate {
 
@@ -18,12 +21,21 @@ SceneVerdict ratio_verdict(const StoppingPolicy& policy, const std::string& trac
   };
 }
 
+SequenceLevels scene_levels(const ScenePolicy& scene, double decision_alpha) {
+  SequenceLevels levels;
+  levels.decision_alpha = decision_alpha;
+  levels.equivalence_alpha = scene.significance;
+  levels.one_look_confidence = 1.0 - scene.significance;
+  return levels;
+}
+
 SceneVerdict change_verdict(const StoppingPolicy& policy, const ScenePolicy& scene,
-                            bool counted) {
+                            const SequenceLevels& levels, bool counted) {
   const BootstrapOptions options = change_bootstrap(scene);
   const double max_slowdown = scene.max_slowdown;
   return [=](const std::vector<Round>& rounds) {
-    return change_decided(compare_samples(rounds), policy, max_slowdown, options, counted);
+    return change_decided(compare_samples(rounds), policy, max_slowdown, options, levels,
+                          counted);
   };
 }
 
@@ -33,14 +45,27 @@ StopRule ratio_stop_rule(const StoppingPolicy& policy, const std::string& tracer
 }
 
 StopRule change_stop_rule(const StoppingPolicy& policy, const ScenePolicy& scene,
-                          bool counted) {
-  return stop_rule(policy, change_verdict(policy, scene, counted));
+                          const SequenceLevels& levels, bool counted) {
+  return stop_rule(policy, change_verdict(policy, scene, levels, counted));
 }
 
 BootstrapOptions change_bootstrap(const ScenePolicy& scene) {
   BootstrapOptions options;
   options.confidence = 1.0 - scene.significance;
   return options;
+}
+
+SuiteBudget::SuiteBudget(const StoppingPolicy& policy, std::size_t scenes, Clock& clock)
+    : policy_(policy), scenes_left_(scenes), clock_(clock), started_(clock.now_seconds()) {}
+
+StoppingPolicy SuiteBudget::next_scene() {
+  StoppingPolicy scene = policy_;
+  const double share = scene_time_share(60.0 * policy_.max_minutes,
+                                        clock_.now_seconds() - started_,
+                                        std::max<std::size_t>(scenes_left_, 1));
+  scene.max_seconds = std::min(scene.max_seconds, share);
+  if (scenes_left_ > 0) --scenes_left_;
+  return scene;
 }
 
 }  // namespace raygate

@@ -1,15 +1,18 @@
 // The stopping policy (measure/stopping.h) bound to a scene's rounds: the StopRule the
 // scheduler asks after each round, one per measuring command. Both are should_stop() over the
 // same budget; they differ only in the verdict function, which is the seam for another way of
-// deciding: write a SceneVerdict and pass it to stop_rule().
+// deciding: write a SceneVerdict and pass it to stop_rule(). Also the whole measurement's time
+// budget (--max-minutes), which caps each scene's seconds at its share.
 #pragma once
 
+#include <cstddef>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "gate/policy.h"
 #include "measure/stopping.h"
+#include "runner/executor.h"
 #include "runner/scheduler.h"
 
 namespace raygate {
@@ -24,19 +27,40 @@ StopRule stop_rule(const StoppingPolicy& policy, SceneVerdict verdict);
 SceneVerdict ratio_verdict(const StoppingPolicy& policy, const std::string& tracer_role,
                            const std::string& baseline_role = "baseline");
 
+// The levels of a compare scene's confidence sequences (docs/statistics.md §6b): the decision
+// sequence at `decision_alpha`, the scene's share of the family (measure/family.h); the
+// equivalence sequence at the scene's significance; the one-look interval at 1 - significance.
+SequenceLevels scene_levels(const ScenePolicy& scene, double decision_alpha);
+
 // `compare` and `bisect`: head's change against base has a verdict other than INCONCLUSIVE at
-// the scene's slowdown limit and significance. `counted`: sim mode, where rounds whose counts all
-// repeat decide exactly.
+// the scene's slowdown limit, on its confidence sequences at `levels`. `counted`: sim mode,
+// where rounds whose counts all repeat decide exactly.
 SceneVerdict change_verdict(const StoppingPolicy& policy, const ScenePolicy& scene,
-                            bool counted = false);
+                            const SequenceLevels& levels, bool counted = false);
 
 // The rules of the commands: stop_rule() with the verdicts above.
 StopRule ratio_stop_rule(const StoppingPolicy& policy, const std::string& tracer_role,
                          const std::string& baseline_role = "baseline");
 StopRule change_stop_rule(const StoppingPolicy& policy, const ScenePolicy& scene,
-                          bool counted = false);
+                          const SequenceLevels& levels, bool counted = false);
 
 // The bootstrap of a compare scene: its confidence is 1 - the scene's significance.
 BootstrapOptions change_bootstrap(const ScenePolicy& scene);
+
+// The whole measurement's time budget (StoppingPolicy::max_minutes) shared by its scenes in the
+// order they are measured: each may use what is left divided by the scenes left, so the time a
+// scene saves by deciding early goes to the undecided scenes after it.
+class SuiteBudget {
+ public:
+  SuiteBudget(const StoppingPolicy& policy, std::size_t scenes, Clock& clock);
+  // The stopping policy of the next scene: `policy` with max_seconds capped at its share.
+  StoppingPolicy next_scene();
+
+ private:
+  StoppingPolicy policy_;
+  std::size_t scenes_left_;
+  Clock& clock_;
+  double started_;
+};
 
 }  // namespace raygate

@@ -188,6 +188,9 @@ MeasuredDocument measure_document(ResultsDocument document, const SuiteMeasureme
                                   const std::string& opening, PipelineIo& io) {
   io.progress.line(opening);
   measure_suite(document, m, io);
+  if (m.finish_suite) {
+    for (const std::string& line : m.finish_suite(document)) io.progress.line(line);
+  }
   document.finished_at = utc_timestamp();
   const ScalingAnalysis scaling = attach_scaling(document, scaling_limits(m.policy));
   for (const std::string& line : scaling_lines(scaling)) io.progress.line(line);

@@ -37,6 +37,9 @@ struct SuiteMeasurement {
   std::filesystem::path out;          // the results document
   // Extra per-scene summaries after the ratios and golden checks (compare adds its change).
   std::function<void(SceneResult&)> finish_scene;
+  // Once every scene is measured, before the complete document is written: judgements across
+  // scenes (compare: Holm over the family). Returns lines for the measurement's account.
+  std::function<std::vector<std::string>(ResultsDocument&)> finish_suite;
 };
 
 // A new, empty directory <parent>/<stem>, or <stem>-2, -3, ... if that exists: two runs started

@@ -4,6 +4,8 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "core/fs.h"
@@ -74,6 +76,7 @@ void to_json(json& j, const ChangeSummary& c) {
            {"change", finite_number(c.change)},
            {"change_interval", c.change_interval},
            {"confidence", finite_number(c.confidence)},
+           {"interval_kind", std::string(to_string(c.interval_kind))},
            {"log_change_median", finite_number(c.log_change_median)},
            {"log_change_mad_scaled", finite_number(c.log_change_mad_scaled)},
            {"base", c.base},
@@ -83,12 +86,32 @@ void to_json(json& j, const ChangeSummary& c) {
              {"z", finite_number(c.mann_whitney.z)},
              {"p_value", finite_number(c.mann_whitney.p_value)}}}};
   if (c.exact) j["exact"] = true;  // --timing sim with identical counts: no interval needed
+  if (c.interval_kind == ChangeIntervalKind::confidence_sequence) {
+    j["equivalence_interval"] = c.equivalence_interval;
+    j["equivalence_confidence"] = finite_number(c.equivalence_confidence);
+    j["one_look_interval"] = c.one_look_interval;
+    j["one_look_confidence"] = finite_number(c.one_look_confidence);
+  }
 }
 void from_json(const json& j, ChangeSummary& c) {
   c.rounds = j.at("rounds").get<std::size_t>();
   c.change = number_at(j, "change");
   c.change_interval = j.at("change_interval").get<Interval>();
   c.confidence = j.value("confidence", 0.95);  // documents before it was recorded: 95%
+  // Documents before the confidence sequence carried the one-look interval.
+  const std::string kind = j.value("interval_kind", std::string("order-statistic"));
+  const std::optional<ChangeIntervalKind> parsed = change_interval_kind(kind);
+  if (!parsed) {
+    throw std::invalid_argument("change.interval_kind: unknown interval \"" + kind +
+                                "\" (order-statistic or confidence-sequence)");
+  }
+  c.interval_kind = *parsed;
+  if (c.interval_kind == ChangeIntervalKind::confidence_sequence) {
+    c.equivalence_interval = j.at("equivalence_interval").get<Interval>();
+    c.equivalence_confidence = number_at(j, "equivalence_confidence");
+    c.one_look_interval = j.at("one_look_interval").get<Interval>();
+    c.one_look_confidence = number_at(j, "one_look_confidence");
+  }
   c.log_change_median = number_at(j, "log_change_median");
   c.log_change_mad_scaled = number_at(j, "log_change_mad_scaled");
   c.base = j.at("base").get<RatioSummary>();
@@ -341,6 +364,8 @@ ResultsDocument results_from_json(const nlohmann::json& j, const std::string& or
     return d;
   } catch (const nlohmann::json::exception& e) {
     throw UsageError(origin + ": not a raygate results document: " + e.what());
+  } catch (const std::invalid_argument& e) {  // a field of a known name with an unknown value
+    throw UsageError(origin + ": " + e.what());
   }
 }
 

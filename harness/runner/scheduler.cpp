@@ -99,9 +99,10 @@ std::vector<T> rotated(const std::vector<T>& items, std::size_t by) {
 void check_options(std::span<const Contender* const> contenders, const ScheduleOptions& options) {
   if (contenders.empty()) throw std::invalid_argument("measure_scene: no contenders");
   if (options.kind != ScheduleKind::duet) return;
-  if (contenders.size() != 2) {
+  if (contenders.size() != 2 && contenders.size() != 3) {
     throw UsageError(fmt::format("the duet schedule runs two programs at once (baseline and "
-                                 "tracer); this measurement has {}",
+                                 "tracer, or base and head after the baseline); this "
+                                 "measurement has {}",
                                  contenders.size()));
   }
   if (options.duet_cpus.size() < 2 || options.duet_cpus[0] == options.duet_cpus[1]) {
@@ -144,17 +145,29 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
     if (options.kind == ScheduleKind::duet) {
       const std::vector<int> cpus = rotated(
           std::vector<int>(options.duet_cpus.begin(), options.duet_cpus.begin() + 2), index);
-      const std::vector<RunRecord> runs = launcher.run_together(roster, label, cpus);
-      for (std::size_t i = 0; i < roster.size(); ++i) {
-        if (runs[i].ok) round.runs[roster[i]->role()] = runs[i];
+      // Three contenders (compare): the baseline runs alone on the round's first CPU, then base
+      // and head start together, so the two whose ratio the gate judges see the same
+      // interference; the baseline only normalizes.
+      std::span<const Contender* const> pair(roster);
+      if (roster.size() == 3) {
+        const Contender& solo = *roster.front();
+        RunRecord run = launcher.run(solo, label, {cpus.front()});
+        if (!run.ok) return fail(solo.role(), run, round.runs);
+        round.order.push_back(solo.role());
+        round.runs[solo.role()] = std::move(run);
+        pair = pair.subspan(1);
       }
-      for (std::size_t i = 0; i < roster.size(); ++i) {
-        if (!runs[i].ok) return fail(roster[i]->role(), runs[i], round.runs);
+      const std::vector<RunRecord> runs = launcher.run_together(pair, label, cpus);
+      for (std::size_t i = 0; i < pair.size(); ++i) {
+        if (runs[i].ok) round.runs[pair[i]->role()] = runs[i];
+      }
+      for (std::size_t i = 0; i < pair.size(); ++i) {
+        if (!runs[i].ok) return fail(pair[i]->role(), runs[i], round.runs);
       }
       // Order by CPU, so the document says which contender had which CPU this round.
       for (std::size_t c = 0; c < cpus.size(); ++c) {
         const auto it = std::find(cpus.begin(), cpus.end(), options.duet_cpus[c]);
-        round.order.push_back(roster[static_cast<std::size_t>(it - cpus.begin())]->role());
+        round.order.push_back(pair[static_cast<std::size_t>(it - cpus.begin())]->role());
       }
     } else {
       for (const Contender* contender : rotated(roster, index)) {

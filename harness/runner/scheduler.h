@@ -2,7 +2,9 @@
 // contender runs once, in an order that rotates from round to round (baseline, tracer; then
 // tracer, baseline; with three contenders baseline, base, head; base, head, baseline; ...), so a
 // slow drift of the machine hits all of them alike. In the duet schedule the contenders of a
-// round start together, each pinned to its own CPU, and the CPUs rotate too. Rounds continue
+// round start together, each pinned to its own CPU, and the CPUs rotate too; with three
+// (compare), the first (the baseline) runs alone on the round's first CPU, then the other two
+// start together. Rounds continue
 // until a stop rule (pipeline/stopping.h: the one stopping policy) says enough.
 //
 // Processes and time come through Executor and Clock, so the loop is tested with fakes.
@@ -35,7 +37,9 @@ struct ScheduleOptions {
 };
 
 struct Round {
-  std::vector<std::string> order;         // roles in the order they ran (or CPU order in duet)
+  // Roles in the order they ran; in a duet, the pair in CPU order (after the baseline that ran
+  // alone before them, with three contenders).
+  std::vector<std::string> order;
   std::map<std::string, RunRecord> runs;  // by role
 };
 
@@ -64,8 +68,8 @@ using StopRule = std::function<StopDecision(const std::vector<Round>& rounds, do
 using RoundObserver = std::function<void(const std::vector<Round>& rounds, double seconds_spent)>;
 
 // Runs the scene's warm-ups and rounds. Run directories: <scene_dir>/<role>/warmup-N and
-// <scene_dir>/<role>/round-NNN. Throws UsageError for a duet with other than two contenders
-// or too few CPUs named; never throws for a contender that fails (see SceneRuns::failed_run).
+// <scene_dir>/<role>/round-NNN. Throws UsageError for a duet with other than two or three
+// contenders or too few CPUs named; never throws for a contender that fails (see SceneRuns::failed_run).
 SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* const> contenders,
                         const ScheduleOptions& options, const StopRule& stop, Executor& executor,
                         Clock& clock, const std::filesystem::path& scene_dir,

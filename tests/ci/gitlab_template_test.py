@@ -125,7 +125,8 @@ def main():
         mr = {"CI_PIPELINE_SOURCE": "merge_request_event", "CI_MERGE_REQUEST_TARGET_BRANCH_NAME": "main",
               "CI_MERGE_REQUEST_SOURCE_BRANCH_NAME": "slower", "CI_MERGE_REQUEST_IID": "5",
               "CI_API_V4_URL": f"{forge.url}/api/v4", "CI_PROJECT_ID": "42", "RAYGATE_NOTE_TOKEN": "test-token"}
-        code, log = gitlab_ci_local(project, dict(mr, RAYGATE_EXTRA_ARGS="--max-rounds 6"))
+        # 12 rounds: the fewest from which compare decides one scene (docs/statistics.md §6a).
+        code, log = gitlab_ci_local(project, dict(mr, RAYGATE_EXTRA_ARGS="--max-rounds 12"))
         check(code != 0 and "FAIL  raygate:compare" in log and "raygate: REGRESSION (exit 1)" in log
               and not re.search(r"(PASS|FAIL)\s+raygate:record", log),
               "merge request pipeline: only raygate:compare ran, and it failed on the regression", log)

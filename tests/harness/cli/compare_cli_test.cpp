@@ -26,7 +26,7 @@ class CompareCli : public TracerRepoTest {
     std::vector<std::string> args{"--repo",       repo_.path().string(), "--adapter", "make-nff",
                                   "--suite",      suite_.string(),       "--cache-dir",
                                   cache_.string(), "--golden-dir",       "no-goldens",
-                                  "--max-rounds", "6"};
+                                  "--max-rounds", "16"};  // a verdict needs 12 (1 scene)
     for (const std::string& id : scenes) args.insert(args.end(), {"--scene", id});
     return args;
   }

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "measure/confidence_sequence.h"
 #include "synthetic.h"
 
 namespace raygate {
@@ -37,6 +38,12 @@ TEST(StoppingRule, DefaultsAreTheDocumentedOnes) {
   EXPECT_EQ(policy.min_rounds, 3u);
   EXPECT_EQ(policy.max_rounds, 30u);
   EXPECT_DOUBLE_EQ(policy.max_seconds, 300.0);
+  EXPECT_DOUBLE_EQ(policy.max_minutes, 0.0);
+  // compare and bisect: room for the confidence sequences, the whole compare bounded instead.
+  const StoppingPolicy change = change_stopping_policy();
+  EXPECT_EQ(change.max_rounds, 60u);
+  EXPECT_DOUBLE_EQ(change.max_minutes, 8.0);
+  EXPECT_DOUBLE_EQ(change.max_seconds, policy.max_seconds);
 }
 
 TEST(StoppingRule, StatisticalVerdictsNeverDecideOnOneRound) {
@@ -66,18 +73,24 @@ TEST(StoppingRule, RatioVerdictFollowsTheTarget) {
 TEST(StoppingRule, ChangeVerdictDecidesRegressedAndUnchangedButNotInconclusive) {
   StoppingPolicy policy;
   const BootstrapOptions options;
+  const SequenceLevels levels;  // one scene: the decision sequence at 1% each side
+  const std::size_t first = min_values_for_median_sequence(levels.decision_alpha);
+  ASSERT_EQ(first, 12u);
   Xoshiro256 rng(9);
   const auto slower = compare_rounds(rng, 12, 1.20, 0.01);
-  EXPECT_EQ(classify_change(summarize_change(slower, options), 0.03), ChangeVerdict::regressed);
-  EXPECT_TRUE(change_decided(slower, policy, 0.03, options));
+  EXPECT_EQ(classify_change(summarize_change(slower, options, levels), 0.03),
+            ChangeVerdict::regressed);
+  EXPECT_TRUE(change_decided(slower, policy, 0.03, options, levels));
   const auto same = compare_rounds(rng, 12, 1.0, 0.002);
-  EXPECT_TRUE(change_decided(same, policy, 0.03, options));
-  // Five rounds are too few for a 95% interval of the median: INCONCLUSIVE whatever the numbers.
-  const auto few = compare_rounds(rng, 5, 1.20, 0.01);
-  EXPECT_FALSE(change_decided(few, policy, 0.03, options));
+  EXPECT_TRUE(change_decided(same, policy, 0.03, options, levels));
+  // Before its 12th round the decision sequence is unbounded: +20% is not yet REGRESSED (and
+  // not UNCHANGED either), although one look at 95% would call it so from the 6th.
+  const auto few = compare_rounds(rng, 11, 1.20, 0.01);
+  EXPECT_EQ(classify_change(summarize_change(few, options), 0.03), ChangeVerdict::regressed);
+  EXPECT_FALSE(change_decided(few, policy, 0.03, options, levels));
   // Noise far beyond the limit: no verdict yet.
   const auto noisy = compare_rounds(rng, 12, 1.03, 0.3);
-  EXPECT_FALSE(change_decided(noisy, policy, 0.03, options));
+  EXPECT_FALSE(change_decided(noisy, policy, 0.03, options, levels));
 }
 
 TEST(StoppingRule, DecideStoppingOnNumbersIsShouldStopWithTheTarget) {

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include "measure/confidence_sequence.h"
 #include "pipeline_fixture.h"
 
 namespace raygate::testing {
@@ -34,8 +35,10 @@ TEST_F(ComparePipelineTest, ASlowerHeadIsRegressedOnEveryScene) {
     ASSERT_TRUE(scene.change.has_value()) << scene.entry.id;
     EXPECT_NEAR(scene.change->change, 0.2, 1e-9);
     EXPECT_EQ(scene.change_verdict, "REGRESSED");
-    // The change's interval needs 6 rounds at 95%; with exact times the verdict is decided then.
-    EXPECT_EQ(scene.runs.rounds.size(), 6u);
+    // Two scenes share the family's 1%: each decision sequence (0.5% each side) is bounded from
+    // its 13th round, and with exact times the verdict is decided then.
+    EXPECT_EQ(min_values_for_median_sequence(0.01 / 2), 13u);
+    EXPECT_EQ(scene.runs.rounds.size(), 13u);
     EXPECT_EQ(scene.runs.stop_reason, "stop_converged");
     EXPECT_DOUBLE_EQ(scene.ratio("base")->ratio, 2.0);
     EXPECT_DOUBLE_EQ(scene.ratio("head")->ratio, 2.4);
@@ -70,6 +73,16 @@ TEST_F(ComparePipelineTest, AnUndecidedChangeGetsRoundsUntilTheBudget) {
     EXPECT_EQ(scene.runs.rounds.size(), 12u);
     EXPECT_EQ(scene.runs.stop_reason, "stop_budget_rounds");
   }
+  // One closing line names every undecided scene, its change and how wide its interval is.
+  const std::vector<std::string> undecided = progress_.lines_with("undecided (INCONCLUSIVE): ");
+  ASSERT_EQ(undecided.size(), 1u);
+  for (const SceneResult& scene : document.scenes) {
+    EXPECT_NE(undecided[0].find(scene.entry.id + " +"), std::string::npos) << undecided[0];
+  }
+  // Its 12 rounds are one short of a bounded decision sequence for two scenes.
+  EXPECT_NE(undecided[0].find("after 12 rounds, no interval yet (needs 13 rounds)"),
+            std::string::npos)
+      << undecided[0];
 }
 
 TEST_F(ComparePipelineTest, OpensWithWhatItCompares) {

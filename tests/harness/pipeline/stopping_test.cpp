@@ -6,6 +6,8 @@
 
 #include <vector>
 
+#include "../runner/fake_executor.h"
+
 namespace raygate {
 namespace {
 
@@ -36,21 +38,36 @@ std::vector<Round> compare_rounds(int count, double factor) {
 TEST(PipelineStopping, ChangeRuleStopsWhenTheVerdictIsDecided) {
   const StoppingPolicy policy;
   const ScenePolicy scene;  // 3% limit at 5% significance
-  const StopRule rule = change_stop_rule(policy, scene);
-  // Fewer than 6 rounds cannot give a 95% interval of the median: keep measuring.
-  EXPECT_EQ(rule(compare_rounds(5, 1.2), 10.0), StopDecision::continue_measuring);
-  EXPECT_EQ(rule(compare_rounds(6, 1.2), 10.0), StopDecision::stop_converged);
-  EXPECT_EQ(rule(compare_rounds(6, 1.0), 10.0), StopDecision::stop_converged);
+  // One scene of a family at 1%: the decision sequence is bounded from the 12th round, the
+  // equivalence sequence (5% each side) from the 9th.
+  const StopRule rule = change_stop_rule(policy, scene, scene_levels(scene, 0.01));
+  EXPECT_EQ(rule(compare_rounds(11, 1.2), 10.0), StopDecision::continue_measuring);
+  EXPECT_EQ(rule(compare_rounds(12, 1.2), 10.0), StopDecision::stop_converged);
+  EXPECT_EQ(rule(compare_rounds(8, 1.0), 10.0), StopDecision::continue_measuring);
+  EXPECT_EQ(rule(compare_rounds(9, 1.0), 10.0), StopDecision::stop_converged);
+  // A smaller share (six scenes) needs more rounds before a regression is called.
+  const StopRule sixth = change_stop_rule(policy, scene, scene_levels(scene, 0.01 / 6));
+  EXPECT_EQ(sixth(compare_rounds(15, 1.2), 10.0), StopDecision::continue_measuring);
+  EXPECT_EQ(sixth(compare_rounds(16, 1.2), 10.0), StopDecision::stop_converged);
+}
+
+TEST(PipelineStopping, SceneLevelsSplitTheFamilyAndKeepTheScenesSignificance) {
+  ScenePolicy scene;
+  scene.significance = 0.1;
+  const SequenceLevels levels = scene_levels(scene, 0.002);
+  EXPECT_DOUBLE_EQ(levels.decision_alpha, 0.002);
+  EXPECT_DOUBLE_EQ(levels.equivalence_alpha, 0.1);
+  EXPECT_DOUBLE_EQ(levels.one_look_confidence, 0.9);
 }
 
 TEST(PipelineStopping, ChangeRuleSpendsTheBudgetOnAnInconclusiveScene) {
   StoppingPolicy policy;
-  policy.max_rounds = 8;
+  policy.max_rounds = 20;
   policy.max_seconds = 100.0;
   const ScenePolicy scene;
-  const StopRule rule = change_stop_rule(policy, scene);
+  const StopRule rule = change_stop_rule(policy, scene, scene_levels(scene, 0.01));
   // Alternating +1% / +5%: the interval straddles the 3% limit, so no verdict.
-  std::vector<Round> rounds = compare_rounds(7, 1.0);
+  std::vector<Round> rounds = compare_rounds(19, 1.0);
   for (std::size_t i = 0; i < rounds.size(); ++i) {
     rounds[i].runs["head"] = timed(2.0 * (i % 2 == 0 ? 1.01 : 1.05));
   }
@@ -86,6 +103,30 @@ TEST(PipelineStopping, AVerdictOfOnesOwnDecidesOnItsOwnTerms) {
   EXPECT_EQ(rule({round}, 0.0), StopDecision::stop_converged);
   round.runs["tracer"] = timed(8.0);
   EXPECT_EQ(rule({round}, 0.0), StopDecision::continue_measuring);
+}
+
+TEST(PipelineStopping, SuiteBudgetGivesEachSceneItsShareOfWhatIsLeft) {
+  StoppingPolicy policy;
+  policy.max_seconds = 100.0;
+  policy.max_minutes = 6.0;  // 360 s for 4 scenes
+  testing::FakeClock clock;
+  SuiteBudget budget(policy, 4, clock);
+  EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, 90.0);
+  clock.advance(30.0);  // the first scene decided early: its unused 60 s go to the other three
+  EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, 100.0);  // 110 s, but --max-seconds is 100
+  clock.advance(300.0);
+  EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, 15.0);  // 30 s left for two
+  clock.advance(40.0);
+  EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, 0.0);  // spent: one round, then stop
+  EXPECT_EQ(budget.next_scene().max_rounds, policy.max_rounds);
+}
+
+TEST(PipelineStopping, SuiteBudgetOfZeroMinutesLeavesThePolicyAlone) {
+  StoppingPolicy policy;
+  testing::FakeClock clock;
+  SuiteBudget budget(policy, 2, clock);
+  clock.advance(1e6);
+  EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, policy.max_seconds);
 }
 
 }  // namespace

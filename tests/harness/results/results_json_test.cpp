@@ -123,6 +123,12 @@ SceneResult compared_scene() {
   c.rounds = 2;
   c.change = 0.0625;
   c.change_interval = {0.03125, 0.09375};
+  c.confidence = 0.996;  // a confidence sequence with its equivalence and one-look intervals
+  c.interval_kind = ChangeIntervalKind::confidence_sequence;
+  c.equivalence_interval = {0.046875, 0.078125};
+  c.equivalence_confidence = 0.9;
+  c.one_look_interval = {0.0546875, 0.0703125};
+  c.one_look_confidence = 0.95;
   c.log_change_median = 0.06;
   c.log_change_mad_scaled = 0.01;
   c.base = make_ratio(0.5);
@@ -232,6 +238,12 @@ void expect_same(const ChangeSummary& a, const ChangeSummary& b) {
   EXPECT_EQ(a.rounds, b.rounds);
   EXPECT_DOUBLE_EQ(a.change, b.change);
   expect_same(a.change_interval, b.change_interval);
+  EXPECT_DOUBLE_EQ(a.confidence, b.confidence);
+  EXPECT_EQ(a.interval_kind, b.interval_kind);
+  expect_same(a.equivalence_interval, b.equivalence_interval);
+  EXPECT_DOUBLE_EQ(a.equivalence_confidence, b.equivalence_confidence);
+  expect_same(a.one_look_interval, b.one_look_interval);
+  EXPECT_DOUBLE_EQ(a.one_look_confidence, b.one_look_confidence);
   EXPECT_DOUBLE_EQ(a.log_change_median, b.log_change_median);
   EXPECT_DOUBLE_EQ(a.log_change_mad_scaled, b.log_change_mad_scaled);
   expect_same(a.base, b.base);
@@ -349,6 +361,23 @@ TEST(ResultsJson, FailureIsStoredWithItsRoleAndRun) {
   EXPECT_EQ(failure["run"]["outcome"], "killed by signal 6 (ABRT)");
   EXPECT_EQ(failure["run"]["log"], "/w/t/round-002/log.txt");
   EXPECT_TRUE(j["scenes"][0]["failure"].is_null());
+}
+
+TEST(ResultsJson, ChangeIntervalKindIsCheckedAndDefaultsForOldDocuments) {
+  json j = to_json(full_document());
+  json& change = j["scenes"][2]["change"];
+  EXPECT_EQ(change["interval_kind"], "confidence-sequence");
+  change["interval_kind"] = "bootstrap";
+  const std::string message = usage_error(j);
+  EXPECT_NE(message.find("shard-7.json"), std::string::npos) << message;
+  EXPECT_NE(message.find("unknown interval \"bootstrap\""), std::string::npos) << message;
+  // A document from before the sequences: no kind, no extra intervals, the one-look rule.
+  for (const char* key : {"interval_kind", "equivalence_interval", "equivalence_confidence",
+                          "one_look_interval", "one_look_confidence"}) {
+    change.erase(key);
+  }
+  const ResultsDocument old = results_from_json(j, "old.json");
+  EXPECT_EQ(old.scenes[2].change->interval_kind, ChangeIntervalKind::order_statistic);
 }
 
 TEST(ResultsJson, NewerSchemaVersionAsksForAnUpgrade) {

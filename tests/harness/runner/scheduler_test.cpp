@@ -360,8 +360,36 @@ TEST_F(DuetTest, SuccessInNoMeasurableTimeFailsInADuetToo) {
   EXPECT_EQ(executor_.calls()[2].batch, executor_.calls()[3].batch);  // it was a duet round
 }
 
-TEST_F(DuetTest, ThreeContendersAreAUsageError) {
-  EXPECT_THROW(measure({&baseline_, &base_, &head_}, stop_after(1)), UsageError);
+TEST_F(DuetTest, ThreeContendersRunTheBaselineAloneThenBaseAndHeadTogether) {
+  const SceneRuns runs = measure({&baseline_, &base_, &head_}, stop_after(2));
+  const std::vector<Call>& calls = executor_.calls();
+  ASSERT_EQ(calls.size(), 6u);
+  for (std::size_t i = 0; i < calls.size(); i += 3) {
+    EXPECT_EQ(calls[i].role, "baseline");
+    EXPECT_NE(calls[i].batch, calls[i + 1].batch) << "the baseline runs alone";
+    EXPECT_EQ(calls[i + 1].batch, calls[i + 2].batch) << "base and head start together";
+  }
+  using Cpus = std::vector<std::vector<int>>;
+  std::map<std::string, Cpus> cpus;
+  for (const Call& call : calls) cpus[call.role].push_back(call.cpus);
+  EXPECT_EQ(cpus["baseline"], (Cpus{{2}, {5}}));  // the round's first CPU
+  EXPECT_EQ(cpus["base"], (Cpus{{2}, {5}}));
+  EXPECT_EQ(cpus["head"], (Cpus{{5}, {2}}));
+  EXPECT_EQ(runs.rounds[0].order, (Roles{"baseline", "base", "head"}));
+  EXPECT_EQ(runs.rounds[1].order, (Roles{"baseline", "head", "base"}));
+  EXPECT_EQ(runs.rounds[1].runs.size(), 3u);
+}
+
+TEST_F(DuetTest, ABaselineFailingAloneStopsTheSceneBeforeThePairStarts) {
+  executor_.script("baseline", 1, killed_by(SIGSEGV));
+  const SceneRuns runs = measure({&baseline_, &base_, &head_}, stop_after(3));
+  ASSERT_TRUE(runs.failed());
+  EXPECT_EQ(runs.failed_role, "baseline");
+  EXPECT_EQ(executor_.calls().size(), 1u);
+}
+
+TEST_F(DuetTest, FourContendersAreAUsageError) {
+  EXPECT_THROW(measure({&baseline_, &base_, &head_, &tracer_}, stop_after(1)), UsageError);
   EXPECT_TRUE(executor_.calls().empty());
 }
 

@@ -15,14 +15,21 @@ struct CliRun {
   std::string out;  // stdout and stderr merged
 };
 
-inline CliRun run_raygate(const std::vector<std::string>& args, const TempDir& dir) {
+// raygate with `args` in `dir`, standard output and error merged into <dir>/cli.log.
+inline ProcessSpec raygate_spec(const std::vector<std::string>& args, const TempDir& dir,
+                                std::chrono::minutes timeout = std::chrono::minutes(5)) {
   ProcessSpec spec;
   spec.argv = {RAYGATE_EXE};
   spec.argv.insert(spec.argv.end(), args.begin(), args.end());
   spec.stdout_path = dir.path() / "cli.log";
   spec.stderr_path = spec.stdout_path;
   spec.working_directory = dir.path();
-  spec.timeout = std::chrono::minutes(5);
+  spec.timeout = timeout;
+  return spec;
+}
+
+inline CliRun run_raygate(const std::vector<std::string>& args, const TempDir& dir) {
+  const ProcessSpec spec = raygate_spec(args, dir);
   const ProcessResult r = run_process(spec);
   return {r.outcome == ProcessOutcome::exited ? r.exit_code : -1, read_file(spec.stdout_path)};
 }

@@ -116,13 +116,7 @@ class InterruptCli : public TracerRepoTest {
   // unless 0); returns the exit code, or -1 if raygate died of a signal.
   int signal_when(const std::vector<std::string>& args, const fs::path& ready, int sig,
                   int second = 0) {
-    ProcessSpec spec;
-    spec.argv = {RAYGATE_EXE};
-    spec.argv.insert(spec.argv.end(), args.begin(), args.end());
-    spec.stdout_path = dir_.path() / "cli.log";
-    spec.stderr_path = spec.stdout_path;
-    spec.working_directory = dir_.path();
-    spec.timeout = std::chrono::minutes(4);
+    const ProcessSpec spec = raygate_spec(args, dir_, std::chrono::minutes(4));
     Process raygate = Process::start(spec);
     EXPECT_TRUE(appears(ready, raygate)) << read_file(spec.stdout_path);
     ::kill(raygate.pid(), sig);

@@ -78,13 +78,7 @@ class SimCli : public TracerRepoTest {
                                   cache_.string(), "--golden-dir", "no-goldens",
                                   "--timing",    "sim"};
     args.insert(args.end(), extra.begin(), extra.end());
-    ProcessSpec spec;
-    spec.argv = {RAYGATE_EXE};
-    spec.argv.insert(spec.argv.end(), args.begin(), args.end());
-    spec.stdout_path = dir_.path() / "cli.log";
-    spec.stderr_path = spec.stdout_path;
-    spec.working_directory = dir_.path();
-    spec.timeout = std::chrono::minutes(5);
+    ProcessSpec spec = raygate_spec(args, dir_);
     if (!path_first.empty()) {
       spec.environment["PATH"] = path_first.string() + ":" + std::getenv("PATH");
     }

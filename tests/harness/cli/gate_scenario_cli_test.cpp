@@ -1,16 +1,18 @@
-// The gate's acceptance scenario at the default policy (a 3% slowdown limit), end to end on a
-// throwaway repository of the fixture tracer: base; the same with ~10% more work; the same with
-// wrong shading; the same with ~1% more work. A/A passes, +10% and the shading change exit 1
-// for their own reasons, and bisect finds the +10% commit among 8 with the +1% commits before
-// it judged good. (A separate "+1% passes" compare was dropped: on this VM a true +1.5% once
-// measured +13.9% [+3.4%, +20.0%] over 15 rounds, so as a CI test it failed about one run in
-// three. How often the gate flags small or no changes is measured by bench/gate-reliability.)
+// The gate's acceptance scenario at the default policy (a 3% slowdown limit), end to end in timed
+// mode on a throwaway repository of the fixture tracer: base; the same; the same with twice the
+// work; the same with wrong shading. A/A passes, and the slower and the wrongly shaded heads exit
+// 1, each for its own reason.
 //
-// These tests judge real timings at a 3% limit, so CTest runs them alone (RUN_SERIAL): a
-// parallel test sharing the 2 CPUs once made an unchanged commit of a 0.1 s tracer measure
-// +18.6%. The scenes are sized so one tracer run takes about 0.2 s, which keeps process start-up
-// jitter well under 1%. How often the gate errs on this machine is measured, not tested:
-// bench/gate-reliability (README, "How reliable is the gate?").
+// What these tests assert holds on any runner: an unchanged commit is not called slower (the
+// confidence sequences' error rate, docs/statistics.md), and +100% is told apart from noise in 30
+// rounds even on the shared CI runner, whose 30-round interval for a +10% head once spanned -21%
+// to +52%. How often the gate catches +3% or +5% on a given machine is measured, not asserted:
+// bench/gate-reliability (README, "How reliable is the gate?"). The exact versions, +1% and a
+// +10% commit bisected among eight, run under cachegrind in sim_cli_test.cpp.
+//
+// CTest runs these tests alone (RUN_SERIAL): a parallel test sharing the 2 CPUs once made an
+// unchanged commit of a 0.1 s tracer measure +18.6%. The scenes are sized so one tracer run takes
+// about 0.2 s, which keeps process start-up jitter well under 1%.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -81,25 +83,23 @@ TEST_F(GateScenario, TheSameCommitTwicePasses) {
   }
 }
 
-TEST_F(GateScenario, TenPercentSlowerFailsOnSpeed) {
+TEST_F(GateScenario, TwiceSlowerFailsOnSpeed) {
   const std::string base = commit(sources_.fast, "tracer");
-  const std::string head = commit(retracing(sources_.fast, 10), "retrace every 10th pixel");
+  const std::string head = commit(retracing(sources_.fast, 1), "retrace every pixel");
   const CliRun r = compare(base, head);
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_TRUE(has(r.out, "slower: head vs base +")) << r.out;
   EXPECT_FALSE(has(r.out, "image head vs base")) << r.out;  // the same picture
-  // Every scene is slower; at least one is proven so. On a noisy runner a scene may use up its
-  // 30 rounds undecided (INCONCLUSIVE, a warning): bench/gate-reliability measures how often.
+  // Every scene is slower, and proven so unless its interval is wider than a doubling; the
+  // estimate is about +100%, not a different program.
   int regressed = 0;
   for (const SceneResult& scene : document().scenes) {
     ASSERT_TRUE(scene.change) << scene.entry.id;
     EXPECT_TRUE(scene.change_verdict == "REGRESSED" || scene.change_verdict == "INCONCLUSIVE")
         << scene.entry.id << " " << scene.change_verdict << "\n" << r.out;
-    EXPECT_GT(scene.change->change, 0.0) << scene.entry.id;
-    if (scene.change_verdict != "REGRESSED") continue;
-    ++regressed;
-    EXPECT_GT(scene.change->change, 0.03) << scene.entry.id;
-    EXPECT_LT(scene.change->change, 0.25) << scene.entry.id;  // ~10%, not a different program
+    EXPECT_GT(scene.change->change, 0.3) << scene.entry.id;
+    EXPECT_LT(scene.change->change, 2.5) << scene.entry.id;
+    if (scene.change_verdict == "REGRESSED") ++regressed;
   }
   EXPECT_GE(regressed, 1) << r.out;
 }
@@ -119,31 +119,6 @@ TEST_F(GateScenario, WrongShadingFailsOnTheImageNotOnSpeed) {
     }
     EXPECT_TRUE(base_check_failed) << scene.entry.id;
   }
-}
-
-TEST_F(GateScenario, BisectFindsTheTenPercentCommitAmongEight) {
-  const std::string good = commit(sources_.fast, "tracer");
-  repo_.write("README", "a tracer\n");
-  commit(sources_.fast, "readme");
-  const std::string one_percent = retracing(sources_.fast, 100);
-  commit(one_percent, "retrace every 100th pixel");
-  repo_.write("README", "a ray tracer\n");
-  commit(one_percent, "readme: say what it traces");
-  const std::string eleven_percent = retracing(sources_.fast, 9);  // +1% then +10% on top
-  const std::string culprit = commit(eleven_percent, "retrace every 9th pixel");
-  repo_.write("README", "a ray tracer for NFF scenes\n");
-  commit(eleven_percent, "readme: name the format");
-  repo_.write("LICENSE", "public domain\n");
-  commit(eleven_percent, "license");
-  repo_.write("README", "a small ray tracer for NFF scenes\n");
-  const std::string bad = commit(eleven_percent, "readme: small");
-  std::vector<std::string> args{"bisect", "--good", good, "--bad", bad, "--scene", "tetra"};
-  const std::vector<std::string> shared = common();
-  args.insert(args.end(), shared.begin(), shared.end());
-  const CliRun r = run_raygate(args, dir_);
-  EXPECT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_TRUE(has(r.out, "bisecting 7 commits after")) << r.out;
-  EXPECT_TRUE(has(r.out, "first bad commit: " + culprit)) << r.out;
 }
 
 }  // namespace

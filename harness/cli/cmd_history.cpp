@@ -8,7 +8,7 @@
 
 #include "cli/commands.h"
 #include "cli/console.h"
-#include "cli/history_view.h"
+#include "history/history_view.h"
 #include "cli/store_commands.h"
 #include "cli/store_options.h"
 #include "core/fs.h"

@@ -1,7 +1,5 @@
 #include "cli/report_options.h"
 
-#include "cli/history_view.h"
-
 #include <fmt/core.h>
 #include <unistd.h>
 
@@ -11,13 +9,8 @@
 
 #include "cli/progress.h"
 #include "core/error.h"
+#include "history/store_trends.h"
 #include "report/reporter.h"
-#include "store/postgres_url.h"
-#include "results/series.h"
-#include "store/store.h"
-
-#include <algorithm>
-#include <map>
 
 namespace raygate::cli {
 
@@ -77,51 +70,6 @@ void check_output_path(const std::filesystem::path& path, const std::string& opt
   }
 }
 
-std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
-                                           const ResultsDocument& document, std::size_t commits) {
-  const bool team_store = is_postgresql_url(store.string());
-  if (store.empty() || (!team_store && !std::filesystem::exists(store))) return {};
-  // The document's own series, scene by scene: another tracer's, adapter's or setting's history
-  // is not this one's trend.
-  const RevisionRecord* measured = document.revision("tracer");
-  if (measured == nullptr) measured = document.revision("head");
-  if (measured == nullptr) return {};
-  std::map<std::string, std::string> wanted_series;  // scene id -> series id
-  for (const SceneResult& scene : document.scenes) {
-    wanted_series[scene.entry.id] = series_key(document, *measured, scene).id();
-  }
-  std::vector<HistoryRow> rows;
-  try {
-    HistoryQuery query;
-    query.role = "any";
-    query.last_commits = commits;
-    query.repository = repository_key(*measured);
-    query.adapter = measured->adapter_name;
-    query.suite = document.suite;
-    rows = open_store(store.string(), StoreOpen::must_exist)->history(query);
-  } catch (const Error& e) {
-    fmt::print(stderr, "warning: no trends from {}: {}\n", redact_postgresql_url(store.string()),
-               e.what());
-    return {};
-  }
-  std::sort(rows.begin(), rows.end(), [](const HistoryRow& a, const HistoryRow& b) {
-    return a.commit_unix.value_or(0) < b.commit_unix.value_or(0);
-  });
-  std::map<std::string, TrendSeries> by_scene;
-  for (const HistoryRow& row : rows) {
-    const auto wanted = wanted_series.find(row.scene_id);
-    if (!row.ratio || wanted == wanted_series.end() || row.series_id != wanted->second) continue;
-    TrendSeries& series = by_scene[row.scene_id];
-    series.scene = row.scene_id;
-    series.points.push_back(trend_point(row));
-  }
-  std::vector<TrendSeries> trends;
-  for (auto& [scene, series] : by_scene) {
-    if (series.points.size() >= 2) trends.push_back(std::move(series));
-  }
-  return trends;
-}
-
 int record_gate_and_report(const ResultsDocument& document, const std::filesystem::path& path,
                            const RecordArgs& record, const std::filesystem::path& cache_dir,
                            const GatePolicy& policy, const std::vector<std::string>& reports,
@@ -129,8 +77,9 @@ int record_gate_and_report(const ResultsDocument& document, const std::filesyste
   console.info(fmt::format("results: {}", path.string()));
   record_results(document, record, cache_dir, path, console);
   const GateResult gate = evaluate_gate(document, policy);
-  emit_reports(document, gate, policy, reports, path, console,
-               trends_from_store(record_store_path(record, cache_dir), document));
+  StoreTrends trends = trends_from_store(record_store_path(record, cache_dir), document);
+  if (!trends.warning.empty()) console.warning(trends.warning);
+  emit_reports(document, gate, policy, reports, path, console, std::move(trends.trends));
   return gate.exit_code;
 }
 

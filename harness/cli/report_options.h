@@ -32,13 +32,6 @@ void check_report_specs(const std::vector<std::string>& reports);
 // not writable. An empty path (the default place) passes.
 void check_output_path(const std::filesystem::path& path, const std::string& option);
 
-// The normalized ratio of each of the document's scenes over the last `commits` commits in the
-// store (oldest first), within the scene's series (results/series.h: the same repository,
-// adapter, suite, scene settings, timing and baseline); empty when there is no store.
-std::vector<TrendSeries> trends_from_store(const std::filesystem::path& store,
-                                           const ResultsDocument& document,
-                                           std::size_t commits = 20);
-
 // The end of every command that writes a document (run, compare, merge): where the document is
 // said, the document recorded in the store (store_options.h), gated by `policy`, and reported;
 // returns the gate's exit code.

@@ -5,10 +5,10 @@
 
 #include <vector>
 
-#include "cli/history_view.h"
+#include "history/history_view.h"
 #include "report/html_parts.h"
 
-namespace raygate::cli {
+namespace raygate {
 
 namespace {
 
@@ -55,22 +55,6 @@ std::string table_section(const HistoryTable& table) {
 
 }  // namespace
 
-TrendPoint trend_point(const HistoryRow& row) {
-  TrendPoint point;
-  point.short_sha = row.short_sha;
-  point.subject = row.subject;
-  point.commit_time = row.commit_time;
-  point.ratio = *row.ratio;
-  point.lower = row.ratio_lower.value_or(*row.ratio);
-  point.upper = row.ratio_upper.value_or(*row.ratio);
-  if (row.image_max_error) {
-    point.note = fmt::format("image max error {:.4f} ({})", *row.image_max_error,
-                             row.image_verdict);
-  }
-  point.flagged = row.image_verdict == "fail";
-  return point;
-}
-
 std::string history_html(const HistoryView& view) {
   std::string body = fmt::format(
       "<h1>raygate history</h1>\n<p>From <code>{}</code> (role {}{}), one part per repository "
@@ -89,4 +73,4 @@ std::string history_html(const HistoryView& view) {
          "</style>\n</head>\n<body>\n<div class=\"page\">\n" + body + "</div>\n</body>\n</html>\n";
 }
 
-}  // namespace raygate::cli
+}  // namespace raygate

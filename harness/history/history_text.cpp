@@ -1,12 +1,11 @@
-// The history table and its JSON form.
-#include "cli/history_view.h"
+// The history table for the terminal and its JSON form.
+#include "history/history_view.h"
 
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <set>
 
-namespace raygate::cli {
+namespace raygate {
 
 namespace {
 
@@ -207,37 +206,6 @@ nlohmann::json drift_json(const std::optional<MachineDrift>& drift) {
 
 }  // namespace
 
-HistoryView make_history_view(const std::vector<HistoryRow>& measurements,
-                              std::size_t last_commits,
-                              const std::vector<HistoryRow>& machine_rows) {
-  HistoryView view;
-  for (HistoryGroup& group : group_by_repository_and_adapter(measurements)) {
-    HistoryTable table;
-    table.repository_key = group.repository_key;
-    table.adapter_name = group.adapter_name;
-    const std::vector<HistoryRow> rows = latest_per_commit(std::move(group.rows), last_commits);
-    table.lines = group_by_commit(rows);
-    table.columns = series_columns(rows);
-    for (const SeriesColumn& column : table.columns) {
-      table.trends.push_back(scene_trend(table.lines, column));
-    }
-    std::set<std::string> baselines;
-    for (const HistoryRow& row : rows) baselines.insert(row.baseline_sha256);
-    table.baseline_versions = baselines.size();
-    view.tables.push_back(std::move(table));
-  }
-  view.drift = detect_machine_drift(machine_rows);
-  return view;
-}
-
-std::string short_repository(const std::string& repository_key) {
-  constexpr std::string_view kRoot = "root:";
-  if (repository_key.starts_with(kRoot) && repository_key.size() > kRoot.size() + 12) {
-    return repository_key.substr(0, kRoot.size() + 12);
-  }
-  return repository_key;
-}
-
 std::string history_table(const HistoryView& view) {
   const std::string scope =
       fmt::format("role {}{}", view.role, view.branch.empty() ? "" : ", branch " + view.branch);
@@ -281,4 +249,4 @@ std::string truncate_text(const std::string& text, std::size_t max_code_points) 
   return text.substr(0, end) + "…";
 }
 
-}  // namespace raygate::cli
+}  // namespace raygate

@@ -12,7 +12,7 @@
 #include "report/reporter.h"
 #include "store/history.h"
 
-namespace raygate::cli {
+namespace raygate {
 
 // One repository and adapter: its commits, its series as columns, each series' trend.
 struct HistoryTable {
@@ -52,4 +52,4 @@ TrendPoint trend_point(const HistoryRow& row);
 std::string pad_right(const std::string& text, std::size_t width);
 std::string truncate_text(const std::string& text, std::size_t max_code_points);
 
-}  // namespace raygate::cli
+}  // namespace raygate

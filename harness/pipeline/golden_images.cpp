@@ -1,0 +1,226 @@
+#include "pipeline/golden_images.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <fmt/core.h>
+
+#include <cctype>
+#include <utility>
+
+#include "compare/golden.h"
+#include "compare/image_compare.h"
+#include "core/error.h"
+#include "core/path_component.h"
+#include "core/paths.h"
+#include "core/sha256.h"
+#include "results/results.h"
+#include "runner/scene_files.h"
+
+namespace raygate {
+
+namespace {
+
+// Renders one suite scene with the baseline into the work directory; a failed render is an
+// infrastructure failure (the instrument itself broke).
+BaselineRender render_scene(const BaselineGoldens& goldens, const SuiteScene& scene) {
+  const std::filesystem::path nff = prepare_scene(scene, goldens.work_dir / "scenes");
+  BaselineOptions options;
+  options.sampling = goldens.suite.sampling;
+  BaselineRender render = goldens.baseline.render(
+      nff, goldens.work_dir / "renders" / (scene.id + ".png"), options);
+  if (!render.process.succeeded()) {
+    throw InfraError("raygate-baseline " + render.process.describe() + " on " + nff.string() +
+                     "; log: " + render.log.string() + "\n" + log_tail(render.log, 10));
+  }
+  return render;
+}
+
+const SceneResult* find_scene(const ResultsDocument& document, const std::string& id) {
+  for (const SceneResult& scene : document.scenes) {
+    if (scene.entry.id == id) return &scene;
+  }
+  return nullptr;
+}
+
+// The golden's file is named <id><extension of the run's image>: the extension must be an
+// image's, or a crafted document could name the copy "manifest.json" or leave it extension-less.
+void checked_image_extension(const std::filesystem::path& image, const std::string& field) {
+  std::string extension = image.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const char* known : {".png", ".ppm", ".pgm", ".pfm", ".exr", ".hdr", ".tga", ".bmp",
+                            ".tif", ".tiff", ".jpg", ".jpeg"}) {
+    if (extension == known) return;
+  }
+  throw UsageError(field + ", " + image.string() + ", has no image file extension (.png, .ppm, "
+                   ".exr, ...); the golden copy is named after it");
+}
+
+// A golden dir takes one suite's goldens of one adapter (or of the baseline).
+void check_manifest_suite(const GoldenManifest& manifest, const std::filesystem::path& golden_dir,
+                          const std::string& suite) {
+  if (!manifest.suite.empty() && manifest.suite != suite) {
+    throw UsageError(golden_dir.string() + " holds goldens of suite '" + manifest.suite +
+                     "', not '" + suite + "' (use --golden-dir)");
+  }
+}
+
+void check_manifest_adapter(const GoldenManifest& manifest,
+                            const std::filesystem::path& golden_dir, const std::string& adapter) {
+  if (manifest.tracer && manifest.tracer->adapter != adapter) {
+    throw UsageError(golden_dir.string() + " holds goldens of adapter '" +
+                     manifest.tracer->adapter + "', not '" + adapter + "' (use --golden-dir)");
+  }
+}
+
+using ChosenImages = std::vector<std::pair<const SceneResult*, std::filesystem::path>>;
+
+// Each scene's image of `role`, every one checked before any is blessed.
+ChosenImages chosen_images(const ResultsDocument& document, const BlessFromRun& request) {
+  const std::string results = request.results.string();
+  std::vector<std::string> ids = request.scene_ids;
+  if (ids.empty()) {
+    for (const SceneResult& scene : document.scenes) ids.push_back(scene.entry.id);
+  }
+  if (ids.empty()) throw UsageError(results + " holds no scenes");
+  ChosenImages chosen;
+  for (const std::string& id : ids) {
+    const SceneResult* scene = find_scene(document, id);
+    if (scene == nullptr) throw UsageError("scene '" + id + "' is not in " + results);
+    const RunRecord* run = scene->runs.first_run(request.role);
+    if (run == nullptr) {
+      throw UsageError(results + ": no successful " + request.role + " run of '" + id +
+                       "', so no image to bless");
+    }
+    if (!std::filesystem::is_regular_file(run->image)) {
+      throw UsageError(results + ": the " + request.role + " image of '" + id + "', " +
+                       run->image.string() + ", is gone (was the run directory removed?)");
+    }
+    checked_component(id, results + ": scenes[].entry.id");
+    checked_image_extension(run->image,
+                            results + ": the " + request.role + " image of '" + id + "'");
+    chosen.emplace_back(scene, run->image);
+  }
+  return chosen;
+}
+
+}  // namespace
+
+BaselineGoldens open_baseline_goldens(const std::string& suite_name,
+                                      const std::vector<std::string>& scene_ids,
+                                      const std::filesystem::path& golden_dir,
+                                      const std::filesystem::path& work_dir,
+                                      const std::filesystem::path& baseline) {
+  const ToolPaths tools = locate_tools(baseline);
+  Suite suite = load_suite(suite_name, tools.data_root);
+  std::vector<SuiteScene> selected = select_scenes(suite, scene_ids);
+  return {std::move(suite), std::move(selected),
+          golden_dir.empty() ? tools.data_root / "golden" / kBaselineGoldens : golden_dir,
+          work_dir, BaselineTool(tools.baseline)};
+}
+
+GoldenVerification verify_baseline_goldens(const BaselineGoldens& goldens,
+                                           ProgressSink& progress) {
+  const GoldenManifest manifest = load_golden_manifest(goldens.golden_dir);
+  const std::string current_hash = goldens.baseline.source_hash();
+  if (!manifest.baseline_source_sha256.empty() && manifest.baseline_source_sha256 != current_hash) {
+    progress.line(fmt::format("note: goldens were blessed with baseline source {}, this baseline is {}",
+                              manifest.baseline_source_sha256.substr(0, 12),
+                              current_hash.substr(0, 12)));
+  }
+  GoldenVerification counts;
+  for (const SuiteScene& scene : goldens.selected) {
+    const GoldenEntry* entry = manifest.find(scene.id);
+    if (entry == nullptr || !std::filesystem::exists(goldens.golden_dir / entry->file)) {
+      progress.line(fmt::format(
+          "MISSING   {:<12} no golden image; create it with: raygate golden bless {}", scene.id,
+          scene.id));
+      ++counts.missing;
+      continue;
+    }
+    const BaselineRender render = render_scene(goldens, scene);
+    const ImageMetrics m = compare_images(render.image, goldens.golden_dir / entry->file, {});
+    if (m.identical()) {
+      progress.line(fmt::format("ok        {:<12} identical ({:.2f} s)", scene.id,
+                                render.process.wall_seconds));
+      ++counts.identical;
+      continue;
+    }
+    ++counts.different;
+    const std::filesystem::path evidence = goldens.work_dir / "evidence";
+    write_evidence(render.image, goldens.golden_dir / entry->file, evidence, scene.id);
+    progress.line(fmt::format("DIFFERENT {:<12} {}; evidence in {}", scene.id, summarize(m),
+                              evidence.string()));
+  }
+  return counts;
+}
+
+void bless_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progress) {
+  GoldenManifest manifest = load_golden_manifest(goldens.golden_dir);
+  check_manifest_suite(manifest, goldens.golden_dir, goldens.suite.name);
+  if (manifest.tracer) {
+    throw UsageError(goldens.golden_dir.string() + " holds " + manifest.tracer->adapter +
+                     "'s goldens, blessed from a run; the baseline's belong elsewhere "
+                     "(use --golden-dir)");
+  }
+  manifest.suite = goldens.suite.name;
+  manifest.baseline_version = goldens.baseline.version_line();
+  manifest.baseline_source_sha256 = goldens.baseline.source_hash();
+  for (const SuiteScene& scene : goldens.selected) {
+    const BaselineRender render = render_scene(goldens, scene);
+    const std::string file = scene.id + ".png";
+    std::filesystem::create_directories(goldens.golden_dir);
+    std::filesystem::copy_file(render.image, goldens.golden_dir / file,
+                               std::filesystem::copy_options::overwrite_existing);
+    manifest.upsert({scene.id, scene.scene, scene.size, render.stats.value("width", 0),
+                     render.stats.value("height", 0), goldens.suite.sampling, "none", file,
+                     sha256_file_hex(goldens.golden_dir / file)});
+    save_golden_manifest(manifest, goldens.golden_dir);  // an interrupted bless keeps its work
+    progress.line(fmt::format("blessed   {:<12} {} ({:.2f} s)", scene.id,
+                              (goldens.golden_dir / file).string(), render.process.wall_seconds));
+  }
+}
+
+void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress) {
+  const ResultsDocument document = read_results(request.results);
+  const std::string results = request.results.string();
+  const RevisionRecord* revision = document.revision(request.role);
+  if (revision == nullptr) {
+    throw UsageError(results + " has no revision with role '" + request.role +
+                     "' (use --role tracer, base or head)");
+  }
+  checked_component(revision->adapter_name,
+                    results + ": revisions[" + request.role + "].adapter.name");
+  const std::filesystem::path golden_dir =
+      request.golden_dir.empty()
+          ? locate_tools(request.baseline).data_root / "golden" / revision->adapter_name
+          : request.golden_dir;
+  GoldenManifest manifest = load_golden_manifest(golden_dir);
+  check_manifest_suite(manifest, golden_dir, document.suite);
+  check_manifest_adapter(manifest, golden_dir, revision->adapter_name);
+  const ChosenImages chosen = chosen_images(document, request);
+
+  manifest.suite = document.suite;
+  manifest.baseline_version = document.baseline.version;
+  manifest.baseline_source_sha256 = document.baseline.source_sha256;
+  manifest.tracer = GoldenProvenance{revision->adapter_name, revision->adapter_hash,
+                                     revision->worktree.revision, revision->worktree.sha,
+                                     revision->worktree.dirty, results, document.started_at};
+  std::filesystem::create_directories(golden_dir);
+  for (const auto& [scene, image] : chosen) {
+    const SuiteScene& e = scene->entry;
+    OIIO_NAMESPACE::ImageBuf decoded(image.string());
+    if (!decoded.init_spec(image.string(), 0, 0)) {
+      throw UsageError(image.string() + ": cannot read image: " + decoded.geterror());
+    }
+    const std::string file = e.id + image.extension().string();
+    std::filesystem::copy_file(image, golden_dir / file,
+                               std::filesystem::copy_options::overwrite_existing);
+    // The hash is provenance only: goldens are compared by decoded pixels, never by bytes.
+    manifest.upsert({e.id, e.scene, e.size, decoded.spec().width, decoded.spec().height,
+                     document.baseline.sampling, "", file, sha256_file_hex(golden_dir / file)});
+    save_golden_manifest(manifest, golden_dir);
+    progress.line(fmt::format("blessed   {:<12} {} (from {})", e.id, (golden_dir / file).string(),
+                              image.string()));
+  }
+}
+
+}  // namespace raygate

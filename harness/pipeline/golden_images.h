@@ -1,0 +1,62 @@
+// The golden images as a stage (docs/gate.md): verify the baseline's goldens by rendering again
+// and demanding identical pixels, bless the baseline's (only the scenes asked for, never as a side
+// effect), and bless a foreign tracer's images from a run it already made and checked. Each says
+// one line per scene through the ProgressSink; `raygate golden` prints them on standard output.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "pipeline/progress.h"
+#include "runner/baseline_tool.h"
+#include "runner/suite.h"
+
+namespace raygate {
+
+// The baseline's goldens of a suite's scenes, and where renders and evidence go.
+struct BaselineGoldens {
+  Suite suite;
+  std::vector<SuiteScene> selected;
+  std::filesystem::path golden_dir;
+  std::filesystem::path work_dir;
+  BaselineTool baseline;
+};
+
+// `suite` by name or file; `scene_ids` empty: all; `golden_dir` empty: the baseline's
+// golden/raygate-baseline/ under the data root; `baseline` empty: the one beside raygate.
+BaselineGoldens open_baseline_goldens(const std::string& suite,
+                                      const std::vector<std::string>& scene_ids,
+                                      const std::filesystem::path& golden_dir,
+                                      const std::filesystem::path& work_dir,
+                                      const std::filesystem::path& baseline);
+
+struct GoldenVerification {
+  std::size_t identical = 0;
+  std::size_t different = 0;  // evidence written under work_dir/evidence
+  std::size_t missing = 0;
+};
+
+// Renders each selected scene that has a golden and compares pixels; a render that fails is an
+// InfraError (the instrument itself broke).
+GoldenVerification verify_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progress);
+
+// Renders each selected scene and writes it and the manifest (after each scene, so an
+// interrupted bless keeps its work). UsageError when golden_dir holds another suite's goldens or
+// a tracer's.
+void bless_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progress);
+
+struct BlessFromRun {
+  std::filesystem::path results;  // the run's document
+  std::string role = "tracer";     // whose images: tracer, head or base
+  std::vector<std::string> scene_ids;  // empty: every scene of the document
+  std::filesystem::path golden_dir;    // empty: golden/<adapter>/ under the data root
+  std::filesystem::path baseline;      // only to find the data root
+};
+
+// Copies each chosen scene's image of `role` (its first successful run's, the image the run
+// compared) into the golden dir with the run's provenance. Every scene is checked first (known
+// id, image still there, a safe name, an image extension), so a bad one blesses nothing.
+void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress);
+
+}  // namespace raygate

@@ -3,16 +3,13 @@
 // them. Exit 0, 2 for input that is not a results document or a query that matches nothing.
 #include <fmt/core.h>
 
-#include <algorithm>
-#include <cctype>
 #include <memory>
 
 #include "cli/console.h"
 #include "cli/store_commands.h"
 #include "cli/store_options.h"
 #include "core/error.h"
-#include "core/fs.h"
-#include "core/path_component.h"
+#include "store/document_files.h"
 #include "store/store.h"
 
 namespace raygate::cli {
@@ -23,28 +20,6 @@ struct ImportArgs {
   std::string store = kDefaultStorePath;
   std::string branch;
 };
-
-// A clear refusal for JSON that is something else (an adapter, a suite, a build record).
-ResultsDocument load_results_file(const std::string& file) {
-  const std::string text = read_file(file);
-  nlohmann::json json;
-  try {
-    json = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw UsageError(
-        fmt::format("{}: not JSON ({}); import takes results documents", file, e.what()));
-  }
-  const bool looks_like_results = json.is_object() && json.contains("schema_version") &&
-                                  json.contains("revisions") && json.contains("scenes");
-  if (!looks_like_results) {
-    throw UsageError(
-        fmt::format("{}: not a raygate results document (no schema_version, "
-                    "revisions and scenes); import takes the results.json that "
-                    "`raygate run` writes",
-                    file));
-  }
-  return results_from_json(json, file);
-}
 
 int import_command(const ImportArgs& args) {
   std::vector<ResultsDocument> documents;  // all checked before any is stored
@@ -71,56 +46,6 @@ struct ExportArgs {
   std::string out;
 };
 
-std::string checked_sha_prefix(std::string sha) {
-  std::transform(sha.begin(), sha.end(), sha.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  const bool hex =
-      std::all_of(sha.begin(), sha.end(), [](unsigned char c) { return std::isxdigit(c) != 0; });
-  if (!hex || sha.size() > 40) {
-    throw UsageError(fmt::format("--sha {}: not a commit sha or a prefix of one", sha));
-  }
-  return sha;
-}
-
-std::string short_sha_of(const nlohmann::json& document) {
-  for (const nlohmann::json& revision : document.value("revisions", nlohmann::json::array())) {
-    const std::string sha = revision.at("worktree").value("short_sha", std::string());
-    if (!sha.empty()) return sha;
-  }
-  return "unknown";
-}
-
-// The document's text exactly as write_results writes it.
-std::string document_text(const StoredDocument& stored) { return stored.document.dump(1) + "\n"; }
-
-void export_to(const std::vector<StoredDocument>& documents, const std::filesystem::path& out) {
-  if (out.extension() == ".json") {
-    if (documents.size() != 1) {
-      throw UsageError(
-          fmt::format("{} documents match but -o {} names one file; give a "
-                      "directory, or narrow with --sha or --last 1",
-                      documents.size(), out.string()));
-    }
-    write_file_atomically(out, document_text(documents.front()));
-    fmt::print("wrote document {} to {}\n", documents.front().id, out.string());
-    return;
-  }
-  // The sha is read back from the store, which holds whatever was imported: every name is
-  // checked before anything is written, so a bad one leaves the directory untouched.
-  std::vector<std::filesystem::path> paths;
-  for (const StoredDocument& stored : documents) {
-    const std::string sha = checked_component(
-        short_sha_of(stored.document),
-        fmt::format("stored document {}: revisions[].worktree.short_sha", stored.id));
-    paths.push_back(join_component(out, fmt::format("{}-{}", stored.id, sha),
-                                   "exported document name", ".json"));
-  }
-  for (std::size_t i = 0; i < documents.size(); ++i) {
-    write_file_atomically(paths[i], document_text(documents[i]));
-  }
-  fmt::print("wrote {} documents to {}\n", documents.size(), out.string());
-}
-
 int export_command(const ExportArgs& args) {
   if (args.out.empty()) throw UsageError("export: --output is required (a directory or FILE.json)");
   const auto store = open_store(args.store, StoreOpen::must_exist);
@@ -134,7 +59,12 @@ int export_command(const ExportArgs& args) {
                                  args.sha.empty() ? "" : " --sha " + args.sha,
                                  args.branch.empty() ? "" : " --branch " + args.branch));
   }
-  export_to(documents, args.out);
+  const ExportedFiles exported = export_documents(documents, args.out);
+  if (exported.single_file) {
+    fmt::print("wrote document {} to {}\n", documents.front().id, args.out);
+  } else {
+    fmt::print("wrote {} documents to {}\n", documents.size(), args.out);
+  }
   return 0;
 }
 

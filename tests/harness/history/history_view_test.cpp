@@ -13,13 +13,7 @@ namespace raygate::test {
 namespace {
 
 DocumentSpec commit(int seed, const std::string& day, double ratio) {
-  DocumentSpec spec;
-  spec.sha = fake_sha(seed);
-  spec.subject = "commit " + std::to_string(seed);
-  spec.commit_time = "2026-03-" + day + "T10:00:00+00:00";
-  spec.started_at = "2026-03-" + day + "T12:00:00Z";
-  spec.scenes = {{"balls", ratio}, {"gears", ratio * 2}};
-  return spec;
+  return march_commit(seed, day, ratio);
 }
 
 bool has(const std::string& text, const std::string& part) {

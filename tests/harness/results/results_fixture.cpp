@@ -125,4 +125,14 @@ ResultsDocument make_document(const DocumentSpec& spec) {
   return d;
 }
 
+DocumentSpec march_commit(int seed, const std::string& day, double ratio) {
+  DocumentSpec spec;
+  spec.sha = fake_sha(seed);
+  spec.subject = "commit " + std::to_string(seed);
+  spec.commit_time = "2026-03-" + day + "T10:00:00+02:00";
+  spec.started_at = "2026-03-" + day + "T12:00:00Z";
+  spec.scenes = {{"balls", ratio}, {"gears", ratio * 2}};
+  return spec;
+}
+
 }  // namespace raygate::test

@@ -45,4 +45,8 @@ std::string fake_sha(int seed);
 
 ResultsDocument make_document(const DocumentSpec& spec);
 
+// A commit of a March 2026 history: "commit SEED", committed on `day` ("10") at 10:00+02:00 and
+// measured at noon UTC, with balls at `ratio` and gears at twice it.
+DocumentSpec march_commit(int seed, const std::string& day, double ratio);
+
 }  // namespace raygate::test

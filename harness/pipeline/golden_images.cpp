@@ -122,9 +122,9 @@ GoldenVerification verify_baseline_goldens(const BaselineGoldens& goldens,
   const GoldenManifest manifest = load_golden_manifest(goldens.golden_dir);
   const std::string current_hash = goldens.baseline.source_hash();
   if (!manifest.baseline_source_sha256.empty() && manifest.baseline_source_sha256 != current_hash) {
-    progress.line(fmt::format("note: goldens were blessed with baseline source {}, this baseline is {}",
-                              manifest.baseline_source_sha256.substr(0, 12),
-                              current_hash.substr(0, 12)));
+    progress.line(
+        fmt::format("note: goldens were blessed with baseline source {}, this baseline is {}",
+                    manifest.baseline_source_sha256.substr(0, 12), current_hash.substr(0, 12)));
   }
   GoldenVerification counts;
   for (const SuiteScene& scene : goldens.selected) {

@@ -64,7 +64,8 @@ TEST_F(HistoryFromStore, ThePageDrawsOnePlotPerSeries) {
   const std::string page = history_html(view());
   EXPECT_TRUE(page.starts_with("<!DOCTYPE html>"));
   std::size_t plots = 0;
-  for (std::size_t at = page.find("<svg"); at != std::string::npos; at = page.find("<svg", at + 1)) {
+  for (std::size_t at = page.find("<svg"); at != std::string::npos;
+       at = page.find("<svg", at + 1)) {
     ++plots;
   }
   EXPECT_EQ(plots, 2u);

@@ -17,6 +17,7 @@ struct Bisector {
   const BisectRequest& request;
   PipelineIo& io;
   Worktree good;
+  std::optional<PreparedRevision> good_built;  // built at the first step, then reused
   // The slowdown that separates good from bad. The bad end is judged against the policy's limit;
   // after that a step is bad when its change is above half of what the bad end's surely is (the
   // lower end of its CI: its estimate alone once came out +27% for a +11% culprit, and the
@@ -42,8 +43,14 @@ struct Bisector {
                                    candidate.subject, build.failure));
       return {candidate, BisectStep::skipped, "does not build: " + build.failure, {}, {}};
     }
-    const MeasuredDocument measured = measure_compare(
-        {context, request.baseline, request.repository.location(), good, tree, {}}, io);
+    const std::string repository = request.repository.location();
+    if (!good_built) {
+      good_built = prepare_revision("base", repository, good, context,
+                                    request.baseline.source_hash(), context.jobs, io.progress);
+    }
+    const MeasuredDocument measured = measure_prepared_compare(
+        {context, request.baseline, repository, good, tree, {}}, *good_built,
+        prepared_revision("head", repository, tree, context, build), io);
     const SceneResult& scene = measured.document.scenes.front();
     if (scene.runs.failed()) {
       io.progress.line(fmt::format("  {} {}: could not be measured ({}), skipped",
@@ -147,7 +154,8 @@ BisectResult bisect_search(const std::vector<Revision>& candidates, const Bisect
 BisectResult bisect(const BisectRequest& request, PipelineIo& io) {
   const std::vector<Revision> candidates =
       request.repository.first_parent_history(request.good, request.bad);
-  Bisector bisector{request, io, request.repository.checkout(request.good), std::nullopt, {}};
+  Bisector bisector{request, io, request.repository.checkout(request.good), std::nullopt,
+                    std::nullopt, {}};
   io.progress.line(fmt::format("bisecting {} commits after {} on scene {} by {}",
                                candidates.size(), bisector.good.short_sha,
                                request.context.scenes.front().id,

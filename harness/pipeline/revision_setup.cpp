@@ -46,9 +46,15 @@ PreparedRevision prepare_revision(const std::string& role, const std::string& re
                                   const Worktree& worktree, const MeasureContext& context,
                                   const std::string& baseline_source_hash, int jobs,
                                   ProgressSink& progress) {
-  BuildRecord build_record =
+  const BuildRecord build_record =
       build_revision(worktree, context, baseline_source_hash, jobs, progress);
   require_success(build_record);
+  return prepared_revision(role, repository, worktree, context, build_record);
+}
+
+PreparedRevision prepared_revision(const std::string& role, const std::string& repository,
+                                   const Worktree& worktree, const MeasureContext& context,
+                                   const BuildRecord& build_record) {
   PreparedRevision prepared;
   prepared.record.role = role;
   prepared.record.repository = repository;

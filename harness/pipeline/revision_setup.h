@@ -24,6 +24,11 @@ PreparedRevision prepare_revision(const std::string& role, const std::string& re
                                   const std::string& baseline_source_hash, int jobs,
                                   ProgressSink& progress);
 
+// The contender for `worktree` built as `build_record` (a successful build).
+PreparedRevision prepared_revision(const std::string& role, const std::string& repository,
+                                   const Worktree& worktree, const MeasureContext& context,
+                                   const BuildRecord& build_record);
+
 // The build record for `worktree` without throwing on failure (bisect skips such commits).
 BuildRecord build_revision(const Worktree& worktree, const MeasureContext& context,
                            const std::string& baseline_source_hash, int jobs,

@@ -105,6 +105,15 @@ TEST_F(BisectPipelineTest, FindsTheCommitThatMadeTheSceneSlower) {
   EXPECT_EQ(progress_.lines_with("bisecting 5 commits").size(), 1u);
   EXPECT_FALSE(progress_.lines_with("-> bad").empty());
   EXPECT_FALSE(progress_.lines_with("-> good").empty());
+  // Each commit is built (or taken from the build cache) once: the good one at the first step,
+  // each judged one at its own.
+  const auto builds_of = [this](const std::string& sha) {
+    return std::count_if(progress_.statuses.begin(), progress_.statuses.end(),
+                         [&](const std::string& s) { return s.find("(" + sha + ")") != s.npos; });
+  };
+  EXPECT_EQ(builds_of(good), 1);
+  ASSERT_FALSE(result.steps.empty());
+  for (const BisectStepRecord& step : result.steps) EXPECT_EQ(builds_of(step.candidate.sha), 1);
 }
 
 TEST_F(BisectPipelineTest, ACommitThatDoesNotBuildIsSkipped) {

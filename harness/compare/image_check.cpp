@@ -8,15 +8,6 @@ namespace raygate {
 
 namespace {
 
-std::string_view verdict_name(ImageVerdict verdict) {
-  switch (verdict) {
-    case ImageVerdict::pass: return "pass";
-    case ImageVerdict::warn: return "warn";
-    case ImageVerdict::fail: return "fail";
-  }
-  return "fail";
-}
-
 std::string describe_settings(const GoldenEntry& e) {
   std::string text = e.scene + (e.size > 0 ? " size " + std::to_string(e.size) : "");
   if (e.width > 0) text += " at " + std::to_string(e.width) + "x" + std::to_string(e.height);
@@ -36,16 +27,16 @@ bool same_settings(const GoldenEntry& golden, const GoldenEntry& rendered) {
 // an unreadable image, or one with NaN pixels, has failed on it, golden or not.
 ImageCheck without_golden(const std::string& role, const std::filesystem::path& actual,
                           const std::filesystem::path& expected, const std::string& why) {
-  ImageCheck check{role, "golden", actual, expected, "missing", why, std::nullopt, {}};
+  ImageCheck check{role, "golden", actual, expected, ImageVerdict::missing, why, std::nullopt, {}};
   if (const std::string problem = unreadable_image(actual); !problem.empty()) {
-    check.verdict = "fail";
+    check.verdict = ImageVerdict::fail;
     check.error = problem;
     return check;
   }
   // The image against itself: every metric zero, but its NaN pixels counted.
   check.metrics = compare_images(actual, actual, {});
   if (check.metrics->nonfinite_pixels > 0) {
-    check.verdict = "fail";
+    check.verdict = ImageVerdict::fail;
     check.error = summarize(*check.metrics);
   } else {
     check.metrics.reset();  // compared with nothing: no metrics to show
@@ -55,7 +46,7 @@ ImageCheck without_golden(const std::string& role, const std::filesystem::path& 
 
 // Whose fault an image that cannot be compared is: the tracer's own image unreadable or with
 // NaN pixels fails the check (exit 1); a broken reference (golden, base's image) means the
-// check could not be made ("error").
+// check could not be made (error).
 std::optional<std::string> broken_reference(const ImageMetrics& m,
                                             const std::filesystem::path& expected) {
   if (m.nonfinite_pixels > 0 || m.expected_nonfinite_pixels == 0) return std::nullopt;
@@ -69,9 +60,9 @@ ImageCheck check_image(const std::string& role, const std::string& reference,
                        const std::filesystem::path& actual, const std::filesystem::path& expected,
                        const ImageThresholds& thresholds, const std::filesystem::path& evidence_dir,
                        const std::string& stem) {
-  ImageCheck check{role, reference, actual, expected, "error", {}, std::nullopt, {}};
+  ImageCheck check{role, reference, actual, expected, ImageVerdict::error, {}, std::nullopt, {}};
   if (std::string problem = unreadable_image(actual); !problem.empty()) {
-    check.verdict = "fail";
+    check.verdict = ImageVerdict::fail;
     check.error = std::move(problem);
     return check;
   }
@@ -85,8 +76,8 @@ ImageCheck check_image(const std::string& role, const std::string& reference,
     check.error = std::move(*problem);
     return check;
   }
-  check.verdict = std::string(verdict_name(judge(*check.metrics, thresholds)));
-  if (check.verdict == "fail") {
+  check.verdict = judge(*check.metrics, thresholds);
+  if (check.failed()) {
     try {
       write_evidence(actual, expected, evidence_dir, stem);
       for (const char* kind : {"actual", "expected", "diff"}) {

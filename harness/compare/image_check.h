@@ -1,7 +1,7 @@
 // One image checked against a reference (a golden, or the base revision's image): the metrics,
 // the verdict in idiff's terms, and evidence images when it fails. A tracer's image that cannot
 // be read, or has NaN pixels, fails its check; a check that cannot be made (an unreadable or
-// broken reference) is a result with verdict "error", never an exception, so one broken scene
+// broken reference) is a result with verdict error, never an exception, so one broken scene
 // does not stop a suite.
 #pragma once
 
@@ -12,6 +12,7 @@
 
 #include "compare/golden.h"
 #include "compare/image_compare.h"
+#include "compare/image_verdict.h"
 
 namespace raygate {
 
@@ -20,18 +21,18 @@ struct ImageCheck {
   std::string reference;  // "golden" or the role of the reference image ("base")
   std::filesystem::path actual;
   std::filesystem::path expected;
-  // "pass", "warn", "fail" (also: the actual image unreadable or with NaN pixels); "missing"
-  // when there is no golden to compare with (noted once per report, never failed); "error"
-  // when the reference could not be read.
-  std::string verdict;
-  std::string error;  // for "missing" and "error": what went wrong and what to do
+  // pass, warn, fail (also: the actual image unreadable or with NaN pixels); missing when
+  // there is no golden to compare with (noted once per report, never failed); error when the
+  // reference could not be read.
+  ImageVerdict verdict = ImageVerdict::error;
+  std::string error;  // for missing and error: what went wrong and what to do
   std::optional<ImageMetrics> metrics;
   std::vector<std::filesystem::path> evidence;  // actual, expected, |diff| x16 on failure
 
-  bool failed() const { return verdict == "fail"; }
+  bool failed() const { return verdict == ImageVerdict::fail; }
 };
 
-// Compares `actual` with `expected`; on "fail" writes evidence into evidence_dir as <stem>.*.png.
+// Compares `actual` with `expected`; on fail writes evidence into evidence_dir as <stem>.*.png.
 ImageCheck check_image(const std::string& role, const std::string& reference,
                        const std::filesystem::path& actual, const std::filesystem::path& expected,
                        const ImageThresholds& thresholds, const std::filesystem::path& evidence_dir,
@@ -41,7 +42,7 @@ ImageCheck check_image(const std::string& role, const std::string& reference,
 // `rendered` says what `actual` is a picture of (scene, size; width and height unless 0, the
 // scene's own; sampling unless empty): a golden made from other settings, such as another
 // suite's scene under the same id, is no golden for it. A missing golden, or one of other
-// settings, gives verdict "missing", saying why; an empty golden set says the same words for
+// settings, gives verdict missing, saying why; an empty golden set says the same words for
 // every scene ("no goldens in DIR"), so a report says it once. The image is still read: one
 // that is unreadable or has NaN pixels fails all the same.
 ImageCheck check_against_golden(const std::string& role, const std::filesystem::path& actual,

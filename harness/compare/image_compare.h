@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <string>
 
+#include "compare/image_verdict.h"
+
 namespace raygate {
 
 struct ImageThresholds {
@@ -45,8 +47,6 @@ struct ImageMetrics {
   double luminance_bias() const { return mean_luminance_actual - mean_luminance_expected; }
 };
 
-enum class ImageVerdict { pass, warn, fail };
-
 // Reads both images (any format OpenImageIO reads) and compares their RGB channels. Throws
 // UsageError naming the file if either cannot be read.
 // Why `image` cannot be decoded, in one line ("" when it can): image libraries (libpng) report
@@ -57,6 +57,7 @@ ImageMetrics compare_images(const std::filesystem::path& actual,
                             const std::filesystem::path& expected,
                             const ImageThresholds& thresholds);
 
+// pass, warn or fail (the other verdicts are for checks that compared nothing).
 ImageVerdict judge(const ImageMetrics& metrics, const ImageThresholds& thresholds);
 
 // One line for a report: "max 0.031 at (12,40) ch 1: 0.52 vs 0.49; 0.3% over 0.004; PSNR 41.2 dB";

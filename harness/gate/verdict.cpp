@@ -59,15 +59,6 @@ void judge_speed(const SceneResult& scene, const ScenePolicy& policy, bool fail_
   }
 }
 
-// A missing golden ranks lowest: the column shows what was checked (head against base) first.
-int image_rank(const std::string& verdict) {
-  if (verdict == "fail") return 4;
-  if (verdict == "error") return 3;
-  if (verdict == "warn") return 2;
-  if (verdict == "pass") return 1;
-  return 0;
-}
-
 // The same "no golden" words from many scenes (a tracer without goldens), counted to say once.
 using MissingGoldens = std::vector<std::pair<std::string, std::size_t>>;
 
@@ -83,18 +74,17 @@ void count_missing(MissingGoldens& missing, const std::string& why) {
 
 void judge_images(const SceneResult& scene, SceneGate& gate, MissingGoldens& missing) {
   for (const ImageCheck& check : scene.images) {
-    if (image_rank(check.verdict) > image_rank(gate.image) || gate.image.empty()) {
-      gate.image = check.verdict;
-    }
+    // The enum's order is the verdicts' rank (compare/image_verdict.h).
+    gate.image = std::max(gate.image.value_or(check.verdict), check.verdict);
     const std::string who = fmt::format("image {} vs {}", check.role, check.reference);
     // A failed image without metrics could not be read, or is broken in a way its error says.
     const std::string what = check.metrics ? summarize(*check.metrics) : check.error;
-    if (check.verdict == "fail" || check.verdict == "warn") {
-      raise(gate, check.verdict == "fail" ? GateOutcome::fail : GateOutcome::warn,
+    if (check.verdict == ImageVerdict::fail || check.verdict == ImageVerdict::warn) {
+      raise(gate, check.failed() ? GateOutcome::fail : GateOutcome::warn,
             fmt::format("{}: {}", who, what));
-    } else if (check.verdict == "missing") {
+    } else if (check.verdict == ImageVerdict::missing) {
       count_missing(missing, check.error);  // not the scene's fault: a note for the document
-    } else if (check.verdict == "error") {
+    } else if (check.verdict == ImageVerdict::error) {
       raise(gate, GateOutcome::unmeasured, fmt::format("{}: {}", who, check.error));
     }
   }

@@ -3,9 +3,11 @@
 // reader knows what broke without opening anything else.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "compare/image_verdict.h"
 #include "gate/policy.h"
 #include "results/results.h"
 
@@ -22,7 +24,7 @@ enum class GateOutcome {
 struct SceneGate {
   std::string id;
   std::string speed;  // REGRESSED, IMPROVED, UNCHANGED, INCONCLUSIVE; MEASURED for a run; FAILED
-  std::string image;  // the worst image verdict: pass, warn, fail, missing, error; "" when none
+  std::optional<ImageVerdict> image;  // the worst image verdict; nullopt when none was checked
   GateOutcome outcome = GateOutcome::pass;
   std::vector<std::string> reasons;  // for anything but pass: what, in numbers
 };

@@ -89,7 +89,7 @@ struct Bisector {
 
   static bool image_failed(const SceneResult& scene) {
     for (const ImageCheck& check : scene.images) {
-      if (check.reference == "base" && check.verdict == "fail") return true;
+      if (check.reference == "base" && check.failed()) return true;
     }
     return false;
   }

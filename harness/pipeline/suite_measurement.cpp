@@ -226,14 +226,15 @@ std::string scene_line(const SceneResult& scene, const std::vector<std::string>&
                         run.log.string());
   }
   for (const ImageCheck& check : scene.images) {
-    if (check.verdict == "missing") continue;  // no golden: one note at the end, not per scene
+    // No golden: one note at the end, not per scene.
+    if (check.verdict == ImageVerdict::missing) continue;
     const std::string what = check.reference == "golden" ? check.role
                                                          : check.role + "-vs-" + check.reference;
     std::string detail = check.error;
     if (check.metrics) {
       detail = check.metrics->identical() ? "identical" : summarize(*check.metrics);
     }
-    text += fmt::format("  image {} {} ({})", what, check.verdict, detail);
+    text += fmt::format("  image {} {} ({})", what, to_string(check.verdict), detail);
   }
   return text;
 }

@@ -53,7 +53,7 @@ Row row_of(const ResultsDocument& document, const SceneView& view) {
   std::string verdict(to_string(view.gate.outcome));
   for (char& c : verdict) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
   return {view.gate.id, ratio_text(document, *view.result), change_text(*view.result),
-          view.gate.speed, view.gate.image.empty() ? "-" : view.gate.image, verdict};
+          view.gate.speed, image_text(view.gate, "-"), verdict};
 }
 
 std::array<std::size_t, kColumns> widths_of(const std::vector<Row>& rows) {

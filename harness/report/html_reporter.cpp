@@ -108,10 +108,10 @@ std::string overview(const ReportInput& input, const std::vector<SceneView>& vie
     if (compare) html += fmt::format(R"(<td class="num">{}</td>)", escape(change_text(*view.result)));
     html += fmt::format(R"(<td><span class="tag speed-{0}">{0}</span></td><td>{1}</td></tr>)",
                         escape(view.gate.speed),
-                        view.gate.image.empty()
+                        !view.gate.image
                             ? std::string("–")
                             : fmt::format(R"(<span class="verdict v-{0}">{0}</span>)",
-                                          escape(view.gate.image)));
+                                          escape(image_text(view.gate, ""))));
   }
   return html + "</tbody></table></section>";
 }

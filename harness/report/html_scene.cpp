@@ -29,7 +29,9 @@ std::string reference_of(const SceneResult& scene, const std::string& role) {
   int worst = -1;
   for (const ImageCheck& check : scene.images) {
     if (check.role != role) continue;
-    const int rank = check.verdict == "fail" ? 2 : check.verdict == "warn" ? 1 : 0;
+    const int rank = check.verdict == ImageVerdict::fail   ? 2
+                     : check.verdict == ImageVerdict::warn ? 1
+                                                           : 0;
     if (rank > worst) {
       worst = rank;
       reference = check.reference;
@@ -109,7 +111,7 @@ std::string gallery(const ReportInput& input, const SceneView& view) {
 std::string metric_row(const ImageCheck& check) {
   const std::string who = fmt::format("{} vs {}", escape(check.role), escape(check.reference));
   const std::string verdict = fmt::format(R"(<span class="verdict v-{0}">{0}</span>)",
-                                          escape(check.verdict));
+                                          escape(std::string(to_string(check.verdict))));
   if (!check.metrics) {
     return fmt::format(R"(<tr><td>{}</td><td>{}</td><td colspan="5" class="muted">{}</td></tr>)",
                        who, verdict, escape(check.error));
@@ -197,8 +199,9 @@ std::string head_line(const SceneView& view) {
   if (entry.size > 0) spec += fmt::format(" · size {}", entry.size);
   if (entry.width > 0) spec += fmt::format(" · {}×{}", entry.width, entry.height);
   std::string tags = fmt::format(R"(<span class="tag speed-{0}">{0}</span>)", escape(view.gate.speed));
-  if (!view.gate.image.empty()) {
-    tags += fmt::format(R"(<span class="tag v-{0}">image {0}</span>)", escape(view.gate.image));
+  if (view.gate.image) {
+    tags += fmt::format(R"(<span class="tag v-{0}">image {0}</span>)",
+                        escape(image_text(view.gate, "")));
   }
   return fmt::format(
       R"(<header class="scene-head"><h2><a href="#{}">{}</a></h2>{}{}<span class="spec">{}</span></header>)",

@@ -53,7 +53,9 @@ json change(const SceneResult& scene) {
 json images(const SceneResult& scene) {
   json out = json::array();
   for (const ImageCheck& check : scene.images) {
-    json item = {{"role", check.role}, {"reference", check.reference}, {"verdict", check.verdict}};
+    json item = {{"role", check.role},
+                 {"reference", check.reference},
+                 {"verdict", to_string(check.verdict)}};
     if (check.metrics) {
       const ImageMetrics& m = *check.metrics;
       item["max_error"] = finite_number(m.max_error);
@@ -73,7 +75,7 @@ json scene_json(const SceneView& view) {
           {"outcome", to_string(view.gate.outcome)},
           {"speed", view.gate.speed},
           {"speed_outcome", to_string(view.speed_outcome)},
-          {"image", view.gate.image},
+          {"image", image_text(view.gate, "")},
           {"image_outcome", to_string(view.image_outcome)},
           {"reasons", view.gate.reasons},
           {"ratios", ratios(*view.result)},

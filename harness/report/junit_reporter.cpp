@@ -84,7 +84,8 @@ std::string speed_numbers(const ResultsDocument& d, const SceneView& view) {
 std::string image_numbers(const SceneView& view) {
   std::vector<std::string> lines;
   for (const ImageCheck& check : view.result->images) {
-    std::string line = fmt::format("{} vs {}: {}", check.role, check.reference, check.verdict);
+    std::string line = fmt::format("{} vs {}: {}", check.role, check.reference,
+                                   to_string(check.verdict));
     if (check.metrics) line += ": " + summarize(*check.metrics);
     if (!check.error.empty()) line += ": " + check.error;
     lines.push_back(line);

@@ -64,7 +64,7 @@ std::string table_head(const ResultsDocument& d) {
 }
 
 std::string table_row(const ResultsDocument& d, const SceneView& view) {
-  const std::string image = view.gate.image.empty() ? "–" : view.gate.image;
+  const std::string image = image_text(view.gate, "–");
   std::string row = fmt::format("| **{}** | {} | {} |", upper(to_string(view.gate.outcome)),
                                 md(view.gate.id), md(ratio_text(d, *view.result, "→")));
   if (d.kind == "compare") row += fmt::format(" {} |", md(change_text(*view.result)));

@@ -50,9 +50,9 @@ GateOutcome image_outcome_of(const SceneResult& scene) {
   GateOutcome worst = GateOutcome::pass;
   for (const ImageCheck& check : scene.images) {
     GateOutcome outcome = GateOutcome::pass;
-    if (check.verdict == "fail") outcome = GateOutcome::fail;
-    if (check.verdict == "error") outcome = GateOutcome::unmeasured;
-    if (check.verdict == "warn") outcome = GateOutcome::warn;  // "missing": a document note
+    if (check.verdict == ImageVerdict::fail) outcome = GateOutcome::fail;
+    if (check.verdict == ImageVerdict::error) outcome = GateOutcome::unmeasured;
+    if (check.verdict == ImageVerdict::warn) outcome = GateOutcome::warn;  // missing: a note
     worst = std::max(worst, outcome);
   }
   return worst;
@@ -176,6 +176,10 @@ std::string verdict_word(int exit_code) {
   return "could not measure";
 }
 
+std::string image_text(const SceneGate& gate, const std::string& none) {
+  return gate.image ? std::string(to_string(*gate.image)) : none;
+}
+
 std::string change_text(const SceneResult& scene) {
   if (!scene.change || scene.runs.failed()) return "";
   const ChangeSummary& c = *scene.change;
@@ -264,7 +268,8 @@ std::filesystem::path role_image(const SceneResult& scene, const std::string& ro
 
 std::filesystem::path golden_image(const SceneResult& scene) {
   for (const ImageCheck& check : scene.images) {
-    if (check.reference == "golden" && check.verdict != "missing" && !check.expected.empty()) {
+    if (check.reference == "golden" && check.verdict != ImageVerdict::missing &&
+        !check.expected.empty()) {
       return check.expected;
     }
   }

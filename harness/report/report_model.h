@@ -40,6 +40,8 @@ Headline headline(const ReportInput& input, const std::vector<SceneView>& views)
 // "pass", "fail" or "could not measure", from the gate's exit code.
 std::string verdict_word(int exit_code);
 
+// The scene's worst image verdict as its word; `none` when no image was checked.
+std::string image_text(const SceneGate& gate, const std::string& none);
 // "+7.9% [+6.1%, +9.8%]", or "+0.912% exact (simulated cycles)" when counted (--timing sim);
 // "" when the scene has no change (a run, or a failed scene).
 std::string change_text(const SceneResult& scene);

@@ -211,7 +211,7 @@ void from_json(const json& j, Round& r) {
 
 void to_json(json& j, const ImageCheck& c) {
   j = json{{"role", c.role},         {"reference", c.reference}, {"actual", c.actual.string()},
-           {"expected", c.expected.string()}, {"verdict", c.verdict},
+           {"expected", c.expected.string()}, {"verdict", std::string(to_string(c.verdict))},
            {"metrics", nullptr},     {"evidence", path_list(c.evidence)}};
   if (c.metrics) j["metrics"] = *c.metrics;
   if (!c.error.empty()) j["error"] = c.error;
@@ -221,7 +221,13 @@ void from_json(const json& j, ImageCheck& c) {
   c.reference = j.at("reference").get<std::string>();
   c.actual = j.at("actual").get<std::string>();
   c.expected = j.at("expected").get<std::string>();
-  c.verdict = j.at("verdict").get<std::string>();
+  const std::string verdict = j.at("verdict").get<std::string>();
+  const std::optional<ImageVerdict> parsed = parse_image_verdict(verdict);
+  if (!parsed) {
+    throw std::invalid_argument("images.verdict: unknown image verdict \"" + verdict +
+                                "\" (pass, warn, fail, missing or error)");
+  }
+  c.verdict = *parsed;
   c.error = j.value("error", std::string());
   if (!j.at("metrics").is_null()) c.metrics = j.at("metrics").get<ImageMetrics>();
   for (const json& path : j.at("evidence")) c.evidence.emplace_back(path.get<std::string>());

@@ -59,7 +59,7 @@ void fill_ratio(SceneRow& row, const RatioSummary& r) {
 }
 
 void fill_image(SceneRow& row, const ImageCheck& check) {
-  row.image_verdict = check.verdict;
+  row.image_verdict = to_string(check.verdict);
   if (!check.metrics) return;
   row.image_max_error = finite(check.metrics->max_error);
   row.image_rms_error = finite(check.metrics->rms_error);

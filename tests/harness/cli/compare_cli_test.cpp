@@ -73,7 +73,7 @@ TEST_F(CompareCli, WrongShadingFailsOnTheImageAgainstBase) {
   EXPECT_TRUE(has(ok.out, "image head vs base: max ")) << ok.out;
   bool base_check_failed = false;
   for (const ImageCheck& check : document().scenes.at(0).images) {
-    if (check.reference == "base") base_check_failed = check.verdict == "fail";
+    if (check.reference == "base") base_check_failed = check.verdict == ImageVerdict::fail;
   }
   EXPECT_TRUE(base_check_failed);
 }

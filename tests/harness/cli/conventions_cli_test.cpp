@@ -26,7 +26,7 @@ class Conventions : public ::testing::Test {
   std::string document() {
     DocumentSpec spec;
     spec.sha = fake_sha(1);
-    spec.scenes = {{"balls", 0.8, 0.01, 1.0, 0.5, "fail"}, {"gears", 1.5}};
+    spec.scenes = {{"balls", 0.8, 0.01, 1.0, 0.5, ImageVerdict::fail}, {"gears", 1.5}};
     write_results(make_document(spec), dir.path() / "doc.json");
     return "doc.json";
   }

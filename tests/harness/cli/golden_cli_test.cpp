@@ -149,9 +149,9 @@ TEST_F(NewTracerCli, FirstCompareWithoutGoldensPassesAndSaysSoOnce) {
   ASSERT_EQ(d.scenes.size(), 1u);
   bool head_vs_base = false;
   for (const ImageCheck& check : d.scenes[0].images) {
-    if (check.reference == "base") head_vs_base = check.verdict == "pass";
+    if (check.reference == "base") head_vs_base = check.verdict == ImageVerdict::pass;
     if (check.reference == "golden") {
-      EXPECT_EQ(check.verdict, "missing");
+      EXPECT_EQ(check.verdict, ImageVerdict::missing);
     }
   }
   EXPECT_TRUE(head_vs_base);
@@ -166,7 +166,8 @@ TEST_F(NewTracerCli, FirstCompareWithoutGoldensPassesAndSaysSoOnce) {
   EXPECT_FALSE(has(gated.out, "no goldens")) << gated.out;
   const ResultsDocument run = read_results(dir_.path() / "r.json");
   EXPECT_EQ(run.settings.at("goldens"), "make-nff");
-  EXPECT_EQ(run.scenes.at(0).images.at(0).verdict, "pass") << run.scenes.at(0).images.at(0).error;
+  EXPECT_EQ(run.scenes.at(0).images.at(0).verdict, ImageVerdict::pass)
+      << run.scenes.at(0).images.at(0).error;
 
   // The same document with its scenes taken away is no pass.
   nlohmann::json empty = nlohmann::json::parse(read_file(out));
@@ -191,7 +192,7 @@ TEST_F(NewTracerCli, GarbageImageOfHeadFailsTheChange) {
   EXPECT_TRUE(has(r.out, "cannot read image")) << r.out;
   for (const ImageCheck& check : read_results(dir_.path() / "c.json").scenes.at(0).images) {
     if (check.role != "head") continue;
-    EXPECT_EQ(check.verdict, "fail") << check.reference;
+    EXPECT_EQ(check.verdict, ImageVerdict::fail) << check.reference;
     EXPECT_EQ(check.error.find('\n'), std::string::npos) << check.error;
   }
 }

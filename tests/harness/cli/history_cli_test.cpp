@@ -29,7 +29,7 @@ DocumentSpec commit(int seed, int day, double balls_ratio, double baseline_secon
   spec.commit_time = fmt::format("2026-05-{:02}T09:00:00+00:00", day);
   spec.started_at = fmt::format("2026-05-{:02}T10:00:00Z", day);
   spec.scenes = {{"balls", balls_ratio, 0.01, baseline_seconds},
-                 {"gears", 1.5, 0.02, 2.0 * baseline_seconds, 0.0123, "warn"}};
+                 {"gears", 1.5, 0.02, 2.0 * baseline_seconds, 0.0123, ImageVerdict::warn}};
   return spec;
 }
 

@@ -66,7 +66,7 @@ TEST(PovrayCli, RunMeasuresRatiosAndPassesItsGoldens) {
     ASSERT_EQ(scene->images.size(), 1u) << id;
     const ImageCheck& image = scene->images.front();
     EXPECT_EQ(image.reference, "golden") << id;
-    EXPECT_EQ(image.verdict, "pass") << id << ": " << image.error;
+    EXPECT_EQ(image.verdict, ImageVerdict::pass) << id << ": " << image.error;
     EXPECT_EQ(image.expected.filename(), std::string(id) + ".png") << id;
     EXPECT_EQ(image.expected.parent_path().filename(), "povray") << id;
   }

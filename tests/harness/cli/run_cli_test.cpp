@@ -164,7 +164,8 @@ TEST_F(RunCli, MeasuresARevisionIntoACompleteDocument) {
   for (const SceneResult& s : d.scenes) {
     expect_measured(s);
     ASSERT_EQ(s.images.size(), 1u);
-    EXPECT_EQ(s.images[0].verdict, "missing");  // an empty golden dir: reported, not failed
+    // An empty golden dir: reported, not failed.
+    EXPECT_EQ(s.images[0].verdict, ImageVerdict::missing);
   }
   ASSERT_TRUE(d.scores.contains("tracer"));
   EXPECT_EQ(d.scores.at("tracer").scenes, 2u);
@@ -283,7 +284,7 @@ TEST_F(RunCli, UnreadableImageFailsEvenWithoutGoldens) {
   const CliRun r = run("HEAD", dir_.path() / "r.json", quick());
   EXPECT_EQ(r.exit_code, 1) << r.out;
   const ImageCheck& check = read_results(dir_.path() / "r.json").scenes.at(0).images.at(0);
-  EXPECT_EQ(check.verdict, "fail");
+  EXPECT_EQ(check.verdict, ImageVerdict::fail);
   EXPECT_TRUE(has(check.error, "cannot read image")) << check.error;
   EXPECT_TRUE(has(r.out, "cannot read image")) << r.out;
 }
@@ -350,7 +351,7 @@ TEST_F(RunCli, GoldensOfOtherSceneSettingsAreNotCompared) {
   const ResultsDocument d = read_results(dir_.path() / "r.json");
   for (const SceneResult& s : d.scenes) {
     ASSERT_EQ(s.images.size(), 1u);
-    EXPECT_EQ(s.images[0].verdict, "missing") << s.entry.id;
+    EXPECT_EQ(s.images[0].verdict, ImageVerdict::missing) << s.entry.id;
     EXPECT_TRUE(has(s.images[0].error, "size")) << s.images[0].error;
   }
 }
@@ -371,11 +372,11 @@ TEST_F(RunCli, ImageUnlikeTheGoldenOfTheSameSettingsFailsTheRun) {
   EXPECT_EQ(r.exit_code, 1) << r.out;
   const ResultsDocument d = read_results(dir_.path() / "r.json");
   const ImageCheck& tetra = scene(d, "tetra").images.at(0);
-  EXPECT_EQ(tetra.verdict, "pass") << tetra.error;
+  EXPECT_EQ(tetra.verdict, ImageVerdict::pass) << tetra.error;
   ASSERT_TRUE(tetra.metrics);
   EXPECT_TRUE(tetra.metrics->identical());
   const ImageCheck& balls = scene(d, "balls").images.at(0);
-  EXPECT_EQ(balls.verdict, "fail") << balls.error;
+  EXPECT_EQ(balls.verdict, ImageVerdict::fail) << balls.error;
   ASSERT_TRUE(balls.metrics);
   EXPECT_EQ(balls.metrics->width, 128);
   EXPECT_FALSE(balls.metrics->size_mismatch);

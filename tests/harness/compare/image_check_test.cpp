@@ -43,7 +43,7 @@ class ImageCheckTest : public ::testing::Test {
 
 TEST_F(ImageCheckTest, SameSettingsAndPixelsPass) {
   const ImageCheck c = check(kGolden / "tetra.png", ci_tetra());
-  EXPECT_EQ(c.verdict, "pass") << c.error;
+  EXPECT_EQ(c.verdict, ImageVerdict::pass) << c.error;
   ASSERT_TRUE(c.metrics);
   EXPECT_TRUE(c.metrics->identical());
   EXPECT_EQ(c.reference, "golden");
@@ -54,7 +54,7 @@ TEST_F(ImageCheckTest, UnspecifiedResolutionAndSamplingDoNotPreventTheCheck) {
   GoldenEntry rendered = ci_tetra();
   rendered.width = rendered.height = 0;  // the scene's own resolution
   rendered.sampling.clear();
-  EXPECT_EQ(check(kGolden / "tetra.png", rendered).verdict, "pass");
+  EXPECT_EQ(check(kGolden / "tetra.png", rendered).verdict, ImageVerdict::pass);
 }
 
 TEST_F(ImageCheckTest, ChangedPixelsFailWithEvidence) {
@@ -65,7 +65,7 @@ TEST_F(ImageCheckTest, ChangedPixelsFailWithEvidence) {
   const fs::path actual = dir_.path() / "tetra.png";
   ASSERT_TRUE(image.write(actual.string(), OIIO::TypeDesc::UINT8));
   const ImageCheck c = check(actual, ci_tetra());
-  EXPECT_EQ(c.verdict, "fail");
+  EXPECT_EQ(c.verdict, ImageVerdict::fail);
   ASSERT_EQ(c.evidence.size(), 3u);
   for (const fs::path& evidence : c.evidence) EXPECT_TRUE(fs::exists(evidence)) << evidence;
 }
@@ -74,7 +74,7 @@ TEST_F(ImageCheckTest, NoGoldenForTheIdIsMissing) {
   GoldenEntry rendered = ci_tetra();
   rendered.id = "tetra-s2";
   const ImageCheck c = check(kGolden / "tetra.png", rendered);
-  EXPECT_EQ(c.verdict, "missing");
+  EXPECT_EQ(c.verdict, ImageVerdict::missing);
   EXPECT_NE(c.error.find("no golden image for 'tetra-s2'"), std::string::npos) << c.error;
   EXPECT_FALSE(c.metrics);
 }
@@ -87,14 +87,15 @@ TEST_F(ImageCheckTest, UnreadableImageFailsEvenWithoutAGolden) {
   GoldenEntry rendered = ci_tetra();
   rendered.id = "tetra-s2";
   const ImageCheck c = check(garbage, rendered);
-  EXPECT_EQ(c.verdict, "fail");
+  EXPECT_EQ(c.verdict, ImageVerdict::fail);
   EXPECT_TRUE(c.failed());
   EXPECT_NE(c.error.find(garbage.string() + ": cannot read image"), std::string::npos) << c.error;
   EXPECT_EQ(c.error.find('\n'), std::string::npos) << c.error;
   rendered = ci_tetra();
   rendered.size = 2;
-  EXPECT_EQ(check(garbage, rendered).verdict, "fail");
-  EXPECT_EQ(check(garbage, ci_tetra()).verdict, "fail");  // with a golden to compare with
+  EXPECT_EQ(check(garbage, rendered).verdict, ImageVerdict::fail);
+  // With a golden to compare with:
+  EXPECT_EQ(check(garbage, ci_tetra()).verdict, ImageVerdict::fail);
 }
 
 // A PNG cut short: libpng's several lines of complaint become one.
@@ -105,13 +106,13 @@ TEST_F(ImageCheckTest, TruncatedPngFailsWithOneLine) {
   const GoldenEntry other{"other", "tetra", 2, 0, 0, "", {}, {}, {}};
   for (const GoldenEntry& rendered : {ci_tetra(), other}) {
     const ImageCheck c = check(truncated, rendered);
-    EXPECT_EQ(c.verdict, "fail") << c.error;
+    EXPECT_EQ(c.verdict, ImageVerdict::fail) << c.error;
     EXPECT_NE(c.error.find("cannot read image"), std::string::npos) << c.error;
     EXPECT_EQ(c.error.find('\n'), std::string::npos) << c.error;
   }
   const ImageCheck against_base = check_image("head", "base", truncated, kGolden / "tetra.png", {},
                                               dir_.path() / "evidence", "tetra.head-vs-base");
-  EXPECT_EQ(against_base.verdict, "fail") << against_base.error;
+  EXPECT_EQ(against_base.verdict, ImageVerdict::fail) << against_base.error;
 }
 
 // The golden as floats, with NaN in `nan_pixels` pixels of row 5, written as `name`.
@@ -149,7 +150,7 @@ TEST_F(ImageCheckTest, NanPixelsOfAPfmAreCountedAndFail) {
   const ImageCheck c = check_image("tracer", "golden", grey_pfm(dir_, "nan.pfm", 3),
                                    grey_pfm(dir_, "good.pfm", 0), {}, dir_.path() / "evidence",
                                    "grey");
-  EXPECT_EQ(c.verdict, "fail") << c.error;
+  EXPECT_EQ(c.verdict, ImageVerdict::fail) << c.error;
   ASSERT_TRUE(c.metrics);
   EXPECT_EQ(c.metrics->nonfinite_pixels, 3);
   EXPECT_EQ(summarize(*c.metrics), "3 NaN/Inf pixels of 64, first at (0,0)");
@@ -159,7 +160,7 @@ TEST_F(ImageCheckTest, NanPixelsAreCountedAndFail) {
   for (const char* name : {"nan.exr"}) {
     const fs::path nan = with_nan(dir_, name, 7);
     const ImageCheck c = check(nan, ci_tetra());
-    EXPECT_EQ(c.verdict, "fail") << name;
+    EXPECT_EQ(c.verdict, ImageVerdict::fail) << name;
     ASSERT_TRUE(c.metrics) << name;
     EXPECT_EQ(c.metrics->nonfinite_pixels, 7) << name;
     const std::string text = summarize(*c.metrics);
@@ -170,7 +171,7 @@ TEST_F(ImageCheckTest, NanPixelsAreCountedAndFail) {
   const ImageCheck alone = check_against_golden("tracer", with_nan(dir_, "n.exr", 2),
                                                 dir_.path() / "none", GoldenManifest{},
                                                 ci_tetra(), {}, dir_.path() / "evidence");
-  EXPECT_EQ(alone.verdict, "fail");
+  EXPECT_EQ(alone.verdict, ImageVerdict::fail);
   EXPECT_NE(alone.error.find("2 NaN/Inf pixels"), std::string::npos) << alone.error;
 }
 
@@ -179,7 +180,7 @@ TEST_F(ImageCheckTest, NanInTheReferenceIsAnError) {
   const ImageCheck c = check_image("head", "base", kGolden / "tetra.png",
                                    with_nan(dir_, "base.exr", 3), {}, dir_.path() / "evidence",
                                    "tetra.head-vs-base");
-  EXPECT_EQ(c.verdict, "error");
+  EXPECT_EQ(c.verdict, ImageVerdict::error);
   EXPECT_NE(c.error.find("the reference has 3 NaN/Inf pixels"), std::string::npos) << c.error;
 }
 
@@ -193,7 +194,7 @@ TEST_F(ImageCheckTest, NoGoldensAtAllSaysTheSameForEveryScene) {
                                             GoldenManifest{}, ci_tetra(), {}, dir_.path());
   const ImageCheck b = check_against_golden("tracer", kGolden / "balls.png", empty,
                                             GoldenManifest{}, balls, {}, dir_.path());
-  EXPECT_EQ(a.verdict, "missing");
+  EXPECT_EQ(a.verdict, ImageVerdict::missing);
   EXPECT_FALSE(a.failed());
   EXPECT_FALSE(a.metrics);
   EXPECT_EQ(a.error, b.error);
@@ -204,7 +205,7 @@ TEST_F(ImageCheckTest, GoldenOfAnotherSizeFactorIsNotCompared) {
   GoldenEntry rendered = ci_tetra();
   rendered.size = 2;
   const ImageCheck c = check(kGolden / "tetra.png", rendered);
-  EXPECT_EQ(c.verdict, "missing");
+  EXPECT_EQ(c.verdict, ImageVerdict::missing);
   EXPECT_FALSE(c.metrics);
   EXPECT_NE(c.error.find("is tetra size 6 at 160x160, center sampling, but this suite renders "
                          "tetra size 2 at 160x160"),
@@ -216,10 +217,10 @@ TEST_F(ImageCheckTest, GoldenOfAnotherSizeFactorIsNotCompared) {
 TEST_F(ImageCheckTest, GoldenOfAnotherResolutionOrSamplingIsNotCompared) {
   GoldenEntry smaller = ci_tetra();
   smaller.width = smaller.height = 64;
-  EXPECT_EQ(check(kGolden / "tetra.png", smaller).verdict, "missing");
+  EXPECT_EQ(check(kGolden / "tetra.png", smaller).verdict, ImageVerdict::missing);
   GoldenEntry corners = ci_tetra();
   corners.sampling = "corners";
-  EXPECT_EQ(check(kGolden / "tetra.png", corners).verdict, "missing");
+  EXPECT_EQ(check(kGolden / "tetra.png", corners).verdict, ImageVerdict::missing);
 }
 
 // Goldens belong to an adapter: the baseline's judge the baseline and its bbox control, never

@@ -166,18 +166,21 @@ TEST(GateVerdict, ImagesFailWarnOrCannotBeChecked) {
   SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
   ImageMetrics metrics;
   metrics.max_error = 0.6;
-  scene.images.push_back({"head", "golden", "a.png", "g.png", "fail", "", metrics, {}});
-  scene.images.push_back({"head", "base", "a.png", "b.png", "pass", "", ImageMetrics{}, {}});
+  scene.images.push_back({"head", "golden", "a.png", "g.png", ImageVerdict::fail, "", metrics, {}});
+  scene.images.push_back(
+      {"head", "base", "a.png", "b.png", ImageVerdict::pass, "", ImageMetrics{}, {}});
   GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
-  EXPECT_EQ(gate.scenes[0].image, "fail");
+  EXPECT_EQ(gate.scenes[0].image, ImageVerdict::fail);
   EXPECT_EQ(gate.exit_code, 1);
 
-  scene.images = {{"tracer", "golden", "a.png", "g.png", "missing", "no golden image", {}, {}}};
+  scene.images = {
+      {"tracer", "golden", "a.png", "g.png", ImageVerdict::missing, "no golden image", {}, {}}};
   gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::pass);  // a note for the document, not a warning
   EXPECT_EQ(gate.exit_code, 0);
 
-  scene.images = {{"tracer", "golden", "a.png", "g.png", "error", "cannot read a.png", {}, {}}};
+  scene.images = {
+      {"tracer", "golden", "a.png", "g.png", ImageVerdict::error, "cannot read a.png", {}, {}}};
   gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::unmeasured);
   EXPECT_EQ(gate.exit_code, 3);
@@ -207,22 +210,24 @@ TEST(GateVerdict, ADocumentWithNoScenesCannotPass) {
 // A tracer without goldens: every scene's "no goldens" check becomes one note with the count
 // and how to bless; no scene warns or fails for it. Different reasons stay apart.
 TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
-  const ImageCheck none{"head", "golden", "a.png", "g", "missing",
+  const ImageCheck none{"head", "golden", "a.png", "g", ImageVerdict::missing,
                         "no goldens in g (none blessed yet)", {}, {}};
-  const ImageCheck same{"head", "base", "a.png", "b.png", "pass", "", ImageMetrics{}, {}};
+  const ImageCheck same{
+      "head", "base", "a.png", "b.png", ImageVerdict::pass, "", ImageMetrics{}, {}};
   std::vector<SceneResult> scenes;
   for (const char* id : {"balls", "gears", "tetra"}) {
     scenes.push_back(compared(id, 0.0, -0.01, 0.01));
     scenes.back().images = {none, same};
   }
   scenes.back().images.push_back(
-      {"base", "golden", "b.png", "g", "missing", "no golden image for 'tetra'", {}, {}});
+      {"base", "golden", "b.png", "g", ImageVerdict::missing, "no golden image for 'tetra'", {},
+       {}});
   const GateResult gate = evaluate_gate(compare_document(scenes), GatePolicy{});
   EXPECT_EQ(gate.exit_code, 0);
   EXPECT_EQ(gate.count(GateOutcome::pass), 3u);
   for (const SceneGate& scene : gate.scenes) {
     EXPECT_TRUE(scene.reasons.empty()) << scene.id;
-    EXPECT_EQ(scene.image, "pass") << scene.id;  // what was checked: head against base
+    EXPECT_EQ(scene.image, ImageVerdict::pass) << scene.id;  // what was checked: head against base
   }
   ASSERT_EQ(gate.notes.size(), 2u);
   EXPECT_EQ(gate.notes[0],
@@ -237,7 +242,8 @@ TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
 TEST(GateVerdict, AnUnreadableImageFailsWithItsReason) {
   SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
   scene.images = {
-      {"head", "base", "a.ppm", "b.ppm", "fail", "a.ppm: cannot read image: bad", {}, {}}};
+      {"head", "base", "a.ppm", "b.ppm", ImageVerdict::fail, "a.ppm: cannot read image: bad", {},
+       {}}};
   const GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.exit_code, 1);
   ASSERT_EQ(gate.scenes[0].reasons.size(), 1u);

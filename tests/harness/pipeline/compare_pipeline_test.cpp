@@ -56,7 +56,7 @@ TEST_F(ComparePipelineTest, AnEqualHeadIsUnchangedAndItsImageMatchesBase) {
     for (const ImageCheck& check : scene.images) {
       if (check.reference != "base") continue;
       checked_against_base = true;
-      EXPECT_EQ(check.verdict, "pass");
+      EXPECT_EQ(check.verdict, ImageVerdict::pass);
     }
     EXPECT_TRUE(checked_against_base);
   }

@@ -20,7 +20,7 @@ std::size_t occurrences(const std::string& text, const std::string& needle) {
 void without_goldens(Fixture& f) {
   for (SceneResult& scene : f.document.scenes) {
     for (ImageCheck& check : scene.images) {
-      check.verdict = "missing";
+      check.verdict = ImageVerdict::missing;
       check.error = "no goldens in golden/my-tracer (none blessed yet)";
       check.metrics.reset();
     }

@@ -23,7 +23,11 @@ using nlohmann::json;
 const std::vector<test::SceneSpec> kScenes{
     {.id = "balls", .ratio = 1.2, .baseline_seconds = 1.2},
     {.id = "gears", .ratio = 0.8, .baseline_seconds = 1.0},
-    {.id = "mount", .ratio = 1.5, .baseline_seconds = 0.9, .max_error = 0.5, .verdict = "fail"},
+    {.id = "mount",
+     .ratio = 1.5,
+     .baseline_seconds = 0.9,
+     .max_error = 0.5,
+     .verdict = ImageVerdict::fail},
     {.id = "rings", .ratio = 0.9, .baseline_seconds = 0.5},
     {.id = "teapot", .ratio = 1.1, .baseline_seconds = 0.6}};
 

@@ -16,7 +16,7 @@ struct SceneSpec {
   double half_width = 0.01;  // relative half-width of the ratio's CI
   double baseline_seconds = 1.0;
   double max_error = 0.0;
-  std::string verdict = "pass";
+  ImageVerdict verdict = ImageVerdict::pass;
   std::string status = "measured";
 };
 

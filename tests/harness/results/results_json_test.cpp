@@ -89,7 +89,7 @@ SceneResult measured_scene() {
   s.runs.seconds_spent = 9.5;
   s.ratios["tracer"] = make_ratio(0.5);
   s.images.push_back(ImageCheck{"tracer", "golden", "/w/t/warmup-1/image.png", "/g/balls.png",
-                                "pass", "", make_metrics(true), {}});
+                                ImageVerdict::pass, "", make_metrics(true), {}});
   return s;
 }
 
@@ -107,10 +107,10 @@ SceneResult failed_scene() {
   crash.outcome = "killed by signal 6 (ABRT)";
   crash.failure = "/b/tracer killed by signal 6 (ABRT)";
   s.runs.failed_run = crash;
-  s.images[0].verdict = "fail";
+  s.images[0].verdict = ImageVerdict::fail;
   s.images[0].metrics = make_metrics(false);
   s.images[0].evidence = {"/e/tetra.actual.png", "/e/tetra.expected.png", "/e/tetra.diff.png"};
-  s.images.push_back(ImageCheck{"head", "base", "/h.png", "/b.png", "error",
+  s.images.push_back(ImageCheck{"head", "base", "/h.png", "/b.png", ImageVerdict::error,
                                 "cannot read /h.png", std::nullopt, {}});
   return s;
 }
@@ -378,6 +378,16 @@ TEST(ResultsJson, ChangeIntervalKindIsCheckedAndDefaultsForOldDocuments) {
   }
   const ResultsDocument old = results_from_json(j, "old.json");
   EXPECT_EQ(old.scenes[2].change->interval_kind, ChangeIntervalKind::order_statistic);
+}
+
+TEST(ResultsJson, AnUnknownImageVerdictIsAUsageErrorNamingTheField) {
+  json j = to_json(full_document());
+  EXPECT_EQ(j["scenes"][1]["images"][0]["verdict"], "fail");
+  j["scenes"][1]["images"][0]["verdict"] = "failed";
+  const std::string message = usage_error(j);
+  EXPECT_NE(message.find("shard-7.json"), std::string::npos) << message;
+  EXPECT_NE(message.find("images.verdict: unknown image verdict \"failed\""), std::string::npos)
+      << message;
 }
 
 TEST(ResultsJson, NewerSchemaVersionAsksForAnUpgrade) {

@@ -66,7 +66,7 @@ TEST_F(StoreHistory, NewestCommitFirstWithTheLatestMeasurementOfEach) {
 
 TEST_F(StoreHistory, RowsCarryTheNumbersHistoryShows) {
   DocumentSpec spec = commit(1, "10", 0.5);
-  spec.scenes = {{"balls", 0.5, 0.04, 1.25, 0.02, "fail"}};
+  spec.scenes = {{"balls", 0.5, 0.04, 1.25, 0.02, ImageVerdict::fail}};
   add(spec);
   const std::vector<HistoryRow> rows = store->history({});
   ASSERT_EQ(rows.size(), 1u);

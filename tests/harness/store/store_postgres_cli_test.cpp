@@ -23,7 +23,7 @@ DocumentSpec commit(int seed, int day, double balls_ratio) {
   spec.subject = "commit number " + std::to_string(seed);
   spec.commit_time = fmt::format("2026-05-{:02}T09:00:00+00:00", day);
   spec.started_at = fmt::format("2026-05-{:02}T10:00:00Z", day);
-  spec.scenes = {{"balls", balls_ratio}, {"gears", 1.5, 0.02, 2.0, 0.0123, "warn"}};
+  spec.scenes = {{"balls", balls_ratio}, {"gears", 1.5, 0.02, 2.0, 0.0123, ImageVerdict::warn}};
   return spec;
 }
 

@@ -23,9 +23,9 @@ DocumentSpec commit(int seed, int day, double ratio, const std::string& branch =
   spec.ref_name = "refs/heads/" + branch;
   // Upper and lower case, so a locale's collation would order them differently than bytes.
   spec.scenes = {{"balls", ratio},
-                 {"Gears", ratio * 2, 0.02, 2.0, 0.004, "warn"},
+                 {"Gears", ratio * 2, 0.02, 2.0, 0.004, ImageVerdict::warn},
                  {"gears", ratio * 3},
-                 {"tetra", ratio / 3, 0.01, 0.5, 0.0, "pass", "failed"}};
+                 {"tetra", ratio / 3, 0.01, 0.5, 0.0, ImageVerdict::pass, "failed"}};
   return spec;
 }
 

@@ -21,7 +21,7 @@ DocumentSpec two_scenes(int seed) {
   DocumentSpec spec;
   spec.sha = fake_sha(seed);
   spec.subject = "commit " + std::to_string(seed);
-  spec.scenes = {{"balls", 0.8}, {"gears", 1.2, 0.02, 2.0, 0.004, "warn"}};
+  spec.scenes = {{"balls", 0.8}, {"gears", 1.2, 0.02, 2.0, 0.004, ImageVerdict::warn}};
   return spec;
 }
 

@@ -72,7 +72,9 @@ TEST_F(CompareCli, WrongShadingFailsOnTheImageAgainstBase) {
   EXPECT_EQ(ok.exit_code, 1) << ok.out;
   EXPECT_TRUE(has(ok.out, "image head vs base: max ")) << ok.out;
   bool base_check_failed = false;
-  for (const ImageCheck& check : document().scenes.at(0).images) {
+  // Named: a range-for over document().scenes.at(0) would outlive the document (C++20).
+  const ResultsDocument d = document();
+  for (const ImageCheck& check : d.scenes.at(0).images) {
     if (check.reference == "base") base_check_failed = check.verdict == ImageVerdict::fail;
   }
   EXPECT_TRUE(base_check_failed);

@@ -190,7 +190,10 @@ TEST_F(NewTracerCli, GarbageImageOfHeadFailsTheChange) {
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_TRUE(has(r.out, "image head vs base: ")) << r.out;
   EXPECT_TRUE(has(r.out, "cannot read image")) << r.out;
-  for (const ImageCheck& check : read_results(dir_.path() / "c.json").scenes.at(0).images) {
+  // Named: a range-for over read_results(...).scenes.at(0) would outlive the document (C++20),
+  // and read freed strings (this test once failed on garbage where the path began).
+  const ResultsDocument d = read_results(dir_.path() / "c.json");
+  for (const ImageCheck& check : d.scenes.at(0).images) {
     if (check.role != "head") continue;
     EXPECT_EQ(check.verdict, ImageVerdict::fail) << check.reference;
     EXPECT_EQ(check.error.find('\n'), std::string::npos) << check.error;

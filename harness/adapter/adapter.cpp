@@ -163,9 +163,11 @@ Timing read_timing(const JsonField& field) {
       field.member("metric").fail("only used with \"source\": \"process\" (a simulated cost "
                                   "is counted, not timed)");
     }
+    timing.metric_by_threads = true;
     if (field.has("metric")) {
-      timing.metric = static_cast<TimingMetric>(read_choice(field.member("metric"),
-                                                            {"wall", "cpu"}));
+      const std::size_t choice = read_choice(field.member("metric"), {"wall", "cpu", "auto"});
+      timing.metric_by_threads = choice == 2;
+      if (choice < 2) timing.metric = static_cast<TimingMetric>(choice);
     }
     return timing;
   }
@@ -279,8 +281,12 @@ Adapter read_fields(const JsonField& root) {
   if (root.has("cwd")) a.cwd = read_cwd(root.member("cwd"));
   a.image = read_template(root.member("image"), TemplateField::run);
   if (root.has("env")) a.env = read_env(root.member("env"));
+  a.timing.metric_by_threads = true;
   if (root.has("timing")) a.timing = read_timing(root.member("timing"));
   if (root.has("threads")) a.threads = read_threads(root.member("threads"));
+  if (a.timing.metric_by_threads) {
+    a.timing.metric = a.threads > 1 ? TimingMetric::wall : TimingMetric::cpu;
+  }
   if (root.has("pin_cpus")) a.pin_cpus = root.member("pin_cpus").as_bool();
   if (root.has("submodules")) a.submodules = root.member("submodules").as_bool();
   if (root.has("timeout_s")) a.timeouts = read_timeouts(root.member("timeout_s"));

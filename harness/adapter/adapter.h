@@ -26,6 +26,11 @@ enum class TimeUnit { seconds, milliseconds };  // for TimingSource::reported
 struct Timing {
   TimingSource source = TimingSource::process;
   TimingMetric metric = TimingMetric::wall;
+  // "metric": "auto" (the default in adapter files): `metric` follows the adapter's threads,
+  // CPU seconds for one thread, wall seconds for more. On a shared runner a process waits for a
+  // CPU as long as its neighbours keep it busy; CPU time does not count that wait, and only
+  // wall time shows a multi-threaded tracer's speed-up.
+  bool metric_by_threads = false;
   std::string regex;  // reported only: ECMAScript, exactly one capture group (the number)
   TimeUnit unit = TimeUnit::seconds;
   bool operator==(const Timing&) const = default;

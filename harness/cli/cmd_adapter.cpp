@@ -39,8 +39,15 @@ std::string timing_line(const Timing& timing) {
     return "simulated cycles under valgrind's cachegrind (docs/simulated-timing.md)";
   }
   if (timing.source == TimingSource::process) {
-    return timing.metric == TimingMetric::wall ? "process wall-clock seconds (wait4)"
-                                               : "process CPU seconds, user + system (wait4)";
+    const char* clock = timing.metric == TimingMetric::wall
+                            ? "process wall-clock seconds (wait4)"
+                            : "process CPU seconds, user + system (wait4)";
+    if (!timing.metric_by_threads) return clock;
+    return fmt::format("{} (metric auto: {})", clock,
+                       timing.metric == TimingMetric::wall
+                           ? "threads > 1, so wall time, which shows the parallel speed-up"
+                           : "one thread, so CPU time, which a busy runner does not inflate by "
+                             "the time spent waiting for a CPU");
   }
   const char* unit = timing.unit == TimeUnit::seconds ? "seconds" : "milliseconds";
   return fmt::format("reported by the tracer: last line matching /{}/, group in {}", timing.regex,

@@ -5,6 +5,7 @@
 #include "cli/simulated_mode.h"
 #include "compare/golden.h"
 #include "core/error.h"
+#include "core/process.h"
 #include "core/sha256.h"
 
 namespace raygate::cli {
@@ -33,6 +34,9 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
       ->capture_default_str();
   command.add_option("--pin", args.pin_cpus, "pin every run to these CPUs (alternate schedule)")
       ->delimiter(',');
+  command.add_flag("--no-pin", args.no_pin,
+                   "do not pin: by default each round of a one-thread tracer runs on one CPU, "
+                   "changing every second round");
   command.add_option("--duet-cpus", args.duet_cpus, "the two CPUs of the duet schedule")
       ->delimiter(',')
       ->capture_default_str();
@@ -67,6 +71,14 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
   command.add_option("--policy", args.policy,
                      "gate policy file: slowdown limit, significance, image thresholds "
                      "(docs/gate.md)");
+}
+
+void add_baseline_rounds_option(CLI::App& command, MeasureArgs& args) {
+  command.add_option("--baseline-rounds", args.baseline_rounds,
+                     "rounds per scene the baseline joins (the change of head against base "
+                     "needs none; the normalized ratios need a few); 0 = every round")
+      ->check(CLI::Range(0, 100000))
+      ->capture_default_str();
 }
 
 void add_shard_options(CLI::App& command, MeasureArgs& args) {
@@ -123,6 +135,18 @@ void apply_shard(const MeasureArgs& args, MeasureContext& c) {
   c.shard = std::move(record);
 }
 
+// The default pinning (ScheduleOptions::round_cpus): a one-thread tracer on the alternate
+// schedule, unless --pin names CPUs or --no-pin asks for none. A tracer with more threads needs
+// more CPUs than one, and one that pins itself (adapter pin_cpus) has chosen.
+std::vector<int> default_round_cpus(const MeasureArgs& args, const MeasureContext& c) {
+  if (args.no_pin && !args.pin_cpus.empty()) throw UsageError("--no-pin and --pin exclude each other");
+  if (args.no_pin || c.schedule.kind != ScheduleKind::alternate || !args.pin_cpus.empty()) {
+    return {};
+  }
+  if (c.adapter.threads > 1 || c.adapter.pin_cpus) return {};
+  return allowed_cpu_list();
+}
+
 }  // namespace
 
 MeasureContext load_measure_context(const MeasureArgs& args) {
@@ -138,6 +162,8 @@ MeasureContext load_measure_context(const MeasureArgs& args) {
   c.schedule.warmup_runs = args.warmup;
   c.schedule.pin_cpus = args.pin_cpus;
   c.schedule.duet_cpus = args.duet_cpus;
+  c.schedule.round_cpus = default_round_cpus(args, c);
+  c.schedule.normalizer_rounds = args.baseline_rounds;
   if (c.schedule.kind == ScheduleKind::duet &&
       (args.duet_cpus.size() != 2 || args.duet_cpus[0] == args.duet_cpus[1])) {
     throw UsageError("--duet-cpus needs two different CPUs, e.g. --duet-cpus 0,1");

@@ -23,6 +23,8 @@ struct MeasureArgs {
   std::string baseline;    // raygate-baseline override
   std::string schedule = "alternate";
   std::vector<int> pin_cpus;
+  bool no_pin = false;  // --no-pin: not even the default pinning of a round to one CPU
+  std::size_t baseline_rounds = 0;  // rounds per scene the baseline joins; 0 = every round
   std::vector<int> duet_cpus{0, 1};
   int warmup = 1;
   StoppingPolicy stopping;  // --target, --min-rounds, ...; its defaults are the policy's own
@@ -34,6 +36,10 @@ struct MeasureArgs {
 };
 
 void add_measure_options(CLI::App& command, MeasureArgs& args);
+
+// --baseline-rounds: for compare and bisect, whose verdict needs no baseline (its default is
+// the value in `args` when called).
+void add_baseline_rounds_option(CLI::App& command, MeasureArgs& args);
 
 // --shard K/N and --shard-costs: for run and compare, whose documents `raygate merge` joins.
 void add_shard_options(CLI::App& command, MeasureArgs& args);

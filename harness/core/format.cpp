@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace raygate {
@@ -14,6 +15,14 @@ std::string percent(double fraction, int decimals) {
 std::string signed_percent(double fraction, int decimals) {
   if (!std::isfinite(fraction)) return "n/a";
   return fmt::format("{:+.{}f}%", 100.0 * fraction, decimals);
+}
+
+std::string duration_text(double seconds) {
+  if (!(seconds < 90.0)) {
+    if (seconds < 90.0 * 60.0) return fmt::format("{:.0f} min", seconds / 60.0);
+    return fmt::format("{:.1f} h", seconds / 3600.0);
+  }
+  return fmt::format("{:.0f} s", std::max(seconds, 0.0));
 }
 
 }  // namespace raygate

@@ -10,5 +10,7 @@ namespace raygate {
 std::string percent(double fraction, int decimals = 1);
 // 0.079 -> "+7.9%", -0.02 -> "-2.0%": a change, its sign always shown; "n/a" when not finite.
 std::string signed_percent(double fraction, int decimals = 1);
+// A span of time a person reads: "40 s", "3 min", "2.5 h".
+std::string duration_text(double seconds);
 
 }  // namespace raygate

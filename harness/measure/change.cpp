@@ -6,6 +6,9 @@
 #include <stdexcept>
 #include <vector>
 
+#include <fmt/core.h>
+
+#include "core/error.h"
 #include "measure/confidence_sequence.h"
 #include "measure/descriptive.h"
 #include "measure/median_interval.h"
@@ -17,7 +20,9 @@ std::vector<RoundSample> against_baseline(std::span<const CompareRound> rounds,
                                           double CompareRound::*revision) {
   std::vector<RoundSample> samples;
   samples.reserve(rounds.size());
-  for (const CompareRound& r : rounds) samples.push_back({r.*revision, r.baseline_seconds});
+  for (const CompareRound& r : rounds) {
+    if (r.baseline_seconds) samples.push_back({r.*revision, *r.baseline_seconds});
+  }
   return samples;
 }
 
@@ -35,12 +40,10 @@ ChangeSummary summarize_change(std::span<const CompareRound> rounds,
   if (rounds.empty()) throw std::invalid_argument("summarize_change: no rounds");
   const std::vector<RoundSample> base_rounds = against_baseline(rounds, &CompareRound::base_seconds);
   const std::vector<RoundSample> head_rounds = against_baseline(rounds, &CompareRound::head_seconds);
-  // log_ratios validates every time; ln(head/base) = ln(head/baseline) - ln(base/baseline).
+  // log_ratios validates the rounds with a baseline, log_changes every round.
   const std::vector<double> base_logs = log_ratios(base_rounds);
   const std::vector<double> head_logs = log_ratios(head_rounds);
-  std::vector<double> log_changes;
-  log_changes.reserve(rounds.size());
-  for (const CompareRound& r : rounds) log_changes.push_back(std::log(r.head_seconds / r.base_seconds));
+  const std::vector<double> log_changes = compare_log_changes(rounds);
 
   ChangeSummary summary;
   summary.rounds = rounds.size();
@@ -64,11 +67,42 @@ ChangeSummary summarize_change(std::span<const CompareRound> rounds,
     summary.change_interval = to_change(median_interval(log_changes, options.confidence)).value_or(observed);
   }
   summary.log_change_mad_scaled = mad_scaled(log_changes);
-  summary.base = summarize_ratio(base_rounds, options);
-  summary.head = summarize_ratio(head_rounds, options);
-  // Ranks are unchanged by exp, so testing the log-ratios is testing the ratios.
-  summary.mann_whitney = mann_whitney_u(head_logs, base_logs);
+  if (!base_rounds.empty()) {
+    summary.base = summarize_ratio(base_rounds, options);
+    summary.head = ratio_through_change(summary.base, summarize_ratio(head_rounds, options),
+                                        summary.change);
+    // Ranks are unchanged by exp, so testing the log-ratios is testing the ratios.
+    summary.mann_whitney = mann_whitney_u(head_logs, base_logs);
+  }
   return summary;
+}
+
+RatioSummary ratio_through_change(const RatioSummary& base, const RatioSummary& head_own,
+                                  double change) {
+  RatioSummary head = head_own;
+  const double factor = 1.0 + change;
+  head.ratio = base.ratio * factor;
+  head.ratio_interval = {base.ratio_interval.lower * factor, base.ratio_interval.upper * factor};
+  head.relative_half_width = base.relative_half_width;
+  head.log_ratio_median = base.log_ratio_median + std::log1p(change);
+  return head;
+}
+
+std::vector<double> compare_log_changes(std::span<const CompareRound> rounds) {
+  std::vector<double> log_changes;
+  log_changes.reserve(rounds.size());
+  for (std::size_t i = 0; i < rounds.size(); ++i) {
+    const CompareRound& r = rounds[i];
+    for (const double seconds : {r.base_seconds, r.head_seconds}) {
+      if (!(seconds > 0.0 && std::isfinite(seconds))) {
+        throw InfraError(fmt::format("round {}: a time of {} s cannot be compared; a change needs "
+                                     "positive times",
+                                     i + 1, seconds));
+      }
+    }
+    log_changes.push_back(std::log(r.head_seconds / r.base_seconds));
+  }
+  return log_changes;
 }
 
 std::string_view to_string(ChangeVerdict verdict) {
@@ -79,6 +113,14 @@ std::string_view to_string(ChangeVerdict verdict) {
     case ChangeVerdict::inconclusive: return "INCONCLUSIVE";
   }
   return "UNKNOWN";
+}
+
+std::optional<ChangeVerdict> change_verdict_named(std::string_view word) {
+  for (const ChangeVerdict verdict : {ChangeVerdict::unchanged, ChangeVerdict::improved,
+                                      ChangeVerdict::regressed, ChangeVerdict::inconclusive}) {
+    if (to_string(verdict) == word) return verdict;
+  }
+  return std::nullopt;
 }
 
 ChangeVerdict classify_change(double change, const Interval& change_interval, double threshold) {
@@ -164,6 +206,36 @@ ChangeVerdict classify_change(const ChangeSummary& summary, double threshold) {
     return ChangeVerdict::inconclusive;
   }
   return classify_change(summary.change, summary.change_interval, threshold);
+}
+
+std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summary,
+                                                      double threshold) {
+  if (summary.interval_kind != ChangeIntervalKind::confidence_sequence || summary.rounds == 0) {
+    return std::nullopt;
+  }
+  const double size = std::abs(summary.change);
+  const bool towards_unchanged = size < threshold;
+  const double room = towards_unchanged ? threshold - size : size;
+  const Interval& interval =
+      towards_unchanged ? summary.equivalence_interval : summary.change_interval;
+  // The side that must move: both for UNCHANGED, the one towards 0 for a change.
+  const double half_width =
+      towards_unchanged ? (interval.upper - interval.lower) / 2.0
+                        : (summary.change > 0.0 ? summary.change - interval.lower
+                                                : interval.upper - summary.change);
+  if (!(room > 1e-4) || !(half_width > 0.0) || !std::isfinite(half_width)) return std::nullopt;
+  const double ratio = half_width / room;
+  const double rounds = static_cast<double>(summary.rounds) * std::max(1.0, ratio * ratio);
+  if (rounds > 1e7) return std::nullopt;
+  return static_cast<std::size_t>(std::ceil(rounds));
+}
+
+DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict) {
+  if (summary.interval_kind == ChangeIntervalKind::confidence_sequence && !summary.exact &&
+      verdict == ChangeVerdict::unchanged) {
+    return {summary.equivalence_interval, summary.equivalence_confidence, summary.interval_kind};
+  }
+  return {summary.change_interval, summary.confidence, summary.interval_kind};
 }
 
 }  // namespace raygate

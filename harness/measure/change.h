@@ -9,6 +9,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include "measure/bootstrap.h"
 #include "measure/mann_whitney.h"
@@ -17,7 +18,9 @@
 namespace raygate {
 
 struct CompareRound {
-  double baseline_seconds = 0.0;
+  // Empty in rounds the baseline did not join (ScheduleOptions::normalizer_rounds): the change
+  // needs only base and head, the normalized ratios only the rounds with a baseline.
+  std::optional<double> baseline_seconds;
   double base_seconds = 0.0;
   double head_seconds = 0.0;
 };
@@ -50,7 +53,10 @@ struct ChangeSummary {
   double one_look_confidence = 0.0;
   double log_change_median = 0.0;
   double log_change_mad_scaled = 0.0;
-  RatioSummary base;  // each revision's normalized ratio against the baseline
+  // Each revision's normalized ratio against the baseline (default-constructed, 0 rounds, when
+  // it joined no round): base's over the rounds the baseline joined; head's is base's times the
+  // change (ratio_through_change), so the two ratios and the change agree in sign and size.
+  RatioSummary base;
   RatioSummary head;
   MannWhitneyResult mann_whitney;  // a = head's per-round ratios, b = base's
   // Counted, not sampled (--timing sim, measure/simulated_cost.h): every run of each contender
@@ -74,6 +80,19 @@ ChangeSummary summarize_change(std::span<const CompareRound> rounds,
                                const BootstrapOptions& options = {},
                                const std::optional<SequenceLevels>& sequence = std::nullopt);
 
+// head's normalized ratio as base's ratio times the change: t_head / t_baseline = (t_base /
+// t_baseline) (t_head / t_base), each factor by its own median. The baseline joins only a few
+// rounds (ScheduleOptions::normalizer_rounds), and the median of head/baseline over those few
+// can disagree in sign with the change measured in every round. The interval is base's scaled
+// by the change (the change is the far tighter of the two); head's own times (rounds, median
+// seconds, spread) are kept from `head_own`.
+RatioSummary ratio_through_change(const RatioSummary& base, const RatioSummary& head_own,
+                                  double change);
+
+// ln(t_head / t_base) of each round, in order. Throws InfraError for a time that is not
+// positive and finite.
+std::vector<double> compare_log_changes(std::span<const CompareRound> rounds);
+
 // The sequential rule's inputs: the change and its three intervals, nullopt while unbounded.
 struct SequentialIntervals {
   double change = 0.0;
@@ -89,6 +108,8 @@ SequentialIntervals sequential_intervals(std::span<const double> log_changes,
 enum class ChangeVerdict { unchanged, improved, regressed, inconclusive };
 
 std::string_view to_string(ChangeVerdict verdict);
+// The verdict a word names ("UNCHANGED", ...); nullopt for any other word.
+std::optional<ChangeVerdict> change_verdict_named(std::string_view word);
 
 inline constexpr double kDefaultChangeThreshold = 0.03;
 
@@ -111,5 +132,25 @@ ChangeVerdict classify_sequential(const SequentialIntervals& intervals, double t
 // the sequential rule on the stored intervals.
 ChangeVerdict classify_change(const ChangeSummary& summary,
                               double threshold = kDefaultChangeThreshold);
+
+// About how many rounds in all an INCONCLUSIVE scene would need at its present spread: its
+// intervals narrow about like 1/sqrt(rounds), so rounds (half-width now / half-width needed)^2.
+// The half-width needed is the room its nearer verdict leaves: UNCHANGED needs the equivalence
+// interval within +-threshold (room: threshold - |change|), REGRESSED or IMPROVED the decision
+// interval clear of 0 (room: |change|). nullopt for a summary that is not on confidence
+// sequences, or a change on the limit (no number of rounds decides it).
+std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summary,
+                                                      double threshold);
+
+// The interval a verdict was drawn from, and its confidence, so a report prints the one that
+// decided: on confidence sequences, the equivalence sequence for UNCHANGED (it must lie within
+// the limit) and the decision sequence for REGRESSED, IMPROVED and INCONCLUSIVE (what a
+// regression must clear); otherwise the change interval.
+struct DecidingInterval {
+  Interval interval;
+  double confidence = 0.0;
+  ChangeIntervalKind kind = ChangeIntervalKind::order_statistic;
+};
+DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict);
 
 }  // namespace raygate

@@ -63,7 +63,7 @@ std::optional<ChangeSummary> exact_change(std::span<const CompareRound> rounds) 
   if (rounds.size() < 2) return std::nullopt;
   std::vector<double> baseline, base, head;
   for (const CompareRound& round : rounds) {
-    baseline.push_back(round.baseline_seconds);
+    if (round.baseline_seconds) baseline.push_back(*round.baseline_seconds);
     base.push_back(round.base_seconds);
     head.push_back(round.head_seconds);
   }

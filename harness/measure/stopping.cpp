@@ -26,7 +26,7 @@ StopDecision should_stop(const StoppingState& state, const StoppingPolicy& polic
 
 StoppingPolicy change_stopping_policy() {
   StoppingPolicy policy;
-  policy.max_rounds = 60;
+  policy.max_rounds = 300;
   policy.max_minutes = 8.0;
   return policy;
 }

@@ -31,10 +31,15 @@ struct StoppingPolicy {
 };
 
 // The defaults of compare and bisect. Their verdicts come from confidence sequences, which stay
-// unbounded for the first 12-19 rounds (docs/statistics.md §6a), so a scene may take 60 rounds;
-// the whole compare is bounded instead, by 8 minutes, so a full `ci` compare fits a 10-minute
-// CI step.
+// unbounded for the first 9-17 rounds (docs/statistics.md §6a), and a round without the
+// baseline costs only base and head, so a scene near its limit may take 300 rounds; the whole
+// compare is bounded instead, by 8 minutes, so a full `ci` compare fits a 10-minute CI step.
 StoppingPolicy change_stopping_policy();
+
+// The rounds of a compare or bisect scene the baseline joins: the change needs none (the
+// baseline cancels within a round), each revision's normalized ratio a few; more would spend
+// most of a fast tracer's compare timing a program outside the verdict.
+inline constexpr std::size_t kChangeBaselineRounds = 3;
 
 enum class StopDecision {
   continue_measuring,

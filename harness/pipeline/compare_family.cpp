@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/format.h"
 #include "measure/confidence_sequence.h"
 #include "measure/family.h"
 #include "pipeline/stopping.h"
@@ -21,7 +22,23 @@ bool in_family(const SceneResult& scene) {
 // "balls +0.4% [-3.9%, +4.8%] (width 8.7 points) after 38 rounds", or, below the rounds its
 // sequence needs, "balls +0.4% after 9 rounds, no interval yet (needs 16 rounds)": the stored
 // interval is then only the observed range.
-std::string undecided_scene(const SceneResult& scene) {
+// ", needs about 180 rounds (about 3 min at this scene's pace) or a quieter runner", or why no
+// number of rounds would do.
+std::string what_would_decide(const SceneResult& scene, double threshold) {
+  const ChangeSummary& c = *scene.change;
+  const std::optional<std::size_t> rounds = estimated_rounds_to_decide(c, threshold);
+  if (!rounds) {
+    return fmt::format("(a change this close to the {:+.1f}% limit takes more rounds than any "
+                       "budget; a limit below the smallest slowdown that matters decides it)",
+                       100 * threshold);
+  }
+  const double seconds_per_round =
+      c.rounds > 0 ? scene.runs.seconds_spent / static_cast<double>(c.rounds) : 0.0;
+  return fmt::format("(needs about {} rounds, about {} at this scene's pace, or a quieter runner)",
+                     *rounds, duration_text(seconds_per_round * static_cast<double>(*rounds)));
+}
+
+std::string undecided_scene(const SceneResult& scene, double threshold) {
   const ChangeSummary& c = *scene.change;
   const std::size_t needed = c.interval_kind == ChangeIntervalKind::confidence_sequence
                                  ? min_values_for_median_sequence((1.0 - c.confidence) / 2.0)
@@ -30,10 +47,11 @@ std::string undecided_scene(const SceneResult& scene) {
     return fmt::format("{} {:+.1f}% after {} rounds, no interval yet (needs {} rounds)",
                        scene.entry.id, 100 * c.change, c.rounds, needed);
   }
-  return fmt::format("{} {:+.1f}% [{:+.1f}%, {:+.1f}%] (width {:.1f} points) after {} rounds",
-                     scene.entry.id, 100 * c.change, 100 * c.change_interval.lower,
-                     100 * c.change_interval.upper,
-                     100 * (c.change_interval.upper - c.change_interval.lower), c.rounds);
+  std::string text = fmt::format(
+      "{} {:+.1f}% [{:+.1f}%, {:+.1f}%] (width {:.1f} points) after {} rounds", scene.entry.id,
+      100 * c.change, 100 * c.change_interval.lower, 100 * c.change_interval.upper,
+      100 * (c.change_interval.upper - c.change_interval.lower), c.rounds);
+  return text + " " + what_would_decide(scene, threshold);
 }
 
 }  // namespace
@@ -43,12 +61,7 @@ double scene_decision_alpha(const GatePolicy& policy, std::size_t family_size) {
 }
 
 std::vector<double> log_changes(const std::vector<Round>& rounds) {
-  std::vector<double> logs;
-  logs.reserve(rounds.size());
-  for (const CompareRound& r : compare_samples(rounds)) {
-    logs.push_back(std::log(r.head_seconds / r.base_seconds));
-  }
-  return logs;
+  return compare_log_changes(compare_samples(rounds));
 }
 
 std::vector<std::string> apply_family_control(ResultsDocument& document, const GatePolicy& policy,
@@ -79,11 +92,12 @@ std::vector<std::string> apply_family_control(ResultsDocument& document, const G
   return changed;
 }
 
-std::string undecided_line(const ResultsDocument& document) {
+std::string undecided_line(const ResultsDocument& document, const GatePolicy& policy) {
   std::string line;
   for (const SceneResult& scene : document.scenes) {
     if (!scene.change || scene.change_verdict != to_string(ChangeVerdict::inconclusive)) continue;
-    line += (line.empty() ? "" : "; ") + undecided_scene(scene);
+    line += (line.empty() ? "" : "; ") +
+            undecided_scene(scene, policy.for_scene(scene.entry.id).max_slowdown);
   }
   return line.empty() ? line : "undecided (INCONCLUSIVE): " + line;
 }

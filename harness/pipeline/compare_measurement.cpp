@@ -2,7 +2,11 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <optional>
+
 #include "core/time_text.h"
+#include "measure/confidence_sequence.h"
 #include "measure/simulated_cost.h"
 #include "pipeline/compare_family.h"
 #include "pipeline/stopping.h"
@@ -22,12 +26,39 @@ void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, dou
                                  counted, scene_levels(policy, alpha));
   scene.change_verdict =
       std::string(to_string(classify_change(*scene.change, policy.max_slowdown)));
+  // The document's ratios are the change's: head's through the change (ratio_through_change).
+  if (scene.change->base.rounds > 0) {
+    scene.ratios["base"] = scene.change->base;
+    scene.ratios["head"] = scene.change->head;
+  }
   const RunRecord* base = scene.runs.first_run("base");
   const RunRecord* head = scene.runs.first_run("head");
   if (base != nullptr && head != nullptr) {
     scene.images.push_back(check_image("head", "base", head->image, base->image, policy.image,
                                        evidence_dir, scene.entry.id + ".head-vs-base"));
   }
+}
+
+// A round budget below what a verdict needs makes the compare a slow way to print
+// INCONCLUSIVE; say so before measuring, with the numbers (sim mode decides in two rounds).
+std::optional<std::string> round_budget_warning(const MeasureContext& context, double alpha) {
+  if (simulated(context)) return std::nullopt;
+  const std::size_t max_rounds = context.stopping.max_rounds;
+  const std::size_t to_regress = min_values_for_median_sequence(alpha);
+  std::size_t to_pass = to_regress;
+  for (const SuiteScene& scene : context.scenes) {
+    to_pass = std::min(to_pass,
+                       min_values_for_median_sequence(context.policy.for_scene(scene.id).significance));
+  }
+  if (max_rounds >= to_regress) return std::nullopt;
+  if (max_rounds < to_pass) {
+    return fmt::format("warning: --max-rounds {} allows no verdict: a scene needs {} rounds to be "
+                       "UNCHANGED and {} to be REGRESSED, so every scene will be INCONCLUSIVE",
+                       max_rounds, to_pass, to_regress);
+  }
+  return fmt::format("warning: --max-rounds {} cannot find a regression: REGRESSED needs {} "
+                     "rounds at this family's significance (UNCHANGED {})",
+                     max_rounds, to_regress, to_pass);
 }
 
 }  // namespace
@@ -57,6 +88,7 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
   const std::size_t family_size =
       context.shard ? context.shard->suite_scenes.size() : m.scenes.size();
   const double alpha = scene_decision_alpha(context.policy, family_size);
+  if (const auto warning = round_budget_warning(context, alpha)) io.progress.line(*warning);
   SuiteBudget budget(context.stopping, m.scenes.size(), io.clock);
   m.stop = [&](const SuiteScene& scene) {
     const ScenePolicy& policy = context.policy.for_scene(scene.id);
@@ -73,7 +105,7 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
       lines.push_back(id + ": REGRESSED at its Holm share of the family (other scenes regressed "
                            "first)");
     }
-    if (std::string undecided = undecided_line(document); !undecided.empty()) {
+    if (std::string undecided = undecided_line(document, context.policy); !undecided.empty()) {
       lines.push_back(std::move(undecided));
     }
     return lines;

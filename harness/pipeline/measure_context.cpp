@@ -28,6 +28,8 @@ nlohmann::json measure_settings(const MeasureContext& c) {
       {"warmup_runs", c.schedule.warmup_runs},
       {"pin_cpus", c.schedule.pin_cpus},
       {"duet_cpus", c.schedule.duet_cpus},
+      {"round_cpus", c.schedule.round_cpus},
+      {"baseline_rounds", c.schedule.normalizer_rounds},
       {"target_relative_half_width", c.stopping.target_relative_half_width},
       {"min_rounds", c.stopping.min_rounds},
       {"max_rounds", c.stopping.max_rounds},
@@ -36,6 +38,7 @@ nlohmann::json measure_settings(const MeasureContext& c) {
       {"metric", simulated(c)  ? std::string(tracer_clock_name(c.adapter.timing.source, {}))
                  : c.metric ? std::string(to_string(*c.metric))
                             : std::string(to_string(c.adapter.timing.metric))},
+      {"metric_by_threads", !simulated(c) && !c.metric && c.adapter.timing.metric_by_threads},
       {"timing_source", std::string(to_string(c.adapter.timing.source))},
       {"tracer_clock",
        std::string(tracer_clock_name(c.adapter.timing.source, tracer_metric(c)))},

@@ -132,7 +132,7 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
 
   for (int w = 1; w <= options.warmup_runs; ++w) {
     for (const Contender* contender : contenders) {
-      RunRecord run = launcher.run(*contender, fmt::format("warmup-{}", w), options.pin_cpus);
+      RunRecord run = launcher.run(*contender, fmt::format("warmup-{}", w), cpus_of_round(options, 0));
       out.warmup[contender->role()].push_back(run);
       if (!run.ok) return fail(contender->role(), run);
     }
@@ -170,8 +170,13 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
         round.order.push_back(pair[static_cast<std::size_t>(it - cpus.begin())]->role());
       }
     } else {
-      for (const Contender* contender : rotated(roster, index)) {
-        RunRecord run = launcher.run(*contender, label, options.pin_cpus);
+      const std::vector<const Contender*> present =
+          normalizer_runs_in(options, index)
+              ? roster
+              : std::vector<const Contender*>(roster.begin() + 1, roster.end());
+      const std::vector<int> cpus = cpus_of_round(options, index);
+      for (const Contender* contender : rotated(present, index)) {
+        RunRecord run = launcher.run(*contender, label, cpus);
         if (!run.ok) return fail(contender->role(), run, round.runs);
         round.order.push_back(contender->role());
         round.runs[contender->role()] = std::move(run);
@@ -188,13 +193,26 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
   }
 }
 
+std::vector<int> cpus_of_round(const ScheduleOptions& options, std::size_t index) {
+  if (!options.pin_cpus.empty()) return options.pin_cpus;
+  if (options.round_cpus.empty()) return {};
+  // Every second round: rounds 2k and 2k + 1 run in both orders on the same CPU.
+  return {options.round_cpus[(index / 2) % options.round_cpus.size()]};
+}
+
+bool normalizer_runs_in(const ScheduleOptions& options, std::size_t index) {
+  return options.normalizer_rounds == 0 || index < options.normalizer_rounds;
+}
+
 std::vector<RoundSample> round_samples(const std::vector<Round>& rounds,
                                        const std::string& tracer_role,
                                        const std::string& baseline_role) {
   std::vector<RoundSample> samples;
   samples.reserve(rounds.size());
   for (const Round& round : rounds) {
-    samples.push_back({round.runs.at(tracer_role).seconds, round.runs.at(baseline_role).seconds});
+    const auto baseline = round.runs.find(baseline_role);
+    if (baseline == round.runs.end()) continue;  // a round the normalizer did not join
+    samples.push_back({round.runs.at(tracer_role).seconds, baseline->second.seconds});
   }
   return samples;
 }
@@ -203,8 +221,11 @@ std::vector<CompareRound> compare_samples(const std::vector<Round>& rounds) {
   std::vector<CompareRound> samples;
   samples.reserve(rounds.size());
   for (const Round& round : rounds) {
-    samples.push_back({round.runs.at("baseline").seconds, round.runs.at("base").seconds,
-                       round.runs.at("head").seconds});
+    CompareRound sample{std::nullopt, round.runs.at("base").seconds, round.runs.at("head").seconds};
+    if (const auto baseline = round.runs.find("baseline"); baseline != round.runs.end()) {
+      sample.baseline_seconds = baseline->second.seconds;
+    }
+    samples.push_back(sample);
   }
   return samples;
 }

@@ -34,10 +34,27 @@ struct ScheduleOptions {
   int warmup_runs = 1;         // per contender, not counted
   std::vector<int> pin_cpus;   // alternate: every run pinned to these CPUs; empty: no pinning
   std::vector<int> duet_cpus{0, 1};  // duet: one CPU per contender, rotated each round
+  // Alternate schedule without pin_cpus: every run of a round pinned to one of these CPUs, the
+  // CPU changing every second round (so each CPU sees both orders). The contenders compared
+  // within a round then share a CPU: a VM's vCPUs differ in speed, and an unpinned pair that
+  // lands on two of them measures the CPUs, not the change. Empty: no pinning.
+  std::vector<int> round_cpus;
+  // The normalizer (the first contender: the baseline) joins only the first `normalizer_rounds`
+  // rounds of a scene; 0 = every round. compare judges ln(head / base) within a round, where
+  // the baseline cancels, so it is timed only as often as the normalized ratio needs.
+  std::size_t normalizer_rounds = 0;
 };
 
+// The CPUs the runs of round `index` (0-based) are pinned to: pin_cpus if given, else one of
+// round_cpus (see there), else none.
+std::vector<int> cpus_of_round(const ScheduleOptions& options, std::size_t index);
+
+// Does the normalizer run in round `index` (0-based)?
+bool normalizer_runs_in(const ScheduleOptions& options, std::size_t index);
+
 struct Round {
-  // Roles in the order they ran; in a duet, the pair in CPU order (after the baseline that ran
+  // Roles in the order they ran (the baseline only in the rounds it joined, see
+  // ScheduleOptions::normalizer_rounds); in a duet, the pair in CPU order (after the baseline that ran
   // alone before them, with three contenders).
   std::vector<std::string> order;
   std::map<std::string, RunRecord> runs;  // by role
@@ -75,12 +92,13 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
                         Clock& clock, const std::filesystem::path& scene_dir,
                         const RoundObserver& on_round = {});
 
-// The rounds as (tracer, baseline) pairs of their `seconds`.
+// The rounds as (tracer, baseline) pairs of their `seconds`, of the rounds both ran in.
 std::vector<RoundSample> round_samples(const std::vector<Round>& rounds,
                                        const std::string& tracer_role,
                                        const std::string& baseline_role = "baseline");
 
-// The rounds as (baseline, base, head) triples of their `seconds`, for compare.
+// The rounds as (baseline, base, head) triples of their `seconds`, for compare; the baseline's
+// is empty in rounds it did not join.
 std::vector<CompareRound> compare_samples(const std::vector<Round>& rounds);
 
 std::string_view to_string(ScheduleKind kind);

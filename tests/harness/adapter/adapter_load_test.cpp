@@ -54,9 +54,11 @@ TEST(AdapterLoad, BaselineAdapterBuildsTheBaselineAndRunsBbox) {
   EXPECT_NE(std::find(a.build[1].begin(), a.build[1].end(), "raygate-baseline"), a.build[1].end());
   EXPECT_EQ(a.run, (std::vector<std::string>{"{build}/bin/raygate-baseline", "{scene}", "-o",
                                              "{image}", "--accel", "bbox"}));
-  // Timed by its process like any tracer (the baseline then by the same clock, DESIGN.md §11).
+  // Timed by its process like any tracer (the baseline then by the same clock, DESIGN.md §11):
+  // "auto", so CPU time for its one thread.
   EXPECT_EQ(a.timing.source, TimingSource::process);
-  EXPECT_EQ(a.timing.metric, TimingMetric::wall);
+  EXPECT_TRUE(a.timing.metric_by_threads);
+  EXPECT_EQ(a.timing.metric, TimingMetric::cpu);
 }
 
 // The README's complete example must stay a valid adapter.
@@ -113,12 +115,28 @@ TEST(AdapterLoad, Defaults) {
   EXPECT_EQ(a.cwd, "{workdir}");
   EXPECT_FALSE(a.stdin_template.has_value());
   EXPECT_EQ(a.timing.source, TimingSource::process);
-  EXPECT_EQ(a.timing.metric, TimingMetric::wall);
+  EXPECT_EQ(a.timing.metric, TimingMetric::cpu);  // "auto" with one thread
+  EXPECT_TRUE(a.timing.metric_by_threads);
   EXPECT_EQ(a.threads, 1);
   EXPECT_FALSE(a.pin_cpus);
   EXPECT_TRUE(a.submodules);
   EXPECT_DOUBLE_EQ(a.timeouts.build_seconds, 1800);
   EXPECT_DOUBLE_EQ(a.timeouts.run_seconds, 600);
+}
+
+TEST(AdapterLoad, AutoMetricFollowsThreadsAndAnExplicitOneStays) {
+  const auto load = [](const std::string& extra) { return parse_adapter(with(extra), "f.json"); };
+  EXPECT_EQ(load(R"("threads": 4)").timing.metric, TimingMetric::wall);
+  EXPECT_EQ(load(R"("timing": {"metric": "auto"}, "threads": 4)").timing.metric,
+            TimingMetric::wall);
+  EXPECT_EQ(load(R"("timing": {"metric": "auto"})").timing.metric, TimingMetric::cpu);
+  const Adapter wall = load(R"("timing": {"source": "process", "metric": "wall"})");
+  EXPECT_EQ(wall.timing.metric, TimingMetric::wall);
+  EXPECT_FALSE(wall.timing.metric_by_threads);
+  const Adapter cpu = load(R"("timing": {"metric": "cpu"}, "threads": 8)");
+  EXPECT_EQ(cpu.timing.metric, TimingMetric::cpu);
+  EXPECT_FALSE(cpu.timing.metric_by_threads);
+  EXPECT_THROW(load(R"("timing": {"metric": "fastest"})"), UsageError);
 }
 
 TEST(AdapterLoad, LoadNamesAMissingFile) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/error.h"
 #include "measure/mann_whitney.h"
 #include "synthetic.h"
 
@@ -55,6 +56,22 @@ TEST(MeasureChange, BaselineCancelsWithinARound) {
   EXPECT_NEAR(s.change_interval.upper, 0.10, 1e-12);
   EXPECT_NEAR(s.base.ratio, 2.0, 1e-12);  // median of 2, 0.833, 2
   EXPECT_EQ(s.rounds, 3u);
+}
+
+TEST(MeasureChange, RoundsWithoutABaselineCountForTheChangeOnly) {
+  // The baseline joined the first two rounds (ScheduleOptions::normalizer_rounds).
+  const std::vector<CompareRound> rounds{
+      {1.0, 2.0, 2.2}, {4.0, 2.0, 2.2}, {std::nullopt, 2.0, 2.2}, {std::nullopt, 1.0, 1.1}};
+  const ChangeSummary s = summarize_change(rounds);
+  EXPECT_EQ(s.rounds, 4u);
+  EXPECT_NEAR(s.change, 0.10, 1e-12);
+  EXPECT_EQ(s.base.rounds, 2u);
+  EXPECT_NEAR(s.base.ratio, std::sqrt(2.0 * 0.5), 1e-12);  // geometric mean of 2 and 0.5
+  // No baseline at all: the change alone, and ratios of no rounds.
+  const ChangeSummary bare = summarize_change(std::vector<CompareRound>{{std::nullopt, 1.0, 1.2}});
+  EXPECT_NEAR(bare.change, 0.2, 1e-12);
+  EXPECT_EQ(bare.head.rounds, 0u);
+  EXPECT_THROW(summarize_change(std::vector<CompareRound>{{std::nullopt, 0.0, 1.0}}), InfraError);
 }
 
 TEST(MeasureChange, PairingCancelsRoundDrift) {

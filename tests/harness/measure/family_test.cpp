@@ -3,6 +3,7 @@
 // 13 scenes raise at most 1% false alarms (and one-look verdicts at every round raise far more),
 // +5% is detected in at least 95% of 6-scene compares, and the time budget's shares.
 #include "measure/family.h"
+#include "measure/stopping.h"
 
 #include <gtest/gtest.h>
 
@@ -58,14 +59,15 @@ TEST(MeasureFamily, HolmGivesUndecidedScenesTheRejectedScenesShares) {
 struct Outcome {
   int compares_with_regressed = 0;
   int scenes_regressed = 0;
+  int scenes_decided = 0;  // not INCONCLUSIVE
   int scenes = 0;
 };
 
 // `compares` simulated compares of `scenes` scenes at the default rule: each scene measured
-// until its verdict at family/K is decided or 60 rounds, then Holm. threshold 0 makes
+// until its verdict at family/K is decided or `max_rounds` rounds, then Holm. threshold 0 makes
 // REGRESSED mean "significantly slower" alone, the hardest case for the false-alarm bound.
 Outcome simulate(int compares, int scenes, double true_factor, double threshold,
-                 std::uint64_t seed) {
+                 std::uint64_t seed, std::size_t max_rounds = 60) {
   const double alpha = scene_sequence_alpha(kDefaultFamilySignificance, scenes);
   Outcome outcome;
   for (int c = 0; c < compares; ++c) {
@@ -73,11 +75,13 @@ Outcome simulate(int compares, int scenes, double true_factor, double threshold,
     for (int s = 0; s < scenes; ++s) {
       testing::VmRounds rounds(seed + 100 * static_cast<std::uint64_t>(c) + s, {});
       FamilyScene scene{{}, threshold, 0.05};
-      while (scene.log_changes.size() < 60) {
+      bool decided = false;
+      while (scene.log_changes.size() < max_rounds && !decided) {
         const CompareRound r = rounds.next(true_factor);
         scene.log_changes.push_back(std::log(r.head_seconds / r.base_seconds));
-        if (sequence_verdict(scene, alpha) != ChangeVerdict::inconclusive) break;
+        decided = sequence_verdict(scene, alpha) != ChangeVerdict::inconclusive;
       }
+      outcome.scenes_decided += decided ? 1 : 0;
       family.push_back(std::move(scene));
     }
     const std::vector<double> alphas = holm_sequence_alphas(family, kDefaultFamilySignificance);
@@ -124,6 +128,18 @@ TEST(MeasureFamily, DetectsFivePercentInNinetyFivePercentOfCompares) {
   const Outcome slow = simulate(1000, 6, 1.05, 0.03, 3);
   EXPECT_GE(slow.compares_with_regressed, 950);
   EXPECT_GE(slow.scenes_regressed, slow.scenes * 85 / 100);
+}
+
+TEST(MeasureFamily, TheCiSuiteAtTheCompareRoundBudgetKeepsItsBoundAndDecides) {
+  // The whole ci suite (13 scenes) at compare's round budget: rounds without the baseline are
+  // cheap, so a scene may take up to 300 looks; the sequences stay valid at every one of them.
+  const std::size_t max_rounds = change_stopping_policy().max_rounds;
+  const Outcome aa = simulate(1000, 13, 1.0, 0.03, 4, max_rounds);
+  EXPECT_LE(aa.compares_with_regressed, 10);
+  EXPECT_GE(aa.scenes_decided, aa.scenes * 99 / 100);
+  const Outcome slow = simulate(1000, 13, 1.05, 0.03, 5, max_rounds);
+  EXPECT_GE(slow.compares_with_regressed, 950);
+  EXPECT_GE(slow.scenes_regressed, slow.scenes * 95 / 100);
 }
 
 TEST(MeasureCompareBudget, UnspentTimeGoesToTheScenesLeft) {

@@ -41,7 +41,7 @@ TEST(StoppingRule, DefaultsAreTheDocumentedOnes) {
   EXPECT_DOUBLE_EQ(policy.max_minutes, 0.0);
   // compare and bisect: room for the confidence sequences, the whole compare bounded instead.
   const StoppingPolicy change = change_stopping_policy();
-  EXPECT_EQ(change.max_rounds, 60u);
+  EXPECT_EQ(change.max_rounds, 300u);
   EXPECT_DOUBLE_EQ(change.max_minutes, 8.0);
   EXPECT_DOUBLE_EQ(change.max_seconds, policy.max_seconds);
 }

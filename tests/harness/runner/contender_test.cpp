@@ -155,10 +155,12 @@ TEST_F(ContenderTest, TracerIsPinnedToTheCpusOfItsSetup) {
 
 // --- interpret: images and exits ---------------------------------------------------------------
 
-TEST_F(ContenderTest, TracerWithImageIsTimedByWallSeconds) {
+TEST_F(ContenderTest, OneThreadTracerIsTimedByCpuSecondsAndWallIsKept) {
+  // No "metric" in the adapter: "auto", CPU time for one thread.
   const RunRecord r = run(tracer(kWorkdirImage), exited_with(0, 2.5, 1.5, 0.5), "P6 ...");
   EXPECT_TRUE(r.ok) << r.failure;
-  EXPECT_DOUBLE_EQ(r.seconds, 2.5);
+  EXPECT_DOUBLE_EQ(r.seconds, 2.0);
+  EXPECT_DOUBLE_EQ(r.wall_seconds, 2.5);
   EXPECT_DOUBLE_EQ(r.cpu_seconds(), 2.0);
   EXPECT_EQ(r.max_rss_kib, 4096);
   EXPECT_EQ(r.image, run_dir_ / "work" / "trace.ppm");

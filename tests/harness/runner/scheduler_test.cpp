@@ -144,6 +144,60 @@ TEST_F(SchedulerTest, PinCpusApplyToEveryRunOfTheAlternateSchedule) {
   for (const Call& call : executor_.calls()) EXPECT_EQ(call.cpus, std::vector<int>{3}) << call.role;
 }
 
+TEST_F(SchedulerTest, RoundCpusPinEveryRunOfARoundToOneCpuChangingEverySecondRound) {
+  options_.warmup_runs = 1;
+  options_.round_cpus = {0, 1};
+  const SceneRuns runs = measure_pair(stop_after(5));
+  ASSERT_EQ(runs.rounds.size(), 5u);
+  const std::vector<Call>& calls = executor_.calls();
+  ASSERT_EQ(calls.size(), 12u);  // two warm-ups, then five rounds of two
+  // Warm-ups on the first round's CPU; then rounds 1-2 on CPU 0, 3-4 on CPU 1, 5 on CPU 0: each
+  // CPU sees both orders, and the two runs of a round always share their CPU.
+  const std::vector<int> expected{0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 0, 0};
+  for (std::size_t i = 0; i < calls.size(); ++i) {
+    EXPECT_EQ(calls[i].cpus, std::vector<int>{expected[i]}) << "call " << i;
+  }
+}
+
+TEST_F(SchedulerTest, PinCpusWinOverRoundCpus) {
+  options_.pin_cpus = {3};
+  options_.round_cpus = {0, 1};
+  measure_pair(stop_after(4));
+  for (const Call& call : executor_.calls()) EXPECT_EQ(call.cpus, std::vector<int>{3}) << call.role;
+}
+
+TEST_F(SchedulerTest, NormalizerJoinsOnlyTheFirstRoundsAndTheOthersStillAlternate) {
+  options_.warmup_runs = 1;
+  options_.normalizer_rounds = 2;
+  const SceneRuns runs = measure({&baseline_, &base_, &head_}, stop_after(5));
+  ASSERT_EQ(runs.rounds.size(), 5u);
+  EXPECT_EQ(runs.rounds[0].order, (Roles{"baseline", "base", "head"}));
+  EXPECT_EQ(runs.rounds[1].order, (Roles{"base", "head", "baseline"}));
+  EXPECT_EQ(runs.rounds[2].order, (Roles{"base", "head"}));
+  EXPECT_EQ(runs.rounds[3].order, (Roles{"head", "base"}));
+  EXPECT_EQ(runs.rounds[4].order, (Roles{"base", "head"}));
+  EXPECT_FALSE(runs.rounds[2].runs.contains("baseline"));
+  EXPECT_EQ(runs.warmup.size(), 3u);  // the baseline still warms up once
+  // 3 warm-ups + 2 rounds of three + 3 rounds of two.
+  EXPECT_EQ(executor_.calls().size(), 3u + 6u + 6u);
+}
+
+TEST_F(SchedulerTest, SamplesOfRoundsWithoutTheNormalizer) {
+  options_.warmup_runs = 0;
+  options_.normalizer_rounds = 1;
+  executor_.set_seconds("baseline", {2.0});
+  executor_.set_seconds("base", {0.5});
+  executor_.set_seconds("head", {0.6});
+  const SceneRuns runs = measure({&baseline_, &base_, &head_}, stop_after(3));
+  // The ratios pair only the round with a baseline; the change sees every round.
+  EXPECT_EQ(round_samples(runs.rounds, "head").size(), 1u);
+  const std::vector<CompareRound> samples = compare_samples(runs.rounds);
+  ASSERT_EQ(samples.size(), 3u);
+  EXPECT_EQ(samples[0].baseline_seconds, std::optional<double>(2.0));
+  EXPECT_FALSE(samples[1].baseline_seconds.has_value());
+  EXPECT_DOUBLE_EQ(samples[2].head_seconds, 0.6);
+}
+
 // --- stopping ----------------------------------------------------------------------------------
 
 TEST_F(SchedulerTest, StopRuleSeesCompleteRoundsAndTheSecondsSpent) {

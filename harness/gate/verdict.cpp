@@ -31,11 +31,11 @@ void judge_failure(const ResultsDocument& document, const SceneResult& scene, Sc
 }
 
 // "95% CI" for a one-look interval, "99.83% confidence sequence" for the sequential rule's.
-std::string interval_name(const ChangeSummary& change) {
-  if (change.interval_kind == ChangeIntervalKind::confidence_sequence) {
-    return fmt::format("{:.4g}% confidence sequence", 100.0 * change.confidence);
+std::string interval_name(const DecidingInterval& interval) {
+  if (interval.kind == ChangeIntervalKind::confidence_sequence) {
+    return fmt::format("{:.4g}% confidence sequence", 100.0 * interval.confidence);
   }
-  return fmt::format("{:.0f}% CI", 100.0 * change.confidence);
+  return fmt::format("{:.4g}% CI", 100.0 * interval.confidence);
 }
 
 void judge_speed(const SceneResult& scene, const ScenePolicy& policy, bool fail_on_inconclusive,
@@ -47,10 +47,11 @@ void judge_speed(const SceneResult& scene, const ScenePolicy& policy, bool fail_
   const ChangeSummary& change = *scene.change;
   const ChangeVerdict verdict = classify_change(change, policy.max_slowdown);
   gate.speed = std::string(to_string(verdict));
+  const DecidingInterval decided = deciding_interval(change, verdict);
   const std::string numbers = fmt::format(
       "head vs base {} ({} {} to {}), ratio {:.3f} -> {:.3f}, {} rounds, limit {}",
-      signed_percent(change.change), interval_name(change),
-      signed_percent(change.change_interval.lower), signed_percent(change.change_interval.upper),
+      signed_percent(change.change), interval_name(decided),
+      signed_percent(decided.interval.lower), signed_percent(decided.interval.upper),
       change.base.ratio, change.head.ratio, change.rounds, signed_percent(policy.max_slowdown));
   if (verdict == ChangeVerdict::regressed) raise(gate, GateOutcome::fail, "slower: " + numbers);
   if (verdict == ChangeVerdict::inconclusive) {

@@ -46,7 +46,7 @@ class ConsoleReporter final : public Reporter {
 Row heading(const ResultsDocument& document) {
   const bool compare = document.kind == "compare";
   return {"scene", compare ? "ratio base->head" : "ratio [95% CI]",
-          compare ? "change [95% CI]" : "", "speed", "image", "verdict"};
+          compare ? kChangeHeading : "", "speed", "image", "verdict"};
 }
 
 Row row_of(const ResultsDocument& document, const SceneView& view) {
@@ -86,6 +86,7 @@ void ConsoleReporter::write_header(const ReportInput& input, std::ostream& out) 
   if (const std::string machine = machine_line(d.machine); !machine.empty()) {
     out << dim("machine: " + machine) << '\n';
   }
+  if (const std::string clock = clock_line(d); !clock.empty()) out << dim("clock: " + clock) << '\n';
   out << dim("policy: " + policy_line(input.policy)) << "\n\n";
 }
 

@@ -99,7 +99,7 @@ std::string overview(const ReportInput& input, const std::vector<SceneView>& vie
   std::string html = R"(<section class="card overview"><h2>Scenes</h2>)" + counts_html(input.gate);
   html += fmt::format(
       R"(<table class="scenes"><thead><tr><th>scene</th><th>verdict</th><th>{}</th>{}<th>speed</th><th>image</th></tr></thead><tbody>)",
-      compare ? "ratio base → head" : "ratio [95% CI]", compare ? "<th>change [95% CI]</th>" : "");
+      compare ? "ratio base → head" : "ratio [95% CI]", compare ? fmt::format("<th>{}</th>", kChangeHeading) : "");
   for (const SceneView& view : views) {
     html += fmt::format(R"(<tr class="{}"><td><a href="#{}">{}</a></td><td>{}</td><td class="num">{}</td>)",
                         outcome_class(view.gate.outcome), anchor(view.gate.id),
@@ -144,8 +144,10 @@ class HtmlReporter final : public Reporter {
         << overview(input, views) << '\n' << scaling_section(d) << '\n';
     for (const SceneView& view : views) out << scene_section(input, view) << '\n';
     out << "<footer>raygate " << escape(d.raygate_version)
-        << " · normalized ratio = time(tracer) / time(baseline), medians of paired rounds with "
-           "bootstrap 95% CIs · hover an image to see its reference</footer></div>\n"
+        << " · normalized ratio = time(tracer) / time(baseline), median of paired rounds with a "
+           "bootstrap 95% CI · change = median of per-round head/base with the interval that "
+           "decided its verdict (CS: anytime-valid confidence sequence) · hover an image to see "
+           "its reference</footer></div>\n"
         << "<script>" << page_script() << "</script></body></html>\n";
   }
 };

@@ -57,8 +57,9 @@ std::string intro(const ResultsDocument& d) {
 
 std::string table_head(const ResultsDocument& d) {
   if (d.kind == "compare") {
-    return "| verdict | scene | ratio base → head | change [95% CI] | speed | image |\n"
-           "|---|---|---|---|---|---|\n";
+    return fmt::format("| verdict | scene | ratio base → head | {} | speed | image |\n"
+                       "|---|---|---|---|---|---|\n",
+                       kChangeHeading);
   }
   return "| verdict | scene | ratio [95% CI] | speed | image |\n|---|---|---|---|---|\n";
 }

@@ -185,9 +185,33 @@ std::string change_text(const SceneResult& scene) {
   const ChangeSummary& c = *scene.change;
   // Counted in simulated cycles, every count repeated: the change is a fact, not an estimate.
   if (c.exact) return signed_percent(c.change, 3) + " exact (simulated cycles)";
-  return fmt::format("{} [{}, {}]", signed_percent(c.change),
-                     signed_percent(c.change_interval.lower),
-                     signed_percent(c.change_interval.upper));
+  const ChangeVerdict verdict =
+      change_verdict_named(scene.change_verdict).value_or(ChangeVerdict::inconclusive);
+  const DecidingInterval d = deciding_interval(c, verdict);
+  return fmt::format("{} [{}, {}] {:.4g}% {}, {} rounds", signed_percent(c.change),
+                     signed_percent(d.interval.lower), signed_percent(d.interval.upper),
+                     100.0 * d.confidence,
+                     d.kind == ChangeIntervalKind::confidence_sequence ? "CS" : "CI", c.rounds);
+}
+
+std::string clock_line(const ResultsDocument& document) {
+  const nlohmann::json& s = document.settings;
+  const auto text = [&](const char* key) {
+    return s.contains(key) && s.at(key).is_string() ? s.at(key).get<std::string>() : "";
+  };
+  const std::string tracer = text("tracer_clock");
+  if (tracer.empty()) return "";
+  std::string line = tracer;
+  if (s.value("metric_by_threads", false)) {
+    line += s.value("threads", 1) > 1 ? " (auto: threads > 1)" : " (auto: one thread)";
+  }
+  if (const std::string baseline = text("baseline_clock"); !baseline.empty()) {
+    line += ", baseline " + baseline;
+  }
+  if (s.contains("round_cpus") && s.at("round_cpus").is_array() && !s.at("round_cpus").empty()) {
+    line += "; each round pinned to one CPU";
+  }
+  return line;
 }
 
 std::string ratio_text(const ResultsDocument& document, const SceneResult& scene,
@@ -205,11 +229,17 @@ std::string ratio_text(const ResultsDocument& document, const SceneResult& scene
 }
 
 std::optional<double> suite_change(const ResultsDocument& document) {
-  const auto base = document.scores.find("base");
-  const auto head = document.scores.find("head");
-  if (base == document.scores.end() || head == document.scores.end()) return std::nullopt;
-  if (!(base->second.score > 0.0) || !(head->second.score > 0.0)) return std::nullopt;
-  return head->second.score / base->second.score - 1.0;
+  // The geometric mean of the scenes' own changes, so the suite figure agrees in sign and size
+  // with the rows above it (the ratio scores come from the rounds the baseline joined).
+  double log_sum = 0.0;
+  std::size_t scenes = 0;
+  for (const SceneResult& scene : document.scenes) {
+    if (!scene.change || scene.runs.failed() || !(scene.change->change > -1.0)) continue;
+    log_sum += std::log1p(scene.change->change);
+    ++scenes;
+  }
+  if (scenes == 0) return std::nullopt;
+  return std::expm1(log_sum / static_cast<double>(scenes));
 }
 
 std::string value_text(const nlohmann::json& value) {

@@ -42,9 +42,17 @@ std::string verdict_word(int exit_code);
 
 // The scene's worst image verdict as its word; `none` when no image was checked.
 std::string image_text(const SceneGate& gate, const std::string& none);
-// "+7.9% [+6.1%, +9.8%]", or "+0.912% exact (simulated cycles)" when counted (--timing sim);
-// "" when the scene has no change (a run, or a failed scene).
+// The change column's heading, the same in every format: the change is the median of per-round
+// head/base, the interval the one its verdict was drawn from (measure/change.h
+// deciding_interval), named in each row because UNCHANGED and REGRESSED use different levels.
+inline constexpr const char* kChangeHeading = "change [interval that decided]";
+// "+7.9% [+6.1%, +9.8%] 99.85% CS, 40 rounds" (CS: anytime-valid confidence sequence; CI: a
+// one-look interval in older documents), or "+0.912% exact (simulated cycles)" when counted
+// (--timing sim); "" when the scene has no change (a run, or a failed scene).
 std::string change_text(const SceneResult& scene);
+// "process CPU seconds (auto: one thread), baseline process CPU": how the runs were timed, from
+// the document's settings; "" when it does not say.
+std::string clock_line(const ResultsDocument& document);
 // A run: "0.512 [0.507, 0.518]"; a compare: "0.512 -> 0.553" (arrow as given).
 std::string ratio_text(const ResultsDocument& document, const SceneResult& scene,
                        const std::string& arrow = "->");

@@ -48,7 +48,7 @@ TEST(ConsoleReport, CompareHasNumbersAndFailuresFirst) {
   EXPECT_LT(at(text, "- slower: head vs base +7.9%"), at(text, "\ngears "));
   at(text, "- image head vs golden: max");
   at(text, "killed by SIGSEGV");
-  at(text, "raygate: 2 regressions (mount +7.9%, gears image; not measured: tetra; suite +2.6%), "
+  at(text, "raygate: 2 regressions (mount +7.9%, gears image; not measured: tetra; suite +2.8%), "
            "exit 1");
   EXPECT_EQ(text.find('\033'), std::string::npos) << "no colour unless asked";
 }
@@ -76,11 +76,11 @@ TEST(MarkdownReport, HeadlineTableAndDetails) {
   const Fixture f(true);
   const std::string text = f.render("markdown");
   EXPECT_EQ(text.rfind("**raygate: 2 regressions** (mount +7.9%, gears image; not measured: "
-                       "tetra; suite +2.6%)\n",
+                       "tetra; suite +2.8%)\n",
                        0),
             0u)
       << text;
-  at(text, "| **FAIL** | mount | 0.731 → 0.789 | +7.9% [+6.1%, +9.8%] | REGRESSED | pass |");
+  at(text, "| **FAIL** | mount | 0.731 → 0.789 | +7.9% [+6.1%, +9.8%] 95% CI, 12 rounds | REGRESSED | pass |");
   EXPECT_LT(at(text, "| mount |"), at(text, "| gears |"));
   EXPECT_LT(at(text, "| tetra |"), at(text, "| balls |"));
   at(text, "- **mount** (fail): slower: head vs base +7.9%");

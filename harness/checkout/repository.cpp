@@ -65,14 +65,17 @@ git::RepositoryPtr open_local(const fs::path& path) {
 constexpr const char* kNoTree = "not materialized yet";
 
 // Why the cached tree at `dir` cannot be reused, or nullopt when it can: it is missing, has no
-// stamp (made by a raygate that wrote none), or a file the checkout wrote was edited or removed
-// since (tree_stamp.h).
+// stamp (made by a raygate that wrote none), a stamp of an older layout, or a file the checkout
+// wrote was edited or removed since (tree_stamp.h).
 std::optional<std::string> cached_tree_problem(const fs::path& dir) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return kNoTree;
   std::ifstream in(stamp_path_for(dir), std::ios::binary);
   if (!in) return "it has no stamp to verify it by";
   const std::string stamp((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (stamp_is_outdated(stamp)) {
+    return "it was written by an older raygate, whose checkout could leave binary files empty";
+  }
   if (auto difference = stamp_difference(dir, stamp)) {
     return *difference + " since it was checked out";
   }

@@ -43,6 +43,13 @@ void GitFixture::write(const std::string& relative, std::string_view content, bo
   ::chmod(file.c_str(), executable ? 0755 : 0644);
 }
 
+void GitFixture::write_symlink(const std::string& relative, const std::string& target) {
+  const fs::path link = path_ / relative;
+  fs::create_directories(link.parent_path());
+  fs::remove(link);
+  fs::create_symlink(target, link);
+}
+
 void GitFixture::remove(const std::string& relative) {
   fs::remove_all(path_ / relative);
 }

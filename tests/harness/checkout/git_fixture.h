@@ -39,6 +39,8 @@ class GitFixture {
   // Working-tree edits; they are staged by the next commit().
   void write(const std::string& relative, std::string_view content, bool executable = false);
   void remove(const std::string& relative);
+  // A symbolic link at `relative` pointing at `target` (not resolved; may dangle).
+  void write_symlink(const std::string& relative, const std::string& target);
 
   // Stages the whole working tree (like `git add -A`, plus the submodule pins) and commits on
   // HEAD's branch. Returns the new commit's sha.

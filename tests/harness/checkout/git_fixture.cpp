@@ -109,7 +109,8 @@ std::string GitFixture::commit(const std::string& message, const CommitOptions& 
   const char* update_ref = options.root ? nullptr : "HEAD";
   const std::string text = message.empty() || message.back() != '\n' ? message + "\n" : message;
   git_oid id;
-  git::check(git_commit_create(&id, repo_.get(), update_ref, author.get(), author.get(), nullptr,
+  const char* encoding = options.encoding.empty() ? nullptr : options.encoding.c_str();
+  git::check(git_commit_create(&id, repo_.get(), update_ref, author.get(), author.get(), encoding,
                                text.c_str(), tree.get(), raw_parents.size(), raw_parents.data()),
              "committing '" + message + "' in the fixture");
   if (options.root) {

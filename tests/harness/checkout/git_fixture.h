@@ -25,6 +25,9 @@ struct CommitOptions {
   std::string author = "Ada Tester";
   std::vector<std::string> merge_parents = {};  // shas after HEAD: makes a merge commit
   bool root = false;  // no parents at all: starts an unrelated history on HEAD's branch
+  // The commit's "encoding" header, as git writes it with i18n.commitEncoding; the message and
+  // author bytes are stored as given, so a Latin-1 commit is written with Latin-1 bytes.
+  std::string encoding = "";
 };
 
 class GitFixture {

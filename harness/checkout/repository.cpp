@@ -162,6 +162,28 @@ Worktree Repository::materialize(const Revision& revision) const {
   return worktree_of(final_path, revision);
 }
 
+std::string Repository::how_unordered(const Revision& good, const Revision& bad) const {
+  git_oid good_id, bad_id;
+  git_oid_fromstr(&good_id, good.sha.c_str());
+  git_oid_fromstr(&bad_id, bad.sha.c_str());
+  const std::string doing = fmt::format("relating {} and {} in {}", good.sha, bad.sha, where_);
+  if (git::check(git_graph_descendant_of(repo_.get(), &good_id, &bad_id), doing) == 1) {
+    return fmt::format("it is newer, a descendant of {} (were the two swapped?)", bad.short_sha);
+  }
+  const std::optional<Revision> base = merge_base(good.sha, bad.sha);
+  if (!base) return "the two have no commit in common (unrelated histories)";
+  return fmt::format("the two diverged after {} {}", base->short_sha, base->subject);
+}
+
+std::vector<std::string> Repository::parents(const Revision& revision) const {
+  const git::CommitPtr commit = commit_of(revision);
+  std::vector<std::string> shas;
+  for (unsigned i = 0; i < git_commit_parentcount(commit.get()); ++i) {
+    shas.push_back(git::to_hex(*git_commit_parent_id(commit.get(), i)));
+  }
+  return shas;
+}
+
 std::optional<Revision> Repository::merge_base(const std::string& a, const std::string& b) const {
   const Revision first = resolve(a);
   const Revision second = resolve(b);
@@ -190,10 +212,10 @@ std::vector<Revision> Repository::first_parent_history(const std::string& good,
   const std::string doing =
       fmt::format("walking history from '{}' to '{}' in {}", good, bad, where_);
   if (git::check(git_graph_descendant_of(repo_.get(), &to_id, &from_id), doing) != 1) {
-    throw UsageError(
-        fmt::format("'{}' ({}) is not an ancestor of '{}' ({}) in {}; the good "
-                    "revision must be older than the bad one",
-                    good, from.short_sha, bad, to.short_sha, where_));
+    throw UsageError(fmt::format("'{}' ({}) is not an ancestor of '{}' ({}) in {}: {}; the good "
+                                 "revision must be older than the bad one, on its history",
+                                 good, from.short_sha, bad, to.short_sha, where_,
+                                 how_unordered(from, to)));
   }
   git::RevwalkPtr walk;
   git::check(git_revwalk_new(walk.out(), repo_.get()), doing);

@@ -36,6 +36,7 @@ class Console {
   bool colour(std::FILE* stream) const;
   bool quiet() const { return quiet_; }
   // A line of chatter on standard error (what is done, where a file went); --quiet drops it.
+  // Both made terminal-safe (core/sanitize.h): they may quote a commit's or a tracer's text.
   void info(const std::string& text) const;
   // A warning on standard error; kept with --quiet.
   void warning(const std::string& text) const;

@@ -23,6 +23,7 @@
 #include "checkout/tree_writer.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/sanitize.h"
 
 namespace fs = std::filesystem;
 
@@ -147,8 +148,9 @@ Worktree Repository::materialize(const Revision& revision) const {
     // Another process may have built it meanwhile; otherwise say why it is rebuilt.
     if (const auto problem = cached_tree_problem(final_path)) {
       if (*problem != kNoTree) {
+        // The problem names a file of the tree: its bytes are the commit's, not for a terminal.
         fmt::print(stderr, "note: recreating the cached worktree {}: {}\n", final_path.string(),
-                   *problem);
+                   terminal_text(*problem));
       }
       discard_tree(final_path);
       build_directory_atomically(final_path, [&](const fs::path& temp) {

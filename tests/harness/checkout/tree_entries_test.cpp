@@ -151,5 +151,20 @@ TEST_F(CheckoutTreeEntries, ATreeCachedByAnOlderCheckoutIsRewrittenNotTrusted) {
   EXPECT_EQ(read_file(again.path / "textures/wood.png"), png_like_bytes());
 }
 
+TEST_F(CheckoutTreeEntries, ANoteAboutAFileShowsItsNameNotItsControlBytes) {
+  // A file name is the commit's bytes: the note on a changed cached tree must not pass an ESC
+  // sequence in it to the terminal.
+  repo_.write("evil\x1b[2J.txt", "x\n");
+  sha_ = repo_.commit("a hostile file name");
+  const Worktree first = checkout();
+  write_file_atomically(first.path / "evil\x1b[2J.txt", "edited\n");
+  ::testing::internal::CaptureStderr();
+  const Worktree again = checkout();
+  const std::string said = ::testing::internal::GetCapturedStderr();
+  EXPECT_NE(said.find("evil\\x1b[2J.txt was modified"), std::string::npos) << said;
+  EXPECT_EQ(said.find('\x1b'), std::string::npos) << said;
+  EXPECT_EQ(read_file(again.path / "evil\x1b[2J.txt"), "x\r\n");  // text=auto eol=crlf
+}
+
 }  // namespace
 }  // namespace raygate

@@ -2,11 +2,28 @@
 
 #include <fmt/format.h>
 
+#include <cctype>
 #include <ctime>
 #include <string_view>
 
+#include "core/utf8.h"
+
 namespace raygate::git {
 namespace {
+
+// Whether an encoding header names ISO-8859-1 in one of the spellings git and iconv accept
+// ("ISO-8859-1", "iso8859-1", "latin1", "L1", "CP819", ...).
+bool names_latin1(std::string_view encoding) {
+  std::string key;
+  for (const char c : encoding) {
+    if (c == '-' || c == '_' || c == ' ') continue;
+    key.push_back(static_cast<char>(std::tolower(static_cast<unsigned char>(c))));
+  }
+  for (const std::string_view alias : {"iso88591", "latin1", "l1", "cp819", "ibm819"}) {
+    if (key == alias) return true;
+  }
+  return false;
+}
 
 std::string first_line(const char* message) {
   if (message == nullptr) return {};
@@ -36,15 +53,23 @@ std::string iso8601(std::int64_t seconds, int offset_minutes) {
                      sign, magnitude / 60, magnitude % 60);
 }
 
+std::string commit_text(git_commit* commit, std::string_view bytes) {
+  const char* encoding = git_commit_message_encoding(commit);
+  if (encoding != nullptr && names_latin1(encoding)) return latin1_to_utf8(bytes);
+  return repaired_utf8(bytes);
+}
+
 Revision describe_commit(git_commit* commit, std::string revision, std::string ref_name) {
   Revision out;
-  out.revision = std::move(revision);
-  out.ref_name = std::move(ref_name);
+  // Named by the user or by a ref, and refs are bytes in git: repaired like the rest.
+  out.revision = repaired_utf8(revision);
+  out.ref_name = repaired_utf8(ref_name);
   out.sha = to_hex(*git_commit_id(commit));
   out.short_sha = short_id(commit);
-  out.subject = first_line(git_commit_summary(commit));
+  out.subject = commit_text(commit, first_line(git_commit_summary(commit)));
   const git_signature* author = git_commit_author(commit);
-  out.author = author != nullptr && author->name != nullptr ? author->name : "";
+  const bool named = author != nullptr && author->name != nullptr;
+  out.author = named ? commit_text(commit, author->name) : "";
   out.commit_time = iso8601(git_commit_time(commit), git_commit_time_offset(commit));
   return out;
 }

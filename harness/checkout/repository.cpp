@@ -23,6 +23,7 @@
 #include "checkout/tree_writer.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/sanitize.h"
 
 namespace fs = std::filesystem;
 
@@ -65,14 +66,17 @@ git::RepositoryPtr open_local(const fs::path& path) {
 constexpr const char* kNoTree = "not materialized yet";
 
 // Why the cached tree at `dir` cannot be reused, or nullopt when it can: it is missing, has no
-// stamp (made by a raygate that wrote none), or a file the checkout wrote was edited or removed
-// since (tree_stamp.h).
+// stamp (made by a raygate that wrote none), a stamp of an older layout, or a file the checkout
+// wrote was edited or removed since (tree_stamp.h).
 std::optional<std::string> cached_tree_problem(const fs::path& dir) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) return kNoTree;
   std::ifstream in(stamp_path_for(dir), std::ios::binary);
   if (!in) return "it has no stamp to verify it by";
   const std::string stamp((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (stamp_is_outdated(stamp)) {
+    return "it was written by an older raygate, whose checkout could leave binary files empty";
+  }
   if (auto difference = stamp_difference(dir, stamp)) {
     return *difference + " since it was checked out";
   }
@@ -144,8 +148,9 @@ Worktree Repository::materialize(const Revision& revision) const {
     // Another process may have built it meanwhile; otherwise say why it is rebuilt.
     if (const auto problem = cached_tree_problem(final_path)) {
       if (*problem != kNoTree) {
+        // The problem names a file of the tree: its bytes are the commit's, not for a terminal.
         fmt::print(stderr, "note: recreating the cached worktree {}: {}\n", final_path.string(),
-                   *problem);
+                   terminal_text(*problem));
       }
       discard_tree(final_path);
       build_directory_atomically(final_path, [&](const fs::path& temp) {
@@ -157,6 +162,28 @@ Worktree Repository::materialize(const Revision& revision) const {
     }
   }
   return worktree_of(final_path, revision);
+}
+
+std::string Repository::how_unordered(const Revision& good, const Revision& bad) const {
+  git_oid good_id, bad_id;
+  git_oid_fromstr(&good_id, good.sha.c_str());
+  git_oid_fromstr(&bad_id, bad.sha.c_str());
+  const std::string doing = fmt::format("relating {} and {} in {}", good.sha, bad.sha, where_);
+  if (git::check(git_graph_descendant_of(repo_.get(), &good_id, &bad_id), doing) == 1) {
+    return fmt::format("it is newer, a descendant of {} (were the two swapped?)", bad.short_sha);
+  }
+  const std::optional<Revision> base = merge_base(good.sha, bad.sha);
+  if (!base) return "the two have no commit in common (unrelated histories)";
+  return fmt::format("the two diverged after {} {}", base->short_sha, base->subject);
+}
+
+std::vector<std::string> Repository::parents(const Revision& revision) const {
+  const git::CommitPtr commit = commit_of(revision);
+  std::vector<std::string> shas;
+  for (unsigned i = 0; i < git_commit_parentcount(commit.get()); ++i) {
+    shas.push_back(git::to_hex(*git_commit_parent_id(commit.get(), i)));
+  }
+  return shas;
 }
 
 std::optional<Revision> Repository::merge_base(const std::string& a, const std::string& b) const {
@@ -187,10 +214,10 @@ std::vector<Revision> Repository::first_parent_history(const std::string& good,
   const std::string doing =
       fmt::format("walking history from '{}' to '{}' in {}", good, bad, where_);
   if (git::check(git_graph_descendant_of(repo_.get(), &to_id, &from_id), doing) != 1) {
-    throw UsageError(
-        fmt::format("'{}' ({}) is not an ancestor of '{}' ({}) in {}; the good "
-                    "revision must be older than the bad one",
-                    good, from.short_sha, bad, to.short_sha, where_));
+    throw UsageError(fmt::format("'{}' ({}) is not an ancestor of '{}' ({}) in {}: {}; the good "
+                                 "revision must be older than the bad one, on its history",
+                                 good, from.short_sha, bad, to.short_sha, where_,
+                                 how_unordered(from, to)));
   }
   git::RevwalkPtr walk;
   git::check(git_revwalk_new(walk.out(), repo_.get()), doing);

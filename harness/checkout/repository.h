@@ -41,8 +41,13 @@ class Repository {
   std::optional<Revision> merge_base(const std::string& a, const std::string& b) const;
 
   // Commits after `good` up to and including `bad` along first parents, oldest first: the
-  // candidates bisect steps through. UsageError unless `good` is an ancestor of `bad`.
+  // candidates bisect steps through; empty when both name the same commit. UsageError unless
+  // `good` is an ancestor of `bad`, saying how they relate instead (`good` is the newer one,
+  // they are unrelated, or they diverged).
   std::vector<Revision> first_parent_history(const std::string& good, const std::string& bad) const;
+
+  // The full shas of `revision`'s parents, first parent first (two or more: a merge).
+  std::vector<std::string> parents(const Revision& revision) const;
 
   // The repository as the user named it, for messages.
   const std::string& location() const { return where_; }
@@ -52,6 +57,8 @@ class Repository {
  private:
   Repository() = default;
   git::CommitPtr commit_of(const Revision& revision) const;
+  // Why `good` is not an ancestor of `bad`, for first_parent_history's message.
+  std::string how_unordered(const Revision& good, const Revision& bad) const;
 
   git::Library library_;  // declared first: libgit2 must outlive the handles below
   git::RepositoryPtr repo_;

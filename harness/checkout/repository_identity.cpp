@@ -7,6 +7,7 @@
 #include "checkout/git_handle.h"
 #include "checkout/remote_cache.h"
 #include "checkout/safe_directory.h"
+#include "core/utf8.h"
 
 namespace raygate {
 
@@ -49,7 +50,7 @@ std::string origin_url(git_repository* repo) {
   git::RemotePtr remote;
   if (git_remote_lookup(remote.out(), repo, "origin") < 0) return unknown();
   const char* url = git_remote_url(remote.get());
-  return url != nullptr ? url : "";
+  return url != nullptr ? repaired_utf8(url) : "";  // a config value: bytes, like any other
 }
 
 std::string lower(std::string text) {

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "core/utf8.h"
 
 namespace raygate::git {
 namespace {
@@ -73,7 +74,7 @@ ResolvedCommit resolve_commit(git_repository* repo, const std::string& revspec,
   }
   ResolvedCommit out;
   out.commit.reset(reinterpret_cast<git_commit*>(peeled.release()));
-  if (ref) out.ref_name = git_reference_name(ref.get());
+  if (ref) out.ref_name = repaired_utf8(git_reference_name(ref.get()));
   return out;
 }
 
@@ -100,7 +101,7 @@ std::vector<std::string> branch_names(git_repository* repo) {
     if (git_branch_name(&name, ref.get()) < 0 || name == nullptr) continue;
     const std::string_view view(name);
     if (view.size() >= 5 && view.substr(view.size() - 5) == "/HEAD") continue;  // origin/HEAD
-    names.emplace_back(name);
+    names.push_back(repaired_utf8(name));  // ref names are bytes in git
   }
   std::sort(names.begin(), names.end());
   return names;
@@ -110,7 +111,7 @@ std::vector<std::string> tag_names(git_repository* repo) {
   std::vector<std::string> names;
   StrArray tags;
   if (git_tag_list(tags.out(), repo) < 0) return names;
-  for (std::size_t i = 0; i < tags.size(); ++i) names.emplace_back(tags[i]);
+  for (std::size_t i = 0; i < tags.size(); ++i) names.push_back(repaired_utf8(tags[i]));
   std::sort(names.begin(), names.end());
   return names;
 }

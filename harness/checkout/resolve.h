@@ -12,7 +12,7 @@ namespace raygate::git {
 
 struct ResolvedCommit {
   CommitPtr commit;
-  std::string ref_name;  // full name of the ref the revspec named, if it named one directly
+  std::string ref_name;  // full name of the ref the revspec named, if any; valid UTF-8 (repaired)
 };
 
 // Resolves `revspec` in `repo`, peeling tags to their commit. `where` names the repository in
@@ -25,7 +25,8 @@ ResolvedCommit resolve_commit(git_repository* repo, const std::string& revspec,
 // Looks a commit up by its full sha (InfraError when missing).
 CommitPtr lookup_commit(git_repository* repo, const git_oid& id, std::string_view where);
 
-// Short names of branches (remote ones as "origin/x") and of tags, sorted; for messages.
+// Short names of branches (remote ones as "origin/x") and of tags, sorted, as valid UTF-8;
+// for messages.
 std::vector<std::string> branch_names(git_repository* repo);
 std::vector<std::string> tag_names(git_repository* repo);
 

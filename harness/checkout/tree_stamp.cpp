@@ -12,8 +12,10 @@ namespace fs = std::filesystem;
 namespace raygate {
 namespace {
 
-// First line of every stamp: a stamp of another layout is never trusted.
-constexpr const char* kHeader = "raygate tree stamp 1\n";
+// First line of every stamp: a stamp of another layout is never trusted. Layout 2 marks trees
+// written since the checkout keeps binary files (layout 1 trees could hold them empty).
+constexpr const char* kHeader = "raygate tree stamp 2\n";
+constexpr std::string_view kHeaderPrefix = "raygate tree stamp ";
 
 // One line per file: "<size> <mtime seconds> <mtime nanoseconds> <mode> <path length>:<path>".
 // The length prefix keeps any path (spaces, newlines are legal in git) unambiguous.
@@ -93,6 +95,10 @@ std::string tree_stamp(const fs::path& root) {
     text += line_of(entry_of(info, it->path().lexically_relative(root).string()));
   }
   return text;
+}
+
+bool stamp_is_outdated(const std::string& stamp) {
+  return stamp.starts_with(kHeaderPrefix) && !stamp.starts_with(kHeader);
 }
 
 std::optional<std::string> stamp_difference(const fs::path& root, const std::string& stamp) {

@@ -19,6 +19,10 @@ std::filesystem::path stamp_path_for(const std::filesystem::path& dir);
 // The stamp text of every regular file and symlink under `root` (symlinks not followed).
 std::string tree_stamp(const std::filesystem::path& root);
 
+// Whether `stamp` is of an older layout than this raygate writes: its tree was written by an
+// older checkout and is rewritten rather than trusted.
+bool stamp_is_outdated(const std::string& stamp);
+
 // What differs between `root` and the stamp text `stamp`, e.g. "src/a.cpp was modified";
 // nullopt when every listed file is as it was. A malformed stamp is a difference too.
 std::optional<std::string> stamp_difference(const std::filesystem::path& root,

@@ -7,9 +7,11 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 
 #include "core/error.h"
+#include "core/utf8.h"
 
 namespace fs = std::filesystem;
 
@@ -23,8 +25,11 @@ struct TreeWriter {
   std::string where;
   std::vector<Gitlink> gitlinks;
 
+  // Paths are bytes in git; messages are text, so a path is repaired to UTF-8 where it is shown.
+  static std::string shown(std::string_view path) { return repaired_utf8(path); }
+
   [[noreturn]] void fail_io(const std::string& what, const std::string& path) const {
-    throw InfraError(fmt::format("{} {} (checking out {} from {}): {}", what, path,
+    throw InfraError(fmt::format("{} {} (checking out {} from {}): {}", what, shown(path),
                                  to_hex(commit_id), where, std::strerror(errno)));
   }
 
@@ -33,8 +38,8 @@ struct TreeWriter {
                         name.find('/') != std::string_view::npos ||
                         (name.size() == 4 && ::strncasecmp(name.data(), ".git", 4) == 0);
     if (unsafe) {
-      throw InfraError(fmt::format("refusing tree entry '{}' under '{}' in commit {} of {}", name,
-                                   parent, to_hex(commit_id), where));
+      throw InfraError(fmt::format("refusing tree entry '{}' under '{}' in commit {} of {}",
+                                   shown(name), shown(parent), to_hex(commit_id), where));
     }
   }
 
@@ -62,18 +67,22 @@ struct TreeWriter {
   BlobPtr blob_of(const git_tree_entry* entry, const std::string& rel) const {
     BlobPtr blob;
     check(git_blob_lookup(blob.out(), repo, git_tree_entry_id(entry)),
-          fmt::format("reading '{}' of commit {} in {}", rel, to_hex(commit_id), where));
+          fmt::format("reading '{}' of commit {} in {}", shown(rel), to_hex(commit_id), where));
     return blob;
   }
 
   void write_file(const git_tree_entry* entry, const std::string& rel, bool executable) const {
     BlobPtr blob = blob_of(entry, rel);
     git_blob_filter_options options = GIT_BLOB_FILTER_OPTIONS_INIT;
+    // The default options carry GIT_BLOB_FILTER_CHECK_FOR_BINARY, with which libgit2 hands back
+    // an EMPTY buffer for a blob that looks binary: textures and test images came out 0 bytes.
+    // Without it the filters decide as `git checkout` does (text=auto leaves binary alone).
+    options.flags &= ~static_cast<std::uint32_t>(GIT_BLOB_FILTER_CHECK_FOR_BINARY);
     options.flags |= GIT_BLOB_FILTER_ATTRIBUTES_FROM_COMMIT;
     git_oid_cpy(&options.attr_commit_id, &commit_id);
     Buf filtered;
     check(git_blob_filter(filtered.out(), blob.get(), rel.c_str(), &options),
-          fmt::format("filtering '{}' of commit {} in {}", rel, to_hex(commit_id), where));
+          fmt::format("filtering '{}' of commit {} in {}", shown(rel), to_hex(commit_id), where));
     write_bytes(rel, filtered.str(), executable);
   }
 
@@ -101,8 +110,8 @@ struct TreeWriter {
         make_directory(rel);
         TreePtr subtree;
         check(git_tree_lookup(subtree.out(), repo, git_tree_entry_id(entry)),
-              fmt::format("reading directory '{}' of commit {} in {}", rel, to_hex(commit_id),
-                          where));
+              fmt::format("reading directory '{}' of commit {} in {}", shown(rel),
+                          to_hex(commit_id), where));
         write_tree(subtree.get(), rel + "/");
         return;
       }
@@ -115,7 +124,8 @@ struct TreeWriter {
         return;
       default:
         throw InfraError(fmt::format("unsupported file mode {:o} of '{}' in commit {} of {}",
-                                     static_cast<unsigned>(git_tree_entry_filemode(entry)), rel,
+                                     static_cast<unsigned>(git_tree_entry_filemode(entry)),
+                                     shown(rel),
                                      to_hex(commit_id), where));
     }
   }

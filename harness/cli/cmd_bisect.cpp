@@ -1,6 +1,7 @@
 // `raygate bisect`: options -> a bisect request (pipeline/bisect.h) -> its steps as they come
 // (standard error) and the answer (standard output: text, or with --format json one object with
-// every step). Exit 0 found, 2 the bad end is not worse, 3 it (or the range) could not be
+// every step). Exit 0 found, 2 the bad end is not worse or the range holds no commits (the
+// same commit twice, good newer than bad, unrelated ends), 3 it (or the range) could not be
 // measured.
 #include <fmt/core.h>
 
@@ -14,6 +15,7 @@
 #include "cli/terminal_io.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
+#include "core/sanitize.h"
 #include "pipeline/bisect.h"
 
 namespace raygate::cli {
@@ -86,6 +88,13 @@ nlohmann::json answer_json(const BisectResult& result) {
   return {{"kind", "first_bad"}, {"first_bad", revision_json(result.first_bad)}};
 }
 
+// The answer, with the merge note under it when the first bad commit is a merge.
+nlohmann::json result_json(const BisectResult& result) {
+  nlohmann::json j = answer_json(result);
+  if (!result.merge_note.empty()) j["note"] = result.merge_note;
+  return j;
+}
+
 // The answer on standard output: text, or the whole bisection as JSON.
 int answer(const BisectArgs& args, const std::string& scene, const BisectResult& result) {
   const ExitCode code = exit_code_of(result);
@@ -95,10 +104,12 @@ int answer(const BisectArgs& args, const std::string& scene, const BisectResult&
     const nlohmann::json j = {{"scene", scene},          {"metric", args.metric},
                               {"good", result.good.sha}, {"bad", args.bad},
                               {"candidates", result.candidates}, {"steps", steps},
-                              {"result", answer_json(result)}, {"exit_code", to_int(code)}};
-    fmt::print("{}\n", j.dump(1));
+                              {"result", result_json(result)}, {"exit_code", to_int(code)}};
+    fmt::print("{}\n", j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace));
   } else {
-    fmt::print("{}\n", answer_text(result));
+    std::string text = answer_text(result) + "\n";
+    if (!result.merge_note.empty()) text += "note: " + result.merge_note + "\n";
+    fmt::print("{}", terminal_text(text));  // the subject is the commit author's text
   }
   return to_int(code);
 }

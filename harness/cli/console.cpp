@@ -54,11 +54,11 @@ bool Console::colour(std::FILE* stream) const {
 }
 
 void Console::info(const std::string& text) const {
-  if (!quiet_) fmt::print(stderr, "{}\n", text);
+  if (!quiet_) fmt::print(stderr, "{}\n", terminal_text(text));
 }
 
 void Console::warning(const std::string& text) const {
-  fmt::print(stderr, "raygate: warning: {}\n", text);
+  fmt::print(stderr, "raygate: warning: {}\n", terminal_text(text));
 }
 
 Console console_of(const CLI::App& command) {

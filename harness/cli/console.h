@@ -6,10 +6,13 @@
 #pragma once
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cstdio>
 #include <string>
 #include <string_view>
+
+#include "core/sanitize.h"
 
 namespace raygate::cli {
 
@@ -33,6 +36,7 @@ class Console {
   bool colour(std::FILE* stream) const;
   bool quiet() const { return quiet_; }
   // A line of chatter on standard error (what is done, where a file went); --quiet drops it.
+  // Both made terminal-safe (core/sanitize.h): they may quote a commit's or a tracer's text.
   void info(const std::string& text) const;
   // A warning on standard error; kept with --quiet.
   void warning(const std::string& text) const;
@@ -54,13 +58,15 @@ CLI::Option* add_deprecated_alias(CLI::App& command, const std::string& old_name
                                   CLI::Option* current, std::string& variable);
 
 // A command's result on standard output: `json()` (indented one space) with --format json, else
-// `text()`; only the one asked for is computed.
+// `text()`; only the one asked for is computed. The JSON boundary repairs invalid UTF-8 (a store
+// may hold it) to U+FFFD instead of throwing; text is made safe for a terminal.
 template <typename Json, typename Text>
 void print_result(const std::string& format, Json json, Text text) {
   if (format == "json") {
-    std::fputs((json().dump(1) + "\n").c_str(), stdout);
+    const std::string dumped = json().dump(1, ' ', false, nlohmann::json::error_handler_t::replace);
+    std::fputs((dumped + "\n").c_str(), stdout);
   } else {
-    std::fputs(std::string(text()).c_str(), stdout);
+    std::fputs(terminal_text(std::string(text())).c_str(), stdout);
   }
 }
 

@@ -11,6 +11,7 @@
 #include "core/error.h"
 #include "core/exit_codes.h"
 #include "core/interrupt.h"
+#include "core/sanitize.h"
 #include "core/strays.h"
 
 namespace {
@@ -55,13 +56,15 @@ int main(int argc, char** argv) {
     app.exit(e);
     return raygate::to_int(raygate::ExitCode::usage);
   } catch (const raygate::Interrupted& e) {
-    fmt::print(stderr, "raygate: {}\n", e.what());  // one line: what was kept, and where
+    // One line: what was kept, and where.
+    fmt::print(stderr, "raygate: {}\n", raygate::terminal_text(e.what()));
     return raygate::to_int(e.code());
   } catch (const raygate::Error& e) {
-    fmt::print(stderr, "raygate: error: {}\n", e.what());
+    // Messages quote revisions, branch names and paths: a terminal must not obey their bytes.
+    fmt::print(stderr, "raygate: error: {}\n", raygate::terminal_text(e.what()));
     return raygate::to_int(e.code());
   } catch (const std::exception& e) {
-    fmt::print(stderr, "raygate: internal error: {}\n", e.what());
+    fmt::print(stderr, "raygate: internal error: {}\n", raygate::terminal_text(e.what()));
     return raygate::to_int(raygate::ExitCode::infrastructure);
   }
   if (const int sig = raygate::interrupt_signal(); sig != 0) {

@@ -5,6 +5,8 @@
 
 #include <cmath>
 
+#include "core/sanitize.h"
+
 namespace raygate::cli {
 
 Progress::~Progress() { clear(); }
@@ -25,7 +27,7 @@ void Progress::update(const ProgressState& s) {
     text += fmt::format("  ratio {:.3f} ±{:.1f}%", s.ratio, 100.0 * s.relative_half_width);
   }
   if (s.eta_seconds >= 0.0) text += "  ETA " + format_duration(s.eta_seconds);
-  fmt::print(stream_, "\r\033[K{}", text);
+  fmt::print(stream_, "\r\033[K{}", terminal_text(text));
   std::fflush(stream_);
   dirty_ = true;
 }
@@ -33,7 +35,7 @@ void Progress::update(const ProgressState& s) {
 void Progress::line(const std::string& text) {
   if (stream_ == nullptr) return;
   clear();
-  fmt::print(stream_, "{}\n", text);
+  fmt::print(stream_, "{}\n", terminal_text(text));  // subjects are the commit author's bytes
   std::fflush(stream_);
 }
 

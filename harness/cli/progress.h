@@ -2,7 +2,8 @@
 // one line, rewritten in place ("[3/13] mount  round 7  ratio 0.512 ±0.8%  ETA 1m40s").
 // Elsewhere (CI logs): one plain line per finished scene, nothing rewritten, so logs stay
 // readable. All of it is chatter: the command line passes standard error (docs/cli.md), or no
-// stream with --quiet.
+// stream with --quiet. Every text passes core/sanitize.h's terminal_text here, the one place
+// progress reaches the terminal: a commit subject's ESC or BEL is shown as "\x1b", not obeyed.
 #pragma once
 
 #include <cstdio>

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "core/error.h"
 #include "measure/change.h"
 #include "pipeline/compare_measurement.h"
 #include "pipeline/revision_setup.h"
@@ -102,6 +103,39 @@ struct Bisector {
   }
 };
 
+// The commits between the two ends, oldest first; a UsageError naming the commit when both
+// ends are one commit (the same name twice, or a tag and its sha).
+std::vector<Revision> candidates_of(const BisectRequest& request) {
+  std::vector<Revision> candidates =
+      request.repository.first_parent_history(request.good, request.bad);
+  if (candidates.empty()) {
+    const Revision same = request.repository.resolve(request.bad);
+    throw UsageError(fmt::format(
+        "--good '{}' and --bad '{}' are the same commit {} ({}): there is nothing between them to "
+        "bisect; give --good a revision older than --bad",
+        request.good, request.bad, same.short_sha, same.subject));
+  }
+  return candidates;
+}
+
+// Bisect follows first parents, so a merge found bad stands for every commit it merged: say
+// which range to bisect next. Empty when `first_bad` is not a merge.
+std::string merge_note(const Repository& repository, const Revision& first_bad) {
+  const std::vector<std::string> parents = repository.parents(first_bad);
+  if (parents.size() < 2) return "";
+  const Revision side = repository.resolve(parents[1]);
+  const std::optional<Revision> base = repository.merge_base(parents[0], parents[1]);
+  if (base && base->sha == side.sha) return "";  // the merged side was already in: nothing new
+  if (!base) {
+    return fmt::format("{} is a merge of a history unrelated to the good one ({}); its commits "
+                       "were not searched one by one",
+                       first_bad.short_sha, side.short_sha);
+  }
+  return fmt::format("{} is a merge: the commits it merged were not searched one by one; to "
+                     "search them, bisect again with --good {} --bad {}",
+                     first_bad.short_sha, base->short_sha, side.short_sha);
+}
+
 // The untested index in (low, high) nearest the middle, or nullopt.
 std::optional<std::size_t> next_probe(const std::vector<std::optional<BisectStep>>& steps,
                                       long low, long high) {
@@ -128,13 +162,15 @@ std::string_view to_string(BisectStep step) {
 }
 
 BisectResult bisect_search(const std::vector<Revision>& candidates, const BisectJudge& judge) {
+  // Nothing to search: the bad end would be candidates[-1] (a 0-commit range once crashed).
+  if (candidates.empty()) throw UsageError("nothing to bisect: the range holds no commits");
   std::vector<std::optional<BisectStep>> steps(candidates.size());
   const std::size_t last = candidates.size() - 1;
   steps[last] = judge(candidates[last]);
   if (steps[last] != BisectStep::bad) {
     return {steps[last] == BisectStep::skipped ? BisectOutcome::bad_unmeasurable
                                                : BisectOutcome::bad_not_worse,
-            candidates[last], 0, {}, candidates.size(), {}};
+            candidates[last], 0, {}, candidates.size(), {}, {}};
   }
   long low = -1;  // index of the last known good (-1: the good revision itself)
   long high = static_cast<long>(last);  // index of the first known bad
@@ -146,14 +182,13 @@ BisectResult bisect_search(const std::vector<Revision>& candidates, const Bisect
   const Revision& first_bad = candidates[static_cast<std::size_t>(high)];
   if (high - low > 1) {
     return {BisectOutcome::hidden_by_skips, first_bad, static_cast<std::size_t>(high - low - 1),
-            {}, candidates.size(), {}};
+            {}, candidates.size(), {}, {}};
   }
-  return {BisectOutcome::found, first_bad, 0, {}, candidates.size(), {}};
+  return {BisectOutcome::found, first_bad, 0, {}, candidates.size(), {}, {}};
 }
 
 BisectResult bisect(const BisectRequest& request, PipelineIo& io) {
-  const std::vector<Revision> candidates =
-      request.repository.first_parent_history(request.good, request.bad);
+  const std::vector<Revision> candidates = candidates_of(request);
   Bisector bisector{request, io, request.repository.checkout(request.good), std::nullopt,
                     std::nullopt, {}};
   io.progress.line(fmt::format("bisecting {} commits after {} on scene {} by {}",
@@ -164,6 +199,9 @@ BisectResult bisect(const BisectRequest& request, PipelineIo& io) {
       candidates, [&](const Revision& candidate) { return bisector.judge(candidate); });
   result.good = bisector.good;
   result.steps = std::move(bisector.steps);
+  if (result.outcome == BisectOutcome::found || result.outcome == BisectOutcome::hidden_by_skips) {
+    result.merge_note = merge_note(request.repository, result.first_bad);
+  }
   return result;
 }
 

@@ -59,6 +59,9 @@ struct BisectResult {
   Worktree good;               // the good end, as the steps named it
   std::size_t candidates = 0;  // commits after the good end, up to the bad one
   std::vector<BisectStepRecord> steps;
+  // found or hidden_by_skips with a merge as first_bad: the range its merged commits span, to
+  // bisect next (bisect follows first parents); empty otherwise.
+  std::string merge_note;
 };
 
 // Decides one candidate (the real one builds and measures it; tests pass their own).
@@ -66,10 +69,12 @@ using BisectJudge = std::function<BisectStep(const Revision& candidate)>;
 
 // The search over `candidates` (oldest first, the good revision excluded): the last one first,
 // then the untested commit nearest the middle of the open range, until the range is one commit.
+// UsageError when `candidates` is empty.
 BisectResult bisect_search(const std::vector<Revision>& candidates, const BisectJudge& judge);
 
 // Resolves the range, builds and measures each probed commit against the good one, and says
-// each step through io.progress.
+// each step through io.progress. A range without commits is a UsageError before anything is
+// built: both ends one commit, the good end newer than the bad one, unrelated or diverged ends.
 BisectResult bisect(const BisectRequest& request, PipelineIo& io);
 
 }  // namespace raygate

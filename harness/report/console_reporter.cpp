@@ -1,11 +1,15 @@
 // The console report: what a developer reads at a terminal or in a CI log. One header line, a
 // table of scenes with failures first and each one's reasons under it, and a summary line.
-// ANSI colour only when the caller asks (it knows whether the output is a terminal).
+// ANSI colour only when the caller asks (it knows whether the output is a terminal); text from
+// outside never carries its own (render() below).
 #include <fmt/format.h>
 
 #include <array>
 #include <cctype>
+#include <utility>
+#include <vector>
 
+#include "core/sanitize.h"
 #include "report/report_model.h"
 #include "report/reporters.h"
 
@@ -25,23 +29,32 @@ const char* colour_code(GateOutcome outcome) {
   return "";
 }
 
+// One piece of the report and how it is drawn: the report is built as spans, then rendered
+// in one place, where text from outside (subjects, host names, a tracer's messages) is made
+// terminal-safe before the reporter's own colour codes go around it.
+enum class Style { plain, dim, outcome };
+struct Span {
+  std::string text;
+  Style style = Style::plain;
+  GateOutcome outcome = GateOutcome::pass;  // Style::outcome: its colour
+};
+using Spans = std::vector<Span>;
+
 class ConsoleReporter final : public Reporter {
  public:
   explicit ConsoleReporter(bool colour) : colour_(colour) {}
   void write(const ReportInput& input, std::ostream& out) const override;
 
  private:
-  std::string paint(const std::string& text, GateOutcome outcome) const {
-    return colour_ ? fmt::format("{}{}\033[0m", colour_code(outcome), text) : text;
-  }
-  std::string dim(const std::string& text) const {
-    return colour_ ? fmt::format("\033[2m{}\033[0m", text) : text;
-  }
-  void write_header(const ReportInput& input, std::ostream& out) const;
-  void write_table(const ReportInput& input, const std::vector<SceneView>& views,
-                   std::ostream& out) const;
+  void render(const Spans& spans, std::ostream& out) const;
   bool colour_;
 };
+
+Span dim(std::string text) { return {std::move(text), Style::dim, GateOutcome::pass}; }
+Span painted(std::string text, GateOutcome outcome) {
+  return {std::move(text), Style::outcome, outcome};
+}
+Span plain(std::string text) { return {std::move(text), Style::plain, GateOutcome::pass}; }
 
 Row heading(const ResultsDocument& document) {
   const bool compare = document.kind == "compare";
@@ -56,10 +69,13 @@ Row row_of(const ResultsDocument& document, const SceneView& view) {
           view.gate.speed, image_text(view.gate, "-"), verdict};
 }
 
+// Column widths as rendered: a cell's control characters are shown escaped, so wider.
 std::array<std::size_t, kColumns> widths_of(const std::vector<Row>& rows) {
   std::array<std::size_t, kColumns> widths{};
   for (const Row& row : rows) {
-    for (std::size_t i = 0; i < kColumns; ++i) widths[i] = std::max(widths[i], row[i].size());
+    for (std::size_t i = 0; i < kColumns; ++i) {
+      widths[i] = std::max(widths[i], terminal_text(row[i]).size());
+    }
   }
   return widths;
 }
@@ -69,12 +85,12 @@ std::string padded(const Row& row, const std::array<std::size_t, kColumns>& widt
   std::string line;
   for (std::size_t i = 0; i < columns; ++i) {
     if (widths[i] == 0) continue;
-    line += fmt::format("{:<{}}  ", row[i], widths[i]);
+    line += fmt::format("{:<{}}  ", terminal_text(row[i]), widths[i]);
   }
   return line;
 }
 
-void ConsoleReporter::write_header(const ReportInput& input, std::ostream& out) const {
+void add_header(const ReportInput& input, Spans& spans) {
   const ResultsDocument& d = input.document;
   std::string line = fmt::format("raygate {} on suite {}", d.kind, d.suite);
   if (d.kind == "compare") {
@@ -82,49 +98,78 @@ void ConsoleReporter::write_header(const ReportInput& input, std::ostream& out) 
   } else if (const std::string tracer = revision_line(d, "tracer"); !tracer.empty()) {
     line += ": " + tracer;
   }
-  out << line << '\n';
+  spans.push_back(plain(line + "\n"));
   if (const std::string machine = machine_line(d.machine); !machine.empty()) {
-    out << dim("machine: " + machine) << '\n';
+    spans.push_back(dim("machine: " + machine));
+    spans.push_back(plain("\n"));
   }
-  if (const std::string clock = clock_line(d); !clock.empty()) out << dim("clock: " + clock) << '\n';
-  out << dim("policy: " + policy_line(input.policy)) << "\n\n";
+  if (const std::string clock = clock_line(d); !clock.empty()) {
+    spans.push_back(dim("clock: " + clock));
+    spans.push_back(plain("\n"));
+  }
+  spans.push_back(dim("policy: " + policy_line(input.policy)));
+  spans.push_back(plain("\n\n"));
 }
 
-void ConsoleReporter::write_table(const ReportInput& input, const std::vector<SceneView>& views,
-                                  std::ostream& out) const {
+void add_table(const ReportInput& input, const std::vector<SceneView>& views, Spans& spans) {
   std::vector<Row> rows{heading(input.document)};
   for (const SceneView& view : views) rows.push_back(row_of(input.document, view));
   const auto widths = widths_of(rows);
   std::string head = padded(rows[0], widths, kColumns);
   head.erase(head.find_last_not_of(' ') + 1);
-  out << dim(head) << '\n';
+  spans.push_back(dim(head));
+  spans.push_back(plain("\n"));
   for (std::size_t i = 0; i < views.size(); ++i) {
     const GateOutcome outcome = views[i].gate.outcome;
-    out << padded(rows[i + 1], widths, kColumns - 1) << paint(rows[i + 1].back(), outcome) << '\n';
+    spans.push_back(plain(padded(rows[i + 1], widths, kColumns - 1)));
+    spans.push_back(painted(rows[i + 1].back(), outcome));
+    spans.push_back(plain("\n"));
     for (const std::string& reason : views[i].gate.reasons) {
-      out << "    " << paint("- " + reason, outcome) << '\n';
+      spans.push_back(plain("    "));
+      spans.push_back(painted("- " + reason, outcome));
+      spans.push_back(plain("\n"));
+    }
+  }
+}
+
+void add_footer(const ReportInput& input, const std::vector<SceneView>& views, Spans& spans) {
+  // Said once for the document, however many scenes share them (a tracer without goldens).
+  if (!input.gate.notes.empty() || !input.gate.problems.empty()) spans.push_back(plain("\n"));
+  for (const std::string& problem : input.gate.problems) {
+    spans.push_back(painted("problem: " + problem, GateOutcome::unmeasured));
+    spans.push_back(plain("\n"));
+  }
+  for (const std::string& note : input.gate.notes) spans.push_back(plain("note: " + note + "\n"));
+  const Headline line = headline(input, views);
+  const GateOutcome overall = input.gate.exit_code == 0   ? GateOutcome::pass
+                              : input.gate.exit_code == 1 ? GateOutcome::fail
+                                                          : GateOutcome::unmeasured;
+  spans.push_back(plain("\n"));
+  spans.push_back(painted(
+      fmt::format("{} ({}), exit {}", line.title, line.detail, input.gate.exit_code), overall));
+  spans.push_back(plain("\n"));
+}
+
+void ConsoleReporter::render(const Spans& spans, std::ostream& out) const {
+  for (const Span& span : spans) {
+    const std::string text = terminal_text(span.text);
+    if (!colour_ || span.style == Style::plain) {
+      out << text;
+    } else if (span.style == Style::dim) {
+      out << "\033[2m" << text << "\033[0m";
+    } else {
+      out << colour_code(span.outcome) << text << "\033[0m";
     }
   }
 }
 
 void ConsoleReporter::write(const ReportInput& input, std::ostream& out) const {
   const std::vector<SceneView> views = scene_views(input);
-  write_header(input, out);
-  write_table(input, views, out);
-  // Said once for the document, however many scenes share them (a tracer without goldens).
-  if (!input.gate.notes.empty() || !input.gate.problems.empty()) out << '\n';
-  for (const std::string& problem : input.gate.problems) {
-    out << paint("problem: " + problem, GateOutcome::unmeasured) << '\n';
-  }
-  for (const std::string& note : input.gate.notes) out << "note: " << note << '\n';
-  const Headline line = headline(input, views);
-  const GateOutcome overall = input.gate.exit_code == 0   ? GateOutcome::pass
-                              : input.gate.exit_code == 1 ? GateOutcome::fail
-                                                          : GateOutcome::unmeasured;
-  out << '\n'
-      << paint(fmt::format("{} ({}), exit {}", line.title, line.detail, input.gate.exit_code),
-               overall)
-      << '\n';
+  Spans spans;
+  add_header(input, spans);
+  add_table(input, views, spans);
+  add_footer(input, views, spans);
+  render(spans, out);
 }
 
 }  // namespace

@@ -14,7 +14,8 @@
 
 namespace raygate::report::html {
 
-// Text and attribute values: & < > " ' escaped.
+// Text and attribute values: & < > " ' escaped, control characters and bidi overrides shown
+// as visible escapes (core/sanitize.h markup_text).
 std::string escape(std::string_view text);
 std::string base64(std::string_view bytes);
 // A data: URI for an image file. PNG, JPEG, GIF and WebP are embedded as they are; any other

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/fs.h"
+#include "core/sanitize.h"
 #include "report/html_parts.h"
 
 namespace raygate::report::html {
@@ -48,7 +49,8 @@ std::optional<std::string> converted_png(const std::filesystem::path& path) {
 
 }  // namespace
 
-std::string escape(std::string_view text) {
+std::string escape(std::string_view raw) {
+  const std::string text = markup_text(raw);  // controls and bidi overrides shown, not obeyed
   std::string out;
   out.reserve(text.size());
   for (const char c : text) {

@@ -2,10 +2,12 @@
 // actions): one <testsuite> for the document, a <testcase> per scene and part (speed, image),
 // <failure> with the numbers for what the gate failed, <skipped> for what could not be measured,
 // and the revisions, machine and policy as <properties>. pugixml writes it, so subjects and
-// reasons with <, & or quotes come out as well-formed XML.
+// reasons with <, & or quotes come out as well-formed XML; characters XML 1.0 forbids (an ESC in
+// a subject, which pugixml would write as "&#27;" and CI parsers reject) are made visible first.
 #include <fmt/format.h>
 #include <pugixml.hpp>
 
+#include "core/sanitize.h"
 #include "report/report_model.h"
 #include "report/reporters.h"
 
@@ -115,6 +117,18 @@ void set_counts(pugi::xml_node node, const Tally& tally) {
   node.append_attribute("skipped") = tally.skipped;
 }
 
+// The one place JUnit text is made XML 1.0 safe: every attribute and text node under `node`,
+// once the document is built and before it is saved.
+void make_xml_safe(pugi::xml_node node) {
+  for (pugi::xml_attribute attribute : node.attributes()) {
+    attribute.set_value(markup_text(attribute.value()).c_str());
+  }
+  if (node.type() == pugi::node_pcdata || node.type() == pugi::node_cdata) {
+    node.set_value(markup_text(node.value()).c_str());
+  }
+  for (pugi::xml_node child : node.children()) make_xml_safe(child);
+}
+
 class JunitReporter final : public Reporter {
  public:
   void write(const ReportInput& input, std::ostream& out) const override {
@@ -138,6 +152,7 @@ class JunitReporter final : public Reporter {
     set_counts(suites, tally);
     set_counts(suite, tally);
     suite.append_attribute("time") = fmt::format("{:.3f}", seconds).c_str();
+    make_xml_safe(xml);
     xml.save(out, "  ", pugi::format_default, pugi::encoding_utf8);
   }
 };

@@ -6,6 +6,7 @@
 
 #include <cctype>
 
+#include "core/sanitize.h"
 #include "report/report_model.h"
 #include "report/reporters.h"
 #include "scaling/scaling_json.h"
@@ -16,8 +17,10 @@ namespace {
 
 // Text in a table cell or list item: nothing in it may end the cell or open HTML, emphasis or
 // a link. A "]" right before "(" or "[" is escaped, which unmakes "[x](javascript:...)" and
-// "![x](url)" from a commit subject while "[+6.1%, +9.8%]" stays as written.
-std::string md(const std::string& text) {
+// "![x](url)" from a commit subject while "[+6.1%, +9.8%]" stays as written. Control
+// characters become visible escapes (core/sanitize.h).
+std::string md(const std::string& raw) {
+  const std::string text = markup_text(raw);  // controls shown as "\x1b", then escaped below
   std::string out;
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
@@ -88,9 +91,10 @@ std::string key_values(const nlohmann::json& object) {
     const std::string shown = value_text(value);
     if (value.is_null() || shown.empty()) continue;
     // A backtick would end the code span and let the rest be read as Markdown.
+    // Inside a code span nothing is Markdown, but control characters are still shown escaped.
     const bool plain = shown.find('`') != std::string::npos;
     text += plain ? fmt::format("- {}: {}\n", md(key), md(shown))
-                  : fmt::format("- {}: `{}`\n", md(key), shown);
+                  : fmt::format("- {}: `{}`\n", md(key), markup_text(shown));
   }
   return text;
 }

@@ -166,7 +166,7 @@ std::vector<StoredDocument> PostgresStore::documents(const DocumentQuery& query)
     StoredDocument d;
     d.id = r.integer(i, 0);
     d.stored_at = r.text(i, 1);
-    d.branch = r.text(i, 2);
+    d.branch = repaired_utf8(r.text(i, 2));
     d.content_sha256 = r.text(i, 3);
     d.document = parse_stored_document(r.text(i, 4), d.id, location());
     out.push_back(std::move(d));

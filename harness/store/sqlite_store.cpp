@@ -165,7 +165,7 @@ std::vector<StoredDocument> SqliteStore::documents(const DocumentQuery& query) {
     StoredDocument d;
     d.id = s.integer(0);
     d.stored_at = s.text(1);
-    d.branch = s.text(2);
+    d.branch = repaired_utf8(s.text(2));
     d.content_sha256 = s.text(3);
     d.document = parse_stored_document(s.text(4), d.id, location());
     out.push_back(std::move(d));

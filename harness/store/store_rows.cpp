@@ -226,7 +226,7 @@ std::string short_ref_name(const std::string& ref_name) {
 nlohmann::json parse_stored_document(const std::string& text, std::int64_t id,
                                      const std::string& location) {
   try {
-    return nlohmann::json::parse(text);
+    return nlohmann::json::parse(repaired_utf8(text));
   } catch (const nlohmann::json::parse_error& e) {
     throw InfraError(fmt::format(
         "results store {}: document {} is not JSON ({}); the store is damaged", location, id,

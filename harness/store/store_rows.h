@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/utf8.h"
 #include "results/results.h"
 #include "store/store.h"
 
@@ -102,8 +103,9 @@ std::optional<std::int64_t> parse_iso8601_unix(std::string_view text);
 // "refs/heads/main" -> "main", "refs/remotes/origin/x" -> "origin/x", "refs/tags/v1" -> "v1".
 std::string short_ref_name(const std::string& ref_name);
 
-// A stored document's JSON text parsed back; text that is not JSON means a damaged store
-// (InfraError naming the store and the document id).
+// A stored document's JSON text parsed back, invalid UTF-8 in it repaired first (as the text
+// columns are); text that is not JSON means a damaged store (InfraError naming the store and
+// the document id).
 nlohmann::json parse_stored_document(const std::string& text, std::int64_t id,
                                      const std::string& location);
 
@@ -123,40 +125,43 @@ JOIN documents d ON d.id = s.document_id
 
 // One measurements() row from the columns of the backends' shared query (its select list, in
 // order), read through `columns`: text(c), integer(c), optional_integer(c), real(c), flag(c).
+// Text columns are repaired to UTF-8 (core/utf8.h): a store written before text was repaired
+// where it enters, or by hand, may hold invalid bytes, and JSON output of them would throw.
 template <class Columns>
 HistoryRow history_row_from(const Columns& columns) {
+  const auto text = [&columns](int column) { return repaired_utf8(columns.text(column)); };
   HistoryRow row;
   row.document_id = columns.integer(0);
-  row.stored_at = columns.text(1);
-  row.measured_at = columns.text(2);
+  row.stored_at = text(1);
+  row.measured_at = text(2);
   row.complete = columns.flag(3);
-  row.branch = columns.text(4);
-  row.role = columns.text(5);
-  row.sha = columns.text(6);
-  row.short_sha = columns.text(7);
-  row.subject = columns.text(8);
-  row.commit_time = columns.text(9);
+  row.branch = text(4);
+  row.role = text(5);
+  row.sha = text(6);
+  row.short_sha = text(7);
+  row.subject = text(8);
+  row.commit_time = text(9);
   row.commit_unix = columns.optional_integer(10);
   row.dirty = columns.flag(11);
-  row.scene_id = columns.text(12);
-  row.status = columns.text(13);
+  row.scene_id = text(12);
+  row.status = text(13);
   row.ratio = columns.real(14);
   row.ratio_lower = columns.real(15);
   row.ratio_upper = columns.real(16);
   row.baseline_median_seconds = columns.real(17);
-  row.image_verdict = columns.text(18);
+  row.image_verdict = text(18);
   row.image_max_error = columns.real(19);
   row.image_rms_error = columns.real(20);
-  row.machine_hostname = columns.text(21);
-  row.machine_cpu_model = columns.text(22);
-  row.baseline_sha256 = columns.text(23);
-  row.repository_key = columns.text(24);
-  row.adapter_name = columns.text(25);
-  row.suite = columns.text(26);
-  row.scene_settings = columns.text(27);
-  row.timing = columns.text(28);
-  row.baseline_accel = columns.text(29);
-  row.series_id = columns.text(30);
+  row.machine_hostname = text(21);
+  row.machine_cpu_model = text(22);
+  row.baseline_sha256 = text(23);
+  row.repository_key = text(24);
+  row.adapter_name = text(25);
+  row.suite = text(26);
+  row.scene_settings = text(27);
+  row.timing = text(28);
+  row.baseline_accel = text(29);
+  row.series_id = text(30);
   return row;
 }
 

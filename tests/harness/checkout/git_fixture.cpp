@@ -43,6 +43,13 @@ void GitFixture::write(const std::string& relative, std::string_view content, bo
   ::chmod(file.c_str(), executable ? 0755 : 0644);
 }
 
+void GitFixture::write_symlink(const std::string& relative, const std::string& target) {
+  const fs::path link = path_ / relative;
+  fs::create_directories(link.parent_path());
+  fs::remove(link);
+  fs::create_symlink(target, link);
+}
+
 void GitFixture::remove(const std::string& relative) {
   fs::remove_all(path_ / relative);
 }
@@ -102,7 +109,8 @@ std::string GitFixture::commit(const std::string& message, const CommitOptions& 
   const char* update_ref = options.root ? nullptr : "HEAD";
   const std::string text = message.empty() || message.back() != '\n' ? message + "\n" : message;
   git_oid id;
-  git::check(git_commit_create(&id, repo_.get(), update_ref, author.get(), author.get(), nullptr,
+  const char* encoding = options.encoding.empty() ? nullptr : options.encoding.c_str();
+  git::check(git_commit_create(&id, repo_.get(), update_ref, author.get(), author.get(), encoding,
                                text.c_str(), tree.get(), raw_parents.size(), raw_parents.data()),
              "committing '" + message + "' in the fixture");
   if (options.root) {

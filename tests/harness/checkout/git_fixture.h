@@ -25,6 +25,9 @@ struct CommitOptions {
   std::string author = "Ada Tester";
   std::vector<std::string> merge_parents = {};  // shas after HEAD: makes a merge commit
   bool root = false;  // no parents at all: starts an unrelated history on HEAD's branch
+  // The commit's "encoding" header, as git writes it with i18n.commitEncoding; the message and
+  // author bytes are stored as given, so a Latin-1 commit is written with Latin-1 bytes.
+  std::string encoding = "";
 };
 
 class GitFixture {
@@ -39,6 +42,8 @@ class GitFixture {
   // Working-tree edits; they are staged by the next commit().
   void write(const std::string& relative, std::string_view content, bool executable = false);
   void remove(const std::string& relative);
+  // A symbolic link at `relative` pointing at `target` (not resolved; may dangle).
+  void write_symlink(const std::string& relative, const std::string& target);
 
   // Stages the whole working tree (like `git add -A`, plus the submodule pins) and commits on
   // HEAD's branch. Returns the new commit's sha.

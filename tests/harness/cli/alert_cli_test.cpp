@@ -10,6 +10,7 @@
 
 #include "cli_support.h"
 #include "results_fixture.h"
+#include "store/sqlite_handle.h"
 
 namespace raygate::test {
 namespace {
@@ -79,6 +80,28 @@ TEST_F(AlertCli, JsonOnStandardOutputNamesTheRange) {
     EXPECT_NEAR(s["alert"]["relative_change"].get<double>(), 0.10, 0.01);
   }
   EXPECT_TRUE(found) << r.out;
+}
+
+// Subjects in the store that are not UTF-8 and carry an ESC sequence: the JSON still parses
+// (it once failed with type_error.316, exit 3) and the text shows the ESC instead of obeying it.
+TEST_F(AlertCli, TextThatIsNotUtf8InTheStoreIsRepairedOnTheWayOut) {
+  record_history(1.10, 9);
+  {
+    SqliteDb db = SqliteDb::open(dir.path() / "store.db", false);
+    db.exec("UPDATE revisions SET subject = subject || ' caf' || CAST(X'E9' AS TEXT) || "
+            "CAST(X'1B' AS TEXT) || '[2J'");
+  }
+  const CliStreams j = run_raygate_streams(
+      {"alert", "--store", "store.db", "--branch", "main", "--format", "json"}, dir);
+  EXPECT_EQ(j.exit_code, 1) << j.err;
+  ASSERT_NO_THROW((void)nlohmann::json::parse(j.out)) << j.out;
+  EXPECT_THAT(j.out, HasSubstr("commit 9 caf\xEF\xBF\xBD"));
+
+  const CliStreams t =
+      run_raygate_streams({"alert", "--store", "store.db", "--branch", "main"}, dir);
+  EXPECT_EQ(t.exit_code, 1) << t.err;
+  EXPECT_THAT(t.out, HasSubstr("commit 9 caf\xEF\xBF\xBD\\x1b[2J"));
+  EXPECT_THAT(t.out + t.err, Not(HasSubstr("\x1b[2J")));
 }
 
 TEST_F(AlertCli, FlatHistoryRaisesNothing) {

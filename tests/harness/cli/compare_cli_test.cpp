@@ -146,5 +146,23 @@ TEST_F(CompareCli, BisectNamesTheCommitThatMadeTheTracerSlower) {
   EXPECT_TRUE(has(j.err, "bisecting 4 commits after")) << j.err;
 }
 
+TEST_F(CompareCli, BisectOfAnEmptyRangeIsAUsageErrorNotACrash) {
+  // Once "bisecting 0 commits", then SIGSEGV. Now exit 2 with the reason, before any build.
+  commit(sources_.fast, "tracer");
+  const std::string only = commit(sources_.slow, "slower");
+  repo_.annotated_tag("v2", "release 2");
+  for (const auto& [good, bad] : std::vector<std::pair<std::string, std::string>>{
+           {only, only}, {"v2", only}, {only, "v2"}}) {
+    std::vector<std::string> args{"bisect", "--good", good, "--bad", bad};
+    const std::vector<std::string> shared = common({"tetra"});
+    args.insert(args.end(), shared.begin(), shared.end());
+    const CliStreams r = run_raygate_streams(args, dir_);
+    EXPECT_EQ(r.exit_code, 2) << good << ".." << bad << ": " << r.err;
+    EXPECT_TRUE(has(r.err, "are the same commit")) << r.err;
+    EXPECT_FALSE(has(r.err, "bisecting")) << r.err;
+    EXPECT_EQ(r.out, "");
+  }
+}
+
 }  // namespace
 }  // namespace raygate::test

@@ -12,6 +12,7 @@
 
 #include "cli_support.h"
 #include "results_fixture.h"
+#include "store/sqlite_handle.h"
 #include "store/store.h"
 #include "tracer_fixture.h"
 
@@ -121,6 +122,41 @@ TEST_F(HistoryCli, JsonForMachines) {
   EXPECT_EQ(j["trends"]["balls"]["series"], j["series"]["balls"]["id"]);
   EXPECT_EQ(j["series"]["balls"]["scene_settings"], "scene=balls size=1 64x64 sampling=center");
   EXPECT_TRUE(all["machine_drift"].is_null());
+}
+
+// A store holding bytes that are not UTF-8 (written by a raygate from before text was repaired
+// where it enters, or by hand): history's JSON and text, and export, repair them instead of
+// failing (nlohmann::json's type_error.316 once made history --format json exit 3).
+TEST_F(HistoryCli, TextThatIsNotUtf8InTheStoreIsRepairedOnTheWayOut) {
+  ASSERT_EQ(import(three_commits()).exit_code, 0);
+  {
+    SqliteDb db = SqliteDb::open(dir.path() / "store.db", false);
+    db.exec("UPDATE revisions SET subject = subject || ' caf' || CAST(X'E9' AS TEXT) || "
+            "CAST(X'1B' AS TEXT) || '[2J'");
+    db.exec("UPDATE documents SET document_json = replace(document_json, 'commit number 2', "
+            "'commit number 2 ' || CAST(X'FF' AS TEXT))");
+  }
+  const CliStreams j =
+      run_raygate_streams({"history", "--store", "store.db", "--format", "json"}, dir);
+  ASSERT_EQ(j.exit_code, 0) << j.err;
+  const nlohmann::json all = nlohmann::json::parse(j.out);
+  EXPECT_EQ(all["tables"][0]["commits"][1]["subject"], "commit number 2 caf\xEF\xBF\xBD\x1b[2J");
+
+  const CliStreams text = run_raygate_streams({"history", "--store", "store.db"}, dir);
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_THAT(text.out, HasSubstr("caf\xEF\xBF\xBD\\x1b[2J"));  // the ESC shown, not obeyed
+  EXPECT_THAT(text.out, Not(HasSubstr("\x1b")));
+
+  const CliStreams exported =
+      run_raygate_streams({"export", "--store", "store.db", "-o", "out"}, dir);
+  ASSERT_EQ(exported.exit_code, 0) << exported.err;
+  bool repaired = false;
+  for (const auto& entry : std::filesystem::directory_iterator(dir.path() / "out")) {
+    if (read_file(entry.path()).find("commit number 2 \xEF\xBF\xBD") != std::string::npos) {
+      repaired = true;
+    }
+  }
+  EXPECT_TRUE(repaired);
 }
 
 TEST_F(HistoryCli, SaysWhenTheMachineMovedAndTheCodeDidNot) {

@@ -75,5 +75,28 @@ TEST(Progress, UnknownRatioAndEtaAreLeftOut) {
   EXPECT_EQ(out.text(), "\r\033[K[1/2] balls      round  0\r\033[K");
 }
 
+TEST(Progress, ControlCharactersOfACommitAreShownNotObeyed) {
+  // A subject that would clear the screen, set the window title and ring the bell, then a
+  // carriage return that would overwrite the line with a forged verdict.
+  ProgressOutput out;
+  {
+    Progress progress(out.stream(), false);
+    progress.line("  abc1234 fix\x1b[2J\x1b]0;owned\x07\rPASS: 0 failed: 4.0% -> bad");
+    progress.status("building def5678 caf\xE9 \xC2\x9B" "31m");
+  }
+  EXPECT_EQ(out.text(),
+            "  abc1234 fix\\x1b[2J\\x1b]0;owned\\x07\\x0dPASS: 0 failed: 4.0% -> bad\n"
+            "building def5678 caf\xEF\xBF\xBD \\u009b31m\n");
+}
+
+TEST(Progress, TheRewrittenLineKeepsItsOwnEscapesOnly) {
+  ProgressOutput out;
+  {
+    Progress progress(out.stream(), true);
+    progress.update({1, 1, "odd\x1b[8m", 2, 0.0, 0.0, -1.0});
+  }
+  EXPECT_EQ(out.text(), "\r\033[K[1/1] odd\\x1b[8m    round  2\r\033[K");  // padded before
+}
+
 }  // namespace
 }  // namespace raygate::cli

@@ -82,6 +82,12 @@ TEST(BisectSearch, SkipsAroundTheCulpritLeaveARange) {
             "c5");
 }
 
+TEST(BisectSearch, AnEmptyRangeIsAUsageErrorNotACrash) {
+  ScriptedJudge judge{0, {}, {}};
+  EXPECT_THROW(bisect_search({}, [&](const Revision& r) { return judge(r); }), UsageError);
+  EXPECT_TRUE(judge.asked.empty());
+}
+
 class BisectPipelineTest : public PipelineTest {
  protected:
   BisectResult bisect_range(const std::string& good, const std::string& bad) {
@@ -144,6 +150,105 @@ TEST_F(BisectPipelineTest, ABadEndThatIsNotSlowerHasNothingToBisect) {
   const std::string good = commit_tracer("2.0", "good");
   const std::string bad = commit_tracer("2.0", "not slower");
   EXPECT_EQ(bisect_range(good, bad).outcome, BisectOutcome::bad_not_worse);
+}
+
+// The UsageError bisect_range(good, bad) throws, or "" when it throws none. Nothing may have
+// been built or measured by then.
+class BisectRangeTest : public BisectPipelineTest {
+ protected:
+  std::string refusal(const std::string& good, const std::string& bad) {
+    try {
+      bisect_range(good, bad);
+      return "";
+    } catch (const UsageError& e) {
+      EXPECT_TRUE(progress_.statuses.empty()) << "built before refusing";
+      EXPECT_TRUE(progress_.lines.empty()) << "bisected before refusing";
+      return e.what();
+    }
+  }
+};
+
+TEST_F(BisectRangeTest, TheSameCommitTwiceIsAnEmptyRange) {
+  commit_tracer("2.0", "good");
+  const std::string only = commit_tracer("2.4", "the only one");
+  const std::string why = refusal(only, only);
+  EXPECT_NE(why.find("are the same commit " + only.substr(0, 7)), std::string::npos) << why;
+  EXPECT_NE(why.find("give --good a revision older than --bad"), std::string::npos) << why;
+  EXPECT_NE(refusal("main", only).find("same commit"), std::string::npos);
+}
+
+TEST_F(BisectRangeTest, ATagAndItsShaAreTheSameCommit) {
+  const std::string tagged = commit_tracer("2.0", "release");
+  repo_.annotated_tag("v1.0", "release 1.0");
+  repo_.tag("light");
+  EXPECT_NE(refusal("v1.0", tagged).find("same commit"), std::string::npos);
+  EXPECT_NE(refusal(tagged, "v1.0").find("same commit"), std::string::npos);
+  EXPECT_NE(refusal("light", "v1.0").find("same commit"), std::string::npos);
+}
+
+TEST_F(BisectRangeTest, AGoodEndNewerThanTheBadEndIsRefusedAsSwapped) {
+  const std::string older = commit_tracer("2.0", "older");
+  commit_tracer("2.0", "middle");
+  const std::string newer = commit_tracer("2.4", "newer");
+  const std::string why = refusal(newer, older);
+  EXPECT_NE(why.find("is not an ancestor of"), std::string::npos) << why;
+  EXPECT_NE(why.find("a descendant of " + older.substr(0, 7)), std::string::npos) << why;
+  EXPECT_NE(why.find("swapped"), std::string::npos) << why;
+}
+
+TEST_F(BisectRangeTest, UnrelatedHistoriesAreRefused) {
+  const std::string first = commit_tracer("2.0", "first history");
+  repo_.write("README", "another project\n");
+  CommitOptions root;
+  root.root = true;
+  repo_.commit("a second root", root);
+  const std::string other = commit_tracer("2.4", "on the second root");
+  const std::string why = refusal(first, other);
+  EXPECT_NE(why.find("unrelated histories"), std::string::npos) << why;
+}
+
+TEST_F(BisectRangeTest, DivergedEndsAreRefusedWithTheirCommonAncestor) {
+  const std::string base = commit_tracer("2.0", "common");
+  repo_.branch("side");
+  const std::string on_main = commit_tracer("2.4", "on main");
+  repo_.switch_to("side");
+  const std::string on_side = commit_tracer("2.0", "on side");
+  const std::string why = refusal(on_side, on_main);
+  EXPECT_NE(why.find("diverged after " + base.substr(0, 7) + " common"), std::string::npos)
+      << why;
+}
+
+TEST_F(BisectPipelineTest, AMergeOnlyRangeNamesTheMergeAndTheRangeItBroughtIn) {
+  // main: good - M, where M merges a side branch holding the slowdown. Following first parents
+  // the range is M alone: the answer is M, and the note says which range to bisect next.
+  const std::string good = commit_tracer("2.0", "good");
+  repo_.branch("side");
+  repo_.switch_to("side");
+  commit_tracer("2.0", "side: docs");
+  const std::string side_tip = commit_tracer("2.4", "side: the culprit");
+  repo_.switch_to("main");
+  repo_.write("cost", "2.4\n");  // the merged tree: the side's cost
+  CommitOptions merge;
+  merge.merge_parents = {side_tip};
+  const std::string merge_sha = repo_.commit("merge side", merge);
+
+  const BisectResult result = bisect_range(good, merge_sha);
+  EXPECT_EQ(result.outcome, BisectOutcome::found);
+  EXPECT_EQ(result.first_bad.sha, merge_sha);
+  EXPECT_EQ(result.candidates, 1u);
+  EXPECT_NE(result.merge_note.find("is a merge"), std::string::npos) << result.merge_note;
+  EXPECT_NE(result.merge_note.find("--good " + good.substr(0, 7) + " --bad " +
+                                   side_tip.substr(0, 7)),
+            std::string::npos)
+      << result.merge_note;
+}
+
+TEST_F(BisectPipelineTest, AnOrdinaryFirstBadCommitHasNoMergeNote) {
+  const std::string good = commit_tracer("2.0", "good");
+  const std::string bad = commit_tracer("2.4", "bad");
+  const BisectResult result = bisect_range(good, bad);
+  EXPECT_EQ(result.outcome, BisectOutcome::found);
+  EXPECT_EQ(result.merge_note, "");
 }
 
 }  // namespace

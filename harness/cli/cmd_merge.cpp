@@ -62,7 +62,9 @@ int merge_command(const MergeArgs& args, const Console& console) {
   }
   const ResultsDocument& document = merged.document;
   const std::filesystem::path out = std::filesystem::absolute(args.out);
-  write_results(document, out);
+  // A full disk under -o must not lose the merge: the store still gets it, and the reports.
+  OutputFailures failures;
+  failures.attempt("the merged document (--output)", [&] { write_results(document, out); });
   console.info(fmt::format("merged {} shard documents of suite {}: {} scenes{}", inputs.size(),
                            document.suite, document.scenes.size(),
                            document.complete ? "" : " (incomplete)"));
@@ -70,7 +72,7 @@ int merge_command(const MergeArgs& args, const Console& console) {
 
   return record_gate_and_report(document, out, args.record,
                                 std::filesystem::absolute(args.cache_dir), policy, args.reports,
-                                console);
+                                console, failures);
 }
 
 }  // namespace

@@ -58,8 +58,10 @@ int run_command(const RunArgs& args, const Console& console) {
                              score->second.score, score->second.interval.lower,
                              score->second.interval.upper, score->second.scenes));
   }
-  return record_gate_and_report(document, measured.path, args.record, context.cache_dir, context.policy,
-                                args.reports, console);
+  OutputFailures failures;
+  for (const FailedWrite& failed : measured.unwritten) failures.add("the results document", failed);
+  return record_gate_and_report(document, measured.path, args.record, context.cache_dir,
+                                context.policy, args.reports, console, failures);
 }
 
 }  // namespace

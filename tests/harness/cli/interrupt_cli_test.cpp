@@ -229,6 +229,8 @@ TEST_F(InterruptCli, UnwritableOutputsAreRefusedBeforeAnythingIsBuilt) {
       {"--out", (a_file / "r.json").string()},         // under a file
       {"--report", "html:" + dir_.path().string()},    // a directory
       {"--report", "junit:" + (a_file / "j.xml").string()},
+      {"--out", "/dev/full"},        // a device: renaming over it would replace the node
+      {"--report", "json:/dev/null"},
   };
   for (const std::string command : {"run", "compare"}) {
     for (const auto& [option, value] : cases) {
@@ -245,6 +247,8 @@ TEST_F(InterruptCli, UnwritableOutputsAreRefusedBeforeAnythingIsBuilt) {
       EXPECT_FALSE(fs::exists(cache_ / "builds")) << "built before refusing";
     }
   }
+  EXPECT_TRUE(fs::is_character_file("/dev/full"));
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/path_component.h"
+#include "core/replace_directory.h"
 
 namespace raygate {
 namespace {
@@ -110,6 +111,7 @@ std::filesystem::path adapter_golden_dir(const std::filesystem::path& golden_roo
   std::error_code ec;
   std::vector<std::filesystem::path> sets;
   for (const auto& item : std::filesystem::directory_iterator(golden_root, ec)) {
+    if (is_replacement_temporary(item.path())) continue;  // a bless half done (or killed)
     if (std::filesystem::exists(item.path() / kManifestName)) sets.push_back(item.path());
   }
   std::sort(sets.begin(), sets.end());  // the same answer on every file system

@@ -112,25 +112,36 @@ struct Blessing {
   GoldenEntry entry;
 };
 
-// Swaps in a new golden set: the old set's files (linked, not copied), each blessing's image
-// written over its name, and `manifest` with their entries and hashes. Either the old set or
-// the new one is there afterwards, each complete and matching its manifest, whatever failed
-// (a full disk, a kill): core/replace_directory.h. `manifest` is updated once the set is in.
+// Fills `fresh` with the new golden set: the old set's files (linked, not copied), each
+// blessing's image written over its name (replacing the link, never writing through it), and
+// `next` with their entries and the hashes of the bytes as written.
+void write_new_set(const std::filesystem::path& golden_dir, const std::filesystem::path& fresh,
+                   const std::vector<Blessing>& blessings, GoldenManifest& next) {
+  if (std::filesystem::exists(golden_dir)) link_tree(golden_dir, fresh);
+  for (const Blessing& b : blessings) {
+    write_file_atomically(fresh / b.file, read_file(b.image));
+    GoldenEntry entry = b.entry;
+    entry.file = b.file;
+    entry.sha256 = sha256_file_hex(fresh / b.file);
+    next.upsert(entry);
+  }
+  save_golden_manifest(next, fresh);
+}
+
+// Swaps in the new golden set. Either the old set or the new one is there afterwards, each
+// complete and matching its manifest, whatever failed (a full disk, a kill):
+// core/replace_directory.h. `manifest` is updated once the new set is in.
 void swap_in_goldens(const std::filesystem::path& golden_dir, GoldenManifest& manifest,
                      const std::vector<Blessing>& blessings) {
   GoldenManifest next = manifest;
-  replace_directory(golden_dir, [&](const std::filesystem::path& fresh) {
-    if (std::filesystem::exists(golden_dir)) link_tree(golden_dir, fresh);
-    for (const Blessing& b : blessings) {
-      write_file_atomically(fresh / b.file, read_file(b.image));  // replaces the link, never
-                                                                  // writes through it
-      GoldenEntry entry = b.entry;
-      entry.file = b.file;
-      entry.sha256 = sha256_file_hex(fresh / b.file);
-      next.upsert(entry);
-    }
-    save_golden_manifest(next, fresh);
-  });
+  try {
+    replace_directory(golden_dir, [&](const std::filesystem::path& fresh) {
+      write_new_set(golden_dir, fresh, blessings, next);
+    });
+  } catch (const WriteError& e) {  // named after the golden folder, not its temporary
+    throw WriteError(golden_dir, e.reason() + " (writing " + e.path().filename().string() +
+                                     "); the goldens there are unchanged");
+  }
   manifest = std::move(next);
 }
 

@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/json_reader.h"
 #include "core/path_component.h"
 #include "core/replace_directory.h"
 
@@ -40,7 +41,7 @@ GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir) {
   GoldenManifest manifest;
   if (!std::filesystem::exists(path)) return manifest;
   try {
-    const json doc = json::parse(read_file(path));
+    const json doc = read_json_file(path);  // duplicate keys refused (core/json_reader.h)
     if (doc.at("schema_version").get<int>() != GoldenManifest::kSchemaVersion) {
       throw UsageError(path.string() + ": schema_version " +
                        std::to_string(doc.at("schema_version").get<int>()) +

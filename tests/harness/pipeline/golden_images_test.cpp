@@ -202,5 +202,37 @@ TEST_F(BlessFromRunTest, ABlessReplacesTheWholeSetAndKeepsTheFolderOtherFiles) {
   EXPECT_FALSE(leftover_temporaries(dir_.path()));
 }
 
+// The manifest is read by the one JSON reader: an entry whose sha256 is given twice (which
+// copy would a verify believe?) or a width past a double's range is refused with where it is.
+TEST_F(BlessFromRunTest, AManifestWithADuplicateKeyOrAHugeNumberIsRefusedWhereItIs) {
+  bless();
+  const fs::path manifest = request_.golden_dir / "manifest.json";
+  const std::string text = read_file(manifest);
+  const std::size_t sha = text.find("\"sha256\"");
+  ASSERT_NE(sha, std::string::npos);
+  write_file_atomically(manifest, text.substr(0, sha) + "\"sha256\": \"0\", " + text.substr(sha));
+  try {
+    load_golden_manifest(request_.golden_dir);
+    ADD_FAILURE() << "a duplicate sha256 was taken";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find(manifest.string() + ":"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(": $.images[0]: duplicate key 'sha256'"),
+              std::string::npos)
+        << e.what();
+  }
+  const std::size_t width = text.find("\"width\": ");
+  ASSERT_NE(width, std::string::npos);
+  write_file_atomically(manifest, text.substr(0, width) + "\"width\": 1e400, \"w\": " +
+                                      text.substr(width + std::string("\"width\": ").size()));
+  try {
+    load_golden_manifest(request_.golden_dir);
+    ADD_FAILURE() << "1e400 was taken";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("$.images[0].width: number 1e400 is out of range"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace raygate::test

@@ -42,6 +42,7 @@ void print_scores(const ResultsDocument& document, const Console& console) {
 int merge_command(const MergeArgs& args, const Console& console) {
   if (args.out.empty()) throw UsageError("merge: --output is required (the merged document)");
   check_report_specs(args.reports);
+  check_output_path(args.out, "--output");  // a folder or a device: refused before reading
   std::vector<MergeInput> inputs;
   for (const std::string& path : args.documents) inputs.push_back({path, read_results(path)});
   // Without --policy the shards' own limits judge the merge (merge checked that they agree).

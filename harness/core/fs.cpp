@@ -41,7 +41,9 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
     throw WriteError(path, "not a regular file (a device, FIFO or socket is never replaced)");
   }
   std::filesystem::create_directories(parent, ec);
-  if (ec) throw WriteError(path, "cannot create directory " + parent.string() + ": " + ec.message());
+  if (ec) {
+    throw WriteError(path, "cannot create directory " + parent.string() + ": " + ec.message());
+  }
 
   // "." + name + ".tmp-XXXXXX", built step by step (GCC 12 warns falsely on the one-liner).
   std::string temp_name = ".";

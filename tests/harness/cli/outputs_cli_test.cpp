@@ -117,6 +117,14 @@ TEST_F(OutputsCli, AMergeWhoseOutputIsOnAFullDiskIsStoredAndReported) {
   EXPECT_EQ(stored_documents("store.db"), 1u);
 }
 
+TEST_F(OutputsCli, AMergeIntoADeviceIsRefusedBeforeAnythingIsRead) {
+  // Known before any work: a usage error (2), and the device is still a device.
+  const CliRun merged = run_raygate({"merge", shard_file(), "-o", "/dev/full", "--no-store"}, dir_);
+  EXPECT_EQ(merged.exit_code, 2) << merged.out;
+  EXPECT_TRUE(has(merged.out, "--output: /dev/full is not a regular file")) << merged.out;
+  EXPECT_TRUE(fs::is_character_file("/dev/full"));
+}
+
 TEST_F(OutputsCli, ARegressionOutranksAFailedOutput) {
   // A merged shard with an image that fails its check: the gate says 1, and a report that
   // cannot be written does not turn that into "could not finish".
@@ -148,7 +156,8 @@ TEST_F(OutputsCli, ARunWhoseOutputIsOnAFullDiskKeepsTheDocumentInItsRunFolderAnd
   // The document in the run folder, complete, and said where.
   std::vector<fs::path> kept;
   for (const auto& run_dir : fs::directory_iterator(dir_.path() / "cache" / "runs")) {
-    if (fs::exists(run_dir.path() / "results.json")) kept.push_back(run_dir.path() / "results.json");
+    const fs::path copy = run_dir.path() / "results.json";
+    if (fs::exists(copy)) kept.push_back(copy);
   }
   ASSERT_EQ(kept.size(), 1u) << run.err;
   EXPECT_TRUE(has(run.err, "results: " + kept.front().string())) << run.err;

@@ -59,8 +59,8 @@ ResultsDocument new_document(const std::string& kind, const MeasureContext& cont
 
 // Measures every scene into `document` (whose header the caller filled in), writing it to
 // m.out after each scene and once more, complete, at the end (to the run folder instead while
-// m.out cannot be written: pipeline/document_output.h). On SIGINT or SIGTERM it stops the
-// running child, writes the scenes finished so far (complete: false) and throws Interrupted
+// m.out cannot be written: pipeline/document_output.h). On SIGINT, SIGTERM or SIGHUP it stops
+// the running child, writes the scenes finished so far (complete: false) and throws Interrupted
 // saying what was kept and where.
 void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io);
 

@@ -1,6 +1,7 @@
 // Verdicts a team can trust, end to end on the fixture tracer's repository: SIGINT, SIGTERM and
-// SIGHUP (a closed terminal) stop `raygate run` with 130 / 143 / 129, leaving no tracer, grandchild or setsid stray running, the
-// finished scenes in the document (complete: false) and one line saying so; an interrupted
+// SIGHUP (a closed terminal, by kill and by a pty closed under raygate) stop `raygate run` with
+// 130 / 143 / 129, leaving no tracer, grandchild or setsid stray running, the finished scenes
+// in the document (complete: false) and one line saying so; an interrupted
 // build leaves nothing that looks complete and the rerun builds again; a crashing head fails
 // the gate with or without a warm-up; an --out or --report that cannot be written is refused
 // (exit 2) before anything is built or measured.

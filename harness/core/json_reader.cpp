@@ -1,5 +1,6 @@
 #include "core/json_reader.h"
 
+#include <algorithm>
 #include <iterator>
 #include <regex>
 #include <set>
@@ -176,13 +177,16 @@ Json parse_json_input(std::string_view text, const std::string& origin) {
     return Json::parse(first, last, track);
   } catch (const Json::parse_error& e) {
     throw_syntax_error(e, text, origin);
-  } catch (const Json::out_of_range& e) {  // 406: a number past a double's range
+  } catch (const Json::out_of_range&) {  // 406: a number past a double's range
     const std::size_t start = number_start(text, read);
     std::size_t end = start;
     while (end < text.size() && in_number(text[end])) ++end;
+    constexpr std::size_t kShown = 40;  // "1" and 5000 zeros is said, not printed
+    std::string number(text.substr(start, std::min(end - start, kShown)));
+    if (end - start > kShown) number += "...";
     const auto [line, column] = line_and_column(text, start);
     throw JsonInputError(origin, line, column, path_through(open, open.size()),
-                         "number " + std::string(text.substr(start, end - start)) +
+                         "number " + number +
                              " is out of range (a double holds magnitudes up to about 1.8e308)");
   }
 }

@@ -53,6 +53,10 @@ TEST(JsonReader, ANumberPastADoublesRangeIsAUsageErrorNamingTheField) {
   EXPECT_EQ(refusal("1e400"),
             "in.json:1:1: $: number 1e400 is out of range (a double holds magnitudes up to "
             "about 1.8e308)");
+  const std::string long_number = "{\"n\": 1" + std::string(400, '0') + "}";
+  EXPECT_EQ(refusal(long_number),
+            "in.json:1:7: $.n: number 1" + std::string(39, '0') +
+                "... is out of range (a double holds magnitudes up to about 1.8e308)");
   // Tiny numbers round to zero and huge integers to a double, as JSON allows: not refused.
   EXPECT_EQ(refusal("{\"a\": 1e-400, \"b\": 123456789012345678901234567890}"), "");
 }

@@ -1,15 +1,18 @@
-// Nothing lost when an output cannot be written (issue 25, item 4), end to end: the results
-// document under -o on a full disk, a --report file on a full disk, standard output on a full
-// disk. Each time the document is stored, every other output is written, the failed one is
-// named with its path and the system's reason, and the exit code is 3. A full disk is a 4 KiB
-// tmpfs, filled, in a private mount namespace (root only: skipped elsewhere); standard output
-// is /dev/full, which needs nothing.
+// Nothing lost when an output cannot be written (issue 25, items 4 and 5), end to end: the
+// results document under -o on a full disk, a --report file on a full disk, standard output on a
+// full disk. Each time the document is stored, every other output is written, the failed one is
+// named with its path and the system's reason, and the exit code is 3. And the baseline's
+// goldens blessed again on a full disk stay the old set, matching their manifest. A full disk
+// is a small tmpfs, filled, in a private mount namespace (root only: skipped elsewhere);
+// standard output is /dev/full, which needs nothing.
 #include <gtest/gtest.h>
 
 #include <string>
 #include <vector>
 
 #include "cli_support.h"
+#include "compare/golden.h"
+#include "core/sha256.h"
 #include "results/results.h"
 #include "results_fixture.h"
 #include "tracer_fixture.h"
@@ -166,6 +169,54 @@ TEST_F(OutputsCli, ARunWhoseOutputIsOnAFullDiskKeepsTheDocumentInItsRunFolderAnd
   EXPECT_EQ(document.scenes.size(), 1u);
   EXPECT_TRUE(fs::exists(dir_.path() / "report.html"));
   EXPECT_EQ(stored_documents("store.db"), 1u);
+}
+
+// Issue 25, item 5, end to end: the baseline's goldens blessed again on a disk that has filled
+// up. The folder holds a golden of an older baseline (other bytes than a render gives now), so
+// the new one must really be written: in place, that left a truncated tetra.png under a
+// manifest naming the old sha256 (and an internal error). Now the second bless fails (exit 3)
+// saying the goldens are unchanged, and they are: the old file, its manifest's sha256 matching,
+// no temporary beside the folder. The tmpfs lives only while the shell runs, so the shell
+// copies it out to after/ for the test to look at.
+TEST_F(OutputsCli, ABaselineBlessOnAFullDiskLeavesTheOldGoldensAndTheirManifestInAgreement) {
+  const std::string script =
+      "mount -t tmpfs -o size=512k raygate-full full || exit 77\n"
+      "\"$0\" golden bless tetra --golden-dir full/g --work-dir work > first.log 2>&1 || exit 78\n"
+      "rendered=$(sha256sum full/g/tetra.png | cut -c1-64)\n"
+      "printf 'a golden of an older baseline' > full/g/tetra.png\n"
+      "older=$(sha256sum full/g/tetra.png | cut -c1-64)\n"
+      "sed -i \"s/$rendered/$older/\" full/g/manifest.json\n"
+      "cp -r full/g first\n"
+      "head -c 600000 /dev/zero > full/fill 2>/dev/null\n"
+      "\"$0\" golden bless tetra gears --golden-dir full/g --work-dir work; echo $? > second.code\n"
+      "rm full/fill; cp -r full after\n";
+  ProcessSpec spec;
+  spec.argv = {"unshare", "--mount", "sh", "-c", script, RAYGATE_EXE};
+  spec.stdout_path = dir_.path() / "cli.out";
+  spec.stderr_path = dir_.path() / "cli.err";
+  spec.working_directory = dir_.path();
+  spec.timeout = std::chrono::minutes(5);
+  const ProcessResult r = run_process(spec);
+  if (r.outcome != ProcessOutcome::exited || r.exit_code == 77) {
+    GTEST_SKIP() << "a private tmpfs mount is not permitted here (needs root)";
+  }
+  ASSERT_EQ(r.exit_code, 0) << read_file(dir_.path() / "cli.err")
+                            << read_file(dir_.path() / "first.log");
+  EXPECT_EQ(read_file(dir_.path() / "second.code"), "3\n");
+  const std::string said = read_file(dir_.path() / "cli.err");
+  EXPECT_TRUE(has(said, "No space left on device")) << said;
+  EXPECT_TRUE(has(said, "the goldens there are unchanged")) << said;
+  const fs::path after = dir_.path() / "after" / "g";
+  EXPECT_EQ(read_file(after / "tetra.png"), read_file(dir_.path() / "first" / "tetra.png"));
+  EXPECT_EQ(read_file(after / "manifest.json"),
+            read_file(dir_.path() / "first" / "manifest.json"));
+  EXPECT_FALSE(fs::exists(after / "gears.png"));
+  const GoldenManifest manifest = load_golden_manifest(after);
+  ASSERT_EQ(manifest.entries.size(), 1u);
+  EXPECT_EQ(manifest.entries[0].sha256, sha256_file_hex(after / "tetra.png"));
+  for (const auto& entry : fs::directory_iterator(dir_.path() / "after")) {
+    EXPECT_EQ(entry.path().filename(), "g") << "left behind: " << entry.path();
+  }
 }
 
 }  // namespace

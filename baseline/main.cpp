@@ -14,6 +14,7 @@
 #include <string>
 
 #include "baseline_version.h"
+#include "image/file_output.h"
 #include "image/image_writer.h"
 #include "nff/parser.h"
 #include "render/camera.h"
@@ -94,14 +95,8 @@ raygate::nff::Scene read_scene(const std::string& path) {
 
 bool write_stats(const std::string& path, const raygate::render::RunReport& report,
                  std::string& error) {
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out << raygate::render::to_json(report).dump(2) << '\n';
-  out.close();
-  if (!out) {
-    error = fmt::format("cannot write stats '{}': could not create or write the file", path);
-    return false;
-  }
-  return true;
+  return raygate::write_file_replacing(path, raygate::render::to_json(report).dump(2) + "\n",
+                                       error);
 }
 
 int run(const Options& options) {

@@ -1,11 +1,12 @@
 // Picks the encoder by extension and writes its bytes.
 #include "image/image_writer.h"
 
+#include "image/file_output.h"
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstring>
-#include <fstream>
 #include <stdexcept>
 
 namespace raygate {
@@ -57,18 +58,7 @@ bool write_image(const std::string& path, const Image& image, std::string& error
     error = "cannot write '" + path + "': " + e.what();
     return false;
   }
-  std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  if (!out) {
-    error = "cannot write '" + path + "': " + std::strerror(errno);
-    return false;
-  }
-  out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
-  out.close();
-  if (!out) {
-    error = "cannot write '" + path + "': the write failed (disk full?)";
-    return false;
-  }
-  return true;
+  return write_file_replacing(path, bytes, error);
 }
 
 }  // namespace raygate

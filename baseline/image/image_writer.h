@@ -15,7 +15,8 @@ namespace raygate {
 // writes, and how to get the others.
 std::string check_output_format(const std::string& path);
 
-// Writes the image; on failure returns false and puts the reason (naming the path) in `error`.
+// Writes the image, replacing any old file whole (image/file_output.h); on failure returns false,
+// leaves an old file as it was, and puts the reason (naming the path) in `error`.
 bool write_image(const std::string& path, const Image& image, std::string& error);
 
 }  // namespace raygate

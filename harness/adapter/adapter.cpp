@@ -14,6 +14,7 @@
 #include "adapter/suggest.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/json_reader.h"
 #include "core/sha256.h"
 
 namespace raygate {
@@ -295,31 +296,13 @@ Adapter read_fields(const JsonField& root) {
   return a;
 }
 
-// nlohmann's message carries the position as "parse error at line L, column C: <detail>".
-[[noreturn]] void throw_parse_error(const json::parse_error& e, const std::string& origin) {
-  const std::string what = e.what();
-  std::smatch m;
-  if (std::regex_search(what, m, std::regex("at line ([0-9]+), column ([0-9]+): (.*)"))) {
-    throw UsageError(origin + ": line " + m[1].str() + ", column " + m[2].str() +
-                     ": invalid JSON: " + m[3].str());
-  }
-  throw UsageError(origin + ": invalid JSON (byte " + std::to_string(e.byte) + "): " + what);
-}
-
 }  // namespace
 
 Adapter parse_adapter(std::string_view text, const std::string& origin) {
   if (text.find_first_not_of(" \t\r\n") == std::string_view::npos) {
     throw UsageError(origin + ": the file is empty (an adapter is a JSON object)");
   }
-  json document;
-  try {
-    document = parse_json_rejecting_duplicate_keys(text);
-  } catch (const json::parse_error& e) {
-    throw_parse_error(e, origin);
-  } catch (const FieldError& e) {
-    throw UsageError(origin + ": " + e.path() + ": " + e.what());
-  }
+  const json document = parse_json_input(text, origin);  // core/json_reader.h
   try {
     Adapter adapter = read_fields(JsonField(document, "$"));
     adapter.file = origin;

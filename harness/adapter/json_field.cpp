@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <set>
 
 #include "adapter/suggest.h"
 
@@ -30,60 +29,7 @@ std::string join(const std::vector<std::string>& words) {
   return out;
 }
 
-// Where the parser is, for the duplicate-key message: one frame per open object or array.
-struct OpenContainer {
-  bool is_object = false;
-  std::set<std::string> keys;  // objects: the keys seen so far
-  std::string key;             // objects: the member being read
-  std::size_t index = 0;       // arrays: the element being read
-};
-
-std::string path_of(const std::vector<OpenContainer>& open) {
-  std::string path = "$";
-  for (std::size_t i = 0; i + 1 < open.size(); ++i) {
-    path += open[i].is_object ? "." + open[i].key : "[" + std::to_string(open[i].index) + "]";
-  }
-  return path;
-}
-
-// A value (scalar or a whole container) ended: an enclosing array moves to its next element.
-void element_done(std::vector<OpenContainer>& open) {
-  if (!open.empty() && !open.back().is_object) ++open.back().index;
-}
-
 }  // namespace
-
-nlohmann::json parse_json_rejecting_duplicate_keys(std::string_view text) {
-  using Event = nlohmann::json::parse_event_t;
-  std::vector<OpenContainer> open;
-  const auto track = [&open](int /*depth*/, Event event, nlohmann::json& parsed) {
-    switch (event) {
-      case Event::object_start:
-      case Event::array_start:
-        open.push_back({event == Event::object_start, {}, {}, 0});
-        break;
-      case Event::key: {
-        const std::string key = parsed.get<std::string>();
-        if (!open.back().keys.insert(key).second) {
-          throw FieldError(path_of(open), "duplicate key '" + key +
-                                              "' (JSON keeps only one of them; remove the other)");
-        }
-        open.back().key = key;
-        break;
-      }
-      case Event::object_end:
-      case Event::array_end:
-        open.pop_back();
-        element_done(open);
-        break;
-      case Event::value:
-        element_done(open);
-        break;
-    }
-    return true;
-  };
-  return nlohmann::json::parse(text, track);
-}
 
 std::string describe_json(const nlohmann::json& value) {
   if (value.is_number()) return "number " + value.dump();

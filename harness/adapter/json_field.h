@@ -22,11 +22,6 @@ class FieldError : public std::runtime_error {
   std::string path_;
 };
 
-// Parses `text` like nlohmann::json::parse (a syntax error throws json::parse_error), but a key
-// given twice in one object throws FieldError at the second one: nlohmann keeps only the last,
-// so the file would silently not mean what its first occurrence says.
-nlohmann::json parse_json_rejecting_duplicate_keys(std::string_view text);
-
 // "number 8", "string \"abc\"", "boolean true", "null", "an object", "an array".
 std::string describe_json(const nlohmann::json& value);
 

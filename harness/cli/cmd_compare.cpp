@@ -56,12 +56,14 @@ int compare_command(const CompareArgs& args, const Console& console) {
   const Worktree head = repository.checkout(args.head);
   const Worktree base = base_worktree(args, repository);
   TerminalIo terminal(console);
-  const auto [document, document_path] = measure_compare(
+  const MeasuredDocument measured = measure_compare(
       {context, baseline, repository.location(), base, head, args.out}, terminal.io);
   GatePolicy policy = context.policy;
   policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
-  return record_gate_and_report(document, document_path, args.record, context.cache_dir, policy,
-                                args.reports, console);
+  OutputFailures failures;
+  for (const FailedWrite& failed : measured.unwritten) failures.add("the results document", failed);
+  return record_gate_and_report(measured.document, measured.path, args.record, context.cache_dir,
+                                policy, args.reports, console, failures);
 }
 
 }  // namespace

@@ -42,6 +42,7 @@ void print_scores(const ResultsDocument& document, const Console& console) {
 int merge_command(const MergeArgs& args, const Console& console) {
   if (args.out.empty()) throw UsageError("merge: --output is required (the merged document)");
   check_report_specs(args.reports);
+  check_output_path(args.out, "--output");  // a folder or a device: refused before reading
   std::vector<MergeInput> inputs;
   for (const std::string& path : args.documents) inputs.push_back({path, read_results(path)});
   // Without --policy the shards' own limits judge the merge (merge checked that they agree).
@@ -62,7 +63,9 @@ int merge_command(const MergeArgs& args, const Console& console) {
   }
   const ResultsDocument& document = merged.document;
   const std::filesystem::path out = std::filesystem::absolute(args.out);
-  write_results(document, out);
+  // A full disk under -o must not lose the merge: the store still gets it, and the reports.
+  OutputFailures failures;
+  failures.attempt("the merged document (--output)", [&] { write_results(document, out); });
   console.info(fmt::format("merged {} shard documents of suite {}: {} scenes{}", inputs.size(),
                            document.suite, document.scenes.size(),
                            document.complete ? "" : " (incomplete)"));
@@ -70,7 +73,7 @@ int merge_command(const MergeArgs& args, const Console& console) {
 
   return record_gate_and_report(document, out, args.record,
                                 std::filesystem::absolute(args.cache_dir), policy, args.reports,
-                                console);
+                                console, failures);
 }
 
 }  // namespace

@@ -49,16 +49,19 @@ int run_command(const RunArgs& args, const Console& console) {
   const BaselineTool baseline(context.tools.baseline);
   const auto [worktree, repository] = locate_tree(args, context);
   TerminalIo terminal(console);
-  const auto [document, out] =
+  const MeasuredDocument measured =
       measure_run({context, baseline, repository, worktree, args.out}, terminal.io);
+  const ResultsDocument& document = measured.document;
   if (const auto score = document.scores.find("tracer"); score != document.scores.end()) {
     console.info(fmt::format("suite score (geometric mean of normalized ratios): {:.3f} [{:.3f}, "
                              "{:.3f}] over {} scenes",
                              score->second.score, score->second.interval.lower,
                              score->second.interval.upper, score->second.scenes));
   }
-  return record_gate_and_report(document, out, args.record, context.cache_dir, context.policy,
-                                args.reports, console);
+  OutputFailures failures;
+  for (const FailedWrite& failed : measured.unwritten) failures.add("the results document", failed);
+  return record_gate_and_report(document, measured.path, args.record, context.cache_dir,
+                                context.policy, args.reports, console, failures);
 }
 
 }  // namespace

@@ -40,7 +40,10 @@ int scaling_command(const ScalingArgs& args, const Console& console) {
                                  args.results, document.suite));
   }
   for (const std::string& line : scaling_lines(analysis)) fmt::print("{}\n", line);
-  if (!args.no_write) write_results(document, args.results);
+  OutputFailures failures;  // the fits not written back still judge, and reports still go out
+  if (!args.no_write) {
+    failures.attempt("the fits in " + args.results, [&] { write_results(document, args.results); });
+  }
   GateResult gate;
   gate.families = judge_growth(document, policy);
   const bool failed = std::any_of(gate.families.begin(), gate.families.end(),
@@ -49,9 +52,10 @@ int scaling_command(const ScalingArgs& args, const Console& console) {
   print_gate_summary(gate, stdout);
   if (!args.reports.empty()) {  // the scene table is run's and compare's; shown only on request
     emit_reports(document, evaluate_gate(document, policy), policy, args.reports, args.results,
-                 console);
+                 console, failures);
   }
-  return gate.exit_code;
+  failures.say_summary(failures.exit_code(gate.exit_code));
+  return failures.exit_code(gate.exit_code);
 }
 
 }  // namespace

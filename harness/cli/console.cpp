@@ -53,12 +53,14 @@ bool Console::colour(std::FILE* stream) const {
                        no_color_ ? "1" : nullptr);
 }
 
+// fputs, not fmt::print: chatter to a terminal that was closed (EIO) is dropped, not thrown, so
+// a hang-up still ends with its own exit code and a kept document.
 void Console::info(const std::string& text) const {
-  if (!quiet_) fmt::print(stderr, "{}\n", terminal_text(text));
+  if (!quiet_) std::fputs((terminal_text(text) + "\n").c_str(), stderr);
 }
 
 void Console::warning(const std::string& text) const {
-  fmt::print(stderr, "raygate: warning: {}\n", terminal_text(text));
+  std::fputs(("raygate: warning: " + terminal_text(text) + "\n").c_str(), stderr);
 }
 
 Console console_of(const CLI::App& command) {

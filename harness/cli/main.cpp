@@ -3,7 +3,9 @@
 #include <fmt/core.h>
 
 #include <CLI/CLI.hpp>
+#include <cstdio>
 #include <exception>
+#include <string>
 
 #include "cli/commands.h"
 #include "cli/console.h"
@@ -32,14 +34,22 @@ constexpr AddCommand kCommands[] = {
     raygate::cli::add_merge_command,       raygate::cli::add_alert_command,
     raygate::cli::add_scaling_command};
 
+// The last words, on standard error. Never throws: after a hang-up the terminal is gone and
+// every write fails (EIO), and the exit code must still say what happened.
+void say(const std::string& line) {
+  std::fputs((line + "\n").c_str(), stderr);
+  std::fflush(stderr);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"raygate: ray tracer regression harness, normalized against a baseline tracer"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("raygate ") + RAYGATE_VERSION);
-  // Before any child starts: Ctrl-C and SIGTERM stop children and write what was measured, and
-  // orphans of children re-parent to raygate, to be swept (core/interrupt.h, core/strays.h).
+  // Before any child starts: Ctrl-C, SIGTERM and SIGHUP stop children and write what was
+  // measured, and orphans of children re-parent to raygate, to be swept (core/interrupt.h,
+  // core/strays.h).
   raygate::install_interrupt_handlers();
   raygate::become_subreaper();
   raygate::cli::add_global_options(app);
@@ -56,23 +66,23 @@ int main(int argc, char** argv) {
     app.exit(e);
     return raygate::to_int(raygate::ExitCode::usage);
   } catch (const raygate::Interrupted& e) {
-    // One line: what was kept, and where.
-    fmt::print(stderr, "raygate: {}\n", raygate::terminal_text(e.what()));
+    // One line: what was kept, and where. Messages quote revisions, branch names and paths: a
+    // terminal must not obey their bytes.
+    say(fmt::format("raygate: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(e.code());
   } catch (const raygate::Error& e) {
-    // Messages quote revisions, branch names and paths: a terminal must not obey their bytes.
-    fmt::print(stderr, "raygate: error: {}\n", raygate::terminal_text(e.what()));
+    say(fmt::format("raygate: error: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(e.code());
   } catch (const std::exception& e) {
-    fmt::print(stderr, "raygate: internal error: {}\n", raygate::terminal_text(e.what()));
+    say(fmt::format("raygate: internal error: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(raygate::ExitCode::infrastructure);
   }
   if (const int sig = raygate::interrupt_signal(); sig != 0) {
     // The signal came after the last child ended: the work is done and kept, but the caller
     // asked to stop and learns that it did.
     const raygate::Interrupted stop(sig, "");
-    fmt::print(stderr, "raygate: interrupted by {} after the work was done; all of it was kept\n",
-               raygate::signal_name(sig));
+    say(fmt::format("raygate: interrupted by {} after the work was done; all of it was kept",
+                    raygate::signal_name(sig)));
     return raygate::to_int(stop.code());
   }
   return exit_code;

@@ -9,12 +9,23 @@
 
 namespace raygate::cli {
 
+namespace {
+
+// Progress is for whoever watches. When nobody can (the terminal was closed: writes fail with
+// EIO), it is dropped; fmt::print would throw, and from the destructor that ends raygate with
+// SIGABRT instead of the hang-up's exit code and the line saying what was kept.
+void put(std::FILE* stream, const std::string& text) {
+  std::fputs(text.c_str(), stream);
+  std::fflush(stream);
+}
+
+}  // namespace
+
 Progress::~Progress() { clear(); }
 
 void Progress::clear() {
   if (stream_ != nullptr && interactive_ && dirty_) {
-    fmt::print(stream_, "\r\033[K");
-    std::fflush(stream_);
+    put(stream_, "\r\033[K");
     dirty_ = false;
   }
 }
@@ -27,16 +38,14 @@ void Progress::update(const ProgressState& s) {
     text += fmt::format("  ratio {:.3f} ±{:.1f}%", s.ratio, 100.0 * s.relative_half_width);
   }
   if (s.eta_seconds >= 0.0) text += "  ETA " + format_duration(s.eta_seconds);
-  fmt::print(stream_, "\r\033[K{}", terminal_text(text));
-  std::fflush(stream_);
+  put(stream_, "\r\033[K" + terminal_text(text));
   dirty_ = true;
 }
 
 void Progress::line(const std::string& text) {
   if (stream_ == nullptr) return;
   clear();
-  fmt::print(stream_, "{}\n", terminal_text(text));  // subjects are the commit author's bytes
-  std::fflush(stream_);
+  put(stream_, terminal_text(text) + "\n");  // subjects are the commit author's bytes
 }
 
 void Progress::status(const std::string& text) { line(text); }

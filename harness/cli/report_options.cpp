@@ -56,6 +56,12 @@ void check_output_path(const std::filesystem::path& path, const std::string& opt
     throw UsageError(fmt::format("{}: {} is a directory; name a file in it", option,
                                  target.string()));
   }
+  if (std::filesystem::exists(target, error) && !std::filesystem::is_regular_file(target, error)) {
+    // Files are replaced whole (a temporary renamed over them): that would replace the node.
+    throw UsageError(fmt::format("{}: {} is not a regular file (a device, FIFO or socket); name "
+                                 "a file, or - for standard output",
+                                 option, target.string()));
+  }
   std::filesystem::path folder = target.parent_path();
   while (!std::filesystem::exists(folder, error) && folder.has_relative_path()) {
     folder = folder.parent_path();  // created when the file is written
@@ -73,20 +79,22 @@ void check_output_path(const std::filesystem::path& path, const std::string& opt
 int record_gate_and_report(const ResultsDocument& document, const std::filesystem::path& path,
                            const RecordArgs& record, const std::filesystem::path& cache_dir,
                            const GatePolicy& policy, const std::vector<std::string>& reports,
-                           const Console& console) {
-  console.info(fmt::format("results: {}", path.string()));
+                           const Console& console, OutputFailures& failures) {
+  if (!failures.failed(path)) console.info(fmt::format("results: {}", path.string()));
   record_results(document, record, cache_dir, path, console);
   const GateResult gate = evaluate_gate(document, policy);
   StoreTrends trends = trends_from_store(record_store_path(record, cache_dir), document);
   if (!trends.warning.empty()) console.warning(trends.warning);
-  emit_reports(document, gate, policy, reports, path, console, std::move(trends.trends));
-  return gate.exit_code;
+  emit_reports(document, gate, policy, reports, path, console, failures,
+               std::move(trends.trends));
+  failures.say_summary(failures.exit_code(gate.exit_code));
+  return failures.exit_code(gate.exit_code);
 }
 
 void emit_reports(const ResultsDocument& document, const GateResult& gate,
                   const GatePolicy& policy, const std::vector<std::string>& reports,
                   const std::filesystem::path& document_path, const Console& console,
-                  std::vector<TrendSeries> trends) {
+                  OutputFailures& failures, std::vector<TrendSeries> trends) {
   const std::vector<ReportTarget> targets = parse_specs(reports);
   ReportInput input{document, gate, policy, std::move(trends), document_path.parent_path()};
   if (!console.quiet()) {  // the table for whoever watches: standard error, as all chatter
@@ -98,9 +106,18 @@ void emit_reports(const ResultsDocument& document, const GateResult& gate,
   }
   ReportOptions options;
   options.colour = console.colour(stdout);
-  write_reports(input, targets, options);
   for (const ReportTarget& target : targets) {
-    if (target.path != "-") {
+    const std::string output =
+        fmt::format("--report {}:{}", to_string(target.format), target.path.string());
+    int error_number = 0;  // why standard output failed, before anything else sets errno
+    const bool written = failures.attempt(output, [&] {
+      errno = 0;
+      write_reports(input, {target}, options);
+      error_number = errno;
+    });
+    if (target.path == "-") {
+      check_standard_output(failures, output, error_number);
+    } else if (written) {
       console.info(fmt::format("{} report: {}", to_string(target.format), target.path.string()));
     }
   }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "cli/console.h"
+#include "cli/output_failures.h"
 #include "cli/store_options.h"
 #include "gate/policy.h"
 #include "gate/verdict.h"
@@ -28,21 +29,27 @@ void check_report_specs(const std::vector<std::string>& reports);
 
 // Throws UsageError, naming `option`, when a file could not be written at `path` the way
 // documents and reports are (a temporary file beside it renamed over it, missing folders
-// created): it is a directory, or the nearest existing folder above it is not a folder or is
-// not writable. An empty path (the default place) passes.
+// created): it is a directory or something else that is not a regular file (/dev/full), or the
+// nearest existing folder above it is not a folder or is not writable. An empty path (the
+// default place) passes.
 void check_output_path(const std::filesystem::path& path, const std::string& option);
 
-// The end of every command that writes a document (run, compare, merge): where the document is
-// said, the document recorded in the store (store_options.h), gated by `policy`, and reported;
-// returns the gate's exit code.
+// The end of every command that writes a document (run, compare, merge), in the order that
+// keeps the most when a disk is full: the document's file was written (or failed: `failures`
+// already holds that), then the document is recorded in the store (store_options.h), gated by
+// `policy`, and reported, each report tried even when one before it failed. Says where the
+// document is and, when an output failed, which (cli/output_failures.h); returns the exit code:
+// the gate's, or 3 when an output could not be written and the gate found no regression.
 int record_gate_and_report(const ResultsDocument& document, const std::filesystem::path& path,
                            const RecordArgs& record, const std::filesystem::path& cache_dir,
                            const GatePolicy& policy, const std::vector<std::string>& reports,
-                           const Console& console);
+                           const Console& console, OutputFailures& failures);
 
+// The console table on standard error (unless --quiet), then each report of `reports`; a
+// report that cannot be written is recorded in `failures` and the next one is still written.
 void emit_reports(const ResultsDocument& document, const GateResult& gate,
                   const GatePolicy& policy, const std::vector<std::string>& reports,
                   const std::filesystem::path& document_path, const Console& console,
-                  std::vector<TrendSeries> trends = {});
+                  OutputFailures& failures, std::vector<TrendSeries> trends = {});
 
 }  // namespace raygate::cli

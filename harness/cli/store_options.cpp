@@ -73,6 +73,12 @@ void record_results(const ResultsDocument& document, const RecordArgs& args,
                              store->location(), outcome.document_id,
                              branch.empty() ? "" : " (branch " + branch + ")"));
   } catch (const std::exception& e) {  // raygate's errors and the file system's
+    std::error_code ignored;
+    if (!std::filesystem::is_regular_file(document_path, ignored)) {
+      fmt::print(stderr, "raygate: warning: results not stored: {}\n  and the document is in no "
+                         "file; only the reports keep it\n", e.what());
+      return;
+    }
     fmt::print(stderr,
                "raygate: warning: results not stored: {}\n  the document is kept at {}; store it "
                "later with: raygate import {} --store {}\n",

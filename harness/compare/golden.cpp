@@ -6,7 +6,9 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/json_reader.h"
 #include "core/path_component.h"
+#include "core/replace_directory.h"
 
 namespace raygate {
 namespace {
@@ -39,7 +41,7 @@ GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir) {
   GoldenManifest manifest;
   if (!std::filesystem::exists(path)) return manifest;
   try {
-    const json doc = json::parse(read_file(path));
+    const json doc = read_json_file(path);  // duplicate keys refused (core/json_reader.h)
     if (doc.at("schema_version").get<int>() != GoldenManifest::kSchemaVersion) {
       throw UsageError(path.string() + ": schema_version " +
                        std::to_string(doc.at("schema_version").get<int>()) +
@@ -110,6 +112,7 @@ std::filesystem::path adapter_golden_dir(const std::filesystem::path& golden_roo
   std::error_code ec;
   std::vector<std::filesystem::path> sets;
   for (const auto& item : std::filesystem::directory_iterator(golden_root, ec)) {
+    if (is_replacement_temporary(item.path())) continue;  // a bless half done (or killed)
     if (std::filesystem::exists(item.path() / kManifestName)) sets.push_back(item.path());
   }
   std::sort(sets.begin(), sets.end());  // the same answer on every file system

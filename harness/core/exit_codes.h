@@ -8,6 +8,7 @@ enum class ExitCode : int {
   regression = 1,      // the change made a scene slower or its image wrong
   usage = 2,           // bad command line, adapter, policy or scene file
   infrastructure = 3,  // raygate could not check out, build or measure
+  hung_up = 129,       // stopped by SIGHUP (128 + 1): its terminal or ssh session closed
   interrupted = 130,   // stopped by SIGINT (128 + 2), after writing what it had
   terminated = 143,    // stopped by SIGTERM (128 + 15), likewise
 };

@@ -35,8 +35,15 @@ bool write_all(int fd, std::string_view content) {
 void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
   const std::filesystem::path parent = path.parent_path().empty() ? "." : path.parent_path();
   std::error_code ec;
+  const std::filesystem::file_status existing = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(existing)) throw WriteError(path, "it is a directory");
+  if (std::filesystem::exists(existing) && !std::filesystem::is_regular_file(existing)) {
+    throw WriteError(path, "not a regular file (a device, FIFO or socket is never replaced)");
+  }
   std::filesystem::create_directories(parent, ec);
-  if (ec) throw InfraError("cannot create directory " + parent.string() + ": " + ec.message());
+  if (ec) {
+    throw WriteError(path, "cannot create directory " + parent.string() + ": " + ec.message());
+  }
 
   // "." + name + ".tmp-XXXXXX", built step by step (GCC 12 warns falsely on the one-liner).
   std::string temp_name = ".";
@@ -44,20 +51,29 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   temp_name += ".tmp-XXXXXX";
   std::string temp = (parent / temp_name).string();
   const int fd = ::mkstemp(temp.data());
-  if (fd < 0) throw InfraError("cannot write " + path.string() + ": " + system_reason());
+  if (fd < 0) throw WriteError(path, system_reason());
   const bool written = write_all(fd, content) && ::fsync(fd) == 0;
   const std::string reason = written ? "" : system_reason();
   ::close(fd);
   if (!written) {
     ::unlink(temp.c_str());
-    throw InfraError("cannot write " + path.string() + ": " + reason);
+    throw WriteError(path, reason);
   }
   ::chmod(temp.c_str(), 0644);
   if (std::rename(temp.c_str(), path.c_str()) != 0) {
     const std::string rename_reason = system_reason();
     ::unlink(temp.c_str());
-    throw InfraError("cannot replace " + path.string() + ": " + rename_reason);
+    throw WriteError(path, "cannot replace it: " + rename_reason);
   }
+}
+
+void sync_directory(const std::filesystem::path& folder) {
+  const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) throw WriteError(folder, "cannot open the folder to sync it: " + system_reason());
+  const bool synced = ::fsync(fd) == 0;
+  const std::string reason = synced ? "" : system_reason();
+  ::close(fd);
+  if (!synced) throw WriteError(folder, "cannot sync the folder: " + reason);
 }
 
 std::string read_file(const std::filesystem::path& path) {

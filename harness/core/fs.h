@@ -7,11 +7,43 @@
 #include <string>
 #include <string_view>
 
+#include "core/error.h"
+
 namespace raygate {
 
+// One write that failed: the file and the system's reason.
+struct FailedWrite {
+  std::filesystem::path path;
+  std::string reason;
+};
+
+// A file that could not be written: which one, and the system's reason ("No space left on
+// device"). Kept apart from other infrastructure failures so a command that writes several
+// outputs can keep going after one of them failed and say which (cli/output_failures.h).
+class WriteError : public InfraError {
+ public:
+  WriteError(std::filesystem::path path, std::string reason)
+      : InfraError("cannot write " + path.string() + ": " + reason),
+        path_(std::move(path)),
+        reason_(std::move(reason)) {}
+  const std::filesystem::path& path() const { return path_; }
+  const std::string& reason() const { return reason_; }
+  FailedWrite failure() const { return {path_, reason_}; }
+
+ private:
+  std::filesystem::path path_;
+  std::string reason_;
+};
+
 // Replaces `path` atomically with `content`; creates parent directories. On any failure
-// (including a full disk) the old file is untouched and an InfraError names the path and why.
+// (including a full disk) the old file is untouched and a WriteError names the path and why.
+// Only a regular file (or nothing) is replaced: a device, FIFO or socket at `path` (/dev/full,
+// /dev/stdout) is refused, since renaming over it would replace the node, not write through it.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
+
+// Flushes a directory's entries to disk (after files were created or renamed in it), so a
+// rename that was reported done survives a crash. A WriteError names the folder on failure.
+void sync_directory(const std::filesystem::path& folder);
 
 // Whole file as bytes; throws UsageError (missing or unreadable input is the user's to fix).
 std::string read_file(const std::filesystem::path& path);

@@ -16,6 +16,8 @@ namespace {
 // lock-free atomics, which a handler may touch.
 static_assert(std::atomic<int>::is_always_lock_free && std::atomic<pid_t>::is_always_lock_free);
 constexpr std::size_t kMaxChildGroups = 256;
+// The signals that ask raygate to stop: Ctrl-C, a polite kill, a closed terminal or session.
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
 constinit std::atomic<int> g_signal{0};
 constinit std::atomic<int> g_scopes{0};
 constinit std::atomic<int> g_pipe_read{-1};
@@ -31,11 +33,18 @@ void wake_pollers() {
 
 // First signal with someone to act on it: record it. Otherwise (nobody would look, or this is
 // the second signal): kill the children's groups and die of the signal, as without a handler.
+// A repeated SIGHUP is the one exception: see below.
 extern "C" void on_stop_signal(int sig) {
   const int saved_errno = errno;
   int none = 0;
   if (g_scopes.load() > 0 && g_signal.compare_exchange_strong(none, sig)) {
     wake_pollers();
+    errno = saved_errno;
+    return;
+  }
+  if (sig == SIGHUP && g_signal.load() == SIGHUP) {
+    // A hang-up comes more than once (the shell forwards its own to its jobs, the kernel sends
+    // another when the session leader exits): not a person asking twice, so not the escape.
     errno = saved_errno;
     return;
   }
@@ -53,17 +62,27 @@ void install_handler(int sig) {
   struct sigaction action {};
   action.sa_handler = on_stop_signal;
   sigemptyset(&action.sa_mask);
-  sigaddset(&action.sa_mask, SIGINT);
-  sigaddset(&action.sa_mask, SIGTERM);
+  for (const int stop : kStopSignals) sigaddset(&action.sa_mask, stop);
   action.sa_flags = SA_RESTART;  // code between children need not expect EINTR
   ::sigaction(sig, &action, nullptr);
 }
 
 }  // namespace
 
+namespace {
+
+ExitCode exit_code_of(int signal) {
+  switch (signal) {
+    case SIGTERM: return ExitCode::terminated;
+    case SIGHUP: return ExitCode::hung_up;
+    default: return ExitCode::interrupted;
+  }
+}
+
+}  // namespace
+
 Interrupted::Interrupted(int signal, const std::string& message)
-    : Error(signal == SIGTERM ? ExitCode::terminated : ExitCode::interrupted, message),
-      signal_(signal) {}
+    : Error(exit_code_of(signal), message), signal_(signal) {}
 
 void install_interrupt_handlers() {
   if (g_pipe_write.load() >= 0) return;
@@ -73,8 +92,7 @@ void install_interrupt_handlers() {
   }
   g_pipe_read.store(fds[0]);
   g_pipe_write.store(fds[1]);
-  install_handler(SIGINT);
-  install_handler(SIGTERM);
+  for (const int stop : kStopSignals) install_handler(stop);
 }
 
 int interrupt_signal() { return g_signal.load(); }

@@ -1,13 +1,15 @@
-// Ctrl-C (SIGINT) and SIGTERM while raygate runs a tracer or a build step. Children run in their
-// own process groups, so the terminal's signal reaches raygate only; raygate must stop them.
+// Ctrl-C (SIGINT), SIGTERM and SIGHUP (the terminal or ssh session closed) while raygate runs a
+// tracer or a build step. Children run in their own process groups, so the terminal's signal
+// reaches raygate only; raygate must stop them, or a hung tracer outlives the session forever.
 // The handler only records the signal (an atomic flag and a byte on a self-pipe, both
 // async-signal-safe). Process::wait sees it, kills its child's group and throws Interrupted,
 // which travels up through the measuring code (that writes its document, complete: false) to
-// cli/main.cpp, which exits 130 (SIGINT) or 143 (SIGTERM).
+// cli/main.cpp, which exits 128 + the signal: 129 (SIGHUP), 130 (SIGINT) or 143 (SIGTERM).
 //
 // A signal counts as a request to stop only while someone will act on it: while a child runs
 // or an InterruptScope is open. Otherwise, and on a second signal, the handler kills every live
-// child group and ends raygate at once with the signal's default action.
+// child group and ends raygate at once with the signal's default action; a second SIGHUP after
+// a first does not count (a hang-up is delivered more than once; nobody pressed anything).
 #pragma once
 
 #include <sys/types.h>
@@ -18,7 +20,8 @@
 
 namespace raygate {
 
-// Thrown once SIGINT or SIGTERM arrived; code() is 128 + the signal. what() says what was kept.
+// Thrown once SIGINT, SIGTERM or SIGHUP arrived; code() is 128 + the signal. what() says what
+// was kept.
 class Interrupted : public Error {
  public:
   Interrupted(int signal, const std::string& message);
@@ -28,8 +31,9 @@ class Interrupted : public Error {
   int signal_;
 };
 
-// Installs the SIGINT and SIGTERM handlers and creates the self-pipe. Call once, early in main;
-// calling again does nothing.
+// Installs the SIGINT, SIGTERM and SIGHUP handlers and creates the self-pipe. Call once, early
+// in main; calling again does nothing. A signal ignored when raygate started (nohup, a
+// background job's SIGINT) stays ignored.
 void install_interrupt_handlers();
 
 // The signal that asked raygate to stop, or 0.
@@ -45,7 +49,7 @@ void request_interrupt(int signal);
 // Throws Interrupted ("interrupted by SIGINT <doing>") if a stop was requested.
 void throw_if_interrupted(const std::string& doing);
 
-// "SIGINT", "SIGTERM".
+// "SIGINT", "SIGTERM", "SIGHUP".
 std::string signal_name(int signal);
 
 // Forgets a requested stop (tests only: raygate never resumes after one).

@@ -148,6 +148,7 @@ Process Process::start(const ProcessSpec& spec) {
   sigaddset(&default_signals, SIGPIPE);
   sigaddset(&default_signals, SIGINT);
   sigaddset(&default_signals, SIGTERM);
+  sigaddset(&default_signals, SIGHUP);  // under nohup too, a tracer starts as it would alone
   posix_spawnattr_setsigmask(&attr, &no_signals);
   posix_spawnattr_setsigdefault(&attr, &default_signals);
   posix_spawnattr_setpgroup(&attr, 0);  // own group: a timeout kills the tracer's children too

@@ -3,8 +3,8 @@
 // SIGKILL to the whole group, stdout/stderr drained into size-bounded log files, and the
 // resources wait4 reports. A tracer that crashes or hangs is a result here, not an exception.
 // Nothing the child started outlives it: what is left in its group when it exits is killed,
-// and strays that left the group are swept (core/strays.h). SIGINT or SIGTERM to raygate
-// (core/interrupt.h) kills the group too and throws Interrupted.
+// and strays that left the group are swept (core/strays.h). SIGINT, SIGTERM or SIGHUP to
+// raygate (core/interrupt.h) kills the group too and throws Interrupted.
 #pragma once
 
 #include <sys/types.h>
@@ -74,8 +74,8 @@ class Process {
   ~Process();  // a still-running child's group is killed and reaped
 
   // Drains output and waits for the child (honouring the timeout); call once. Throws
-  // Interrupted once SIGINT or SIGTERM arrived, after killing and reaping the child's group,
-  // even if the child ended by itself meanwhile: nothing that ran then counts.
+  // Interrupted once SIGINT, SIGTERM or SIGHUP arrived, after killing and reaping the child's
+  // group, even if the child ended by itself meanwhile: nothing that ran then counts.
   ProcessResult wait();
   pid_t pid() const { return pid_; }
 

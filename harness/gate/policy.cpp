@@ -5,6 +5,7 @@
 #include "adapter/json_field.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/json_reader.h"
 
 namespace raygate {
 
@@ -44,12 +45,8 @@ const ScenePolicy& GatePolicy::for_scene(const std::string& id) const {
 }
 
 GatePolicy parse_policy(std::string_view text, const std::string& origin) {
-  nlohmann::json document;
-  try {
-    document = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw UsageError(fmt::format("{}: not valid JSON: {}", origin, e.what()));
-  }
+  // Duplicate keys and out-of-range numbers refused with where they are (core/json_reader.h).
+  const nlohmann::json document = parse_json_input(text, origin);
   GatePolicy policy;
   try {
     const JsonField root(document, "$");

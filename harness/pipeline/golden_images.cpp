@@ -9,8 +9,10 @@
 #include "compare/golden.h"
 #include "compare/image_compare.h"
 #include "core/error.h"
+#include "core/fs.h"
 #include "core/path_component.h"
 #include "core/paths.h"
+#include "core/replace_directory.h"
 #include "core/sha256.h"
 #include "results/results.h"
 #include "runner/scene_files.h"
@@ -102,6 +104,47 @@ ChosenImages chosen_images(const ResultsDocument& document, const BlessFromRun& 
   return chosen;
 }
 
+// One image to become a golden: its file name in the golden folder, where its bytes are now,
+// and its manifest entry but for the sha256 (taken from the bytes as written).
+struct Blessing {
+  std::string file;
+  std::filesystem::path image;
+  GoldenEntry entry;
+};
+
+// Fills `fresh` with the new golden set: the old set's files (linked, not copied), each
+// blessing's image written over its name (replacing the link, never writing through it), and
+// `next` with their entries and the hashes of the bytes as written.
+void write_new_set(const std::filesystem::path& golden_dir, const std::filesystem::path& fresh,
+                   const std::vector<Blessing>& blessings, GoldenManifest& next) {
+  if (std::filesystem::exists(golden_dir)) link_tree(golden_dir, fresh);
+  for (const Blessing& b : blessings) {
+    write_file_atomically(fresh / b.file, read_file(b.image));
+    GoldenEntry entry = b.entry;
+    entry.file = b.file;
+    entry.sha256 = sha256_file_hex(fresh / b.file);
+    next.upsert(entry);
+  }
+  save_golden_manifest(next, fresh);
+}
+
+// Swaps in the new golden set. Either the old set or the new one is there afterwards, each
+// complete and matching its manifest, whatever failed (a full disk, a kill):
+// core/replace_directory.h. `manifest` is updated once the new set is in.
+void swap_in_goldens(const std::filesystem::path& golden_dir, GoldenManifest& manifest,
+                     const std::vector<Blessing>& blessings) {
+  GoldenManifest next = manifest;
+  try {
+    replace_directory(golden_dir, [&](const std::filesystem::path& fresh) {
+      write_new_set(golden_dir, fresh, blessings, next);
+    });
+  } catch (const WriteError& e) {  // named after the golden folder, not its temporary
+    throw WriteError(golden_dir, e.reason() + " (writing " + e.path().filename().string() +
+                                     "); the goldens there are unchanged");
+  }
+  manifest = std::move(next);
+}
+
 }  // namespace
 
 BaselineGoldens open_baseline_goldens(const std::string& suite_name,
@@ -167,13 +210,12 @@ void bless_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progre
   for (const SuiteScene& scene : goldens.selected) {
     const BaselineRender render = render_scene(goldens, scene);
     const std::string file = scene.id + ".png";
-    std::filesystem::create_directories(goldens.golden_dir);
-    std::filesystem::copy_file(render.image, goldens.golden_dir / file,
-                               std::filesystem::copy_options::overwrite_existing);
-    manifest.upsert({scene.id, scene.scene, scene.size, render.stats.value("width", 0),
-                     render.stats.value("height", 0), goldens.suite.sampling, "none", file,
-                     sha256_file_hex(goldens.golden_dir / file)});
-    save_golden_manifest(manifest, goldens.golden_dir);  // an interrupted bless keeps its work
+    // One swap per scene: a render takes seconds, and an interrupted bless keeps its work.
+    swap_in_goldens(goldens.golden_dir, manifest,
+                    {{file, render.image,
+                      {scene.id, scene.scene, scene.size, render.stats.value("width", 0),
+                       render.stats.value("height", 0), goldens.suite.sampling, "none", file,
+                       {}}}});
     progress.line(fmt::format("blessed   {:<12} {} ({:.2f} s)", scene.id,
                               (goldens.golden_dir / file).string(), render.process.wall_seconds));
   }
@@ -204,22 +246,23 @@ void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress)
   manifest.tracer = GoldenProvenance{revision->adapter_name, revision->adapter_hash,
                                      revision->worktree.revision, revision->worktree.sha,
                                      revision->worktree.dirty, results, document.started_at};
-  std::filesystem::create_directories(golden_dir);
+  // Every image decoded before any is blessed; then one swap for all of them.
+  std::vector<Blessing> blessings;
   for (const auto& [scene, image] : chosen) {
     const SuiteScene& e = scene->entry;
     OIIO_NAMESPACE::ImageBuf decoded(image.string());
     if (!decoded.init_spec(image.string(), 0, 0)) {
       throw UsageError(image.string() + ": cannot read image: " + decoded.geterror());
     }
-    const std::string file = e.id + image.extension().string();
-    std::filesystem::copy_file(image, golden_dir / file,
-                               std::filesystem::copy_options::overwrite_existing);
     // The hash is provenance only: goldens are compared by decoded pixels, never by bytes.
-    manifest.upsert({e.id, e.scene, e.size, decoded.spec().width, decoded.spec().height,
-                     document.baseline.sampling, "", file, sha256_file_hex(golden_dir / file)});
-    save_golden_manifest(manifest, golden_dir);
-    progress.line(fmt::format("blessed   {:<12} {} (from {})", e.id, (golden_dir / file).string(),
-                              image.string()));
+    blessings.push_back({e.id + image.extension().string(), image,
+                         {e.id, e.scene, e.size, decoded.spec().width, decoded.spec().height,
+                          document.baseline.sampling, "", {}, {}}});
+  }
+  swap_in_goldens(golden_dir, manifest, blessings);
+  for (const Blessing& b : blessings) {
+    progress.line(fmt::format("blessed   {:<12} {} (from {})", b.entry.id,
+                              (golden_dir / b.file).string(), b.image.string()));
   }
 }
 

@@ -41,8 +41,9 @@ struct GoldenVerification {
 // InfraError (the instrument itself broke).
 GoldenVerification verify_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progress);
 
-// Renders each selected scene and writes it and the manifest (after each scene, so an
-// interrupted bless keeps its work). UsageError when golden_dir holds another suite's goldens or
+// Renders each selected scene and swaps in the golden set with it and the manifest (after each
+// scene, so an interrupted bless keeps its work; the old set stays whole until a new one is
+// complete, so a full disk never leaves a golden that its manifest's sha256 does not match). UsageError when golden_dir holds another suite's goldens or
 // a tracer's.
 void bless_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progress);
 
@@ -56,7 +57,9 @@ struct BlessFromRun {
 
 // Copies each chosen scene's image of `role` (its first successful run's, the image the run
 // compared) into the golden dir with the run's provenance. Every scene is checked first (known
-// id, image still there, a safe name, an image extension), so a bad one blesses nothing.
+// id, image still there, a safe name, an image extension, the image decodes), so a bad one
+// blesses nothing; then the whole new set is swapped in at once, so a failed write (a full disk)
+// blesses nothing either and leaves the old set and its manifest as they were.
 void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress);
 
 }  // namespace raygate

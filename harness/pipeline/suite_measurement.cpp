@@ -12,6 +12,7 @@
 #include "core/time_text.h"
 #include "gate/growth_gate.h"
 #include "measure/machine_context.h"
+#include "pipeline/document_output.h"
 #include "runner/baseline_cost_cache.h"
 #include "runner/cachegrind.h"
 #include "runner/scene_files.h"
@@ -116,12 +117,23 @@ ResultsDocument new_document(const std::string& kind, const MeasureContext& cont
 
 namespace {
 
+// The results document at m.out, or in the run folder when m.out cannot be written: a full
+// disk under -o must not end the measurement (pipeline/document_output.h).
+KeptDocument keep(const ResultsDocument& document, const SuiteMeasurement& m) {
+  return keep_document(document, m.out, m.work_dir / "results.json");
+}
+
 // The one line an interrupted measurement ends with: what was kept, and where.
 std::string kept_message(const Interrupted& stop, const ResultsDocument& document,
-                         const SuiteMeasurement& m) {
+                         const SuiteMeasurement& m, const KeptDocument& kept) {
+  if (!kept.failed.empty()) {
+    return fmt::format("interrupted by {}: {} of {} scenes measured (complete: false); {}",
+                       signal_name(stop.signal()), document.scenes.size(), m.scenes.size(),
+                       describe_kept(kept));
+  }
   return fmt::format("interrupted by {}: kept {} of {} scenes in {} (complete: false)",
                      signal_name(stop.signal()), document.scenes.size(), m.scenes.size(),
-                     m.out.string());
+                     kept.path->string());
 }
 
 void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io) {
@@ -161,7 +173,7 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Pipeli
 
     document.scenes.push_back(std::move(result));
     update_scores(document, m.tracer_roles);
-    write_results(document, m.out);
+    keep(document, m);
     elapsed_done = clock.now_seconds() - started;
     progress.line(fmt::format("[{}/{}] {}", index + 1, m.scenes.size(),
                               scene_line(document.scenes.back(), m.tracer_roles)));
@@ -178,8 +190,7 @@ void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Pipelin
     measure_scenes(document, m, io);
   } catch (const Interrupted& stop) {
     document.complete = false;
-    write_results(document, m.out);
-    throw Interrupted(stop.signal(), kept_message(stop, document, m));
+    throw Interrupted(stop.signal(), kept_message(stop, document, m, keep(document, m)));
   }
   document.complete = true;
 }
@@ -194,8 +205,9 @@ MeasuredDocument measure_document(ResultsDocument document, const SuiteMeasureme
   document.finished_at = utc_timestamp();
   const ScalingAnalysis scaling = attach_scaling(document, scaling_limits(m.policy));
   for (const std::string& line : scaling_lines(scaling)) io.progress.line(line);
-  write_results(document, m.out);
-  return {std::move(document), m.out};
+  KeptDocument kept = keep(document, m);
+  const std::filesystem::path where = kept.path.value_or(m.out);
+  return {std::move(document), where, std::move(kept.failed)};
 }
 
 BaselineContender baseline_contender(const MeasureContext& context,

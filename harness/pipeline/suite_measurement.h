@@ -16,6 +16,7 @@
 #include "runner/baseline_tool.h"
 #include "runner/contender.h"
 #include "runner/scheduler.h"
+#include "pipeline/document_output.h"
 #include "pipeline/measure_context.h"
 #include "pipeline/progress.h"
 #include "results/results.h"
@@ -57,15 +58,18 @@ ResultsDocument new_document(const std::string& kind, const MeasureContext& cont
                              const BaselineTool& baseline);
 
 // Measures every scene into `document` (whose header the caller filled in), writing it to
-// m.out after each scene and once more, complete, at the end. On SIGINT or SIGTERM it stops the
-// running child, writes the scenes finished so far (complete: false) and throws Interrupted
+// m.out after each scene and once more, complete, at the end (to the run folder instead while
+// m.out cannot be written: pipeline/document_output.h). On SIGINT, SIGTERM or SIGHUP it stops
+// the running child, writes the scenes finished so far (complete: false) and throws Interrupted
 // saying what was kept and where.
 void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io);
 
-// A finished measurement: its document and where it was written.
+// A finished measurement: its document and where it was written; `unwritten` lists the final
+// writes that failed (-o on a full disk), for the command to report after storing the document.
 struct MeasuredDocument {
   ResultsDocument document;
   std::filesystem::path path;
+  std::vector<FailedWrite> unwritten;
 };
 
 // The end run and compare share: `opening` said, measure_suite(), the finish time stamped, the

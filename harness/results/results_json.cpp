@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/json_reader.h"
 #include "results/json_number.h"
 #include "results/results.h"
 #include "results/shard.h"
@@ -380,14 +381,8 @@ void write_results(const ResultsDocument& document, const std::filesystem::path&
 }
 
 ResultsDocument read_results(const std::filesystem::path& path) {
-  const std::string text = read_file(path);
-  nlohmann::json j;
-  try {
-    j = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw UsageError(path.string() + ": not JSON: " + e.what());
-  }
-  return results_from_json(j, path.string());
+  // Duplicate keys and out-of-range numbers refused with where they are (core/json_reader.h).
+  return results_from_json(read_json_file(path), path.string());
 }
 
 }  // namespace raygate

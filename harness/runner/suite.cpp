@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/json_reader.h"
 #include "core/path_component.h"
 #include "spd.h"
 
@@ -80,12 +81,7 @@ Suite load_suite(const std::string& name_or_path, const std::filesystem::path& d
   if (!is_path && !std::filesystem::exists(suite.path)) {
     throw UsageError("unknown suite '" + name_or_path + "' (no " + suite.path.string() + ")");
   }
-  json doc;
-  try {
-    doc = json::parse(read_file(suite.path));
-  } catch (const json::parse_error& e) {
-    throw UsageError(suite.path.string() + ": not valid JSON: " + e.what());
-  }
+  json doc = read_json_file(suite.path);  // duplicate keys refused (core/json_reader.h)
   if (!doc.is_object()) fail(suite, "$", "expected an object");
   check_keys(suite, doc, "$", {"name", "description", "sampling", "scenes"});
   if (doc.contains("name") && !doc["name"].is_string()) fail(suite, "$.name", "expected a string");

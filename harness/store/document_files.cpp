@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/json_reader.h"
 #include "core/path_component.h"
 
 namespace raygate {
@@ -27,14 +28,8 @@ std::string document_text(const StoredDocument& stored) { return stored.document
 }  // namespace
 
 ResultsDocument load_results_file(const std::filesystem::path& file) {
-  const std::string text = read_file(file);
-  nlohmann::json json;
-  try {
-    json = nlohmann::json::parse(text);
-  } catch (const nlohmann::json::parse_error& e) {
-    throw UsageError(fmt::format("{}: not JSON ({}); import takes results documents",
-                                 file.string(), e.what()));
-  }
+  // Duplicate keys and out-of-range numbers refused with where they are (core/json_reader.h).
+  const nlohmann::json json = read_json_file(file);
   const bool looks_like_results = json.is_object() && json.contains("schema_version") &&
                                   json.contains("revisions") && json.contains("scenes");
   if (!looks_like_results) {

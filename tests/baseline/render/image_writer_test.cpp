@@ -1,13 +1,19 @@
 // The baseline's own image encoders (PNG, PPM, PFM, TGA): every file decodes, through
 // OpenImageIO as the harness reads it, to exactly the pixels written (8-bit: to_8bit of each
 // value; PFM: the floats, unclamped), the right way up; the same image gives the same bytes;
-// formats it does not write are refused with a way out.
+// formats it does not write are refused with a way out; a write that fails midway (a full
+// disk) leaves the old image whole and no temporary beside it.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
 
 #include <OpenImageIO/imageio.h>
 #include <zlib.h>
 
+#include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -16,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "image/file_output.h"
 #include "image/image_writer.h"
 
 namespace raygate {
@@ -210,6 +217,41 @@ TEST(ImageWriter, ReportsUnwritablePathsAndUnknownFormats) {
   const std::string exr = check_output_format("render.exr");
   EXPECT_NE(exr.find(".pfm"), std::string::npos) << exr;
   EXPECT_NE(exr.find("oiiotool x.pfm -o x.exr"), std::string::npos) << exr;
+}
+
+TEST(ImageWriter, AWriteFailingMidwayKeepsTheOldImageWhole) {
+  // A file-size limit makes write() fail part way (EFBIG), as a full disk does (ENOSPC).
+  const fs::path path = write("keep.pfm", test_image(4, 4));
+  const std::string old_bytes = read_bytes(path);
+  rlimit saved{};
+  ASSERT_EQ(getrlimit(RLIMIT_FSIZE, &saved), 0);
+  const auto previous = std::signal(SIGXFSZ, SIG_IGN);
+  rlimit small = saved;
+  small.rlim_cur = 4096;
+  ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
+  std::string error;
+  const bool written = write_image(path.string(), test_image(200, 200), error);  // 480 KB
+  setrlimit(RLIMIT_FSIZE, &saved);
+  std::signal(SIGXFSZ, previous);
+  EXPECT_FALSE(written);
+  EXPECT_NE(error.find(path.string()), std::string::npos) << error;
+  EXPECT_NE(error.find(std::strerror(EFBIG)), std::string::npos) << error;
+  EXPECT_EQ(read_bytes(path), old_bytes);
+  for (const auto& entry : fs::directory_iterator(temp_dir())) {
+    EXPECT_EQ(entry.path().filename(), "keep.pfm") << "left behind: " << entry.path();
+  }
+}
+
+TEST(ImageWriter, ADeviceIsWrittenThroughNeverReplaced) {
+  std::string error;
+  // The format comes from the extension, so a device is reached through the file writer.
+  EXPECT_TRUE(write_file_replacing("/dev/null", "P3\n1 1\n255\n0 0 0\n", error)) << error;
+  struct stat node {};
+  ASSERT_EQ(::stat("/dev/null", &node), 0);
+  EXPECT_TRUE(S_ISCHR(node.st_mode));
+  fs::create_directories(temp_dir() / "folder.png");
+  EXPECT_FALSE(write_image((temp_dir() / "folder.png").string(), test_image(2, 2), error));
+  EXPECT_NE(error.find("is a directory"), std::string::npos) << error;
 }
 
 TEST(ImageWriter, TgaRefusesImagesBeyondItsSizeField) {

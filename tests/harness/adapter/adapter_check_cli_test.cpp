@@ -59,7 +59,7 @@ TEST(AdapterCheckCli, InvalidFilesExitTwoAndAreAllReported) {
                                          "mean '{scene}'?)"),
             std::string::npos)
       << run.err;
-  EXPECT_NE(run.err.find(broken.string() + ": line 1"), std::string::npos) << run.err;
+  EXPECT_NE(run.err.find(broken.string() + ":1:10: not JSON"), std::string::npos) << run.err;
   EXPECT_NE(run.out.find("cmake-nff.json: ok"), std::string::npos) << run.out;
 }
 

@@ -75,7 +75,8 @@ TEST_F(HistoryCli, ImportRefusesWhatIsNotAResultsDocument) {
   EXPECT_THAT(adapter.out, HasSubstr("adapter.json: not a raygate results document"));
   const CliRun text = import({"notes.json"});
   EXPECT_EQ(text.exit_code, 2) << text.out;
-  EXPECT_THAT(text.out, HasSubstr("notes.json: not JSON"));
+  EXPECT_THAT(text.out, HasSubstr("notes.json:1:"));
+  EXPECT_THAT(text.out, HasSubstr(": not JSON"));
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "store.db"));  // checked before storing
 }
 

@@ -1,11 +1,16 @@
-// Verdicts a team can trust, end to end on the fixture tracer's repository: SIGINT and SIGTERM
-// stop `raygate run` with 130 / 143, leaving no tracer, grandchild or setsid stray running, the
-// finished scenes in the document (complete: false) and one line saying so; an interrupted
+// Verdicts a team can trust, end to end on the fixture tracer's repository: SIGINT, SIGTERM and
+// SIGHUP (a closed terminal, by kill and by a pty closed under raygate) stop `raygate run` with
+// 130 / 143 / 129, leaving no tracer, grandchild or setsid stray running, the finished scenes
+// in the document (complete: false) and one line saying so; an interrupted
 // build leaves nothing that looks complete and the rerun builds again; a crashing head fails
 // the gate with or without a warm-up; an --out or --report that cannot be written is refused
 // (exit 2) before anything is built or measured.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <poll.h>
 #include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <fstream>
@@ -133,6 +138,53 @@ class InterruptCli : public TracerRepoTest {
     return r.outcome == ProcessOutcome::exited ? r.exit_code : -1;
   }
 
+  // Runs raygate with `args` on a terminal of its own (a pty, as in an ssh session: raygate the
+  // session leader, the pty its controlling terminal), shows it what it prints until `ready`
+  // appears, then closes the terminal. Returns raygate's exit code, or -1 if it died of a
+  // signal or did not end within 20 s.
+  int hang_up_when(const std::vector<std::string>& args, const fs::path& ready) {
+    const int master = ::posix_openpt(O_RDWR | O_NOCTTY | O_CLOEXEC);
+    if (master < 0 || ::grantpt(master) != 0 || ::unlockpt(master) != 0) return -2;
+    const std::string terminal = ::ptsname(master);
+    std::vector<std::string> words{RAYGATE_EXE};
+    words.insert(words.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& word : words) argv.push_back(word.data());
+    argv.push_back(nullptr);
+    const std::string cwd = dir_.path().string();
+    const pid_t pid = ::fork();
+    if (pid == 0) {  // only async-signal-safe calls from here on
+      ::setsid();
+      const int fd = ::open(terminal.c_str(), O_RDWR);  // becomes the controlling terminal
+      if (fd < 0 || ::chdir(cwd.c_str()) != 0) ::_exit(126);
+      ::dup2(fd, 0);
+      ::dup2(fd, 1);
+      ::dup2(fd, 2);
+      ::execv(argv[0], argv.data());
+      ::_exit(127);
+    }
+    // What raygate prints must be read, or it blocks once the terminal's buffer is full.
+    for (int i = 0; i < 1200 && !(fs::exists(ready) && fs::file_size(ready) > 0); ++i) {
+      pollfd readable{master, POLLIN, 0};
+      if (::poll(&readable, 1, 100) > 0) {
+        char buffer[4096];
+        const ssize_t n = ::read(master, buffer, sizeof buffer);
+        if (n > 0) output_.append(buffer, static_cast<std::size_t>(n));
+      }
+    }
+    ::close(master);  // the terminal is gone: the kernel hangs up its session
+    int status = 0;
+    for (int i = 0; i < 200; ++i) {
+      if (::waitpid(pid, &status, WNOHANG) == pid) {
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+      }
+      std::this_thread::sleep_for(100ms);
+    }
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, &status, 0);
+    return -1;
+  }
+
   fs::path pids_ = dir_.path() / "pids";
   fs::path out_ = dir_.path() / "r.json";
   std::string output_;
@@ -143,8 +195,9 @@ class InterruptCli : public TracerRepoTest {
 TEST_F(InterruptCli, SignalsStopTheTracerItsChildrenAndStraysAndKeepTheFinishedScenes) {
   commit(sources_.fast, "tracer");
   const fs::path adapter = sleeping_adapter();
-  for (const auto& [sig, code] : {std::pair{SIGINT, 130}, std::pair{SIGTERM, 143}}) {
-    const std::string name = sig == SIGINT ? "SIGINT" : "SIGTERM";
+  for (const auto& [sig, code] :
+       {std::pair{SIGINT, 130}, std::pair{SIGTERM, 143}, std::pair{SIGHUP, 129}}) {
+    const std::string name = sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "SIGHUP";
     SCOPED_TRACE(name);
     fs::remove_all(pids_);
     fs::create_directories(pids_);
@@ -178,6 +231,37 @@ TEST_F(InterruptCli, SecondSignalEndsRaygateAtOnceWithItsChildren) {
   EXPECT_TRUE(ends(pid_in(pids_ / "grandchild.pid"))) << "its grandchild still runs";
   // The setsid stray is beyond a signal handler's reach (only the sweep finds it); end it here.
   ::kill(pid_in(pids_ / "stray.pid"), SIGKILL);
+}
+
+TEST_F(InterruptCli, ARepeatedHangUpIsOneHangUpNotTheSecondSignalEscape) {
+  // A closed ssh session sends SIGHUP more than once (the shell forwards its own, the kernel
+  // adds one when the session leader exits): raygate still stops as after one, keeping tetra.
+  commit(sources_.fast, "tracer");
+  fs::create_directories(pids_);
+  EXPECT_EQ(signal_when(run_args(sleeping_adapter()), pids_ / "tracer.pid", SIGHUP, SIGHUP), 129)
+      << output_;
+  EXPECT_EQ(died_of_, 0);
+  EXPECT_TRUE(ends(pid_in(pids_ / "tracer.pid"))) << "the tracer still runs";
+  EXPECT_FALSE(read_results(out_).complete);
+  EXPECT_EQ(lines_with(output_, "interrupted by SIGHUP: kept 1 of 2 scenes").size(), 1u)
+      << output_;
+}
+
+TEST_F(InterruptCli, AClosedTerminalStopsTheTracerAndKeepsTheFinishedScenes) {
+  // The real thing, not a kill: raygate on a pty that is closed under it. Its progress line and
+  // last words now fail to write (EIO); it must still kill the tracer, keep tetra and exit 129.
+  commit(sources_.fast, "tracer");
+  fs::create_directories(pids_);
+  const int code = hang_up_when(run_args(sleeping_adapter()), pids_ / "tracer.pid");
+  if (code == -2) GTEST_SKIP() << "no pseudo-terminal here";
+  EXPECT_EQ(code, 129) << output_;
+  for (const char* file : {"tracer.pid", "grandchild.pid", "stray.pid"}) {
+    EXPECT_TRUE(ends(pid_in(pids_ / file))) << file << " still runs";
+  }
+  const ResultsDocument d = read_results(out_);
+  EXPECT_FALSE(d.complete);
+  ASSERT_EQ(d.scenes.size(), 1u);
+  EXPECT_EQ(d.scenes[0].entry.id, "tetra");
 }
 
 TEST_F(InterruptCli, InterruptedBuildLeavesNoCompleteLookingEntryAndTheRerunBuilds) {
@@ -229,6 +313,8 @@ TEST_F(InterruptCli, UnwritableOutputsAreRefusedBeforeAnythingIsBuilt) {
       {"--out", (a_file / "r.json").string()},         // under a file
       {"--report", "html:" + dir_.path().string()},    // a directory
       {"--report", "junit:" + (a_file / "j.xml").string()},
+      {"--out", "/dev/full"},        // a device: renaming over it would replace the node
+      {"--report", "json:/dev/null"},
   };
   for (const std::string command : {"run", "compare"}) {
     for (const auto& [option, value] : cases) {
@@ -245,6 +331,8 @@ TEST_F(InterruptCli, UnwritableOutputsAreRefusedBeforeAnythingIsBuilt) {
       EXPECT_FALSE(fs::exists(cache_ / "builds")) << "built before refusing";
     }
   }
+  EXPECT_TRUE(fs::is_character_file("/dev/full"));
+  EXPECT_TRUE(fs::is_character_file("/dev/null"));
 }
 
 }  // namespace

@@ -98,5 +98,21 @@ TEST(Progress, TheRewrittenLineKeepsItsOwnEscapesOnly) {
   EXPECT_EQ(out.text(), "\r\033[K[1/1] odd\\x1b[8m    round  2\r\033[K");  // padded before
 }
 
+// A closed terminal fails every write (EIO); so does an unbuffered /dev/full (ENOSPC). Progress
+// is only for whoever watches: it must drop what cannot be shown, never throw, least of all
+// from its destructor, which would end raygate with SIGABRT instead of the hang-up's 129.
+TEST(Progress, AStreamThatFailsEveryWriteIsDroppedNotThrown) {
+  std::FILE* full = std::fopen("/dev/full", "w");
+  ASSERT_NE(full, nullptr);
+  std::setvbuf(full, nullptr, _IONBF, 0);
+  {
+    Progress progress(full, true);
+    EXPECT_NO_THROW(progress.update({1, 2, "tetra", 3, 1.05, 0.01, 12.0}));
+    EXPECT_NO_THROW(progress.line("[1/2] tetra  1.050"));
+    EXPECT_NO_THROW(progress.update({2, 2, "balls", 1, 0.0, 0.0, -1.0}));
+  }  // the destructor clears the rewritten line: it must not throw either
+  std::fclose(full);
+}
+
 }  // namespace
 }  // namespace raygate::cli

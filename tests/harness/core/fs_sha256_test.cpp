@@ -1,8 +1,11 @@
 // Atomic writes and SHA-256 (FIPS 180-4 test vectors).
 #include <gtest/gtest.h>
 #include <sys/resource.h>
+#include <sys/stat.h>
 
+#include <cerrno>
 #include <csignal>
+#include <cstring>
 
 #include "core/error.h"
 #include "core/fs.h"
@@ -61,12 +64,40 @@ TEST(Fs, WriteFailingMidwayKeepsTheOldFile) {
   rlimit small = saved;
   small.rlim_cur = 4096;
   ASSERT_EQ(setrlimit(RLIMIT_FSIZE, &small), 0);
-  EXPECT_THROW(write_file_atomically(path, std::string(100000, 'x')), InfraError);
+  try {
+    write_file_atomically(path, std::string(100000, 'x'));
+    ADD_FAILURE() << "expected WriteError";
+  } catch (const WriteError& e) {  // which file and the system's own reason, for the message
+    EXPECT_EQ(e.path(), path);
+    EXPECT_EQ(e.reason(), std::strerror(EFBIG));
+  }
   setrlimit(RLIMIT_FSIZE, &saved);
   EXPECT_EQ(read_file(path), "old");
   int entries = 0;
   for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(dir.path())) ++entries;
   EXPECT_EQ(entries, 1);
+}
+
+TEST(Fs, ANodeThatIsNotARegularFileIsNeverReplaced) {
+  // Renaming a temp file over a FIFO (or, as root, over /dev/full) would replace the node
+  // itself; the writer refuses instead, and the node stays what it was.
+  TempDir dir;
+  const auto fifo = dir.path() / "pipe";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_THROW(write_file_atomically(fifo, "x"), WriteError);
+  EXPECT_TRUE(std::filesystem::is_fifo(fifo));
+  EXPECT_THROW(write_file_atomically(dir.path(), "x"), WriteError);  // a directory
+}
+
+TEST(Fs, SyncDirectoryNamesAFolderThatCannotBeOpened) {
+  TempDir dir;
+  sync_directory(dir.path());
+  try {
+    sync_directory(dir.path() / "gone");
+    ADD_FAILURE() << "expected WriteError";
+  } catch (const WriteError& e) {
+    EXPECT_EQ(e.path(), dir.path() / "gone");
+  }
 }
 
 TEST(Fs, ReadingADirectoryOrMissingFileIsAUsageError) {

@@ -122,6 +122,14 @@ TEST_F(ProcessInterrupt, SigintKillsTheWholeGroupAndThrows) { interrupt_with(SIG
 
 TEST_F(ProcessInterrupt, SigtermKillsTheWholeGroupAndThrows) { interrupt_with(SIGTERM); }
 
+// A closed terminal or ssh session: the tracer must not outlive it, hung, forever.
+TEST_F(ProcessInterrupt, SighupKillsTheWholeGroupAndThrows) {
+  struct sigaction current {};
+  ::sigaction(SIGHUP, nullptr, &current);
+  if (current.sa_handler == SIG_IGN) GTEST_SKIP() << "started under nohup: SIGHUP stays ignored";
+  interrupt_with(SIGHUP);
+}
+
 TEST_F(ProcessInterrupt, AChildThatEndsCleanlyOnTheSignalStillDoesNotCount) {
   TempDir dir;
   const fs::path ready = dir.path() / "ready";

@@ -50,7 +50,22 @@ TEST(GatePolicy, MistakesNameTheJsonPath) {
             "policy.json: $.scenes.mount: missing required key 'reason'");
   EXPECT_EQ(error_of(R"({"scenes": {"mount": {"max_slowdown": 0.06, "reason": ""}}})"),
             "policy.json: $.scenes.mount.reason: must say why this scene differs");
-  EXPECT_NE(error_of("{bad").find("policy.json: not valid JSON"), std::string::npos);
+  EXPECT_NE(error_of("{bad").find("policy.json:1:2: not JSON"), std::string::npos);
+}
+
+// Issue 25: "max_slowdown": 0.03, "max_slowdown": 5 gated at +500%, and 1e400 was an internal
+// error. Both are refused with the file, line, column and JSON path.
+TEST(GatePolicy, ADuplicateKeyOrAnOutOfRangeNumberIsRefusedWhereItIs) {
+  EXPECT_EQ(error_of(R"({"max_slowdown": 0.03, "max_slowdown": 5})"),
+            "policy.json:1:24: $: duplicate key 'max_slowdown' (JSON keeps only one of them; "
+            "remove the other)");
+  EXPECT_EQ(error_of(R"({"image": {"fail": 0.01, "fail": 0.5}})"),
+            "policy.json:1:26: $.image: duplicate key 'fail' (JSON keeps only one of them; "
+            "remove the other)");
+  EXPECT_NE(error_of(R"({"scenes": {"balls": {"reason": "noisy", "max_slowdown": 1e400}}})")
+                .find("policy.json:1:58: $.scenes.balls.max_slowdown: number 1e400 is out of "
+                      "range"),
+            std::string::npos);
 }
 
 // A compare scene whose head changed by `change` with the CI [lower, upper] over `rounds`.

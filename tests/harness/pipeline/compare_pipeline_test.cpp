@@ -23,7 +23,8 @@ class ComparePipelineTest : public PipelineTest {
 TEST_F(ComparePipelineTest, ASlowerHeadIsRegressedOnEveryScene) {
   const std::string base = commit_tracer("2.0", "base");
   const std::string head = commit_tracer("2.4", "head: 20% slower");
-  const auto [document, path] = compare(base, head);
+  const auto [document, path, unwritten] = compare(base, head);
+  EXPECT_TRUE(unwritten.empty());
   EXPECT_EQ(document.kind, "compare");
   EXPECT_TRUE(document.complete);
   ASSERT_EQ(document.revisions.size(), 2u);
@@ -49,7 +50,7 @@ TEST_F(ComparePipelineTest, ASlowerHeadIsRegressedOnEveryScene) {
 TEST_F(ComparePipelineTest, AnEqualHeadIsUnchangedAndItsImageMatchesBase) {
   const std::string base = commit_tracer("2.0", "base");
   const std::string head = commit_tracer("2.0", "head: a comment");
-  const auto [document, path] = compare(base, head);
+  const auto [document, path, unwritten] = compare(base, head);
   for (const SceneResult& scene : document.scenes) {
     EXPECT_EQ(scene.change_verdict, "UNCHANGED") << scene.entry.id;
     bool checked_against_base = false;
@@ -67,7 +68,7 @@ TEST_F(ComparePipelineTest, AnUndecidedChangeGetsRoundsUntilTheBudget) {
   const std::string head = commit_tracer("2.06", "head: 3% slower, right at the limit");
   set_tracer_noise({1.0, 1.0, 1.04, 0.97});  // base and head alternate through these
   context_.stopping.max_rounds = 12;
-  const auto [document, path] = compare(base, head);
+  const auto [document, path, unwritten] = compare(base, head);
   for (const SceneResult& scene : document.scenes) {
     EXPECT_EQ(scene.change_verdict, "INCONCLUSIVE") << scene.entry.id;
     EXPECT_EQ(scene.runs.rounds.size(), 12u);

@@ -1,7 +1,13 @@
 // pipeline/golden_images: blessing a foreign tracer's images from a run, in process. What the run
 // made is copied with its provenance; a document naming a scene "../x", an image that is not an
-// image file, or an image that is gone blesses nothing at all.
+// image file, or an image that is gone blesses nothing at all; a write that fails midway (a
+// full disk) leaves the old set and its manifest whole and in agreement.
 #include <gtest/gtest.h>
+#include <sys/resource.h>
+
+#include <cerrno>
+#include <csignal>
+#include <cstring>
 
 #include <string>
 #include <vector>
@@ -9,6 +15,7 @@
 #include "compare/golden.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/sha256.h"
 #include "pipeline/golden_images.h"
 #include "results_fixture.h"
 
@@ -102,6 +109,127 @@ TEST_F(BlessFromRunTest, AnotherAdaptersGoldensAreNotOverwritten) {
     ADD_FAILURE() << "blessed over make-nff's goldens";
   } catch (const UsageError& e) {
     EXPECT_NE(std::string(e.what()).find("holds goldens of adapter 'make-nff'"), std::string::npos)
+        << e.what();
+  }
+}
+
+// A PPM of `side` x `side` pixels of one colour: real, and as large as asked for.
+std::string ppm(int side, int value) {
+  std::string text = "P3\n" + std::to_string(side) + " " + std::to_string(side) + "\n255\n";
+  for (int i = 0; i < side * side; ++i) text += std::to_string(value) + " 0 0\n";
+  return text;
+}
+
+// Every manifest entry's file exists and has the sha256 the manifest says.
+void expect_manifest_matches_files(const fs::path& golden_dir) {
+  const GoldenManifest manifest = load_golden_manifest(golden_dir);
+  ASSERT_FALSE(manifest.entries.empty());
+  for (const GoldenEntry& entry : manifest.entries) {
+    ASSERT_TRUE(fs::exists(golden_dir / entry.file)) << entry.file;
+    EXPECT_EQ(sha256_file_hex(golden_dir / entry.file), entry.sha256) << entry.file;
+  }
+}
+
+// No temporary of a bless is left beside the golden folder.
+bool leftover_temporaries(const fs::path& parent) {
+  for (const auto& entry : fs::directory_iterator(parent)) {
+    if (entry.path().filename().string().starts_with(".golden.")) return true;
+  }
+  return false;
+}
+
+// The process may write files of at most `bytes` while it lives: a write past that fails with
+// EFBIG, as one on a full disk fails with ENOSPC.
+class FileSizeLimit {
+ public:
+  explicit FileSizeLimit(rlim_t bytes) {
+    getrlimit(RLIMIT_FSIZE, &saved_);
+    previous_ = std::signal(SIGXFSZ, SIG_IGN);
+    rlimit small = saved_;
+    small.rlim_cur = bytes;
+    setrlimit(RLIMIT_FSIZE, &small);
+  }
+  ~FileSizeLimit() {
+    setrlimit(RLIMIT_FSIZE, &saved_);
+    std::signal(SIGXFSZ, previous_);
+  }
+  FileSizeLimit(const FileSizeLimit&) = delete;
+  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
+
+ private:
+  rlimit saved_{};
+  void (*previous_)(int) = nullptr;
+};
+
+TEST_F(BlessFromRunTest, AWriteFailingMidwayLeavesTheOldSetAndItsManifestInAgreement) {
+  bless();
+  const std::string old_balls = read_file(request_.golden_dir / "balls.ppm");
+  const std::string old_manifest = read_file(request_.golden_dir / "manifest.json");
+  // balls fits under the limit, gears does not: the new set fails after its first image.
+  write_file_atomically(tracer_run(0).image, ppm(2, 200));
+  write_file_atomically(tracer_run(1).image, ppm(100, 100));  // ~80 KB
+  write_results(document_, request_.results);
+  {
+    const FileSizeLimit limit(16 * 1024);
+    try {
+      bless_goldens_from_run(request_, log_);
+      ADD_FAILURE() << "the bless passed the file size limit";
+    } catch (const WriteError& e) {
+      EXPECT_EQ(std::string(e.what()), "cannot write " + request_.golden_dir.string() + ": " +
+                                           std::strerror(EFBIG) +
+                                           " (writing gears.ppm); the goldens there are "
+                                           "unchanged");
+    }
+  }
+  EXPECT_EQ(read_file(request_.golden_dir / "balls.ppm"), old_balls);
+  EXPECT_EQ(read_file(request_.golden_dir / "manifest.json"), old_manifest);
+  expect_manifest_matches_files(request_.golden_dir);
+  EXPECT_FALSE(leftover_temporaries(dir_.path()));
+}
+
+TEST_F(BlessFromRunTest, ABlessReplacesTheWholeSetAndKeepsTheFolderOtherFiles) {
+  bless();
+  write_file_atomically(request_.golden_dir / "README.md", "goldens of make-nff\n");
+  // A new file: OpenImageIO caches what it read under the old file's name.
+  tracer_run(1).image = dir_.path() / "run" / "gears-again.ppm";
+  write_file_atomically(tracer_run(1).image, ppm(3, 50));
+  request_.scene_ids = {"gears"};
+  bless();
+  EXPECT_EQ(read_file(request_.golden_dir / "gears.ppm"), ppm(3, 50));
+  EXPECT_EQ(read_file(request_.golden_dir / "README.md"), "goldens of make-nff\n");
+  EXPECT_EQ(load_golden_manifest(request_.golden_dir).find("gears")->width, 3);
+  expect_manifest_matches_files(request_.golden_dir);
+  EXPECT_FALSE(leftover_temporaries(dir_.path()));
+}
+
+// The manifest is read by the one JSON reader: an entry whose sha256 is given twice (which
+// copy would a verify believe?) or a width past a double's range is refused with where it is.
+TEST_F(BlessFromRunTest, AManifestWithADuplicateKeyOrAHugeNumberIsRefusedWhereItIs) {
+  bless();
+  const fs::path manifest = request_.golden_dir / "manifest.json";
+  const std::string text = read_file(manifest);
+  const std::size_t sha = text.find("\"sha256\"");
+  ASSERT_NE(sha, std::string::npos);
+  write_file_atomically(manifest, text.substr(0, sha) + "\"sha256\": \"0\", " + text.substr(sha));
+  try {
+    load_golden_manifest(request_.golden_dir);
+    ADD_FAILURE() << "a duplicate sha256 was taken";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find(manifest.string() + ":"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(": $.images[0]: duplicate key 'sha256'"),
+              std::string::npos)
+        << e.what();
+  }
+  const std::size_t width = text.find("\"width\": ");
+  ASSERT_NE(width, std::string::npos);
+  write_file_atomically(manifest, text.substr(0, width) + "\"width\": 1e400, \"w\": " +
+                                      text.substr(width + std::string("\"width\": ").size()));
+  try {
+    load_golden_manifest(request_.golden_dir);
+    ADD_FAILURE() << "1e400 was taken";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("$.images[0].width: number 1e400 is out of range"),
+              std::string::npos)
         << e.what();
   }
 }

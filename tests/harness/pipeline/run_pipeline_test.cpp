@@ -22,8 +22,9 @@ class RunPipelineTest : public PipelineTest {
 
 TEST_F(RunPipelineTest, MeasuresEverySceneToTheRatioOfTheCommittedCost) {
   const std::string sha = commit_tracer("2.5", "a tracer at 2.5 s per render");
-  const auto [document, path] = run(sha);
+  const auto [document, path, unwritten] = run(sha);
   EXPECT_EQ(path, dir_.path() / "out" / "results.json");
+  EXPECT_TRUE(unwritten.empty());  // every write of the document succeeded
   EXPECT_TRUE(document.complete);
   EXPECT_EQ(document.kind, "run");
   ASSERT_EQ(document.scenes.size(), 2u);
@@ -72,7 +73,7 @@ TEST_F(RunPipelineTest, ANoisyTracerSpendsTheRoundBudget) {
   commit_tracer("2.0", "tracer");
   set_tracer_noise({1.0, 1.5});  // far wider than the 1% target
   context_.stopping.max_rounds = 7;
-  const auto [document, path] = run("HEAD");
+  const auto [document, path, unwritten] = run("HEAD");
   for (const SceneResult& scene : document.scenes) {
     EXPECT_EQ(scene.runs.rounds.size(), 7u) << scene.entry.id;
     EXPECT_EQ(scene.runs.stop_reason, "stop_budget_rounds");
@@ -83,7 +84,7 @@ TEST_F(RunPipelineTest, TheTimeBudgetIsTheFakeClocks) {
   commit_tracer("10", "a slow tracer");
   set_tracer_noise({1.0, 1.5});
   context_.stopping.max_seconds = 60.0;  // warm-up 11 s, then 11 s or 16 s a round
-  const auto [document, path] = run("HEAD");
+  const auto [document, path, unwritten] = run("HEAD");
   for (const SceneResult& scene : document.scenes) {
     EXPECT_EQ(scene.runs.stop_reason, "stop_budget_time") << scene.entry.id;
     EXPECT_GE(scene.runs.seconds_spent, 60.0);

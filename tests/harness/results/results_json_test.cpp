@@ -441,9 +441,42 @@ TEST(ResultsJson, ReadResultsOfNonJsonNamesTheFile) {
     read_results(path);
     FAIL() << "no error";
   } catch (const UsageError& e) {
-    EXPECT_NE(std::string(e.what()).find(path.string() + ": not JSON"), std::string::npos)
-        << e.what();
+    EXPECT_NE(std::string(e.what()).find(path.string() + ":1:"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(": not JSON"), std::string::npos) << e.what();
   }
+}
+
+// A document read from disk (gate, report, merge, golden bless) is untrusted: a key given twice
+// would let its last copy win silently, and 1e400 was an internal error. Both are usage errors
+// naming the file, line, column and JSON path.
+TEST(ResultsJson, ReadResultsRefusesDuplicateKeysAndOutOfRangeNumbersWhereTheyAre) {
+  TempDir dir;
+  const fs::path path = dir.path() / "results.json";
+  write_results(full_document(), path);
+  const std::string text = read_file(path);
+  const auto error_of = [&](const std::string& changed) {
+    write_file_atomically(path, changed);
+    try {
+      read_results(path);
+    } catch (const UsageError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  // The same key twice at the top: "complete": false after "complete": true.
+  std::string twice = text;
+  twice.insert(twice.find("\"complete\""), "\"complete\": false,\n ");
+  const std::string duplicate = error_of(twice);
+  EXPECT_NE(duplicate.find(path.string() + ":"), std::string::npos) << duplicate;
+  EXPECT_NE(duplicate.find(": $: duplicate key 'complete'"), std::string::npos) << duplicate;
+  // A machine's core count past a double's range.
+  std::string huge = text;
+  const std::size_t cores = huge.find("\"cores\": ");
+  ASSERT_NE(cores, std::string::npos);
+  huge.replace(cores, std::string("\"cores\": ").size(), "\"cores\": 1e400, \"x\": ");
+  const std::string range = error_of(huge);
+  EXPECT_NE(range.find(": $.machine.cores: number 1e400 is out of range"), std::string::npos)
+      << range;
 }
 
 }  // namespace

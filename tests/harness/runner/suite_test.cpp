@@ -48,8 +48,22 @@ TEST(Suite, ErrorsNameTheJsonPath) {
             std::string::npos);
   EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls"}, {"scene": "balls"}]})").find("duplicate id 'balls'"),
             std::string::npos);
-  EXPECT_NE(load_error("{not json").find("not valid JSON"), std::string::npos);
+  EXPECT_NE(load_error("{not json").find("bad.json:1:"), std::string::npos);
+  EXPECT_NE(load_error("{not json").find(": not JSON: syntax error"), std::string::npos);
   EXPECT_NE(load_error(R"({"scenes": []})").find("$.scenes: expected a non-empty array"),
+            std::string::npos);
+}
+
+// Issue 25: of a key given twice the last won silently, and 1e400 was an internal error.
+TEST(Suite, ADuplicateKeyOrAnOutOfRangeNumberIsRefusedWhereItIs) {
+  EXPECT_NE(load_error("{\"scenes\": [{\"scene\": \"balls\",\n  \"size\": 1, \"size\": 6}]}")
+                .find("bad.json:2:14: $.scenes[0]: duplicate key 'size'"),
+            std::string::npos);
+  EXPECT_NE(load_error(R"({"name": "a", "name": "b", "scenes": [{"scene": "balls"}]})")
+                .find("bad.json:1:15: $: duplicate key 'name'"),
+            std::string::npos);
+  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "resolution": [64, 1e400]}]})")
+                .find("$.scenes[0].resolution[1]: number 1e400 is out of range"),
             std::string::npos);
 }
 

@@ -46,7 +46,22 @@ TEST(LoadResultsFile, ReadsADocumentAndRefusesOtherJsonByName) {
   EXPECT_TRUE(has(other, "adapter.json: not a raygate results document")) << other;
   write_file_atomically(dir.path() / "torn.json", R"({"schema_version": )");
   const std::string torn = error_of([&] { load_results_file(dir.path() / "torn.json"); });
-  EXPECT_TRUE(has(torn, "torn.json: not JSON")) << torn;
+  EXPECT_TRUE(has(torn, "torn.json:1:")) << torn;
+  EXPECT_TRUE(has(torn, ": not JSON")) << torn;
+}
+
+// import takes files from anywhere: a key given twice or a number past a double's range is
+// refused with where it is, before anything is stored.
+TEST(LoadResultsFile, RefusesDuplicateKeysAndOutOfRangeNumbers) {
+  TempDir dir;
+  write_file_atomically(dir.path() / "twice.json",
+                        "{\"schema_version\": 1,\n \"schema_version\": 2}");
+  const std::string twice = error_of([&] { load_results_file(dir.path() / "twice.json"); });
+  EXPECT_TRUE(has(twice, "twice.json:2:2: $: duplicate key 'schema_version'")) << twice;
+  write_file_atomically(dir.path() / "huge.json", R"({"schema_version": 1e400})");
+  const std::string huge = error_of([&] { load_results_file(dir.path() / "huge.json"); });
+  EXPECT_TRUE(has(huge, "huge.json:1:20: $.schema_version: number 1e400 is out of range"))
+      << huge;
 }
 
 TEST(CheckedShaPrefix, LowerCasesHexAndRefusesTheRest) {

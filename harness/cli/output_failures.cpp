@@ -1,0 +1,70 @@
+#include "cli/output_failures.h"
+
+#include <fmt/core.h>
+
+#include <cerrno>
+#include <cstring>
+#include <iostream>
+
+#include "core/exit_codes.h"
+
+namespace raygate::cli {
+
+void OutputFailures::add(const std::string& output, const FailedWrite& failure) {
+  failures_.push_back({output, failure});
+  // fputs, not fmt::print: a failed write to `say_` must not throw over the failure it reports.
+  std::fputs(fmt::format("raygate: error: {} not written: cannot write {}: {}\n", output,
+                         failure.path.string(), failure.reason)
+                 .c_str(),
+             say_);
+  std::fflush(say_);
+}
+
+bool OutputFailures::attempt(const std::string& output, const std::function<void()>& write) {
+  try {
+    write();
+    return true;
+  } catch (const WriteError& e) {
+    add(output, e.failure());
+    return false;
+  }
+}
+
+bool OutputFailures::failed(const std::filesystem::path& path) const {
+  for (const Failure& failure : failures_) {
+    if (failure.write.path == path) return true;
+  }
+  return false;
+}
+
+int OutputFailures::exit_code(int gate_exit_code) const {
+  if (failures_.empty() || gate_exit_code == to_int(ExitCode::regression)) return gate_exit_code;
+  return to_int(ExitCode::infrastructure);
+}
+
+std::string OutputFailures::summary() const {
+  if (failures_.empty()) return {};
+  std::string names;
+  for (const Failure& failure : failures_) {
+    names += (names.empty() ? "" : ", ") + failure.output;
+  }
+  return fmt::format("{} output{} could not be written ({}); everything else was written",
+                     failures_.size(), failures_.size() == 1 ? "" : "s", names);
+}
+
+void OutputFailures::say_summary(int exit_code) const {
+  if (failures_.empty()) return;
+  std::fputs(fmt::format("raygate: error: {}; exit {}\n", summary(), exit_code).c_str(), say_);
+  std::fflush(say_);
+}
+
+void check_standard_output(OutputFailures& failures, const std::string& output,
+                           int error_number) {
+  std::cout.flush();
+  if (std::cout) return;
+  const int reason = error_number != 0 ? error_number : errno;
+  failures.add(output, {"-", reason != 0 ? std::strerror(reason) : "write failed"});
+  std::cout.clear();  // the outputs after this one still get their try
+}
+
+}  // namespace raygate::cli

@@ -1,0 +1,61 @@
+// The outputs a command was asked for that could not be written: the results document (-o), a
+// --report file, standard output. A measurement is worth more than any one of its files, so a
+// failed output is said at once (which output, its path, the system's reason), the command goes
+// on writing the others, and only its exit code changes at the end: 3, "raygate could not
+// finish", unless the gate found a regression, which outranks it as it outranks an unmeasured
+// scene (DESIGN.md §11).
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "core/fs.h"
+
+namespace raygate::cli {
+
+class OutputFailures {
+ public:
+  // Failures are said on `say` as they happen (standard error; a test passes a file).
+  explicit OutputFailures(std::FILE* say = stderr) : say_(say) {}
+
+  // Records that `output` ("--output", "--report html:r.html") could not be written.
+  void add(const std::string& output, const FailedWrite& failure);
+
+  // Runs `write`; a WriteError becomes a failure of `output` instead of ending the command.
+  // Returns whether the write succeeded. Other errors travel up: they are not about a file.
+  bool attempt(const std::string& output, const std::function<void()>& write);
+
+  bool any() const { return !failures_.empty(); }
+  // Whether the write of `path` failed (its file, if there is one, is not the one asked for).
+  bool failed(const std::filesystem::path& path) const;
+  std::size_t count() const { return failures_.size(); }
+
+  // The command's exit code given the gate's: unchanged when every output was written or the
+  // gate found a regression (1); otherwise 3.
+  int exit_code(int gate_exit_code) const;
+
+  // The closing line: how many outputs failed and that everything else was kept; "" if none.
+  std::string summary() const;
+  // Says the summary and the command's exit code ("raygate: error: ...; exit 3") when an output
+  // failed, so the last line is not the console table's "exit 0"; nothing otherwise.
+  void say_summary(int exit_code) const;
+
+ private:
+  struct Failure {
+    std::string output;
+    FailedWrite write;
+  };
+  std::vector<Failure> failures_;
+  std::FILE* say_;
+};
+
+// Flushes standard output after a report went there; a failed write or flush (a full disk
+// behind `> file`, /dev/full) is a failure of `output`. `error_number` is errno as the writing
+// left it (the stream keeps only that it failed, not why); 0 says "write failed".
+void check_standard_output(OutputFailures& failures, const std::string& output,
+                           int error_number);
+
+}  // namespace raygate::cli

@@ -1,0 +1,78 @@
+// cli/output_failures: an output that cannot be written is said at once with its path and the
+// system's reason, the command goes on, and the exit code becomes 3 unless the gate found a
+// regression (1), which outranks it.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "cli/output_failures.h"
+#include "core/exit_codes.h"
+#include "core/fs.h"
+
+namespace raygate::cli {
+namespace {
+
+// What the failures said, through a temporary file standing in for standard error.
+class SaidLines {
+ public:
+  SaidLines() : file_(std::tmpfile()) {}
+  ~SaidLines() { std::fclose(file_); }
+  SaidLines(const SaidLines&) = delete;
+  SaidLines& operator=(const SaidLines&) = delete;
+  std::FILE* file() { return file_; }
+  std::string text() {
+    std::fflush(file_);
+    std::rewind(file_);
+    std::string out;
+    for (int c = std::fgetc(file_); c != EOF; c = std::fgetc(file_)) out += static_cast<char>(c);
+    return out;
+  }
+
+ private:
+  std::FILE* file_;
+};
+
+TEST(OutputFailures, NothingFailedKeepsTheGatesCode) {
+  SaidLines said;
+  OutputFailures failures(said.file());
+  EXPECT_TRUE(failures.attempt("--report html:r.html", [] {}));
+  EXPECT_FALSE(failures.any());
+  EXPECT_EQ(failures.exit_code(0), 0);
+  EXPECT_EQ(failures.exit_code(1), 1);
+  EXPECT_EQ(failures.summary(), "");
+  EXPECT_EQ(said.text(), "");
+}
+
+TEST(OutputFailures, AFailedWriteIsSaidAndTheCommandGoesOnToExit3) {
+  SaidLines said;
+  OutputFailures failures(said.file());
+  EXPECT_FALSE(failures.attempt("--report junit:/full/j.xml", [] {
+    throw WriteError("/full/j.xml", "No space left on device");
+  }));
+  EXPECT_TRUE(failures.attempt("--report html:r.html", [] {}));  // the next one still runs
+  EXPECT_EQ(said.text(),
+            "raygate: error: --report junit:/full/j.xml not written: cannot write /full/j.xml: "
+            "No space left on device\n");
+  EXPECT_TRUE(failures.failed("/full/j.xml"));
+  EXPECT_FALSE(failures.failed("r.html"));
+  EXPECT_EQ(failures.exit_code(0), to_int(ExitCode::infrastructure));
+  EXPECT_EQ(failures.exit_code(3), 3);
+  EXPECT_EQ(failures.exit_code(1), 1);  // a found regression outranks a lost file
+  EXPECT_EQ(failures.summary(),
+            "1 output could not be written (--report junit:/full/j.xml); everything else was "
+            "written");
+  failures.say_summary(3);
+  EXPECT_NE(said.text().find("; everything else was written; exit 3\n"), std::string::npos);
+}
+
+TEST(OutputFailures, OnlyWriteErrorsAreKeptOthersTravelUp) {
+  SaidLines said;
+  OutputFailures failures(said.file());
+  EXPECT_THROW(failures.attempt("x", [] { throw UsageError("bad"); }), UsageError);
+  EXPECT_THROW(failures.attempt("x", [] { throw std::logic_error("bug"); }), std::logic_error);
+  EXPECT_FALSE(failures.any());
+}
+
+}  // namespace
+}  // namespace raygate::cli

@@ -1,0 +1,89 @@
+// core/json_reader: the one reader of JSON input. A key given twice is refused at the second
+// one, with the path of the object and the line and column of the key; a number no double
+// holds is refused naming the field; a syntax error says where; anything else parses exactly
+// as nlohmann's parser would.
+#include <gtest/gtest.h>
+
+#include "core/fs.h"
+#include "core/json_reader.h"
+
+namespace raygate {
+namespace {
+
+// The message of the JsonInputError that parsing `text` throws, or "" if it parses.
+std::string refusal(const std::string& text) {
+  try {
+    parse_json_input(text, "in.json");
+  } catch (const JsonInputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(JsonReader, ADuplicateKeyIsRefusedWithItsPathLineAndColumn) {
+  EXPECT_EQ(refusal("{\"max_slowdown\": 0.03, \"max_slowdown\": 5}"),
+            "in.json:1:24: $: duplicate key 'max_slowdown' (JSON keeps only one of them; "
+            "remove the other)");
+  EXPECT_EQ(refusal("{\n  \"scenes\": {\n    \"balls\": {\"reason\": \"a\",\n"
+                    "               \"reason\": \"b\"}}}"),
+            "in.json:4:16: $.scenes.balls: duplicate key 'reason' (JSON keeps only one of them; "
+            "remove the other)");
+  EXPECT_EQ(refusal("{\"a\": [1, {\"x\": 1}, {\"x\": 1, \"x\": 2}]}"),
+            "in.json:1:30: $.a[2]: duplicate key 'x' (JSON keeps only one of them; remove the "
+            "other)");
+  EXPECT_EQ(refusal("{\"odd key\": {\"k\\\"q\": 1, \"k\\\"q\": 2}}"),
+            "in.json:1:25: $[\"odd key\"]: duplicate key 'k\"q' (JSON keeps only one of them; "
+            "remove the other)");
+}
+
+TEST(JsonReader, EqualKeysInDifferentObjectsAreFine) {
+  const nlohmann::json parsed =
+      parse_json_input(R"({"a": {"x": 1}, "b": {"x": 2}, "c": [{"x": 3}, {"x": 4}]})", "in.json");
+  EXPECT_EQ(parsed, nlohmann::json::parse(R"({"a": {"x": 1}, "b": {"x": 2}, "c": [{"x": 3},
+                                              {"x": 4}]})"));
+}
+
+TEST(JsonReader, ANumberPastADoublesRangeIsAUsageErrorNamingTheField) {
+  EXPECT_EQ(refusal("{\"max_slowdown\": 1e400}"),
+            "in.json:1:18: $.max_slowdown: number 1e400 is out of range (a double holds "
+            "magnitudes up to about 1.8e308)");
+  EXPECT_EQ(refusal("{\"scenes\": [{\"size\": 2},\n {\"size\": -2.5E+999}]}"),
+            "in.json:2:11: $.scenes[1].size: number -2.5E+999 is out of range (a double holds "
+            "magnitudes up to about 1.8e308)");
+  EXPECT_EQ(refusal("1e400"),
+            "in.json:1:1: $: number 1e400 is out of range (a double holds magnitudes up to "
+            "about 1.8e308)");
+  const std::string long_number = "{\"n\": 1" + std::string(400, '0') + "}";
+  EXPECT_EQ(refusal(long_number),
+            "in.json:1:7: $.n: number 1" + std::string(39, '0') +
+                "... is out of range (a double holds magnitudes up to about 1.8e308)");
+  // Tiny numbers round to zero and huge integers to a double, as JSON allows: not refused.
+  EXPECT_EQ(refusal("{\"a\": 1e-400, \"b\": 123456789012345678901234567890}"), "");
+}
+
+TEST(JsonReader, ASyntaxErrorSaysWhereAndIsAUsageError) {
+  const std::string message = refusal("{\n  \"a\": 1,\n  \"b\" 2\n}");
+  EXPECT_EQ(message.rfind("in.json:3:7: not JSON: syntax error while parsing object separator",
+                          0),
+            0u)
+      << message;
+  EXPECT_THROW(parse_json_input("", "empty.json"), UsageError);
+}
+
+TEST(JsonReader, ReadsAFileAndNamesIt) {
+  TempDir dir;
+  write_file_atomically(dir.path() / "p.json", "{\"a\": 1,\n \"a\": 1}");
+  try {
+    read_json_file(dir.path() / "p.json");
+    ADD_FAILURE() << "the duplicate was taken";
+  } catch (const JsonInputError& e) {
+    EXPECT_EQ(e.origin(), (dir.path() / "p.json").string());
+    EXPECT_EQ(e.line(), 2u);
+    EXPECT_EQ(e.column(), 2u);
+    EXPECT_EQ(e.json_path(), "$");
+  }
+  EXPECT_THROW(read_json_file(dir.path() / "missing.json"), UsageError);
+}
+
+}  // namespace
+}  // namespace raygate

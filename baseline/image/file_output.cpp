@@ -45,12 +45,25 @@ bool write_through(const std::string& path, std::string_view bytes, std::string&
   return true;
 }
 
-// "<folder>/.<name>.tmp-<pid>" for "<folder>/<name>".
-std::string temporary_for(const std::string& path) {
+// "<folder>/.<name>.tmp" for "<folder>/<name>", or with "-<pid>" appended (`with_pid`).
+std::string temporary_for(const std::string& path, bool with_pid) {
   const std::size_t slash = path.find_last_of('/');
   const std::string folder = slash == std::string::npos ? "" : path.substr(0, slash + 1);
   const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  return folder + "." + name + ".tmp-" + std::to_string(::getpid());
+  return folder + "." + name + ".tmp" + (with_pid ? "-" + std::to_string(::getpid()) : "");
+}
+
+// Creates the temporary, exclusively: the fixed name first, so every run executes the same
+// instructions (sim mode counts them, and a pid's digits would make two runs differ by a few
+// dozen), then a pid-named one if another writer or a crashed run left the fixed one behind.
+int open_temporary(const std::string& path, std::string& temporary) {
+  for (const bool with_pid : {false, true}) {
+    temporary = temporary_for(path, with_pid);
+    // 0666 less the umask, as a plain open(O_CREAT) would make it.
+    const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+    if (fd >= 0 || errno != EEXIST) return fd;
+  }
+  return -1;
 }
 
 }  // namespace
@@ -64,9 +77,8 @@ bool write_file_replacing(const std::string& path, std::string_view bytes, std::
     }
     return write_through(path, bytes, error);
   }
-  const std::string temporary = temporary_for(path);
-  // 0666 less the umask, as a plain open(O_CREAT) would make it.
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0666);
+  std::string temporary;
+  const int fd = open_temporary(path, temporary);
   if (fd < 0) {
     error = failure(path, std::strerror(errno));
     return false;

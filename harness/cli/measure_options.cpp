@@ -150,12 +150,20 @@ std::vector<int> default_round_cpus(const MeasureArgs& args, const MeasureContex
 }  // namespace
 
 MeasureContext load_measure_context(const MeasureArgs& args) {
+  if (args.repo.empty()) {
+    throw UsageError("--repo is empty: give the tracer's repository, a path or a URL (default: .)");
+  }
   MeasureContext c;
   c.tools = locate_tools(args.baseline);
   c.adapter = load_adapter(find_adapter(args.adapter, c.tools.data_root));
   c.suite = load_suite(args.suite, c.tools.data_root);
   c.scenes = select_scenes(c.suite, args.scenes);
   apply_shard(args, c);
+  if (args.cache_dir.empty()) throw UsageError("--cache-dir is empty: give a directory");
+  if (std::error_code error; std::filesystem::exists(args.cache_dir, error) &&
+                             !std::filesystem::is_directory(args.cache_dir, error)) {
+    throw UsageError(fmt::format("--cache-dir {}: exists and is not a directory", args.cache_dir));
+  }
   c.cache_dir = std::filesystem::absolute(args.cache_dir);
   c.golden_dir = pick_golden_dir(args, c.tools, c.adapter);
   c.schedule.kind = args.schedule == "duet" ? ScheduleKind::duet : ScheduleKind::alternate;

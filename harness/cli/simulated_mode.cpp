@@ -11,6 +11,11 @@ void apply_simulated_mode(const MeasureArgs& args, MeasureContext& context) {
   context.cachegrind = find_cachegrind();
   // A warm-up warms nothing a simulation counts; two rounds show whether the counts repeat.
   context.schedule.warmup_runs = 0;
+  // A count is the same on every CPU and the baseline's is cached after its first run, so sim
+  // mode keeps the baseline in every round and needs no pinning: the two rounds that decide
+  // are then the same round twice, every contender in each.
+  context.schedule.normalizer_rounds = 0;
+  context.schedule.round_cpus.clear();
   context.stopping.min_rounds = 2;
   context.stopping.max_rounds = std::max(context.stopping.max_rounds, std::size_t{2});
   if (args.policy.empty()) context.policy.defaults.max_slowdown = kSimulatedDefaultLimit;

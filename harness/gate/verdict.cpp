@@ -80,7 +80,14 @@ void judge_images(const SceneResult& scene, SceneGate& gate, MissingGoldens& mis
     const std::string who = fmt::format("image {} vs {}", check.role, check.reference);
     // A failed image without metrics could not be read, or is broken in a way its error says.
     const std::string what = check.metrics ? summarize(*check.metrics) : check.error;
-    if (check.verdict == ImageVerdict::fail || check.verdict == ImageVerdict::warn) {
+    if (check.failed() && check.role == "base") {
+      // The base revision is the reference a compare judges head against: a broken base image
+      // means the change could not be checked (exit 3), not that the change broke it.
+      raise(gate, GateOutcome::unmeasured,
+            fmt::format("{}: {} (the base revision's image is broken, so the change could not be "
+                        "checked)",
+                        who, what));
+    } else if (check.verdict == ImageVerdict::fail || check.verdict == ImageVerdict::warn) {
       raise(gate, check.failed() ? GateOutcome::fail : GateOutcome::warn,
             fmt::format("{}: {}", who, what));
     } else if (check.verdict == ImageVerdict::missing) {

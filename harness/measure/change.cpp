@@ -214,6 +214,9 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
     return std::nullopt;
   }
   const double size = std::abs(summary.change);
+  // Within a tenth of the limit the point estimate itself may fall on either side of it
+  // whatever the rounds: no estimate.
+  if (std::abs(size - threshold) < 0.1 * threshold) return std::nullopt;
   const bool towards_unchanged = size < threshold;
   const double room = towards_unchanged ? threshold - size : size;
   const Interval& interval =
@@ -227,7 +230,7 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
   const double ratio = half_width / room;
   const double rounds = static_cast<double>(summary.rounds) * std::max(1.0, ratio * ratio);
   if (rounds > 1e7) return std::nullopt;
-  return static_cast<std::size_t>(std::ceil(rounds));
+  return static_cast<std::size_t>(std::ceil(rounds - 1e-6));  // 80.000000001 rounds is 80
 }
 
 DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict) {

@@ -138,7 +138,7 @@ ChangeVerdict classify_change(const ChangeSummary& summary,
 // The half-width needed is the room its nearer verdict leaves: UNCHANGED needs the equivalence
 // interval within +-threshold (room: threshold - |change|), REGRESSED or IMPROVED the decision
 // interval clear of 0 (room: |change|). nullopt for a summary that is not on confidence
-// sequences, or a change on the limit (no number of rounds decides it).
+// sequences, or a change within a tenth of the limit (no number of rounds decides it).
 std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summary,
                                                       double threshold);
 

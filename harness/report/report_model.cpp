@@ -276,10 +276,12 @@ std::string revision_line(const ResultsDocument& document, const std::string& ro
 std::string policy_line(const GatePolicy& policy) {
   const ScenePolicy& d = policy.defaults;
   std::string line = fmt::format(
-      "max slowdown {} at {:.0f}% confidence; image fail over {:.4g} on more than {:.4g}% of "
-      "pixels, warn over {:.4g}",
-      signed_percent(d.max_slowdown), 100.0 * (1.0 - d.significance), d.image.fail_threshold,
-      d.image.fail_percent, d.image.warn_threshold);
+      "max slowdown {} (within it on a {:.4g}% confidence sequence; at most {:.4g}% false "
+      "alarms per compare); image fail over {:.4g} on more than {:.4g}% of pixels, warn over "
+      "{:.4g}",
+      signed_percent(d.max_slowdown), 100.0 * (1.0 - 2.0 * d.significance),
+      100.0 * policy.family_significance, d.image.fail_threshold, d.image.fail_percent,
+      d.image.warn_threshold);
   if (d.image.hard_fail < 1e29) line += fmt::format(", hard fail over {:.4g}", d.image.hard_fail);
   if (policy.fail_on_inconclusive) line += "; inconclusive fails";
   if (!policy.scenes.empty()) {

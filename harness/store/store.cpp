@@ -25,6 +25,14 @@ std::unique_ptr<ResultsStore> open_store(const std::string& location, StoreOpen 
                     "SQLite store or a postgresql:// URL for the team store",
                     redact_postgresql_url(location)));
   }
+  // A directory is a usage error, not a store that could not be opened: the user named the
+  // wrong thing, and nothing about this machine failed.
+  std::error_code error;
+  if (std::filesystem::is_directory(location, error)) {
+    throw UsageError(fmt::format("--store {}: is a directory; give the store's file, e.g. {}",
+                                 location,
+                                 (std::filesystem::path(location) / "results.db").string()));
+  }
   return std::make_unique<SqliteStore>(std::filesystem::absolute(location), mode);
 }
 

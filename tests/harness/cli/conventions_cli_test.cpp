@@ -186,5 +186,23 @@ TEST_F(Conventions, RunReportJsonToStandardOutputIsPureJson) {
   EXPECT_EQ(q.err, "");
 }
 
+// Naming the wrong kind of thing is a usage error (2), not "could not measure" (3), and never an
+// internal error (issue 25, class 12).
+TEST_F(Conventions, AnEmptyRepoAFolderAsStoreAndAFileAsCacheAreUsageErrors) {
+  fs::create_directories(dir.path() / "a-folder");
+  write_file_atomically(dir.path() / "a-file", "not a folder");
+  const CliStreams repo = run_raygate_streams(
+      {"run", "--repo", "", "--adapter", "raygate-baseline-bbox", "--no-store"}, dir);
+  EXPECT_EQ(repo.exit_code, 2) << repo.err;
+  EXPECT_THAT(repo.err, HasSubstr("--repo is empty"));
+  const CliStreams store = run_raygate_streams({"history", "--store", "a-folder"}, dir);
+  EXPECT_EQ(store.exit_code, 2) << store.err;
+  EXPECT_THAT(store.err, HasSubstr("is a directory"));
+  const CliStreams cache = run_raygate_streams(
+      {"run", "--adapter", "raygate-baseline-bbox", "--cache-dir", "a-file", "--no-store"}, dir);
+  EXPECT_EQ(cache.exit_code, 2) << cache.err;
+  EXPECT_THAT(cache.err, HasSubstr("--cache-dir a-file: exists and is not a directory"));
+}
+
 }  // namespace
 }  // namespace raygate::test

@@ -253,6 +253,23 @@ TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
       << gate.notes[1];
 }
 
+// A broken base image (NaN pixels, no goldens at all) is a reference that cannot be used: the
+// change could not be checked (exit 3), it is not blamed on head (issue 25, class 8).
+TEST(GateVerdict, ABrokenBaseImageCouldNotBeCheckedItIsNotTheChangesFault) {
+  SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
+  scene.images = {
+      {"base", "golden", "b.png", "g", ImageVerdict::fail, "b.png has 12 NaN pixels", {}, {}},
+      {"head", "base", "a.png", "b.png", ImageVerdict::error, "b.png: cannot compare", {}, {}}};
+  const GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
+  EXPECT_EQ(gate.exit_code, 3);
+  ASSERT_EQ(gate.scenes.size(), 1u);
+  EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::unmeasured);
+  ASSERT_FALSE(gate.scenes[0].reasons.empty());
+  EXPECT_NE(gate.scenes[0].reasons[0].find("the base revision's image is broken"),
+            std::string::npos)
+      << gate.scenes[0].reasons[0];
+}
+
 // An image that failed without metrics (unreadable) says why, and fails the change.
 TEST(GateVerdict, AnUnreadableImageFailsWithItsReason) {
   SceneResult scene = compared("gears", 0.0, -0.01, 0.01);

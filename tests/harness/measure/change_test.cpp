@@ -141,5 +141,52 @@ TEST(MeasureVerdict, Names) {
   EXPECT_EQ(to_string(ChangeVerdict::inconclusive), "INCONCLUSIVE");
 }
 
+// A summary on confidence sequences with the intervals given, in change units.
+ChangeSummary sequence_summary(double change, Interval decision, Interval equivalence,
+                               std::size_t rounds) {
+  ChangeSummary s;
+  s.rounds = rounds;
+  s.change = change;
+  s.interval_kind = ChangeIntervalKind::confidence_sequence;
+  s.change_interval = decision;
+  s.confidence = 0.9985;
+  s.equivalence_interval = equivalence;
+  s.equivalence_confidence = 0.90;
+  return s;
+}
+
+TEST(MeasureDecidingInterval, UnchangedPrintsTheEquivalenceSequenceAndTheRestTheDecisionOne) {
+  const ChangeSummary s = sequence_summary(0.004, {-0.20, 0.28}, {-0.012, 0.020}, 15);
+  const DecidingInterval unchanged = deciding_interval(s, ChangeVerdict::unchanged);
+  EXPECT_DOUBLE_EQ(unchanged.interval.upper, 0.020);
+  EXPECT_DOUBLE_EQ(unchanged.confidence, 0.90);
+  for (const ChangeVerdict v : {ChangeVerdict::regressed, ChangeVerdict::improved,
+                                ChangeVerdict::inconclusive}) {
+    EXPECT_DOUBLE_EQ(deciding_interval(s, v).interval.upper, 0.28);
+    EXPECT_DOUBLE_EQ(deciding_interval(s, v).confidence, 0.9985);
+  }
+  EXPECT_EQ(change_verdict_named("UNCHANGED"), ChangeVerdict::unchanged);
+  EXPECT_FALSE(change_verdict_named("unchanged").has_value());
+}
+
+TEST(MeasureRoundsToDecide, ScaleWithTheSquareOfHowMuchTheIntervalMustNarrow) {
+  // Towards UNCHANGED: half-width 4 points, room 3 - 1 = 2 points: four times the rounds.
+  EXPECT_EQ(estimated_rounds_to_decide(sequence_summary(0.01, {-0.1, 0.1}, {-0.03, 0.05}, 20),
+                                       0.03),
+            80u);
+  // Towards REGRESSED: +6% whose decision interval reaches 6 points below it, to -3%: the
+  // lower side must narrow from 9 points to 6 (2.25 times the rounds).
+  EXPECT_EQ(estimated_rounds_to_decide(sequence_summary(0.06, {-0.03, 0.2}, {0.0, 0.1}, 40),
+                                       0.03),
+            90u);
+  // A change on the limit has no room: no number of rounds decides it.
+  EXPECT_FALSE(
+      estimated_rounds_to_decide(sequence_summary(0.03, {-0.1, 0.2}, {0.0, 0.06}, 40), 0.03));
+  // One-look summaries (older documents) are not estimated.
+  ChangeSummary one_look = sequence_summary(0.01, {-0.1, 0.1}, {-0.05, 0.05}, 20);
+  one_look.interval_kind = ChangeIntervalKind::order_statistic;
+  EXPECT_FALSE(estimated_rounds_to_decide(one_look, 0.03));
+}
+
 }  // namespace
 }  // namespace raygate

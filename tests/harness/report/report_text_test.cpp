@@ -38,6 +38,9 @@ TEST(ConsoleReport, CompareHasNumbersAndFailuresFirst) {
   const Fixture f(true);
   const std::string text = f.render("console");
   at(text, "0.731 -> 0.789");
+  // The policy line names the intervals the rows print, not a third confidence.
+  at(text, "max slowdown +3.0% (within it on a 90% confidence sequence; at most 1% false alarms "
+           "per compare)");
   at(text, "+7.9% [+6.1%, +9.8%]");
   at(text, "REGRESSED");
   EXPECT_LT(at(text, "\nmount "), at(text, "\ngears "));

@@ -31,6 +31,13 @@ StoppingPolicy change_stopping_policy() {
   return policy;
 }
 
+double budgeted_run_seconds(const StoppingPolicy& policy, double own_seconds) {
+  double seconds = own_seconds;
+  if (policy.max_seconds > 0.0) seconds = std::min(seconds, policy.max_seconds);
+  if (policy.max_minutes > 0.0) seconds = std::min(seconds, 60.0 * policy.max_minutes);
+  return std::max(seconds, 1.0);  // a run needs some time to exist at all
+}
+
 std::size_t rounds_to_decide(const StoppingPolicy& policy) {
   return std::max<std::size_t>(policy.min_rounds, 2);
 }

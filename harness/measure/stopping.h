@@ -41,6 +41,11 @@ StoppingPolicy change_stopping_policy();
 // most of a fast tracer's compare timing a program outside the verdict.
 inline constexpr std::size_t kChangeBaselineRounds = 3;
 
+// The longest a single run may take within `policy`'s budget: its own limit `own_seconds`, but
+// never past the seconds a scene may use (max_seconds) or the whole measurement
+// (max_minutes), so a hanging program cannot outlive the budget the user gave.
+double budgeted_run_seconds(const StoppingPolicy& policy, double own_seconds);
+
 enum class StopDecision {
   continue_measuring,
   stop_converged,

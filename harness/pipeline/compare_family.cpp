@@ -22,8 +22,8 @@ bool in_family(const SceneResult& scene) {
 // "balls +0.4% [-3.9%, +4.8%] (width 8.7 points) after 38 rounds", or, below the rounds its
 // sequence needs, "balls +0.4% after 9 rounds, no interval yet (needs 16 rounds)": the stored
 // interval is then only the observed range.
-// ", needs about 180 rounds (about 3 min at this scene's pace) or a quieter runner", or why no
-// number of rounds would do.
+// "(about 180 rounds in all would decide it, 3 min more at this scene's pace, or a quieter
+// runner)", or why no number of rounds would do.
 std::string what_would_decide(const SceneResult& scene, double threshold) {
   const ChangeSummary& c = *scene.change;
   const std::optional<std::size_t> rounds = estimated_rounds_to_decide(c, threshold);
@@ -34,8 +34,10 @@ std::string what_would_decide(const SceneResult& scene, double threshold) {
   }
   const double seconds_per_round =
       c.rounds > 0 ? scene.runs.seconds_spent / static_cast<double>(c.rounds) : 0.0;
-  return fmt::format("(needs about {} rounds, about {} at this scene's pace, or a quieter runner)",
-                     *rounds, duration_text(seconds_per_round * static_cast<double>(*rounds)));
+  const std::size_t more = *rounds > c.rounds ? *rounds - c.rounds : 0;
+  return fmt::format("(about {} rounds in all would decide it, {} more at this scene's pace, or "
+                     "a quieter runner)",
+                     *rounds, duration_text(seconds_per_round * static_cast<double>(more)));
 }
 
 std::string undecided_scene(const SceneResult& scene, double threshold) {

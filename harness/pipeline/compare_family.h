@@ -29,8 +29,8 @@ std::vector<std::string> apply_family_control(ResultsDocument& document, const G
                                               std::size_t family_size);
 
 // "undecided (INCONCLUSIVE): balls +1.2% [-3.1%, +6.0%] (width 9.1 points) after 40 rounds
-// (needs about 90 rounds, about 1 min at this scene's pace, or a quieter runner); ..." for the
-// INCONCLUSIVE scenes, or "" when every measured scene is decided.
+// (about 90 rounds in all would decide it, 1 min more at this scene's pace, or a quieter
+// runner); ..." for the INCONCLUSIVE scenes, or "" when every measured scene is decided.
 std::string undecided_line(const ResultsDocument& document, const GatePolicy& policy);
 
 }  // namespace raygate

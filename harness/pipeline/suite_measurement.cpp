@@ -212,8 +212,11 @@ MeasuredDocument measure_document(ResultsDocument document, const SuiteMeasureme
 
 BaselineContender baseline_contender(const MeasureContext& context,
                                      const std::string& baseline_source_sha256) {
-  BaselineContender baseline(context.tools.baseline, context.suite.sampling,
-                             std::chrono::minutes(30), "none", baseline_clock(context));
+  // Its own limit is 30 minutes a run; the user's budget bounds it too (issue 25, class 10).
+  const double timeout_seconds = budgeted_run_seconds(context.stopping, 30.0 * 60.0);
+  const std::chrono::milliseconds timeout(static_cast<long long>(1000.0 * timeout_seconds));
+  BaselineContender baseline(context.tools.baseline, context.suite.sampling, timeout, "none",
+                             baseline_clock(context));
   if (simulated(context)) {
     baseline.simulate({*context.cachegrind,
                        std::make_shared<BaselineCostCache>(context.cache_dir / "simulated-baseline"),

@@ -105,5 +105,17 @@ TEST(StoppingRule, DecideStoppingOnNumbersIsShouldStopWithTheTarget) {
   }
 }
 
+TEST(StoppingPolicy, ARunIsBoundedByTheBudgetTheUserGave) {
+  StoppingPolicy policy;  // 300 s per scene, no whole-measurement budget
+  EXPECT_DOUBLE_EQ(budgeted_run_seconds(policy, 1800.0), 300.0);
+  EXPECT_DOUBLE_EQ(budgeted_run_seconds(policy, 60.0), 60.0);
+  policy.max_minutes = 1.0;  // compare --max-minutes 1
+  EXPECT_DOUBLE_EQ(budgeted_run_seconds(policy, 1800.0), 60.0);
+  policy.max_seconds = 0.0;  // "one round": not a bound on a run
+  EXPECT_DOUBLE_EQ(budgeted_run_seconds(policy, 1800.0), 60.0);
+  policy.max_minutes = 0.001;  // a budget of 0.06 s still lets a run start
+  EXPECT_DOUBLE_EQ(budgeted_run_seconds(policy, 1800.0), 1.0);
+}
+
 }  // namespace
 }  // namespace raygate

@@ -139,7 +139,9 @@ void apply_shard(const MeasureArgs& args, MeasureContext& c) {
 // schedule, unless --pin names CPUs or --no-pin asks for none. A tracer with more threads needs
 // more CPUs than one, and one that pins itself (adapter pin_cpus) has chosen.
 std::vector<int> default_round_cpus(const MeasureArgs& args, const MeasureContext& c) {
-  if (args.no_pin && !args.pin_cpus.empty()) throw UsageError("--no-pin and --pin exclude each other");
+  if (args.no_pin && !args.pin_cpus.empty()) {
+    throw UsageError("--no-pin and --pin exclude each other");
+  }
   if (args.no_pin || c.schedule.kind != ScheduleKind::alternate || !args.pin_cpus.empty()) {
     return {};
   }

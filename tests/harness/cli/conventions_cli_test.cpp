@@ -202,6 +202,10 @@ TEST_F(Conventions, AnEmptyRepoAFolderAsStoreAndAFileAsCacheAreUsageErrors) {
       {"run", "--adapter", "raygate-baseline-bbox", "--cache-dir", "a-file", "--no-store"}, dir);
   EXPECT_EQ(cache.exit_code, 2) << cache.err;
   EXPECT_THAT(cache.err, HasSubstr("--cache-dir a-file: exists and is not a directory"));
+  const CliStreams pins = run_raygate_streams(
+      {"run", "--adapter", "raygate-baseline-bbox", "--no-pin", "--pin", "1", "--no-store"}, dir);
+  EXPECT_EQ(pins.exit_code, 2) << pins.err;
+  EXPECT_THAT(pins.err, HasSubstr("--no-pin and --pin exclude each other"));
 }
 
 }  // namespace

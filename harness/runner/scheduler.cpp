@@ -149,7 +149,9 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
       // and head start together, so the two whose ratio the gate judges see the same
       // interference; the baseline only normalizes.
       std::span<const Contender* const> pair(roster);
-      if (roster.size() == 3) {
+      if (roster.size() == 3 && !normalizer_runs_in(options, index)) {
+        pair = pair.subspan(1);  // a round the baseline does not join: base and head only
+      } else if (roster.size() == 3) {
         const Contender& solo = *roster.front();
         RunRecord run = launcher.run(solo, label, {cpus.front()});
         if (!run.ok) return fail(solo.role(), run, round.runs);

@@ -434,6 +434,18 @@ TEST_F(DuetTest, ThreeContendersRunTheBaselineAloneThenBaseAndHeadTogether) {
   EXPECT_EQ(runs.rounds[1].runs.size(), 3u);
 }
 
+TEST_F(DuetTest, TheBaselineJoinsOnlyItsRoundsInADuetToo) {
+  options_.warmup_runs = 0;
+  options_.normalizer_rounds = 1;
+  const SceneRuns runs = measure({&baseline_, &base_, &head_}, stop_after(3));
+  ASSERT_EQ(runs.rounds.size(), 3u);
+  EXPECT_TRUE(runs.rounds[0].runs.contains("baseline"));
+  for (std::size_t i = 1; i < 3; ++i) {
+    EXPECT_FALSE(runs.rounds[i].runs.contains("baseline")) << i;
+    EXPECT_EQ(runs.rounds[i].runs.size(), 2u) << i;  // base and head, together
+  }
+}
+
 TEST_F(DuetTest, ABaselineFailingAloneStopsTheSceneBeforeThePairStarts) {
   executor_.script("baseline", 1, killed_by(SIGSEGV));
   const SceneRuns runs = measure({&baseline_, &base_, &head_}, stop_after(3));

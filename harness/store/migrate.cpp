@@ -4,6 +4,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cctype>
 
 #include "core/error.h"
 #include "core/time_text.h"
@@ -22,21 +23,24 @@ constexpr const char* kMigrationsTableSql =
 
 // The migration that creates a table: the one of its oldest column.
 int created_by(const TableShape& table) {
-  int version = table.columns.front().since;
-  for (const ColumnShape& c : table.columns) version = std::min(version, c.since);
+  int version = -1;
+  for (const Column& c : store_columns()) {
+    if (c.table() == table.table && (version < 0 || c.since < version)) version = c.since;
+  }
   return version;
 }
 
-std::string column_sql(const SqlDatabase& db, const ColumnShape& column) {
-  return column.name + " " + db.type_name(column.type) + (column.nullable ? "" : " NOT NULL");
+std::string column_sql(const SqlDatabase& db, const Column& column) {
+  return std::string(column.name) + " " + db.type_name(column.type()) +
+         (column.nullable() ? "" : " NOT NULL");
 }
 
 std::string create_table_sql(const SqlDatabase& db, const TableShape& table, int version) {
   std::vector<std::string> parts;
   parts.push_back(table.child ? "document_id " + db.type_name(SqlType::int64) + " NOT NULL"
                               : "id " + db.identity_key());
-  for (const ColumnShape& c : table.columns) {
-    if (c.since <= version) parts.push_back(column_sql(db, c));
+  for (const Column& c : store_columns()) {
+    if (c.table() == table.table && c.since <= version) parts.push_back(column_sql(db, c));
   }
   if (table.child) {
     std::string key = "document_id";
@@ -50,10 +54,10 @@ std::string create_table_sql(const SqlDatabase& db, const TableShape& table, int
 }
 
 // A column added to a table that may hold rows: NOT NULL ones need a default for those rows.
-std::string add_column_sql(const SqlDatabase& db, const TableShape& table, const ColumnShape& c) {
+std::string add_column_sql(const SqlDatabase& db, const TableShape& table, const Column& c) {
   constexpr const char* kZero[] = {"0", "0", "0", "''", "FALSE"};  // by SqlType, in order
   std::string sql = "ALTER TABLE " + table.name + " ADD COLUMN " + column_sql(db, c);
-  if (!c.nullable) sql += std::string(" DEFAULT ") + kZero[static_cast<int>(c.type)];
+  if (!c.nullable()) sql += std::string(" DEFAULT ") + kZero[static_cast<int>(c.type())];
   return sql + ";\n";
 }
 
@@ -64,8 +68,8 @@ std::string schema_sql(const SqlDatabase& db, int version) {
     const int created = created_by(table);
     if (created == version) sql += create_table_sql(db, table, version);
     if (created >= version) continue;
-    for (const ColumnShape& c : table.columns) {
-      if (c.since == version) sql += add_column_sql(db, table, c);
+    for (const Column& c : store_columns()) {
+      if (c.table() == table.table && c.since == version) sql += add_column_sql(db, table, c);
     }
   }
   return sql;
@@ -86,12 +90,11 @@ void mark_unreadable(SqlDatabase& db, std::int64_t id) {
 }
 
 void fill_added(SqlDatabase& db, int version, std::int64_t id, const DocumentRows& rows) {
-  const std::vector<TableShape> tables = store_tables();
-  update_added(db, tables[0], document_columns(), version, id, rows.document);
-  for (const RevisionRow& r : rows.revisions) {
-    update_added(db, tables[1], revision_columns(), version, id, r);
-  }
-  for (const SceneRow& s : rows.scenes) update_added(db, tables[2], scene_columns(), version, id, s);
+  update_added(db, store_table(StoreTable::documents), version, id, rows.document);
+  const TableShape& revisions = store_table(StoreTable::revisions);
+  for (const RevisionRow& r : rows.revisions) update_added(db, revisions, version, id, r);
+  const TableShape& scenes = store_table(StoreTable::scene_results);
+  for (const SceneRow& s : rows.scenes) update_added(db, scenes, version, id, s);
 }
 
 // Every stored document, one at a time (a large store need not fit in memory).

@@ -6,6 +6,7 @@
 #include <libpq-fe.h>
 
 #include <charconv>
+#include <type_traits>
 
 #include "core/error.h"
 
@@ -210,17 +211,28 @@ class ResultRow final : public SqlRow {
   int row_;
 };
 
+// Every value travels as text: PostgreSQL reads it as the type its parameter is cast to.
+std::optional<std::string> text_of(const SqlParams::Value& value) {
+  return std::visit(
+      [](const auto& v) -> std::optional<std::string> {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::monostate>) return std::nullopt;
+        if constexpr (std::is_same_v<T, std::string>) return v;
+        if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
+        // Integers exactly; doubles as the shortest text that reads back the same double.
+        if constexpr (std::is_same_v<T, std::int64_t> || std::is_same_v<T, double>) {
+          return fmt::format("{}", v);
+        }
+      },
+      value);
+}
+
 PgParams pg_params(const SqlParams& params) {
   PgParams out;
   for (const SqlParams::Value& value : params.values()) {
-    if (const auto* text = std::get_if<std::string>(&value)) {
+    const std::optional<std::string> text = text_of(value);
+    if (text) {
       out.text(*text);
-    } else if (const auto* integer = std::get_if<std::int64_t>(&value)) {
-      out.integer(*integer);
-    } else if (const auto* real = std::get_if<double>(&value)) {
-      out.real(*real);
-    } else if (const auto* flag = std::get_if<bool>(&value)) {
-      out.flag(*flag);
     } else {
       out.integer(std::nullopt);
     }
@@ -242,19 +254,9 @@ std::string PgConnection::parameter(int number, SqlType type) const {
 }
 
 std::string PgConnection::type_name(SqlType type) const {
-  switch (type) {
-    case SqlType::int32:
-      return "INTEGER";
-    case SqlType::int64:
-      return "BIGINT";
-    case SqlType::real:
-      return "DOUBLE PRECISION";
-    case SqlType::flag:
-      return "BOOLEAN";
-    case SqlType::text:
-      break;
-  }
-  return "TEXT";
+  // By SqlType: int32, int64, real, text, flag.
+  constexpr const char* kNames[] = {"INTEGER", "BIGINT", "DOUBLE PRECISION", "TEXT", "BOOLEAN"};
+  return kNames[static_cast<int>(type)];
 }
 
 std::string PgConnection::position(const std::string& haystack, const std::string& needle) const {

@@ -62,63 +62,66 @@ void read_field(const SqlRow& row, int column, const FieldOf<Record>& field, Rec
       field);
 }
 
-// The column of `columns` named `name`; every key of a table is one.
+// Row's column named `name`; every key of a table is one.
 template <class Row>
-const Column<Row>& column_named(std::span<const Column<Row>> columns, const std::string& name) {
-  for (const Column<Row>& c : columns) {
-    if (name == c.name) return c;
+const Column& column_named(const std::string& name) {
+  for (const Column& c : store_columns()) {
+    if (c.field_of<Row>() && name == c.name) return c;
   }
   throw std::logic_error("store schema: no column " + name);
 }
 
-// "INSERT INTO table (document_id, columns...) VALUES (...)": every column of the table.
+// "INSERT INTO table (document_id, columns...) VALUES (...)": every column of Row's table.
 template <class Row>
-std::string insert_sql(const SqlDatabase& db, const TableShape& table,
-                       std::span<const Column<Row>> columns) {
+std::string insert_sql(const SqlDatabase& db, const TableShape& table) {
   std::string names = table.child ? "document_id" : "";
   std::string values = table.child ? db.parameter(1, SqlType::int64) : "";
   int number = table.child ? 1 : 0;
-  for (const Column<Row>& c : columns) {
+  for (const Column& c : store_columns()) {
+    if (!c.field_of<Row>()) continue;
     if (number > 0) {
       names += ", ";
       values += ", ";
     }
     names += c.name;
-    values += db.parameter(++number, sql_type<Row>(c.field));
+    values += db.parameter(++number, c.type());
   }
   return "INSERT INTO " + table.name + " (" + names + ") VALUES (" + values + ")";
 }
 
+// The values of insert_sql<Row>'s parameters.
 template <class Row>
-SqlParams insert_params(std::span<const Column<Row>> columns, const Row& row,
-                        std::optional<std::int64_t> document_id) {
+SqlParams insert_params(const Row& row, std::optional<std::int64_t> document_id) {
   SqlParams params;
   if (document_id) params.integer(*document_id);
-  for (const Column<Row>& c : columns) add_param(params, c.field, row);
+  for (const Column& c : store_columns()) {
+    if (const FieldOf<Row>* field = c.field_of<Row>()) add_param(params, *field, row);
+  }
   return params;
 }
 
 // Sets the columns migration `version` added on the stored row of `row` in document `id`.
 template <class Row>
-void update_added(SqlDatabase& db, const TableShape& table, std::span<const Column<Row>> columns,
-                  int version, std::int64_t id, const Row& row) {
+void update_added(SqlDatabase& db, const TableShape& table, int version, std::int64_t id,
+                  const Row& row) {
   SqlParams params;
   params.integer(id);
   std::string sets;
   int number = 1;
-  for (const Column<Row>& c : columns) {
-    if (c.since != version) continue;
+  for (const Column& c : store_columns()) {
+    const FieldOf<Row>* field = c.field_of<Row>();
+    if (!field || c.since != version) continue;
     if (!sets.empty()) sets += ", ";
     sets += c.name;
-    sets += " = " + db.parameter(++number, sql_type<Row>(c.field));
-    add_param(params, c.field, row);
+    sets += " = " + db.parameter(++number, c.type());
+    add_param(params, *field, row);
   }
   if (sets.empty()) return;
   std::string where = (table.child ? "document_id = " : "id = ") + db.parameter(1, SqlType::int64);
   for (const std::string& key : table.key) {
-    const Column<Row>& c = column_named(columns, key);
-    where += " AND " + key + " = " + db.parameter(++number, sql_type<Row>(c.field));
-    add_param(params, c.field, row);
+    const Column& c = column_named<Row>(key);
+    where += " AND " + key + " = " + db.parameter(++number, c.type());
+    add_param(params, *c.field_of<Row>(), row);
   }
   db.query("UPDATE " + table.name + " SET " + sets + " WHERE " + where, params, {});
 }

@@ -11,8 +11,10 @@ using S = SceneRow;
 using H = HistoryRow;
 
 // documents: one row per stored document, the document whole in document_json (canonical text:
-// export gives it back byte for byte), after the generated id.
-constexpr Column<D> kDocumentColumns[] = {
+// export gives it back byte for byte), after the generated id. revisions: one row per measured
+// revision (role) of a document; scene_results: one per scene and revision; both after
+// document_id.
+constexpr Column kColumns[] = {
     {1, "content_sha256", &D::content_sha256},
     {1, "schema_version", &D::schema_version},
     {1, "kind", &D::kind},
@@ -31,10 +33,7 @@ constexpr Column<D> kDocumentColumns[] = {
     {1, "document_json", &D::document_json},
     {2, "timing", &D::timing, &H::timing},
     {2, "baseline_accel", &D::baseline_accel, &H::baseline_accel},
-};
 
-// revisions: one row per measured revision (role) of a document.
-constexpr Column<R> kRevisionColumns[] = {
     {1, "role", &R::role, &H::role},
     {1, "repository", &R::repository},
     {1, "sha", &R::sha, &H::sha},
@@ -48,10 +47,7 @@ constexpr Column<R> kRevisionColumns[] = {
     {1, "adapter_name", &R::adapter_name, &H::adapter_name},
     {1, "adapter_hash", &R::adapter_hash},
     {2, "repository_key", &R::repository_key, &H::repository_key},
-};
 
-// scene_results: one row per scene and revision of a document.
-constexpr Column<S> kSceneColumns[] = {
     {1, "scene_id", &S::scene_id, &H::scene_id},
     {1, "role", &S::role},
     {1, "status", &S::status, &H::status},
@@ -96,39 +92,40 @@ const Migration kMigrations[] = {
      kSeriesIndexes, true},
 };
 
-template <class Row>
-std::vector<ColumnShape> shapes(std::span<const Column<Row>> columns) {
-  std::vector<ColumnShape> out;
-  for (const Column<Row>& c : columns) {
-    out.push_back({c.name, sql_type<Row>(c.field), nullable<Row>(c.field), c.since});
-  }
-  return out;
+const TableShape kTables[] = {
+    {StoreTable::documents, "documents", "d", false, {}, {"UNIQUE (content_sha256)"}},
+    {StoreTable::revisions,
+     "revisions",
+     "r",
+     true,
+     {"role"},
+     {"FOREIGN KEY (document_id) REFERENCES documents(id) ON DELETE CASCADE"}},
+    {StoreTable::scene_results,
+     "scene_results",
+     "s",
+     true,
+     {"scene_id", "role"},
+     {"FOREIGN KEY (document_id, role) REFERENCES revisions(document_id, role) ON DELETE CASCADE"}},
+};
+
+// The alternative of a field's type in FieldOf: text, flag, int32, int64, optional int64, real.
+std::size_t type_index(const Column& column) {
+  return std::visit([](const auto& field) { return field.index(); }, column.field);
 }
 
 }  // namespace
 
-std::span<const Column<DocumentRow>> document_columns() { return kDocumentColumns; }
-std::span<const Column<RevisionRow>> revision_columns() { return kRevisionColumns; }
-std::span<const Column<SceneRow>> scene_columns() { return kSceneColumns; }
-
-std::vector<TableShape> store_tables() {
-  return {
-      {"documents", "d", false, {}, {"UNIQUE (content_sha256)"}, shapes(document_columns())},
-      {"revisions",
-       "r",
-       true,
-       {"role"},
-       {"FOREIGN KEY (document_id) REFERENCES documents(id) ON DELETE CASCADE"},
-       shapes(revision_columns())},
-      {"scene_results",
-       "s",
-       true,
-       {"scene_id", "role"},
-       {"FOREIGN KEY (document_id, role) REFERENCES revisions(document_id, role) ON DELETE CASCADE"},
-       shapes(scene_columns())},
-  };
+SqlType Column::type() const {
+  constexpr SqlType kTypes[] = {SqlType::text,  SqlType::flag,  SqlType::int32,
+                                SqlType::int64, SqlType::int64, SqlType::real};
+  return kTypes[type_index(*this)];
 }
 
+bool Column::nullable() const { return type_index(*this) >= 4; }
+
+std::span<const Column> store_columns() { return kColumns; }
+std::span<const TableShape> store_tables() { return kTables; }
+const TableShape& store_table(StoreTable table) { return kTables[static_cast<int>(table)]; }
 std::span<const Migration> store_migrations() { return kMigrations; }
 
 }  // namespace raygate

@@ -22,14 +22,11 @@ namespace {
 // order: the select list and the reader of measurements() both walk it.
 template <class F>
 void for_each_shown(F f) {
-  const auto walk = [&f](const char* alias, auto columns) {
-    for (const auto& c : columns) {
-      if (const auto* shown = std::get_if<FieldOf<HistoryRow>>(&c.shown)) f(alias, c.name, *shown);
+  for (const Column& c : store_columns()) {
+    if (const auto* shown = std::get_if<FieldOf<HistoryRow>>(&c.shown)) {
+      f(store_table(c.table()).alias.c_str(), c.name, *shown);
     }
-  };
-  walk("d", document_columns());
-  walk("r", revision_columns());
-  walk("s", scene_columns());
+  }
 }
 
 std::string measurements_from() {
@@ -92,9 +89,8 @@ std::string documents_sql(const SqlDatabase& db, bool limited) {
 }
 
 template <class Row>
-void insert_child(SqlDatabase& db, const TableShape& table, std::span<const Column<Row>> columns,
-                  std::int64_t id, const Row& row) {
-  db.query(insert_sql(db, table, columns), insert_params(columns, row, id), {});
+void insert_child(SqlDatabase& db, StoreTable table, std::int64_t id, const Row& row) {
+  db.query(insert_sql<Row>(db, store_table(table)), insert_params(row, id), {});
 }
 
 }  // namespace
@@ -105,21 +101,20 @@ AddOutcome SqlStore::add(const ResultsDocument& document, const std::string& bra
   const DocumentRows rows = document_rows(document, branch, utc_timestamp());
   // Checked first so that re-importing stored documents takes no write lock and uses up no ids.
   if (const auto existing = find_document(rows.document.content_sha256)) return {*existing, true};
-  const std::vector<TableShape> tables = store_tables();
   {
     SqlTransaction transaction(*db_);
     // Another writer may have stored the same content a moment earlier: its row stands, this
     // insert returns no id and writes nothing (the UNIQUE key on content_sha256 decides).
     std::optional<std::int64_t> id;
-    db_->query(insert_sql(*db_, tables[0], document_columns()) +
+    db_->query(insert_sql<DocumentRow>(*db_, store_table(StoreTable::documents)) +
                    " ON CONFLICT (content_sha256) DO NOTHING RETURNING id",
-               insert_params(document_columns(), rows.document, std::nullopt),
+               insert_params(rows.document, std::nullopt),
                [&id](const SqlRow& row) { id = row.integer(0); });
     if (id) {
       for (const RevisionRow& r : rows.revisions) {
-        insert_child(*db_, tables[1], revision_columns(), *id, r);
+        insert_child(*db_, StoreTable::revisions, *id, r);
       }
-      for (const SceneRow& s : rows.scenes) insert_child(*db_, tables[2], scene_columns(), *id, s);
+      for (const SceneRow& s : rows.scenes) insert_child(*db_, StoreTable::scene_results, *id, s);
       transaction.commit();
       return {*id, false};
     }

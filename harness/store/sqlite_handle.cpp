@@ -198,17 +198,9 @@ void SqliteDb::query(const std::string& sql, const SqlParams& params,
 std::string SqliteDb::parameter(int number, SqlType) const { return fmt::format("?{}", number); }
 
 std::string SqliteDb::type_name(SqlType type) const {
-  switch (type) {
-    case SqlType::real:
-      return "REAL";
-    case SqlType::text:
-      return "TEXT";
-    case SqlType::int32:
-    case SqlType::int64:
-    case SqlType::flag:  // 0/1
-      break;
-  }
-  return "INTEGER";
+  // By SqlType: int32, int64 (SQLite's integers are 64-bit), real, text, flag (0/1).
+  constexpr const char* kNames[] = {"INTEGER", "INTEGER", "REAL", "TEXT", "INTEGER"};
+  return kNames[static_cast<int>(type)];
 }
 
 std::string SqliteDb::position(const std::string& haystack, const std::string& needle) const {

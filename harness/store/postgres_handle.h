@@ -1,8 +1,9 @@
 // RAII over libpq: a connection (PGconn), which is the PostgreSQL side of the store's dialect
-// layer (store/sql_database.h), a query's result (PGresult) and parameters. Values always travel as parameters of PQexecParams in text form, never inside
-// the SQL. Every failure becomes a raygate error naming the server without its password, the
-// server's message with its SQLSTATE and the SQL that was running: a server that cannot be
-// reached or a connection lost midway is an InfraError saying to check the server and retry.
+// layer (store/sql_database.h), a query's result (PGresult) and parameters. Values always travel
+// as parameters of PQexecParams in text form, never inside the SQL. Every failure becomes a
+// raygate error naming the server without its password, the server's message with its SQLSTATE
+// and the SQL that was running: a server that cannot be reached or a connection lost midway is
+// an InfraError saying to check the server and retry.
 #pragma once
 
 #include <chrono>

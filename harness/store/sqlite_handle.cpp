@@ -240,7 +240,9 @@ void SqliteDb::configure_for_store() {
     const int code = sqlite3_exec(db_, "PRAGMA journal_mode = WAL", nullptr, nullptr, nullptr);
     if (code == SQLITE_OK) break;
     const bool busy = (code & 0xff) == SQLITE_BUSY || (code & 0xff) == SQLITE_LOCKED;
-    if (!busy || std::chrono::steady_clock::now() > deadline) fail(code, "PRAGMA journal_mode = WAL");
+    if (!busy || std::chrono::steady_clock::now() > deadline) {
+      fail(code, "PRAGMA journal_mode = WAL");
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
   }
   exec("PRAGMA synchronous = FULL");

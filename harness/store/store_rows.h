@@ -89,8 +89,8 @@ DocumentRows document_rows(const ResultsDocument& document, const std::string& b
                            const std::string& stored_at);
 
 // The rows of a document stored before some of their columns existed (a migration that
-// backfills, store/migrate.h), worked out from its stored text. `known` is false for a document that no longer reads back: its rows get
-// unknown_series_id(id) (results/series.h).
+// backfills, store/migrate.h), worked out from its stored text. `known` is false for a document
+// that no longer reads back: its rows get unknown_series_id(id) (results/series.h).
 struct StoredSeries {
   bool known = false;
   DocumentRows rows;  // the columns of document_rows(); the others are left as computed

@@ -25,7 +25,13 @@ std::optional<std::string> broken_image(const std::filesystem::path& image) {
          std::to_string(pixel / static_cast<std::size_t>(pixels.width)) + ")";
 }
 
-RgbImage mean_image(const NoisyImageStats& stats) { return {stats.width, stats.height, stats.mean}; }
+// The runs' mean as a picture to look at: gamma 2.2 like a tracer's own 8-bit output (the
+// statistics are linear radiance; written as is, mid-tones look almost black).
+RgbImage mean_image(const NoisyImageStats& stats) {
+  RgbImage image{stats.width, stats.height, stats.mean};
+  for (float& v : image.rgb) v = v > 0 ? std::pow(std::min(v, 1.0f), 1 / 2.2f) : 0.0f;
+  return image;
+}
 
 // |actual - expected| x 16, with each biased tile's border painted: red where actual is
 // brighter, blue where darker.

@@ -258,6 +258,12 @@ std::string scene_line(const SceneResult& scene, const std::vector<std::string>&
     if (check.metrics) {
       detail = check.metrics->identical() ? "identical" : summarize(*check.metrics);
     }
+    // The Monte Carlo check's words start with their own verdict ("fail (biased): ...").
+    const std::string verdict(to_string(check.verdict));
+    if (!check.metrics && (detail.starts_with(verdict + " (") || detail.starts_with("inconclusive ("))) {
+      text += fmt::format("  image {} {}", what, detail);
+      continue;
+    }
     text += fmt::format("  image {} {} ({})", what, to_string(check.verdict), detail);
   }
   return text;

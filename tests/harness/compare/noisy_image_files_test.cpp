@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <random>
 
+#include "compare/golden.h"
 #include "compare/image_compare.h"
 #include "compare/noisy_image_compare.h"
 #include "core/fs.h"
@@ -52,6 +53,35 @@ TEST(NoisyImageFiles, StatisticsSurviveTheGoldenFilesExactly) {
   EXPECT_EQ(back.mean, stats.mean);
   EXPECT_EQ(back.variance, stats.variance);
   EXPECT_EQ(back.inflation, stats.inflation);
+}
+
+// A Monte Carlo golden's statistics live in its manifest entry's "noise" object and come back
+// the same; an entry that claims fewer than 2 runs is refused (no variance to judge with).
+TEST(NoisyImageFiles, GoldenManifestKeepsTheNoiseOfEachEntry) {
+  const TempDir dir;
+  GoldenManifest manifest;
+  manifest.suite = "ci";
+  manifest.entries.push_back({"balls", "balls", 1, 48, 48, "center", "", "balls.mean.exr", "ab"});
+  manifest.entries.push_back({"gears", "gears", 1, 48, 48, "center", "", "gears.png", "cd"});
+  manifest.noise["balls"] = {8, "balls.variance.exr", "ef", {{8, 1.02}, {kWholeImage, 1.5}}};
+  save_golden_manifest(manifest, dir.path());
+  const GoldenManifest back = load_golden_manifest(dir.path());
+  ASSERT_EQ(back.noise.size(), 1u);
+  EXPECT_EQ(back.noise.at("balls"), manifest.noise.at("balls"));
+  EXPECT_EQ(back.noise.count("gears"), 0u);
+
+  std::string text = read_file(dir.path() / "manifest.json");
+  const std::string runs = "\"runs\": 8";
+  text.replace(text.find(runs), runs.size(), "\"runs\": 1");
+  write_file_atomically(dir.path() / "manifest.json", text);
+  try {
+    load_golden_manifest(dir.path());
+    FAIL() << "no error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("$.images[0].noise.runs: must be at least 2"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 TEST(NoisyImageFiles, ImagesOfDifferentSizesAreAUsageError) {

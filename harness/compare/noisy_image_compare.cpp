@@ -240,12 +240,14 @@ std::string summarize(const NoisyComparison& c) {
                                         percent(c.image_low), percent(c.image_high));
   if (c.verdict == NoisyVerdict::fail) {
     const BiasedTile& w = c.biased.front();
-    return fmt::format(
-        "fail (biased): {} of {} tiles x channels; worst {} tile at ({},{}) {}x{} {} {} [{}, {}]; "
-        "{}; {}",
-        c.biased.size(), c.tests, tile_name(w.tile_px), w.rect.x, w.rect.y, w.rect.width,
-        w.rect.height, kChannelNames[w.channel], percent(w.relative_change), percent(w.low),
-        percent(w.high), image, runs);
+    const std::string where =
+        w.tile_px == kWholeImage
+            ? std::string("the whole image")
+            : fmt::format("{} tile at ({},{}) {}x{}", tile_name(w.tile_px), w.rect.x, w.rect.y,
+                          w.rect.width, w.rect.height);
+    return fmt::format("fail (biased): {} of {} tiles x channels; worst {} {} {} [{}, {}]; {}; {}",
+                       c.biased.size(), c.tests, where, kChannelNames[w.channel],
+                       percent(w.relative_change), percent(w.low), percent(w.high), image, runs);
   }
   std::string resolves;
   for (const ScaleReport& r : c.scales) {

@@ -104,14 +104,14 @@ class PathTracerImages : public ::testing::Test {
   }
 
   CliRun compare(const std::string& head, const std::string& out) {
-    std::vector<std::string> args{"compare", "--base", base_, "--head", head, "--out", out,
+    std::vector<std::string> args{"compare", "--base", base_, "--head", head, "--output", out,
                                   "--golden-dir", "no-goldens"};
     for (const std::string& a : measure_args()) args.push_back(a);
     return run_raygate(args, dir_);
   }
 
   CliRun run(const std::string& rev, const std::string& out, const std::string& goldens) {
-    std::vector<std::string> args{"run", "--rev", rev, "--out", out, "--golden-dir", goldens};
+    std::vector<std::string> args{"run", "--rev", rev, "--output", out, "--golden-dir", goldens};
     for (const std::string& a : measure_args()) args.push_back(a);
     return run_raygate(args, dir_);
   }

@@ -116,6 +116,19 @@ TEST(NoisyImageCompare, AThreePercentDimmerImageFails) {
   }
 }
 
+// The words of a whole-image failure name no tile rectangle.
+TEST(NoisyImageCompare, AWholeImageFailureSaysSo) {
+  std::mt19937_64 rng(37);
+  const RgbImage truth = expected_image();
+  const RgbImage dimmer = scaled(truth, 0.97, {0, 0, kSize, kSize});
+  const NoisyComparison c = compare_noisy(runs_of(dimmer, 16, 0.05, rng), runs_of(truth, 16, 0.05, rng), {});
+  ASSERT_EQ(c.verdict, NoisyVerdict::fail);
+  const std::string text = summarize(c);
+  EXPECT_EQ(text.rfind("fail (biased): ", 0), 0u) << text;
+  EXPECT_NE(text.find("image mean -3.0"), std::string::npos) << text;
+  EXPECT_NE(text.find("; 16 vs 16 runs"), std::string::npos) << text;
+}
+
 // 10% brighter in a 8x8 region at (16,24): 2.8% of the pixels. The worst tile must be inside or
 // around it, and the change found about +10%.
 TEST(NoisyImageCompare, ATenPercentChangeInASmallRegionFailsThere) {
@@ -140,6 +153,7 @@ TEST(NoisyImageCompare, ATenPercentChangeInASmallRegionFailsThere) {
       EXPECT_LT(worst.relative_change, 0.25);
     }
     EXPECT_LT(std::abs(c.image_change), 0.01);  // the image as a whole hardly changed
+    EXPECT_NE(summarize(c).find(" tile at ("), std::string::npos) << summarize(c);
   }
   EXPECT_GE(found, 19);
 }

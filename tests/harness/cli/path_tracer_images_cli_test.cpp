@@ -59,6 +59,13 @@ constexpr const char* kAdapter = R"({
 // Speed is not what this test is about ("more samples" is slower on purpose).
 constexpr const char* kPolicy = R"({"max_slowdown": 10})";
 
+// One raygate cache for both tests: the fixture's commits are the same bytes at the same times,
+// so their shas repeat and each commit is built once (the builds are most of this test's time).
+const TempDir& shared_cache() {
+  static const TempDir cache("raygate-mc-cache");
+  return cache;
+}
+
 struct Change {
   const char* patch;
   bool biased;
@@ -99,7 +106,8 @@ class PathTracerImages : public ::testing::Test {
 
   std::vector<std::string> measure_args() const {
     return {"--no-store", "--repo", repo_.path().string(), "--adapter", "adapter.json",
-            "--suite", "suite.json", "--cache-dir", ".raygate", "--policy", "policy.json",
+            "--suite", "suite.json", "--cache-dir", shared_cache().path().string(),
+            "--policy", "policy.json",
             "--warmup", "1", "--min-rounds", "7", "--max-rounds", "7", "--timing", "cpu"};
   }
 

@@ -94,6 +94,13 @@ std::optional<ImageCheck> unusable_actual(ImageCheck check,
   return std::nullopt;
 }
 
+// Several runs and not one pixel differs: the tracer ignores its seed (or is deterministic), and
+// the test's noise estimate is zero.
+bool identical_runs(const NoisyImageStats& stats) {
+  return stats.runs >= 2 && std::all_of(stats.variance.begin(), stats.variance.end(),
+                                        [](float v) { return v == 0.0f; });
+}
+
 // The tracer's runs against the reference's statistics; runs of different sizes fail.
 ImageCheck judged(ImageCheck check, const std::vector<std::filesystem::path>& actual_images,
                   const NoisyImageStats& expected, const NoisyThresholds& thresholds,
@@ -109,6 +116,10 @@ ImageCheck judged(ImageCheck check, const std::vector<std::filesystem::path>& ac
   const NoisyComparison comparison = compare_noisy(actual, expected, thresholds);
   check.verdict = to_image_verdict(comparison.verdict);
   check.error = summarize(comparison);
+  if (identical_runs(actual)) {
+    check.error += "; note: the " + std::to_string(actual.runs) +
+                   " runs' images are identical: is {seed} reaching the tracer's random numbers?";
+  }
   if (comparison.verdict == NoisyVerdict::fail) {
     write_noisy_evidence(check, actual, expected, comparison, evidence_dir, stem);
   }

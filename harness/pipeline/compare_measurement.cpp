@@ -19,8 +19,6 @@ namespace raygate {
 
 namespace {
 
-// The change head vs base at the scene's share `alpha` of the family, and head's image against
-// base's.
 // A Monte Carlo tracer's images: every run of head against every run of base, within noise.
 ImageCheck check_noisy_change(const SceneResult& scene, std::size_t family_size,
                               const std::filesystem::path& evidence_dir) {
@@ -29,6 +27,9 @@ ImageCheck check_noisy_change(const SceneResult& scene, std::size_t family_size,
                             evidence_dir, scene.entry.id + ".head-vs-base");
 }
 
+// The change head vs base at the scene's share `alpha` of the family, and head's image against
+// base's (against all of base's runs, within noise, when `noisy_family` is set: the number of
+// images the Monte Carlo check's 1% is shared by).
 void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, double alpha,
                           const std::filesystem::path& evidence_dir, bool counted,
                           std::optional<std::size_t> noisy_family) {

@@ -86,7 +86,7 @@ class ProfileReader {
       const std::string_view f = fields[i];
       const auto [end, error] = std::from_chars(f.data(), f.data() + f.size(), value);
       if (error != std::errc() || end != f.data() + f.size()) {
-        fail("'" + std::string(f) + "' is not a count");
+        fail(fmt::format("'{}' is not a count", f));
       }
       if (std::uint64_t* counter = counter_named(cost.self, events_[i - 1])) *counter += value;
     }

@@ -42,6 +42,7 @@ std::optional<MemoryJudgement> judge_scene_memory(const SceneResult& scene,
 
 std::string memory_text(double kib) {
   const double mib = kib / 1024.0;
+  if (std::abs(mib) < 1.0) return fmt::format("{:.0f} KiB", kib);  // page-level jitter
   if (mib >= 100.0) return fmt::format("{:.0f} MiB", mib);
   return fmt::format("{:.1f} MiB", mib);
 }

@@ -95,7 +95,8 @@ std::vector<std::vector<std::string>> function_cells(const Explanation& e, std::
       {"change (cycles)", "share", "instructions base -> head", "function"}};
   for (std::size_t i = 0; i < e.functions.size() && i < top; ++i) {
     const FunctionChange& f = e.functions[i];
-    cells.push_back({(f.delta_cycles() >= 0.0 ? "+" : "") + count_text(f.delta_cycles()),
+    cells.push_back({fmt::format("{}{}", f.delta_cycles() >= 0.0 ? "+" : "",
+                                 count_text(f.delta_cycles())),
                      signed_percent(share_of_change(e, f), 0),
                      count_text(static_cast<double>(f.base_instructions)) + " -> " +
                          count_text(static_cast<double>(f.head_instructions)),
@@ -133,15 +134,15 @@ std::string code_safe(std::string text) {
 std::string memory_console(const ReportInput& input) {
   const std::vector<MemoryRow> rows = memory_rows(input);
   if (rows.empty()) return "";
-  return fmt::format("\nmemory (peak resident, the tracer's own; {}):\n", limit_note(input)) +
-         memory_table_text(rows, input.document.kind == "compare");
+  return fmt::format("\nmemory (peak resident, the tracer's own; {}):\n{}", limit_note(input),
+                     memory_table_text(rows, input.document.kind == "compare"));
 }
 
 std::string explanation_console(const ReportInput& input) {
   std::string text;
   for (const SceneResult* scene : explained_scenes(input)) {
-    text += "\n" + explanation_heading(*scene, *scene->explanation) + ":\n" +
-            aligned(function_cells(*scene->explanation, kConsoleExplained), "  ");
+    text += fmt::format("\n{}:\n{}", explanation_heading(*scene, *scene->explanation),
+                        aligned(function_cells(*scene->explanation, kConsoleExplained), "  "));
   }
   return text;
 }
@@ -199,13 +200,14 @@ std::string explanation_html(const ReportInput& input) {
     for (const FunctionChange& f : e.functions) {
       out += fmt::format(
           "<tr><td class=\"num\">{}{}</td><td class=\"num\">{}</td><td class=\"num\">{} → {}</td>"
-          "<td class=\"num\">{} → {}</td><td><code>{}</code><br><small>{}</small></td></tr>",
+          "<td class=\"num\">{} → {}</td><td><code>{}</code>{}</td></tr>",
           f.delta_cycles() >= 0.0 ? "+" : "", escape(count_text(f.delta_cycles())),
           escape(signed_percent(share_of_change(e, f), 0)), escape(count_text(f.base_cycles)),
           escape(count_text(f.head_cycles)),
           escape(count_text(static_cast<double>(f.base_instructions))),
           escape(count_text(static_cast<double>(f.head_instructions))), escape(f.name),
-          escape(f.file));
+          // "???": cachegrind knew no source file (no debug information).
+          f.file.empty() || f.file == "???" ? "" : "<br><small>" + escape(f.file) + "</small>");
     }
     out += "</tbody></table></section>";
   }

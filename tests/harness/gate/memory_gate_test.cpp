@@ -110,7 +110,7 @@ TEST(MemoryGate, MoreMemoryFailsTheSceneWithItsNumbers) {
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::fail);
   ASSERT_FALSE(gate.scenes[0].reasons.empty());
   EXPECT_NE(gate.scenes[0].reasons[0].find("more memory: head 58.0 MiB vs base 8.0 MiB "
-                                           "(+50.0 MiB, +625.0%), limit +10%"),
+                                           "(+50.0 MiB, +624.9%), limit +10%"),
             std::string::npos)
       << gate.scenes[0].reasons[0];
   EXPECT_EQ(gate.scenes[1].memory, ChangeVerdict::unchanged);

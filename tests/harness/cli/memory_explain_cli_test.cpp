@@ -3,7 +3,8 @@
 //   (exit 1) while an A/A compare passes memory on every scene; the peaks are the tracer's own;
 // - explanation: a head whose shade() does more work is REGRESSED in sim mode, and shade() is
 //   first among the functions whose cost grew, in the document and the console report; in timed
-//   mode `--explain` profiles the regressed scene once each under cachegrind and says so.
+//   mode `--explain` profiles the regressed scene once each under cachegrind and says so;
+//   bisect in sim mode ends with the culprit's explanation.
 // The sim and --explain tests need valgrind and fail (not skip) without it (ci/install-deps).
 #include <gtest/gtest.h>
 
@@ -151,6 +152,22 @@ TEST_F(MemoryExplainSimCli, ASlowerFunctionIsFirstInTheSimulatedExplanation) {
   EXPECT_GT(share_of_change(e, e.functions[0]), 0.9);
   EXPECT_TRUE(has(r.out, "tetra: where the time went (valgrind")) << r.out;
   EXPECT_TRUE(has(read_file(dir_.path() / "r.md"), "shade(")) << read_file(dir_.path() / "r.md");
+}
+
+TEST_F(MemoryExplainSimCli, BisectEndsWithTheCulpritsExplanation) {
+  const std::string good = commit(outlined(sources_.fast), "tracer");
+  const std::string bad = commit(slower_shade(sources_.fast), "shade spins");
+  const CliRun r = run_raygate({"bisect", "--good", good, "--bad", bad, "--scene", "tetra",
+                                "--repo", repo_.path().string(), "--adapter", "make-nff",
+                                "--suite", suite_.string(), "--cache-dir", cache_.string(),
+                                "--golden-dir", "no-goldens", "--timing", "sim"},
+                               dir_);
+  EXPECT_EQ(r.exit_code, 0) << r.out;
+  const std::size_t answer = r.out.find("first bad commit: " + bad);
+  ASSERT_NE(answer, std::string::npos) << r.out;
+  const std::size_t why = r.out.find("the culprit against the good end, where the time went", answer);
+  ASSERT_NE(why, std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("shade(", why), std::string::npos) << r.out;
 }
 
 TEST_F(MemoryExplainSimCli, AnUnchangedSceneIsNotExplained) {

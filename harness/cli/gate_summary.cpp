@@ -27,7 +27,9 @@ std::string counts(const GateResult& gate) {
   }
   if (!memory.empty()) {
     std::vector<std::string> verdicts;
-    for (const auto& [verdict, n] : memory) verdicts.push_back(fmt::format("{} {}", n, to_string(verdict)));
+    for (const auto& [verdict, n] : memory) {
+      verdicts.push_back(fmt::format("{} {}", n, to_string(verdict)));
+    }
     parts.push_back(fmt::format("memory: {}", fmt::join(verdicts, ", ")));
   }
   if (!gate.families.empty()) {

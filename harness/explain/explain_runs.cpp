@@ -38,8 +38,8 @@ FunctionProfile profile_once(const SceneInput& scene, const Contender& contender
                              Executor& executor) {
   std::filesystem::remove_all(run_dir);
   std::filesystem::create_directories(run_dir);
-  ProcessSpec spec = under_cachegrind(contender.command(scene, run_dir), cachegrind,
-                                      cachegrind_dir(run_dir));
+  ProcessSpec spec =
+      under_cachegrind(contender.command(scene, run_dir), cachegrind, cachegrind_dir(run_dir));
   // Valgrind runs a program some 30-100x slower than natively.
   if (spec.timeout.count() > 0) spec.timeout *= 100;
   const ProcessResult result = executor.run(spec);
@@ -77,8 +77,10 @@ Explanation explain_by_profiling(const SceneInput& scene, const Contender& base,
                                  const std::filesystem::path& dir, Executor& executor,
                                  double native_seconds) {
   const auto started = std::chrono::steady_clock::now();
-  const FunctionProfile base_profile = profile_once(scene, base, cachegrind, dir / "base", executor);
-  const FunctionProfile head_profile = profile_once(scene, head, cachegrind, dir / "head", executor);
+  const FunctionProfile base_profile =
+      profile_once(scene, base, cachegrind, dir / "base", executor);
+  const FunctionProfile head_profile =
+      profile_once(scene, head, cachegrind, dir / "head", executor);
   Explanation e = explain_change(base_profile, head_profile);
   e.source = ExplainSource::explain_runs;
   e.profiler = profiler_name(cachegrind);

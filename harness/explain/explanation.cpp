@@ -123,25 +123,25 @@ std::string count_text(double count) {
 }
 
 std::vector<std::string> explanation_lines(const Explanation& e, std::size_t top) {
-  std::string heading = fmt::format(
-      "where the time went ({}; estimated cycles {} -> {}, {}):", e.profiler,
-      count_text(e.base_cycles), count_text(e.head_cycles),
-      signed_percent(e.base_cycles > 0.0 ? e.head_cycles / e.base_cycles - 1.0 : 0.0));
+  std::string heading =
+      fmt::format("where the time went ({}; estimated cycles {} -> {}, {}):", e.profiler,
+                  count_text(e.base_cycles), count_text(e.head_cycles),
+                  signed_percent(e.base_cycles > 0.0 ? e.head_cycles / e.base_cycles - 1.0 : 0.0));
   std::vector<std::string> lines{heading};
   for (std::size_t i = 0; i < e.functions.size() && i < top; ++i) {
     const FunctionChange& f = e.functions[i];
     const std::string sign = f.delta_cycles() >= 0.0 ? "+" : "";
-    lines.push_back(fmt::format("  {}{} cycles ({} of the change), {} -> {} instructions  {}",
-                                sign, count_text(f.delta_cycles()),
+    lines.push_back(fmt::format("  {}{} cycles ({} of the change), {} -> {} instructions  {}", sign,
+                                count_text(f.delta_cycles()),
                                 signed_percent(share_of_change(e, f), 0),
                                 count_text(static_cast<double>(f.base_instructions)),
                                 count_text(static_cast<double>(f.head_instructions)), f.name));
   }
   if (e.source == ExplainSource::explain_runs && e.native_seconds > 0.0) {
-    lines.push_back(fmt::format("  profiling cost: {:.1f} s for one base and one head run "
-                                "under cachegrind ({:.0f}x their {:.2f} s measured)",
-                                e.profile_seconds, e.profile_seconds / e.native_seconds,
-                                e.native_seconds));
+    lines.push_back(
+        fmt::format("  profiling cost: {:.1f} s for one base and one head run "
+                    "under cachegrind ({:.0f}x their {:.2f} s measured)",
+                    e.profile_seconds, e.profile_seconds / e.native_seconds, e.native_seconds));
   }
   return lines;
 }

@@ -6,12 +6,11 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "explain/function_profile.h"
 
@@ -39,7 +38,7 @@ inline constexpr std::size_t kExplainedFunctions = 10;
 
 struct Explanation {
   ExplainSource source = ExplainSource::simulated_runs;
-  std::string profiler;  // "valgrind-3.19.0 cachegrind, self cost"
+  std::string profiler;      // "valgrind-3.19.0 cachegrind, self cost"
   double base_cycles = 0.0;  // the whole run's estimated cycles (every function)
   double head_cycles = 0.0;
   // Largest increase of self cost first; at most kExplainedFunctions.

@@ -50,11 +50,10 @@ std::string memory_text(double kib) {
 std::string describe_memory(const MemoryJudgement& j) {
   const MemorySummary& s = j.summary;
   const std::string sign = s.delta_kib < 0.0 ? "-" : "+";
-  return fmt::format("head {} vs base {} ({}{}, {}), limit {}, noise {}, {} + {} runs",
-                     memory_text(s.head_kib), memory_text(s.base_kib), sign,
-                     memory_text(std::abs(s.delta_kib)), signed_percent(s.change),
-                     signed_percent(j.limit, 0), memory_text(s.noise_kib()), s.base_runs,
-                     s.head_runs);
+  return fmt::format(
+      "head {} vs base {} ({}{}, {}), limit {}, noise {}, {} + {} runs", memory_text(s.head_kib),
+      memory_text(s.base_kib), sign, memory_text(std::abs(s.delta_kib)), signed_percent(s.change),
+      signed_percent(j.limit, 0), memory_text(s.noise_kib()), s.base_runs, s.head_runs);
 }
 
 }  // namespace raygate

@@ -25,8 +25,8 @@ struct MemorySummary {
   std::size_t head_runs = 0;
   double base_kib = 0.0;  // median peak over base's runs
   double head_kib = 0.0;
-  double delta_kib = 0.0;  // head - base
-  double change = 0.0;     // delta / base: +0.10 = 10% more memory
+  double delta_kib = 0.0;   // head - base
+  double change = 0.0;      // delta / base: +0.10 = 10% more memory
   double floor_kib = 0.0;   // max(1 MiB, 2% of base): changes this small are never judged
   double spread_kib = 0.0;  // the wider of the two sides' spreads (max - min over their runs)
 

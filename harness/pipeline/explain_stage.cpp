@@ -23,7 +23,8 @@ std::optional<Explanation> explain_one(const SceneResult& scene, const MeasureCo
                                        Executor& executor) {
   if (simulated(context)) return explain_simulated_runs(scene.runs, cachegrind);
   const SceneInput input = prepare_scene_input(scene.entry, m);
-  const std::filesystem::path dir = join_component(m.work_dir / "explain", scene.entry.id, "scene id");
+  const std::filesystem::path dir =
+      join_component(m.work_dir / "explain", scene.entry.id, "scene id");
   return explain_by_profiling(input, base, head, cachegrind, dir, executor,
                               native_pair_seconds(scene.runs));
 }

@@ -35,10 +35,10 @@ std::vector<MemoryRow> memory_rows(const ReportInput& input) {
     if (d.kind == "compare") {
       const auto judged = judge_scene_memory(scene, input.policy.for_scene(id));
       if (!judged) continue;
-      rows.push_back({id,
-                      memory_text(judged->summary.base_kib) + " -> " +
-                          memory_text(judged->summary.head_kib),
-                      delta_text(judged->summary), std::string(to_string(judged->verdict))});
+      rows.push_back(
+          {id,
+           memory_text(judged->summary.base_kib) + " -> " + memory_text(judged->summary.head_kib),
+           delta_text(judged->summary), std::string(to_string(judged->verdict))});
     } else if (const auto peak = median_peak_kib(scene.runs, "tracer")) {
       rows.push_back({id, memory_text(*peak), "", ""});
     }
@@ -81,8 +81,9 @@ std::string aligned(const std::vector<std::vector<std::string>>& rows, const std
 
 std::string memory_table_text(const std::vector<MemoryRow>& rows, bool compare) {
   std::vector<std::vector<std::string>> cells;
-  cells.push_back(compare ? std::vector<std::string>{"scene", "peak base -> head", "change", "memory"}
-                          : std::vector<std::string>{"scene", "peak"});
+  cells.push_back(compare
+                      ? std::vector<std::string>{"scene", "peak base -> head", "change", "memory"}
+                      : std::vector<std::string>{"scene", "peak"});
   for (const MemoryRow& r : rows) {
     cells.push_back(compare ? std::vector<std::string>{r.scene, r.peak, r.change, r.verdict}
                             : std::vector<std::string>{r.scene, r.peak});
@@ -95,12 +96,12 @@ std::vector<std::vector<std::string>> function_cells(const Explanation& e, std::
       {"change (cycles)", "share", "instructions base -> head", "function"}};
   for (std::size_t i = 0; i < e.functions.size() && i < top; ++i) {
     const FunctionChange& f = e.functions[i];
-    cells.push_back({fmt::format("{}{}", f.delta_cycles() >= 0.0 ? "+" : "",
-                                 count_text(f.delta_cycles())),
-                     signed_percent(share_of_change(e, f), 0),
-                     count_text(static_cast<double>(f.base_instructions)) + " -> " +
-                         count_text(static_cast<double>(f.head_instructions)),
-                     f.name});
+    cells.push_back(
+        {fmt::format("{}{}", f.delta_cycles() >= 0.0 ? "+" : "", count_text(f.delta_cycles())),
+         signed_percent(share_of_change(e, f), 0),
+         count_text(static_cast<double>(f.base_instructions)) + " -> " +
+             count_text(static_cast<double>(f.head_instructions)),
+         f.name});
   }
   return cells;
 }
@@ -110,17 +111,18 @@ std::string cost_note(const Explanation& e) {
     return "from the sim runs' own cachegrind files (no extra runs)";
   }
   if (e.native_seconds <= 0.0) return fmt::format("profiling took {:.1f} s", e.profile_seconds);
-  return fmt::format("profiling took {:.1f} s for one base and one head run, {:.0f}x their "
-                     "{:.2f} s measured",
-                     e.profile_seconds, e.profile_seconds / e.native_seconds, e.native_seconds);
+  return fmt::format(
+      "profiling took {:.1f} s for one base and one head run, {:.0f}x their "
+      "{:.2f} s measured",
+      e.profile_seconds, e.profile_seconds / e.native_seconds, e.native_seconds);
 }
 
 std::string explanation_heading(const SceneResult& scene, const Explanation& e) {
-  return fmt::format("{}: where the time went ({}; estimated cycles {} -> {}, {}; {})",
-                     scene.entry.id, e.profiler, count_text(e.base_cycles),
-                     count_text(e.head_cycles),
-                     signed_percent(e.base_cycles > 0.0 ? e.head_cycles / e.base_cycles - 1.0 : 0.0),
-                     cost_note(e));
+  return fmt::format(
+      "{}: where the time went ({}; estimated cycles {} -> {}, {}; {})", scene.entry.id, e.profiler,
+      count_text(e.base_cycles), count_text(e.head_cycles),
+      signed_percent(e.base_cycles > 0.0 ? e.head_cycles / e.base_cycles - 1.0 : 0.0),
+      cost_note(e));
 }
 
 // Inside a Markdown code block only a backtick run could end it.
@@ -158,9 +160,9 @@ std::string memory_markdown(const ReportInput& input) {
 std::string explanation_markdown(const ReportInput& input) {
   std::string text;
   for (const SceneResult* scene : explained_scenes(input)) {
-    text += fmt::format("\n**{}**\n\n```\n{}```\n",
-                        code_safe(explanation_heading(*scene, *scene->explanation)),
-                        code_safe(aligned(function_cells(*scene->explanation, kMarkdownExplained), "")));
+    text += fmt::format(
+        "\n**{}**\n\n```\n{}```\n", code_safe(explanation_heading(*scene, *scene->explanation)),
+        code_safe(aligned(function_cells(*scene->explanation, kMarkdownExplained), "")));
   }
   return text;
 }
@@ -176,11 +178,12 @@ std::string memory_html(const ReportInput& input) {
       escape(limit_note(input)), compare ? "peak base → head" : "peak",
       compare ? "<th>change</th><th>memory</th>" : "");
   for (const MemoryRow& r : rows) {
-    out += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td>", escape(r.scene),
-                       escape(r.peak));
+    out += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td>", escape(r.scene), escape(r.peak));
     if (compare) {
-      out += fmt::format("<td class=\"num\">{}</td><td>{}</td>", escape(r.change),
-                         escape(r.verdict));
+      // The same tag as the scene table's speed column, so the two read alike.
+      out +=
+          fmt::format("<td class=\"num\">{0}</td><td><span class=\"tag speed-{1}\">{1}</span></td>",
+                      escape(r.change), escape(r.verdict));
     }
     out += "</tr>";
   }
@@ -192,11 +195,12 @@ std::string explanation_html(const ReportInput& input) {
   std::string out;
   for (const SceneResult* scene : explained_scenes(input)) {
     const Explanation& e = *scene->explanation;
-    out += fmt::format("<section class=\"card explain\"><h2>Where the time went: {}</h2><p>{}</p>"
-                       "<table><thead><tr><th>change (cycles)</th><th>share</th><th>cycles base"
-                       " → head</th><th>instructions base → head</th><th>function</th></tr>"
-                       "</thead><tbody>",
-                       escape(scene->entry.id), escape(explanation_heading(*scene, e)));
+    out += fmt::format(
+        "<section class=\"card explain\"><h2>Where the time went: {}</h2><p>{}</p>"
+        "<table><thead><tr><th>change (cycles)</th><th>share</th><th>cycles base"
+        " → head</th><th>instructions base → head</th><th>function</th></tr>"
+        "</thead><tbody>",
+        escape(scene->entry.id), escape(explanation_heading(*scene, e)));
     for (const FunctionChange& f : e.functions) {
       out += fmt::format(
           "<tr><td class=\"num\">{}{}</td><td class=\"num\">{}</td><td class=\"num\">{} → {}</td>"
@@ -223,9 +227,12 @@ nlohmann::json memory_json(const ReportInput& input, const SceneResult& scene) {
   const auto judged = judge_scene_memory(scene, input.policy.for_scene(scene.entry.id));
   if (!judged) return nullptr;
   const MemorySummary& s = judged->summary;
-  return {{"base_peak_kib", s.base_kib},   {"head_peak_kib", s.head_kib},
-          {"delta_kib", s.delta_kib},      {"change", s.change},
-          {"noise_kib", s.noise_kib()},    {"limit", judged->limit},
+  return {{"base_peak_kib", s.base_kib},
+          {"head_peak_kib", s.head_kib},
+          {"delta_kib", s.delta_kib},
+          {"change", s.change},
+          {"noise_kib", s.noise_kib()},
+          {"limit", judged->limit},
           {"verdict", std::string(to_string(judged->verdict))}};
 }
 

@@ -4,9 +4,8 @@
 // terminal, top 10 in Markdown, a table in HTML, everything in JSON.
 #pragma once
 
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "report/reporter.h"
 

@@ -52,14 +52,12 @@ class MemoryExplainCli : public TracerRepoTest {
  protected:
   explicit MemoryExplainCli(const char* suite = kTinySuite) : TracerRepoTest(suite) {}
 
-  CliRun compare(const std::string& base, const std::string& head,
-                 std::vector<std::string> extra) {
-    std::vector<std::string> args{"compare",      "--base",       base,
-                                  "--head",       head,           "--no-store",
-                                  "--out",        out_.string(),  "--repo",
-                                  repo_.path().string(), "--adapter", "make-nff",
-                                  "--suite",      suite_.string(), "--cache-dir",
-                                  cache_.string(), "--golden-dir", "no-goldens"};
+  CliRun compare(const std::string& base, const std::string& head, std::vector<std::string> extra) {
+    std::vector<std::string> args{
+        "compare",       "--base",       base,          "--head",        head,
+        "--no-store",    "--out",        out_.string(), "--repo",        repo_.path().string(),
+        "--adapter",     "make-nff",     "--suite",     suite_.string(), "--cache-dir",
+        cache_.string(), "--golden-dir", "no-goldens"};
     args.insert(args.end(), extra.begin(), extra.end());
     return run_raygate(args, dir_);
   }
@@ -70,8 +68,8 @@ class MemoryExplainCli : public TracerRepoTest {
 TEST_F(MemoryExplainCli, FiftyMoreMebibytesFailTheMemoryGateOnEveryScene) {
   const std::string base = commit(sources_.fast, "tracer");
   const std::string head = commit(ballast(sources_.fast), "keep 50 MiB of ballast");
-  const CliRun r = compare(base, head, {"--max-rounds", "3", "--report", "json:" +
-                                                                             (dir_.path() / "r.json").string()});
+  const CliRun r = compare(
+      base, head, {"--max-rounds", "3", "--report", "json:" + (dir_.path() / "r.json").string()});
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_TRUE(has(r.out, "memory (peak resident, the tracer's own")) << r.out;
   const ResultsDocument d = read_results(out_);
@@ -138,8 +136,8 @@ class MemoryExplainSimCli : public MemoryExplainCli {
 TEST_F(MemoryExplainSimCli, ASlowerFunctionIsFirstInTheSimulatedExplanation) {
   const std::string base = commit(outlined(sources_.fast), "tracer");
   const std::string head = commit(slower_shade(sources_.fast), "shade spins");
-  const CliRun r = compare(base, head, {"--timing", "sim", "--report",
-                                        "markdown:" + (dir_.path() / "r.md").string()});
+  const CliRun r = compare(
+      base, head, {"--timing", "sim", "--report", "markdown:" + (dir_.path() / "r.md").string()});
   EXPECT_EQ(r.exit_code, 1) << r.out;
   const ResultsDocument d = read_results(out_);
   ASSERT_EQ(d.scenes.size(), 1u);
@@ -157,15 +155,16 @@ TEST_F(MemoryExplainSimCli, ASlowerFunctionIsFirstInTheSimulatedExplanation) {
 TEST_F(MemoryExplainSimCli, BisectEndsWithTheCulpritsExplanation) {
   const std::string good = commit(outlined(sources_.fast), "tracer");
   const std::string bad = commit(slower_shade(sources_.fast), "shade spins");
-  const CliRun r = run_raygate({"bisect", "--good", good, "--bad", bad, "--scene", "tetra",
-                                "--repo", repo_.path().string(), "--adapter", "make-nff",
-                                "--suite", suite_.string(), "--cache-dir", cache_.string(),
-                                "--golden-dir", "no-goldens", "--timing", "sim"},
-                               dir_);
+  const CliRun r =
+      run_raygate({"bisect", "--good", good, "--bad", bad, "--scene", "tetra", "--repo",
+                   repo_.path().string(), "--adapter", "make-nff", "--suite", suite_.string(),
+                   "--cache-dir", cache_.string(), "--golden-dir", "no-goldens", "--timing", "sim"},
+                  dir_);
   EXPECT_EQ(r.exit_code, 0) << r.out;
   const std::size_t answer = r.out.find("first bad commit: " + bad);
   ASSERT_NE(answer, std::string::npos) << r.out;
-  const std::size_t why = r.out.find("the culprit against the good end, where the time went", answer);
+  const std::size_t why =
+      r.out.find("the culprit against the good end, where the time went", answer);
   ASSERT_NE(why, std::string::npos) << r.out;
   EXPECT_NE(r.out.find("shade(", why), std::string::npos) << r.out;
 }

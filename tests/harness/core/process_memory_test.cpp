@@ -24,7 +24,9 @@ const std::string kAllocator = RAYGATE_TEST_ALLOCATOR;
 // Keeps this process's resident memory above kParentMib while it lives.
 class BigParent {
  public:
-  BigParent() : block_(new char[kParentMib << 20]) { std::memset(block_.get(), 7, kParentMib << 20); }
+  BigParent() : block_(new char[kParentMib << 20]) {
+    std::memset(block_.get(), 7, kParentMib << 20);
+  }
 
  private:
   std::unique_ptr<char[]> block_;
@@ -85,7 +87,8 @@ TEST(ProcessMemory, MeteredKeepsExitStatusCrashAndSpawnFailure) {
   EXPECT_EQ(exited.outcome, ProcessOutcome::exited);
   EXPECT_EQ(exited.exit_code, 7);
   EXPECT_TRUE(exited.rss_own);
-  const ProcessResult crashed = run_process(allocator_spec({"/bin/sh", "-c", "kill -SEGV $$"}, dir));
+  const ProcessResult crashed =
+      run_process(allocator_spec({"/bin/sh", "-c", "kill -SEGV $$"}, dir));
   EXPECT_EQ(crashed.outcome, ProcessOutcome::signaled);
   EXPECT_EQ(crashed.signal, SIGSEGV);
   const ProcessResult missing = run_process(allocator_spec({"no-such-tracer-xyz"}, dir));
@@ -101,7 +104,8 @@ TEST(ProcessMemory, MeteredTimeoutStopsTheProgramAndPinningReachesIt) {
   const ProcessResult r = run_process(slow);
   EXPECT_EQ(r.outcome, ProcessOutcome::timed_out);
   EXPECT_LT(r.wall_seconds, 10.0);
-  ProcessSpec pinned = allocator_spec({"/bin/sh", "-c", "grep Cpus_allowed_list /proc/self/status"}, dir);
+  ProcessSpec pinned =
+      allocator_spec({"/bin/sh", "-c", "grep Cpus_allowed_list /proc/self/status"}, dir);
   pinned.cpu_affinity = {0};
   ASSERT_TRUE(run_process(pinned).succeeded());
   EXPECT_NE(read_file(dir.path() / "out.log").find("Cpus_allowed_list:\t0\n"), std::string::npos);

@@ -1,18 +1,19 @@
 // The per-function profile of a cachegrind file (explain/function_profile.h) and the explanation
 // of a change (explain/explanation.h), on hand-written fixtures whose sums are worked out here:
 // base and head differ in shade() (+7000 instructions), a new sky() (+400) and memcpy (-50).
+#include "explain/explanation.h"
+
 #include <gtest/gtest.h>
 
 #include "core/error.h"
 #include "core/fs.h"
-#include "explain/explanation.h"
 #include "explain/function_profile.h"
 
 namespace raygate {
 namespace {
 
-const std::filesystem::path kFixtures = std::filesystem::path(RAYGATE_SOURCE_DIR) / "tests" /
-                                        "fixtures" / "cachegrind";
+const std::filesystem::path kFixtures =
+    std::filesystem::path(RAYGATE_SOURCE_DIR) / "tests" / "fixtures" / "cachegrind";
 
 FunctionProfile fixture(const std::string& name) {
   return parse_function_profile(read_file(kFixtures / name), name);
@@ -21,7 +22,8 @@ FunctionProfile fixture(const std::string& name) {
 TEST(FunctionProfile, SumsSelfCostPerFunctionAndDemangles) {
   const FunctionProfile base = fixture("functions_base.cg");
   ASSERT_EQ(base.size(), 4u);
-  const FunctionCost& traverse = base.at("bvh::traverse(Ray const&)");  // from _ZN3bvh8traverseERK3Ray
+  const FunctionCost& traverse =
+      base.at("bvh::traverse(Ray const&)");  // from _ZN3bvh8traverseERK3Ray
   EXPECT_EQ(traverse.file, "src/bvh.cpp");
   EXPECT_EQ(traverse.self.ir, 1500u);
   EXPECT_EQ(traverse.self.dr, 600u);

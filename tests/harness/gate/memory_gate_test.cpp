@@ -1,9 +1,10 @@
 // The memory rule (measure/memory_change.h), the policy's max_memory_increase, and the gate on
 // hand-made compare documents whose runs carry their own peaks (gate/memory_gate.h).
+#include "gate/memory_gate.h"
+
 #include <gtest/gtest.h>
 
 #include "core/error.h"
-#include "gate/memory_gate.h"
 #include "gate/verdict.h"
 
 namespace raygate {
@@ -39,9 +40,11 @@ TEST(MemoryRule, VerdictsAgainstTheLimitAndTheNoise) {
   // +5% on 100 MiB, steady: within the limit.
   EXPECT_EQ(verdict({100 * kMib, 100 * kMib}, {105 * kMib, 105 * kMib}), ChangeVerdict::unchanged);
   // The same +5% while base's peaks spread by 20 MiB: a change of the limit's size could hide.
-  EXPECT_EQ(verdict({90 * kMib, 100 * kMib, 110 * kMib}, {105 * kMib}), ChangeVerdict::inconclusive);
+  EXPECT_EQ(verdict({90 * kMib, 100 * kMib, 110 * kMib}, {105 * kMib}),
+            ChangeVerdict::inconclusive);
   // +15% beyond the limit but inside that 20 MiB spread: not a regression either.
-  EXPECT_EQ(verdict({90 * kMib, 100 * kMib, 110 * kMib}, {115 * kMib}), ChangeVerdict::inconclusive);
+  EXPECT_EQ(verdict({90 * kMib, 100 * kMib, 110 * kMib}, {115 * kMib}),
+            ChangeVerdict::inconclusive);
   EXPECT_EQ(verdict({90 * kMib, 100 * kMib, 110 * kMib}, {125 * kMib}), ChangeVerdict::regressed);
   // A looser limit lets +50% pass.
   EXPECT_EQ(verdict({100 * kMib}, {150 * kMib}, 0.6), ChangeVerdict::unchanged);
@@ -100,10 +103,10 @@ ResultsDocument compare_document(std::vector<SceneResult> scenes) {
 }
 
 TEST(MemoryGate, MoreMemoryFailsTheSceneWithItsNumbers) {
-  const GateResult gate = evaluate_gate(
-      compare_document({compare_scene("grown", 8 * kMib, 58 * kMib),
-                        compare_scene("same", 8 * kMib, 8 * kMib)}),
-      GatePolicy{});
+  const GateResult gate =
+      evaluate_gate(compare_document({compare_scene("grown", 8 * kMib, 58 * kMib),
+                                      compare_scene("same", 8 * kMib, 8 * kMib)}),
+                    GatePolicy{});
   EXPECT_EQ(gate.exit_code, 1);
   ASSERT_EQ(gate.scenes.size(), 2u);
   EXPECT_EQ(gate.scenes[0].memory, ChangeVerdict::regressed);

@@ -27,6 +27,7 @@ struct BisectArgs {
   std::string bad;
   std::string metric = "ratio";  // ratio | image
   std::string format;            // text | json
+  bool explain = false;          // --explain: profile REGRESSED steps (pipeline/explain_stage.h)
 };
 
 nlohmann::json revision_json(const Revision& r) {
@@ -96,20 +97,36 @@ nlohmann::json result_json(const BisectResult& result) {
   return j;
 }
 
+// Where the first bad commit's time went (issue 27): its own step's explanation, when it has one.
+const Explanation* culprit_explanation(const BisectResult& result) {
+  if (result.outcome != BisectOutcome::found) return nullptr;
+  for (const BisectStepRecord& step : result.steps) {
+    if (step.candidate.sha == result.first_bad.sha && step.explanation) return &*step.explanation;
+  }
+  return nullptr;
+}
+
 // The answer on standard output: text, or the whole bisection as JSON.
 int answer(const BisectArgs& args, const std::string& scene, const BisectResult& result) {
   const ExitCode code = exit_code_of(result);
   if (args.format == "json") {
     nlohmann::json steps = nlohmann::json::array();
     for (const BisectStepRecord& step : result.steps) steps.push_back(step_json(step));
-    const nlohmann::json j = {{"scene", scene},          {"metric", args.metric},
-                              {"good", result.good.sha}, {"bad", args.bad},
-                              {"candidates", result.candidates}, {"steps", steps},
-                              {"result", result_json(result)}, {"exit_code", to_int(code)}};
+    nlohmann::json j = {{"scene", scene},          {"metric", args.metric},
+                        {"good", result.good.sha}, {"bad", args.bad},
+                        {"candidates", result.candidates}, {"steps", steps},
+                        {"result", result_json(result)}, {"exit_code", to_int(code)}};
+    if (const Explanation* why = culprit_explanation(result)) {
+      j["result"]["explanation"] = *why;
+    }
     fmt::print("{}\n", j.dump(1, ' ', false, nlohmann::json::error_handler_t::replace));
   } else {
     std::string text = answer_text(result) + "\n";
     if (!result.merge_note.empty()) text += "note: " + result.merge_note + "\n";
+    if (const Explanation* why = culprit_explanation(result)) {
+      text += "the culprit against the good end, ";
+      for (const std::string& line : explanation_lines(*why, 5)) text += line + "\n";
+    }
     fmt::print("{}", terminal_text(text));  // the subject is the commit author's text
   }
   return to_int(code);
@@ -119,7 +136,8 @@ int bisect_command(const BisectArgs& args, const Console& console) {
   if (args.measure.scenes.size() != 1) {
     throw UsageError("bisect follows one scene: pass exactly one --scene");
   }
-  const MeasureContext context = load_measure_context(args.measure);
+  MeasureContext context = load_measure_context(args.measure);
+  context.explain = args.explain;
   const BaselineTool baseline(context.tools.baseline);
   const Repository repository = Repository::open(args.measure.repo, context.cache_dir);
   const BisectRequest request{context, baseline, repository, args.good, args.bad,
@@ -144,6 +162,9 @@ void add_bisect_command(CLI::App& app, int& exit_code) {
                       "image that differs from the good commit's")
       ->check(CLI::IsMember({"ratio", "image"}))
       ->capture_default_str();
+  command->add_flag("--explain", args->explain,
+                    "profile each REGRESSED step's two revisions once under cachegrind and end "
+                    "with where the culprit's time went (sim mode explains without it)");
   add_format_option(*command, args->format, {"text", "json"});
   command->callback([args, command, &exit_code] {
     exit_code = bisect_command(*args, console_of(*command));

@@ -27,6 +27,7 @@ struct CompareArgs {
   std::string head = "HEAD";
   std::string out;
   bool fail_on_inconclusive = false;
+  bool explain = false;  // --explain: profile REGRESSED scenes once each (pipeline/explain_stage.h)
   RecordArgs record;                 // --store, --no-store, --branch
   std::vector<std::string> reports;  // --report FORMAT:PATH
 };
@@ -48,7 +49,8 @@ int compare_command(const CompareArgs& args, const Console& console) {
   if (args.base.empty() == args.base_branch.empty()) {
     throw UsageError("name the base: --base REV or --base-branch BRANCH (exactly one)");
   }
-  const MeasureContext context = load_measure_context(args.measure);
+  MeasureContext context = load_measure_context(args.measure);
+  context.explain = args.explain;
   check_report_specs(args.reports);
   check_output_path(args.out, "--output");
   const BaselineTool baseline(context.tools.baseline);
@@ -88,6 +90,9 @@ void add_compare_command(CLI::App& app, int& exit_code) {
                        args->out);
   command->add_flag("--fail-on-inconclusive", args->fail_on_inconclusive,
                     "an INCONCLUSIVE change fails the gate instead of warning");
+  command->add_flag("--explain", args->explain,
+                    "run each REGRESSED scene's base and head once more under cachegrind and "
+                    "show the functions whose cost grew most (sim mode explains without it)");
   add_record_options(*command, args->record);
   add_report_options(*command, args->reports);
   command->callback([args, command, &exit_code] {

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 #include <fmt/format.h>
 
+#include <map>
 #include <vector>
 
 namespace raygate::cli {
@@ -19,6 +20,18 @@ std::string counts(const GateResult& gate) {
     parts.push_back(fmt::format("{} unmeasured", unmeasured));
   }
   parts.push_back(fmt::format("{} warnings", gate.count(GateOutcome::warn)));
+  // Memory judged (issue 27): how many scenes each verdict, so a pass says memory was looked at.
+  std::map<ChangeVerdict, std::size_t> memory;
+  for (const SceneGate& scene : gate.scenes) {
+    if (scene.memory) ++memory[*scene.memory];
+  }
+  if (!memory.empty()) {
+    std::vector<std::string> verdicts;
+    for (const auto& [verdict, n] : memory) {
+      verdicts.push_back(fmt::format("{} {}", n, to_string(verdict)));
+    }
+    parts.push_back(fmt::format("memory: {}", fmt::join(verdicts, ", ")));
+  }
   if (!gate.families.empty()) {
     parts.push_back(fmt::format("{} growth exponents judged", gate.families.size()));
   }

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <deque>
 #include <fstream>
@@ -21,6 +22,7 @@
 
 #include "core/error.h"
 #include "core/interrupt.h"
+#include "core/paths.h"
 #include "core/strays.h"
 
 extern char** environ;
@@ -92,7 +94,41 @@ class ScopedAffinity {
   bool active_ = false;
 };
 
+// The fd on which raygate-meter writes its report (its argv[1]).
+constexpr int kMeterReportFd = 3;
+
+// What raygate-meter wrote: its "rusage ..." or "spawn_failed ..." line.
+struct MeterReport {
+  bool spawn_failed = false;
+  int spawn_errno = 0;
+  bool has_usage = false;
+  long long user_us = 0;
+  long long system_us = 0;
+  long max_rss_kib = 0;
+  long long wall_ns = 0;
+};
+
+MeterReport parse_meter_report(const std::string& text) {
+  MeterReport report;
+  if (std::sscanf(text.c_str(), "spawn_failed %d", &report.spawn_errno) == 1) {
+    report.spawn_failed = true;
+  } else if (std::sscanf(text.c_str(), "rusage %lld %lld %ld %lld", &report.user_us,
+                         &report.system_us, &report.max_rss_kib, &report.wall_ns) == 4) {
+    report.has_usage = true;
+  }
+  return report;
+}
+
 }  // namespace
+
+std::filesystem::path meter_executable() {
+  const std::filesystem::path path = executable_directory() / "raygate-meter";
+  if (::access(path.c_str(), X_OK) != 0) {
+    throw InfraError("raygate-meter is missing beside raygate (" + path.string() +
+                     "): it measures a tracer's own memory; build or install it with raygate");
+  }
+  return path;
+}
 
 std::string ProcessResult::describe() const {
   std::ostringstream out;
@@ -122,6 +158,7 @@ Process Process::start(const ProcessSpec& spec) {
     p.early_result_->spawn_error = "empty command";
     return p;
   }
+  const std::filesystem::path meter = spec.metered ? meter_executable() : "";
   p.stdout_log_ = open_log(spec.stdout_path);
   p.stderr_log_ = spec.stderr_path == spec.stdout_path ? -1 : open_log(spec.stderr_path);
 
@@ -130,12 +167,17 @@ Process Process::start(const ProcessSpec& spec) {
   if (::pipe2(out_pipe, O_CLOEXEC) != 0 || ::pipe2(err_pipe, O_CLOEXEC) != 0) {
     throw InfraError(std::string("cannot create pipes: ") + std::strerror(errno));
   }
+  int meter_pipe[2] = {-1, -1};
+  if (spec.metered && ::pipe2(meter_pipe, O_CLOEXEC) != 0) {
+    throw InfraError(std::string("cannot create a pipe: ") + std::strerror(errno));
+  }
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   const std::string stdin_path = spec.stdin_path.empty() ? "/dev/null" : spec.stdin_path.string();
   posix_spawn_file_actions_addopen(&actions, 0, stdin_path.c_str(), O_RDONLY, 0);
   posix_spawn_file_actions_adddup2(&actions, out_pipe[1], 1);
   posix_spawn_file_actions_adddup2(&actions, err_pipe[1], 2);
+  if (spec.metered) posix_spawn_file_actions_adddup2(&actions, meter_pipe[1], kMeterReportFd);
   if (!spec.working_directory.empty()) {
     posix_spawn_file_actions_addchdir_np(&actions, spec.working_directory.c_str());
   }
@@ -156,6 +198,9 @@ Process Process::start(const ProcessSpec& spec) {
                                       POSIX_SPAWN_SETSIGDEF);
 
   std::vector<std::string> argv_strings = spec.argv;
+  if (spec.metered) {
+    argv_strings.insert(argv_strings.begin(), {meter.string(), std::to_string(kMeterReportFd)});
+  }
   std::vector<std::string> env_strings = build_environment(spec);
   std::vector<char*> argv = c_strings(argv_strings);
   std::vector<char*> envp = c_strings(env_strings);
@@ -172,6 +217,8 @@ Process Process::start(const ProcessSpec& spec) {
   posix_spawnattr_destroy(&attr);
   ::close(out_pipe[1]);
   ::close(err_pipe[1]);
+  if (spec.metered) ::close(meter_pipe[1]);
+  p.meter_fd_ = meter_pipe[0];
   p.stdout_fd_ = out_pipe[0];
   p.stderr_fd_ = err_pipe[0];
   if (spawn_status != 0) {
@@ -180,6 +227,7 @@ Process Process::start(const ProcessSpec& spec) {
     p.early_result_->spawn_error = spec.argv[0] + ": " + std::strerror(spawn_status);
     close_fd(p.stdout_fd_);
     close_fd(p.stderr_fd_);
+    close_fd(p.meter_fd_);
     p.scope_.reset();
     return p;
   }
@@ -195,6 +243,7 @@ Process::Process(Process&& other) noexcept
       stderr_fd_(std::exchange(other.stderr_fd_, -1)),
       stdout_log_(std::exchange(other.stdout_log_, -1)),
       stderr_log_(std::exchange(other.stderr_log_, -1)),
+      meter_fd_(std::exchange(other.meter_fd_, -1)),
       started_(other.started_),
       early_result_(std::move(other.early_result_)),
       reaped_(std::exchange(other.reaped_, true)),
@@ -207,7 +256,9 @@ Process::~Process() {
     ::waitpid(pid_, nullptr, 0);
   }
   release_child_group(group_slot_);
-  for (int* fd : {&pidfd_, &stdout_fd_, &stderr_fd_, &stdout_log_, &stderr_log_}) close_fd(*fd);
+  for (int* fd : {&pidfd_, &stdout_fd_, &stderr_fd_, &stdout_log_, &stderr_log_, &meter_fd_}) {
+    close_fd(*fd);
+  }
 }
 
 void Process::kill_group(int sig) const {
@@ -265,16 +316,48 @@ void Process::reap(ProcessResult& result, Clock::time_point exited_at) {
   }
 }
 
+// The meter wrote its line before it ended and the program cannot hold the pipe (close-on-exec),
+// so the line is all there is to read. No line (the meter was killed, at a timeout): the times
+// stay the meter's, which include the program's, and the peak is not the program's own.
+void Process::read_meter_report(ProcessResult& result) {
+  if (meter_fd_ < 0) return;
+  std::string text;
+  char buffer[256];
+  for (;;) {
+    const ssize_t n = ::read(meter_fd_, buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    text.append(buffer, static_cast<std::size_t>(n));
+  }
+  const MeterReport report = parse_meter_report(text);
+  if (report.spawn_failed) {
+    result = ProcessResult{};
+    result.spawn_error = spec_.argv[0] + ": " + std::strerror(report.spawn_errno);
+    return;
+  }
+  if (!report.has_usage) return;
+  result.user_seconds = static_cast<double>(report.user_us) * 1e-6;
+  result.system_seconds = static_cast<double>(report.system_us) * 1e-6;
+  result.max_rss_kib = report.max_rss_kib;
+  result.rss_own = true;
+  if (result.outcome != ProcessOutcome::timed_out) {
+    result.wall_seconds = static_cast<double>(report.wall_ns) * 1e-9;  // without the meter's start
+  }
+}
+
 // The child has exited and is a zombie, so its pid, and with it its group id, cannot have been
 // reused: what is left in the group (a background process that closed its output) is killed
 // before the reap. Then strays that left the group are swept.
 void Process::finish(ProcessResult& result, Clock::time_point exited_at) {
   kill_group(SIGKILL);
   reap(result, exited_at);
+  read_meter_report(result);
   release_child_group(std::exchange(group_slot_, -1));
   sweep_stray_children();
   scope_.reset();
-  for (int* fd : {&pidfd_, &stdout_fd_, &stderr_fd_, &stdout_log_, &stderr_log_}) close_fd(*fd);
+  for (int* fd : {&pidfd_, &stdout_fd_, &stderr_fd_, &stdout_log_, &stderr_log_, &meter_fd_}) {
+    close_fd(*fd);
+  }
   if (result.outcome == ProcessOutcome::timed_out && result.signal == 0) result.signal = SIGTERM;
   throw_if_interrupted("while running " + spec_.argv[0]);
 }

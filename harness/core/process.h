@@ -34,6 +34,10 @@ struct ProcessSpec {
   std::chrono::milliseconds timeout{0};      // 0: none
   std::chrono::milliseconds kill_grace{2000};  // SIGTERM to SIGKILL (at most 2 s when interrupted)
   std::vector<int> cpu_affinity;  // CPUs to pin to; empty: inherit
+  // Start it through raygate-meter (core/process_meter_main.cpp), so that max_rss_kib and the
+  // times are the program's own (and its waited-for children's), not raygate's seen through
+  // fork. pid() is then the meter's, which forwards single-process signals to the program.
+  bool metered = false;
 };
 
 enum class ProcessOutcome {
@@ -50,7 +54,8 @@ struct ProcessResult {
   double wall_seconds = 0.0;
   double user_seconds = 0.0;
   double system_seconds = 0.0;
-  long max_rss_kib = 0;
+  long max_rss_kib = 0;  // peak resident memory; raygate's own unless the spec was metered
+  bool rss_own = false;  // max_rss_kib is the program's own (metered, and the meter reported)
   bool stdout_truncated = false;
   bool stderr_truncated = false;
   std::string spawn_error;
@@ -86,6 +91,7 @@ class Process {
   bool has_exited(bool block) const;  // leaves the child a zombie, so its pid stays ours
   void reap(ProcessResult& result, std::chrono::steady_clock::time_point exited_at);
   void finish(ProcessResult& result, std::chrono::steady_clock::time_point exited_at);
+  void read_meter_report(ProcessResult& result);
 
   ProcessSpec spec_;
   pid_t pid_ = -1;
@@ -94,12 +100,16 @@ class Process {
   int stderr_fd_ = -1;
   int stdout_log_ = -1;
   int stderr_log_ = -1;
+  int meter_fd_ = -1;  // read end of raygate-meter's report, when metered
   std::chrono::steady_clock::time_point started_;
   std::optional<ProcessResult> early_result_;  // set when spawning failed
   bool reaped_ = false;
   int group_slot_ = -1;                   // in the table of live children (core/interrupt.h)
   std::unique_ptr<InterruptScope> scope_;  // a signal is acted on while the child lives
 };
+
+// Where raygate-meter is: beside the running executable. InfraError (exit 3) when it is not.
+std::filesystem::path meter_executable();
 
 // Starts, waits, returns the result.
 ProcessResult run_process(const ProcessSpec& spec);

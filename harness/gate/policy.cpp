@@ -11,7 +11,8 @@ namespace raygate {
 
 namespace {
 
-const std::vector<std::string> kSceneKeys = {"max_slowdown", "significance", "image", "reason"};
+const std::vector<std::string> kSceneKeys = {"max_slowdown", "max_memory_increase",
+                                             "significance", "image", "reason"};
 const std::vector<std::string> kImageKeys = {"fail", "failpercent", "hardfail", "warn"};
 
 double fraction(const JsonField& field, double low, double high) {
@@ -33,6 +34,9 @@ void read_image(const JsonField& field, ImageThresholds& image) {
 // Reads the keys a scene override and the defaults share into `policy`.
 void read_scene_keys(const JsonField& field, ScenePolicy& policy) {
   if (field.has("max_slowdown")) policy.max_slowdown = fraction(field.member("max_slowdown"), 0.0, 10.0);
+  if (field.has("max_memory_increase")) {
+    policy.max_memory_increase = fraction(field.member("max_memory_increase"), 0.0, 100.0);
+  }
   if (field.has("significance")) policy.significance = fraction(field.member("significance"), 0.0001, 0.5);
   if (field.has("image")) read_image(field.member("image"), policy.image);
 }
@@ -50,7 +54,7 @@ GatePolicy parse_policy(std::string_view text, const std::string& origin) {
   GatePolicy policy;
   try {
     const JsonField root(document, "$");
-    root.expect_object({"max_slowdown", "significance", "family_significance", "image",
+    root.expect_object({"max_slowdown", "max_memory_increase", "significance", "family_significance", "image",
                         "fail_on_inconclusive", "max_exponent_increase", "scenes"});
     read_scene_keys(root, policy.defaults);
     if (root.has("family_significance")) {
@@ -96,6 +100,8 @@ GatePolicy recorded_policy(const nlohmann::json& settings, std::string& note) {
   GatePolicy policy;
   policy.defaults.max_slowdown = settings.value("max_slowdown", policy.defaults.max_slowdown);
   policy.defaults.significance = settings.value("significance", policy.defaults.significance);
+  policy.defaults.max_memory_increase =
+      settings.value("max_memory_increase", policy.defaults.max_memory_increase);
   policy.max_exponent_increase =
       settings.value("max_exponent_increase", policy.max_exponent_increase);
   policy.family_significance =

@@ -13,11 +13,14 @@
 
 #include "compare/image_compare.h"
 #include "measure/family.h"
+#include "measure/memory_change.h"
 
 namespace raygate {
 
 struct ScenePolicy {
   double max_slowdown = 0.03;  // REGRESSED beyond +3% (and significant)
+  // Peak resident memory may grow this much from base to head (measure/memory_change.h).
+  double max_memory_increase = kDefaultMaxMemoryIncrease;
   // The reported ratios' CIs are at 1 - significance; in a compare it is also the chance per
   // scene that a change beyond max_slowdown is called UNCHANGED (docs/statistics.md §6).
   double significance = 0.05;

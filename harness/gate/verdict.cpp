@@ -7,6 +7,7 @@
 #include "core/exit_codes.h"
 #include "core/format.h"
 #include "gate/growth_gate.h"
+#include "gate/memory_gate.h"
 #include "measure/change.h"
 
 namespace raygate {
@@ -57,6 +58,20 @@ void judge_speed(const SceneResult& scene, const ScenePolicy& policy, bool fail_
   if (verdict == ChangeVerdict::inconclusive) {
     raise(gate, fail_on_inconclusive ? GateOutcome::fail : GateOutcome::warn,
           "inconclusive: " + numbers);
+  }
+}
+
+// Peak memory is judged beside speed: a scene may be as fast and still no longer fit its node.
+void judge_memory(const SceneResult& scene, const ScenePolicy& policy, bool fail_on_inconclusive,
+                  SceneGate& gate) {
+  const std::optional<MemoryJudgement> judged = judge_scene_memory(scene, policy);
+  if (!judged) return;
+  gate.memory = judged->verdict;
+  if (judged->verdict == ChangeVerdict::regressed) {
+    raise(gate, GateOutcome::fail, "more memory: " + describe_memory(*judged));
+  } else if (judged->verdict == ChangeVerdict::inconclusive) {
+    raise(gate, fail_on_inconclusive ? GateOutcome::fail : GateOutcome::warn,
+          "memory inconclusive: " + describe_memory(*judged));
   }
 }
 
@@ -144,6 +159,7 @@ GateResult evaluate_gate(const ResultsDocument& document, const GatePolicy& poli
       judge_failure(document, scene, gate);
     } else {
       judge_speed(scene, policy.for_scene(scene.entry.id), policy.fail_on_inconclusive, gate);
+      judge_memory(scene, policy.for_scene(scene.entry.id), policy.fail_on_inconclusive, gate);
     }
     judge_images(scene, gate, missing);
     result.scenes.push_back(std::move(gate));

@@ -25,6 +25,8 @@ struct SceneGate {
   std::string id;
   std::string speed;  // REGRESSED, IMPROVED, UNCHANGED, INCONCLUSIVE; MEASURED for a run; FAILED
   std::optional<ImageVerdict> image;  // the worst image verdict; nullopt when none was checked
+  // Peak memory head vs base (gate/memory_gate.h); nullopt for a run, or without own peaks.
+  std::optional<ChangeVerdict> memory;
   GateOutcome outcome = GateOutcome::pass;
   std::vector<std::string> reasons;  // for anything but pass: what, in numbers
 };

@@ -42,7 +42,7 @@ struct Bisector {
     if (!build.success) {
       io.progress.line(fmt::format("  {} {}: does not build ({}), skipped", candidate.short_sha,
                                    candidate.subject, build.failure));
-      return {candidate, BisectStep::skipped, "does not build: " + build.failure, {}, {}};
+      return {candidate, BisectStep::skipped, "does not build: " + build.failure, {}, {}, {}};
     }
     const std::string repository = request.repository.location();
     if (!good_built) {
@@ -59,7 +59,7 @@ struct Bisector {
                                    scene.runs.failed_run->failure));
       return {candidate, BisectStep::skipped,
               "could not be measured: " + scene.runs.failed_run->failure, scene.change,
-              scene.change_verdict};
+              scene.change_verdict, {}};
     }
     const bool bad =
         request.metric == BisectMetric::image ? image_failed(scene) : speed_regressed(scene);
@@ -75,7 +75,7 @@ struct Bisector {
       }
     }
     return {candidate, bad ? BisectStep::bad : BisectStep::good, {}, scene.change,
-            scene.change_verdict};
+            scene.change_verdict, scene.explanation};
   }
 
   bool speed_regressed(const SceneResult& scene) const {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "checkout/repository.h"
+#include "explain/explanation.h"
 #include "measure/change.h"
 #include "pipeline/measure_context.h"
 #include "pipeline/progress.h"
@@ -43,6 +44,9 @@ struct BisectStepRecord {
   std::string reason;                  // skipped: why
   std::optional<ChangeSummary> change;  // measured: head (the candidate) against the good end
   std::string verdict;                 // of that change
+  // Where that change's time went (sim mode, or --explain; explain/explanation.h), when the
+  // step REGRESSED: the culprit's is what bisect ends with.
+  std::optional<Explanation> explanation;
 };
 
 enum class BisectOutcome {

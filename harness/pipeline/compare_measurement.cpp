@@ -11,6 +11,7 @@
 #include "compare/noisy_image_check.h"
 #include "pipeline/compare_family.h"
 #include "pipeline/run_images.h"
+#include "pipeline/explain_stage.h"
 #include "pipeline/stopping.h"
 #include "runner/baseline_contender.h"
 #include "runner/tracer_contender.h"
@@ -103,6 +104,10 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
       context.shard ? context.shard->suite_scenes.size() : m.scenes.size();
   const double alpha = scene_decision_alpha(context.policy, family_size);
   if (const auto warning = round_budget_warning(context, alpha)) io.progress.line(*warning);
+  const BaselineContender baseline_runs =
+      baseline_contender(context, request.baseline.source_hash());
+  const TracerContender base_runs(base.setup);
+  const TracerContender head_runs(head.setup);
   SuiteBudget budget(context.stopping, m.scenes.size(), io.clock);
   m.stop = [&](const SuiteScene& scene) {
     const ScenePolicy& policy = context.policy.for_scene(scene.id);
@@ -125,12 +130,12 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
     if (std::string undecided = undecided_line(document, context.policy); !undecided.empty()) {
       lines.push_back(std::move(undecided));
     }
+    for (std::string& line :
+         explain_regressed_scenes(document, context, m, base_runs, head_runs, io.executor)) {
+      lines.push_back(std::move(line));
+    }
     return lines;
   };
-  const BaselineContender baseline_runs =
-      baseline_contender(context, request.baseline.source_hash());
-  const TracerContender base_runs(base.setup);
-  const TracerContender head_runs(head.setup);
   m.contenders = {&baseline_runs, &base_runs, &head_runs};
 
   ResultsDocument document = new_document("compare", context, request.baseline);

@@ -49,7 +49,8 @@ nlohmann::json measure_settings(const MeasureContext& c) {
       {"max_slowdown", c.policy.defaults.max_slowdown},
       {"significance", c.policy.defaults.significance},
       {"family_significance", c.policy.family_significance},
-      {"max_exponent_increase", c.policy.max_exponent_increase}};
+      {"max_exponent_increase", c.policy.max_exponent_increase},
+      {"max_memory_increase", c.policy.defaults.max_memory_increase}};
   if (c.shard) settings["shard"] = shard_to_json(*c.shard);
   return settings;
 }

@@ -36,6 +36,9 @@ struct MeasureContext {
   GatePolicy policy;
   int jobs = 0;  // parallel build jobs; 0 = every allowed CPU
   std::optional<Cachegrind> cachegrind;  // sim mode (docs/simulated-timing.md)
+  // compare --explain: profile each REGRESSED scene's base and head once under cachegrind
+  // (pipeline/explain_stage.h); sim mode explains from its own runs without it.
+  bool explain = false;
 };
 
 // Sim mode: every run counted under cachegrind (--timing sim or an adapter timed "simulated").

@@ -26,19 +26,6 @@ namespace raygate {
 
 namespace {
 
-SceneInput prepare_input(const SuiteScene& entry, const SuiteMeasurement& m) {
-  SceneInput input;
-  input.entry = entry;
-  input.nff = prepare_scene(entry, m.scene_cache);
-  input.files[SceneFormat::nff] = input.nff;
-  for (const SceneFormat format : m.formats) {
-    if (format != SceneFormat::nff) {
-      input.files[format] = prepare_converted_scene(input.nff, format, m.scene_cache);
-    }
-  }
-  return input;
-}
-
 void summarize_ratios(SceneResult& result, const SuiteMeasurement& m) {
   if (result.runs.rounds.empty()) return;
   for (const std::string& role : m.tracer_roles) {
@@ -160,7 +147,7 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Pipeli
 
     SceneResult result;
     result.entry = entry;
-    const SceneInput input = prepare_input(entry, m);
+    const SceneInput input = prepare_scene_input(entry, m);
     result.scene_sha256 = sha256_file_hex(input.nff);
     const RoundObserver observe = [&](const std::vector<Round>& rounds, double spent) {
       state.round = rounds.size();
@@ -190,6 +177,19 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Pipeli
 }
 
 }  // namespace
+
+SceneInput prepare_scene_input(const SuiteScene& entry, const SuiteMeasurement& m) {
+  SceneInput input;
+  input.entry = entry;
+  input.nff = prepare_scene(entry, m.scene_cache);
+  input.files[SceneFormat::nff] = input.nff;
+  for (const SceneFormat format : m.formats) {
+    if (format != SceneFormat::nff) {
+      input.files[format] = prepare_converted_scene(input.nff, format, m.scene_cache);
+    }
+  }
+  return input;
+}
 
 void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io) {
   // Within it a signal is not fatal at once: the running child's group is killed, the scenes

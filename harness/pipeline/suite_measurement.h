@@ -45,6 +45,9 @@ struct SuiteMeasurement {
   std::function<std::vector<std::string>(ResultsDocument&)> finish_suite;
 };
 
+// A scene's files as the contenders read them (generated into m.scene_cache if not there).
+SceneInput prepare_scene_input(const SuiteScene& entry, const SuiteMeasurement& m);
+
 // A new, empty directory <parent>/<stem>, or <stem>-2, -3, ... if that exists: two runs started
 // in the same second (shards of a CI matrix on one machine) never share run files or documents.
 std::filesystem::path fresh_run_dir(const std::filesystem::path& parent, const std::string& stem);

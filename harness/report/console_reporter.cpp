@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/sanitize.h"
+#include "report/memory_sections.h"
 #include "report/report_model.h"
 #include "report/reporters.h"
 
@@ -168,6 +169,7 @@ void ConsoleReporter::write(const ReportInput& input, std::ostream& out) const {
   Spans spans;
   add_header(input, spans);
   add_table(input, views, spans);
+  spans.push_back(plain(memory_console(input) + explanation_console(input)));  // issue 27
   add_footer(input, views, spans);
   render(spans, out);
 }

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include "report/html_parts.h"
+#include "report/memory_sections.h"
 #include "report/reporters.h"
 
 namespace raygate::report::html {
@@ -141,7 +142,8 @@ class HtmlReporter final : public Reporter {
         << "<header class=\"top card\"><div class=\"brand\">raygate <span>" << escape(d.kind)
         << " report</span></div><h1>" << escape(title) << "</h1>" << banner(input, views)
         << meta_list(input) << "</header>\n"
-        << overview(input, views) << '\n' << scaling_section(d) << '\n';
+        << overview(input, views) << '\n' << scaling_section(d) << '\n'
+        << memory_html(input) << explanation_html(input) << '\n';  // issue 27
     for (const SceneView& view : views) out << scene_section(input, view) << '\n';
     out << "<footer>raygate " << escape(d.raygate_version)
         << " · normalized ratio = time(tracer) / time(baseline), median of paired rounds with a "

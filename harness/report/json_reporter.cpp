@@ -3,6 +3,7 @@
 // Numbers that have no JSON form (an infinite PSNR) are written as null.
 #include <cmath>
 
+#include "report/memory_sections.h"
 #include "report/report_model.h"
 #include "report/reporters.h"
 #include "results/json_number.h"
@@ -96,6 +97,7 @@ json policy_json(const GatePolicy& policy) {
   return {{"file", policy.file.string()},
           {"max_slowdown", d.max_slowdown},
           {"significance", d.significance},
+          {"max_memory_increase", d.max_memory_increase},
           {"fail_on_inconclusive", policy.fail_on_inconclusive},
           {"image", {{"fail_threshold", d.image.fail_threshold},
                      {"fail_percent", d.image.fail_percent},
@@ -110,7 +112,12 @@ class JsonReporter final : public Reporter {
     const std::vector<SceneView> views = scene_views(input);
     const Headline line = headline(input, views);
     json scenes = json::array();
-    for (const SceneView& view : views) scenes.push_back(scene_json(view));
+    for (const SceneView& view : views) {
+      scenes.push_back(scene_json(view));
+      // Issue 27: peak memory, and where a regressed scene's time went.
+      scenes.back()["memory"] = memory_json(input, *view.result);
+      if (view.result->explanation) scenes.back()["explanation"] = *view.result->explanation;
+    }
     const auto suite = suite_change(d);
     json report = {{"raygate_report", 1},
                    {"kind", d.kind},

@@ -7,6 +7,7 @@
 #include <cctype>
 
 #include "core/sanitize.h"
+#include "report/memory_sections.h"
 #include "report/report_model.h"
 #include "report/reporters.h"
 #include "scaling/scaling_json.h"
@@ -143,6 +144,7 @@ std::string MarkdownReporter::compose(const ReportInput& input,
                         views.size() - shown);
   }
   if (!reasons.empty()) text.append("\n").append(reasons);
+  text += memory_markdown(input) + explanation_markdown(input);  // issue 27
   // Said once for the document, however many scenes share them (a tracer without goldens).
   std::string notes;
   for (const std::string& problem : input.gate.problems) {

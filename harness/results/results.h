@@ -15,6 +15,7 @@
 #include "builder/build_record.h"
 #include "checkout/worktree.h"
 #include "compare/image_check.h"
+#include "explain/explanation.h"
 #include "measure/change.h"
 #include "measure/ratio.h"
 #include "runner/scheduler.h"
@@ -57,6 +58,8 @@ struct SceneResult {
   std::optional<ChangeSummary> change;        // compare: head against base
   std::string change_verdict;                 // compare: to_string(ChangeVerdict)
   std::vector<ImageCheck> images;
+  // compare: where a REGRESSED scene's time went, by function (explain/explanation.h).
+  std::optional<Explanation> explanation;
 
   const RatioSummary* ratio(const std::string& role) const;
 };

@@ -254,6 +254,7 @@ void to_json(json& j, const SceneResult& s) {
     j["change"] = *s.change;
     j["change"]["verdict"] = s.change_verdict;
   }
+  if (s.explanation) j["explanation"] = *s.explanation;  // only when there is one (issue 27)
 }
 void from_json(const json& j, SceneResult& s) {
   s.entry = j.at("scene").get<SuiteScene>();
@@ -276,6 +277,9 @@ void from_json(const json& j, SceneResult& s) {
     s.change_verdict = change.at("verdict").get<std::string>();
   }
   s.images = j.at("images").get<std::vector<ImageCheck>>();
+  if (const auto found = j.find("explanation"); found != j.end()) {
+    s.explanation = found->get<Explanation>();
+  }
 }
 
 void to_json(json& j, const RevisionRecord& r) {

@@ -16,6 +16,9 @@ void to_json(nlohmann::json& json, const RunRecord& run) {
   if (run.reported_seconds) json["reported_seconds"] = *run.reported_seconds;
   if (!run.failure.empty()) json["failure"] = run.failure;
   if (run.simulated) json["cachegrind"] = *run.simulated;
+  // Written only when true, so a document from before raygate-meter reads back and hashes the
+  // same (the store's duplicate check compares canonical JSON).
+  if (run.max_rss_own) json["max_rss_own"] = true;
 }
 
 void from_json(const nlohmann::json& json, RunRecord& run) {
@@ -27,6 +30,7 @@ void from_json(const nlohmann::json& json, RunRecord& run) {
   run.user_seconds = json.at("user_seconds").get<double>();
   run.system_seconds = json.at("system_seconds").get<double>();
   run.max_rss_kib = json.at("max_rss_kib").get<long>();
+  run.max_rss_own = json.value("max_rss_own", false);  // absent in documents from before it
   const nlohmann::json& reported = json.at("reported_seconds");
   run.reported_seconds =
       reported.is_null() ? std::nullopt : std::optional<double>(reported.get<double>());

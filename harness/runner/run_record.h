@@ -21,7 +21,10 @@ struct RunRecord {
   double wall_seconds = 0.0;
   double user_seconds = 0.0;
   double system_seconds = 0.0;
-  long max_rss_kib = 0;
+  long max_rss_kib = 0;  // peak resident memory (wait4's ru_maxrss)
+  // Whether max_rss_kib is the contender's own (started through raygate-meter). Documents older
+  // than that hold raygate's peak seen through fork: memory is judged only on own peaks.
+  bool max_rss_own = false;
   // The contender's own account of its time, when it gives one: the baseline's parse + prepare +
   // render seconds from --stats, or a tracer's time parsed with the adapter's regex.
   std::optional<double> reported_seconds;

@@ -59,6 +59,7 @@ class RunLauncher {
     if (std::optional<RunRecord> known = contender.known_run(scene_)) return *known;
     const std::filesystem::path dir = prepare(contender, label);
     ProcessSpec spec = contender.command(scene_, dir);
+    spec.metered = true;  // the run's peak memory is the contender's own, not raygate's
     if (!cpus.empty()) spec.cpu_affinity = cpus;
     return require_positive_time(contender.interpret(scene_, executor_.run(spec), spec, dir),
                                  contender.role());
@@ -73,6 +74,7 @@ class RunLauncher {
       dirs.push_back(prepare(*contenders[i], label));
       specs.push_back(contenders[i]->command(scene_, dirs.back()));
       specs.back().cpu_affinity = {cpus[i]};
+      specs.back().metered = true;
     }
     const std::vector<ProcessResult> results = executor_.run_together(specs);
     std::vector<RunRecord> records;

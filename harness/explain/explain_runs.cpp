@@ -1,0 +1,97 @@
+#include "explain/explain_runs.h"
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+#include "core/error.h"
+
+namespace raygate {
+namespace {
+
+const RunRecord* round_run(const Round& round, const std::string& role) {
+  const auto found = round.runs.find(role);
+  return found == round.runs.end() ? nullptr : &found->second;
+}
+
+// A run's directory is where its log is (runner/tracer_contender.cpp: <run dir>/log.txt).
+std::filesystem::path profile_dir(const RunRecord& run) {
+  return cachegrind_dir(run.log.parent_path());
+}
+
+double median_wall(const SceneRuns& runs, const std::string& role) {
+  std::vector<double> walls;
+  for (const Round& round : runs.rounds) {
+    if (const RunRecord* run = round_run(round, role); run != nullptr) {
+      walls.push_back(run->wall_seconds);
+    }
+  }
+  if (walls.empty()) return 0.0;
+  std::sort(walls.begin(), walls.end());
+  const std::size_t n = walls.size();
+  return n % 2 == 1 ? walls[n / 2] : 0.5 * (walls[n / 2 - 1] + walls[n / 2]);
+}
+
+// One run of `contender` under cachegrind, its profile read back.
+FunctionProfile profile_once(const SceneInput& scene, const Contender& contender,
+                             const Cachegrind& cachegrind, const std::filesystem::path& run_dir,
+                             Executor& executor) {
+  std::filesystem::remove_all(run_dir);
+  std::filesystem::create_directories(run_dir);
+  ProcessSpec spec =
+      under_cachegrind(contender.command(scene, run_dir), cachegrind, cachegrind_dir(run_dir));
+  // Valgrind runs a program some 30-100x slower than natively.
+  if (spec.timeout.count() > 0) spec.timeout *= 100;
+  const ProcessResult result = executor.run(spec);
+  if (!result.succeeded()) {
+    throw InfraError("--explain: " + contender.role() + " under cachegrind " + result.describe() +
+                     " (log: " + spec.stdout_path.string() + ")");
+  }
+  return read_function_profiles(cachegrind_dir(run_dir));
+}
+
+}  // namespace
+
+std::string profiler_name(const Cachegrind& cachegrind) {
+  return (cachegrind.version.empty() ? std::string("valgrind") : cachegrind.version) +
+         " cachegrind, self cost";
+}
+
+std::optional<Explanation> explain_simulated_runs(const SceneRuns& runs,
+                                                  const Cachegrind& cachegrind) {
+  for (const Round& round : runs.rounds) {
+    const RunRecord* base = round_run(round, "base");
+    const RunRecord* head = round_run(round, "head");
+    if (base == nullptr || head == nullptr || !base->ok || !head->ok) continue;
+    Explanation e = explain_change(read_function_profiles(profile_dir(*base)),
+                                   read_function_profiles(profile_dir(*head)));
+    e.source = ExplainSource::simulated_runs;
+    e.profiler = profiler_name(cachegrind);
+    return e;
+  }
+  return std::nullopt;
+}
+
+Explanation explain_by_profiling(const SceneInput& scene, const Contender& base,
+                                 const Contender& head, const Cachegrind& cachegrind,
+                                 const std::filesystem::path& dir, Executor& executor,
+                                 double native_seconds) {
+  const auto started = std::chrono::steady_clock::now();
+  const FunctionProfile base_profile =
+      profile_once(scene, base, cachegrind, dir / "base", executor);
+  const FunctionProfile head_profile =
+      profile_once(scene, head, cachegrind, dir / "head", executor);
+  Explanation e = explain_change(base_profile, head_profile);
+  e.source = ExplainSource::explain_runs;
+  e.profiler = profiler_name(cachegrind);
+  e.profile_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  e.native_seconds = native_seconds;
+  return e;
+}
+
+double native_pair_seconds(const SceneRuns& runs) {
+  return median_wall(runs, "base") + median_wall(runs, "head");
+}
+
+}  // namespace raygate

@@ -1,0 +1,239 @@
+#include "report/memory_sections.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "core/format.h"
+#include "core/sanitize.h"
+#include "gate/memory_gate.h"
+#include "report/html_parts.h"
+
+namespace raygate::report {
+namespace {
+
+struct MemoryRow {
+  std::string scene;
+  std::string peak;     // "8.1 MiB -> 58.3 MiB" (compare) or "8.1 MiB" (run)
+  std::string change;   // "+50.2 MiB (+620%)"; "" for a run
+  std::string verdict;  // REGRESSED ...; "" for a run
+};
+
+std::string delta_text(const MemorySummary& s) {
+  const std::string sign = s.delta_kib < 0.0 ? "-" : "+";
+  return fmt::format("{}{} ({})", sign, memory_text(std::abs(s.delta_kib)),
+                     signed_percent(s.change));
+}
+
+std::vector<MemoryRow> memory_rows(const ReportInput& input) {
+  const ResultsDocument& d = input.document;
+  std::vector<MemoryRow> rows;
+  for (const SceneResult& scene : d.scenes) {
+    const std::string& id = scene.entry.id;
+    if (d.kind == "compare") {
+      const auto judged = judge_scene_memory(scene, input.policy.for_scene(id));
+      if (!judged) continue;
+      rows.push_back(
+          {id,
+           memory_text(judged->summary.base_kib) + " -> " + memory_text(judged->summary.head_kib),
+           delta_text(judged->summary), std::string(to_string(judged->verdict))});
+    } else if (const auto peak = median_peak_kib(scene.runs, "tracer")) {
+      rows.push_back({id, memory_text(*peak), "", ""});
+    }
+  }
+  return rows;
+}
+
+std::string limit_note(const ReportInput& input) {
+  if (input.document.kind != "compare") return "median over the rounds";
+  return fmt::format("median of each side; limit {} (changes under max(1 MiB, 2%) not judged)",
+                     signed_percent(input.policy.defaults.max_memory_increase, 0));
+}
+
+std::vector<const SceneResult*> explained_scenes(const ReportInput& input) {
+  std::vector<const SceneResult*> out;
+  for (const SceneResult& scene : input.document.scenes) {
+    if (scene.explanation) out.push_back(&scene);
+  }
+  return out;
+}
+
+// Aligned columns of plain text (console and Markdown code blocks).
+std::string aligned(const std::vector<std::vector<std::string>>& rows, const std::string& indent) {
+  std::vector<std::size_t> widths;
+  for (const auto& row : rows) {
+    widths.resize(std::max(widths.size(), row.size()));
+    for (std::size_t i = 0; i < row.size(); ++i) widths[i] = std::max(widths[i], row[i].size());
+  }
+  std::string text;
+  for (const auto& row : rows) {
+    std::string line = indent;
+    for (std::size_t i = 0; i < row.size(); ++i) {
+      line += i + 1 == row.size() ? row[i] : fmt::format("{:<{}}  ", row[i], widths[i]);
+    }
+    line.erase(line.find_last_not_of(' ') + 1);
+    text += line + "\n";
+  }
+  return text;
+}
+
+std::string memory_table_text(const std::vector<MemoryRow>& rows, bool compare) {
+  std::vector<std::vector<std::string>> cells;
+  cells.push_back(compare
+                      ? std::vector<std::string>{"scene", "peak base -> head", "change", "memory"}
+                      : std::vector<std::string>{"scene", "peak"});
+  for (const MemoryRow& r : rows) {
+    cells.push_back(compare ? std::vector<std::string>{r.scene, r.peak, r.change, r.verdict}
+                            : std::vector<std::string>{r.scene, r.peak});
+  }
+  return aligned(cells, "  ");
+}
+
+std::vector<std::vector<std::string>> function_cells(const Explanation& e, std::size_t top) {
+  std::vector<std::vector<std::string>> cells{
+      {"change (cycles)", "share", "instructions base -> head", "function"}};
+  for (std::size_t i = 0; i < e.functions.size() && i < top; ++i) {
+    const FunctionChange& f = e.functions[i];
+    cells.push_back(
+        {fmt::format("{}{}", f.delta_cycles() >= 0.0 ? "+" : "", count_text(f.delta_cycles())),
+         signed_percent(share_of_change(e, f), 0),
+         count_text(static_cast<double>(f.base_instructions)) + " -> " +
+             count_text(static_cast<double>(f.head_instructions)),
+         f.name});
+  }
+  return cells;
+}
+
+std::string cost_note(const Explanation& e) {
+  if (e.source == ExplainSource::simulated_runs) {
+    return "from the sim runs' own cachegrind files (no extra runs)";
+  }
+  if (e.native_seconds <= 0.0) return fmt::format("profiling took {:.1f} s", e.profile_seconds);
+  return fmt::format(
+      "profiling took {:.1f} s for one base and one head run, {:.0f}x their "
+      "{:.2f} s measured",
+      e.profile_seconds, e.profile_seconds / e.native_seconds, e.native_seconds);
+}
+
+std::string explanation_heading(const SceneResult& scene, const Explanation& e) {
+  return fmt::format(
+      "{}: where the time went ({}; estimated cycles {} -> {}, {}; {})", scene.entry.id, e.profiler,
+      count_text(e.base_cycles), count_text(e.head_cycles),
+      signed_percent(e.base_cycles > 0.0 ? e.head_cycles / e.base_cycles - 1.0 : 0.0),
+      cost_note(e));
+}
+
+// Inside a Markdown code block only a backtick run could end it.
+std::string code_safe(std::string text) {
+  std::replace(text.begin(), text.end(), '`', '\'');
+  return markup_text(text);
+}
+
+}  // namespace
+
+std::string memory_console(const ReportInput& input) {
+  const std::vector<MemoryRow> rows = memory_rows(input);
+  if (rows.empty()) return "";
+  return fmt::format("\nmemory (peak resident, the tracer's own; {}):\n{}", limit_note(input),
+                     memory_table_text(rows, input.document.kind == "compare"));
+}
+
+std::string explanation_console(const ReportInput& input) {
+  std::string text;
+  for (const SceneResult* scene : explained_scenes(input)) {
+    text += fmt::format("\n{}:\n{}", explanation_heading(*scene, *scene->explanation),
+                        aligned(function_cells(*scene->explanation, kConsoleExplained), "  "));
+  }
+  return text;
+}
+
+std::string memory_markdown(const ReportInput& input) {
+  const std::vector<MemoryRow> rows = memory_rows(input);
+  if (rows.empty()) return "";
+  return fmt::format("\n**Memory** (peak resident, the tracer's own; {})\n\n```\n{}```\n",
+                     limit_note(input),
+                     code_safe(memory_table_text(rows, input.document.kind == "compare")));
+}
+
+std::string explanation_markdown(const ReportInput& input) {
+  std::string text;
+  for (const SceneResult* scene : explained_scenes(input)) {
+    text += fmt::format(
+        "\n**{}**\n\n```\n{}```\n", code_safe(explanation_heading(*scene, *scene->explanation)),
+        code_safe(aligned(function_cells(*scene->explanation, kMarkdownExplained), "")));
+  }
+  return text;
+}
+
+std::string memory_html(const ReportInput& input) {
+  using html::escape;
+  const std::vector<MemoryRow> rows = memory_rows(input);
+  if (rows.empty()) return "";
+  const bool compare = input.document.kind == "compare";
+  std::string out = fmt::format(
+      "<section class=\"card memory\"><h2>Memory</h2><p>Peak resident memory, the tracer's own; "
+      "{}.</p><table><thead><tr><th>scene</th><th>{}</th>{}</tr></thead><tbody>",
+      escape(limit_note(input)), compare ? "peak base → head" : "peak",
+      compare ? "<th>change</th><th>memory</th>" : "");
+  for (const MemoryRow& r : rows) {
+    out += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td>", escape(r.scene), escape(r.peak));
+    if (compare) {
+      // The same tag as the scene table's speed column, so the two read alike.
+      out +=
+          fmt::format("<td class=\"num\">{0}</td><td><span class=\"tag speed-{1}\">{1}</span></td>",
+                      escape(r.change), escape(r.verdict));
+    }
+    out += "</tr>";
+  }
+  return out + "</tbody></table></section>";
+}
+
+std::string explanation_html(const ReportInput& input) {
+  using html::escape;
+  std::string out;
+  for (const SceneResult* scene : explained_scenes(input)) {
+    const Explanation& e = *scene->explanation;
+    out += fmt::format(
+        "<section class=\"card explain\"><h2>Where the time went: {}</h2><p>{}</p>"
+        "<table><thead><tr><th>change (cycles)</th><th>share</th><th>cycles base"
+        " → head</th><th>instructions base → head</th><th>function</th></tr>"
+        "</thead><tbody>",
+        escape(scene->entry.id), escape(explanation_heading(*scene, e)));
+    for (const FunctionChange& f : e.functions) {
+      out += fmt::format(
+          "<tr><td class=\"num\">{}{}</td><td class=\"num\">{}</td><td class=\"num\">{} → {}</td>"
+          "<td class=\"num\">{} → {}</td><td><code>{}</code>{}</td></tr>",
+          f.delta_cycles() >= 0.0 ? "+" : "", escape(count_text(f.delta_cycles())),
+          escape(signed_percent(share_of_change(e, f), 0)), escape(count_text(f.base_cycles)),
+          escape(count_text(f.head_cycles)),
+          escape(count_text(static_cast<double>(f.base_instructions))),
+          escape(count_text(static_cast<double>(f.head_instructions))), escape(f.name),
+          // "???": cachegrind knew no source file (no debug information).
+          f.file.empty() || f.file == "???" ? "" : "<br><small>" + escape(f.file) + "</small>");
+    }
+    out += "</tbody></table></section>";
+  }
+  return out;
+}
+
+nlohmann::json memory_json(const ReportInput& input, const SceneResult& scene) {
+  const ResultsDocument& d = input.document;
+  if (d.kind != "compare") {
+    const auto peak = median_peak_kib(scene.runs, "tracer");
+    return peak ? nlohmann::json{{"peak_kib", *peak}} : nlohmann::json(nullptr);
+  }
+  const auto judged = judge_scene_memory(scene, input.policy.for_scene(scene.entry.id));
+  if (!judged) return nullptr;
+  const MemorySummary& s = judged->summary;
+  return {{"base_peak_kib", s.base_kib},
+          {"head_peak_kib", s.head_kib},
+          {"delta_kib", s.delta_kib},
+          {"change", s.change},
+          {"noise_kib", s.noise_kib()},
+          {"limit", judged->limit},
+          {"verdict", std::string(to_string(judged->verdict))}};
+}
+
+}  // namespace raygate::report

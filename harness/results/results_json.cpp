@@ -2,6 +2,7 @@
 // (docs/results-format.md); change them only with a schema_version bump and a migration.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -9,8 +10,10 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "adapter/json_field.h"
 #include "core/json_reader.h"
 #include "results/json_number.h"
+#include "results/results_check.h"
 #include "results/results.h"
 #include "results/shard.h"
 
@@ -345,12 +348,18 @@ nlohmann::json to_json(const ResultsDocument& d) {
 
 ResultsDocument results_from_json(const nlohmann::json& j, const std::string& origin) {
   try {
-    const int version = j.at("schema_version").get<int>();
+    if (!j.is_object()) throw FieldError("$", "expected an object, found " + describe_json(j));
+    const JsonField field = JsonField(j, "$").member("schema_version");
+    const long long version_number = field.as_integer();
+    if (version_number < 1) field.fail("expected 1 or more, found " + describe_json(field.value()));
+    const int version = static_cast<int>(std::min<long long>(version_number, 1'000'000));
     if (version > kResultsSchemaVersion) {
       throw UsageError(fmt::format("{}: results schema_version {} is newer than this raygate "
                                    "reads ({}); upgrade raygate",
                                    origin, version, kResultsSchemaVersion));
     }
+    // Every field checked before any is taken, so what follows cannot meet a wrong type.
+    check_results_json(j);
     ResultsDocument d;
     d.schema_version = version;
     d.kind = j.at("kind").get<std::string>();
@@ -369,6 +378,8 @@ ResultsDocument results_from_json(const nlohmann::json& j, const std::string& or
     d.scores = j.at("scores").get<std::map<std::string, SuiteScore>>();
     d.scaling = j.value("scaling", json());
     return d;
+  } catch (const FieldError& e) {
+    throw UsageError(origin + ": " + e.path() + ": " + e.what());
   } catch (const nlohmann::json::exception& e) {
     throw UsageError(origin + ": not a raygate results document: " + e.what());
   } catch (const std::invalid_argument& e) {  // a field of a known name with an unknown value

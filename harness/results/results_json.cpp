@@ -346,13 +346,27 @@ nlohmann::json to_json(const ResultsDocument& d) {
   return j;
 }
 
-ResultsDocument results_from_json(const nlohmann::json& j, const std::string& origin) {
+namespace {
+
+// The schema_version a document says it has; a file without one is not a results document at all
+// (a suite, a policy, a report's JSON given by mistake), which the message says first.
+int schema_version_of(const nlohmann::json& j, const std::string& origin) {
   try {
     if (!j.is_object()) throw FieldError("$", "expected an object, found " + describe_json(j));
     const JsonField field = JsonField(j, "$").member("schema_version");
-    const long long version_number = field.as_integer();
-    if (version_number < 1) field.fail("expected 1 or more, found " + describe_json(field.value()));
-    const int version = static_cast<int>(std::min<long long>(version_number, 1'000'000));
+    const long long version = field.as_integer();
+    if (version < 1) field.fail("expected 1 or more, found " + describe_json(field.value()));
+    return static_cast<int>(std::min<long long>(version, 1'000'000));
+  } catch (const FieldError& e) {
+    throw UsageError(origin + ": not a raygate results document: " + e.path() + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+ResultsDocument results_from_json(const nlohmann::json& j, const std::string& origin) {
+  try {
+    const int version = schema_version_of(j, origin);
     if (version > kResultsSchemaVersion) {
       throw UsageError(fmt::format("{}: results schema_version {} is newer than this raygate "
                                    "reads ({}); upgrade raygate",

@@ -83,6 +83,23 @@ def suite_seeds():
         {"scenes": [{"id": "a", "scene": "balls"}, {"id": "a", "scene": "gears"}]}))
     write("suite", "bad-size.json", json.dumps({"scenes": [{"scene": "balls", "size": 0}]}))
     write("suite", "bad-id.json", json.dumps({"scenes": [{"id": "../x", "scene": "balls"}]}))
+    more = {
+        "all-scenes": {"name": "all", "scenes": [{"scene": n} for n in
+                       ["balls", "gears", "mount", "rings", "teapot", "tetra", "tree",
+                        "lattice", "shells", "jacks", "sombrero", "sample", "nurbtst"]]},
+        "desc": {"name": "d", "description": "x", "scenes": [{"scene": "tree", "size": 3}]},
+        "bad-sampling": {"sampling": "random", "scenes": [{"scene": "balls"}]},
+        "unknown-scene": {"scenes": [{"scene": "ballz"}]},
+        "unknown-key": {"scenes": [{"scene": "balls", "colour": 1}]},
+        "res-float": {"scenes": [{"scene": "balls", "resolution": [1.5, 2]}]},
+        "res-three": {"scenes": [{"scene": "balls", "resolution": [1, 2, 3]}]},
+        "empty-scenes": {"scenes": []},
+        "name-path": {"name": "../up", "scenes": [{"scene": "balls"}]},
+        "size-max": {"scenes": [{"scene": "teapot", "size": 99}]},
+        "id-number": {"scenes": [{"scene": "balls", "id": 7}]},
+    }
+    for name, doc in more.items():
+        write("suite", name + ".json", json.dumps(doc))
     write("suite", "huge-res.json",
           json.dumps({"scenes": [{"scene": "balls", "resolution": [99999999999, 1]}]}))
 
@@ -104,6 +121,24 @@ def policy_seeds():
     write("policy", "big.json", '{"max_slowdown": 1e400}')
     write("policy", "scene-typo.json", '{"scenes": {"x": {"max_slowdow": 1}}}')
     write("policy", "array.json", "[1, 2, 3]")
+    more = {
+        "family": {"family_significance": 0.001},
+        "inconclusive": {"fail_on_inconclusive": True},
+        "exponent": {"max_exponent_increase": 0.5},
+        "image-only": {"image": {"fail": 0.1, "warn": 0.01}},
+        "hardfail": {"image": {"hardfail": 2.0, "failpercent": 100}},
+        "scene-reason": {"scenes": {"balls": {"max_slowdown": 0.2, "reason": "why"}}},
+        "scene-empty-reason": {"scenes": {"balls": {"max_slowdown": 0.2, "reason": ""}}},
+        "scene-image": {"scenes": {"tree": {"image": {"warn": 0.5}, "reason": "leaves"}}},
+        "scene-significance": {"scenes": {"tree": {"significance": 0.2, "reason": "r"}}},
+        "tiny-significance": {"significance": 0.00001},
+        "string-number": {"max_slowdown": "0.03"},
+        "nested-wrong": {"image": [0.1]},
+        "unknown": {"colour": "red"},
+        "scenes-array": {"scenes": ["balls"]},
+    }
+    for name, doc in more.items():
+        write("policy", name + ".json", json.dumps(doc))
 
 
 def run_record(seconds):
@@ -189,7 +224,7 @@ def document(kind):
 
 def results_seeds():
     for kind in ("run", "compare"):
-        write("results", kind + ".json", json.dumps(document(kind), indent=1))
+        write("results", kind + ".json", json.dumps(document(kind), indent=1))  # one readable pair
     breakers = {
         "kind": lambda d: d.update(kind="weird"),
         "status": lambda d: d["scenes"][0].update(status="exploded"),
@@ -204,11 +239,26 @@ def results_seeds():
                         ["Ir", "I1mr", "ILmr", "Dr", "D1mr", "DLmr", "Dw", "D1mw", "DLmw"]}),
         "schema": lambda d: d.update(schema_version=99),
         "shard": lambda d: d["settings"].update(shard={"index": 1, "count": 2}),
+        "p-value": lambda d: d["scenes"][0]["change"]["mann_whitney"].update(p_value=2),
+        "interval": lambda d: d["scenes"][0]["ratios"]["head"].update(
+            ratio_interval={"lower": 2, "upper": 1}),
+        "role": lambda d: d["revisions"][0].update(role="mallory"),
+        "old-change": lambda d: [d["scenes"][0]["change"].pop(k) for k in
+                                 ["interval_kind", "equivalence_interval",
+                                  "equivalence_confidence", "one_look_interval",
+                                  "one_look_confidence", "confidence"]],
+        "partial": lambda d: d["scenes"][0].update(partial_round={"base": run_record(1.0)}),
+        "warmup": lambda d: d["scenes"][0].update(warmup={"base": [run_record(1.0)]}),
+        "nonfinite": lambda d: d["scenes"][0]["images"][0]["metrics"].update(
+            psnr_db=None, mean_error=None),
+        "scaling": lambda d: d.update(scaling={"families": []}),
+        "empty-scenes": lambda d: d.update(scenes=[], scores={}),
+        "incomplete": lambda d: d.update(complete=False, finished_at=""),
     }
     for name, breaker in breakers.items():
         doc = document("compare")
         breaker(doc)
-        write("results", name + ".json", json.dumps(doc, indent=1))
+        write("results", name + ".json", json.dumps(doc, separators=(",", ":")))
     write("results", "big.json", '{"schema_version": 1, "kind": 1e400}')
 
 
@@ -227,6 +277,18 @@ def project_config_seeds():
         "equals": "repo==x\n",
         "unicode": 'repo = "d\u00e9p\u00f4t"\n',
         "empty": "",
+        "policy-missing": 'policy = "missing.json"\n',
+        "absolute": 'store = "/tmp/results.db"\nrepo = "/tmp/repo"\n',
+        "dotdot": 'adapter = "../../x.json"\nsuite = "../"\n',
+        "git-url": 'repo = "git@github.com:a/b.git"\n',
+        "crlf": 'repo = "x"\r\nsuite = "ci"\r\n',
+        "bare": "repo\n",
+        "number": "repo = 5\n",
+        "bool": "store = true\n",
+        "inline-table": 'repo = {a = 1}\n',
+        "escapes": 'repo = "a\\tb\\u0000c"\n',
+        "duplicate": 'repo = "a"\nrepo = "b"\n',
+        "section-dotted": "[a.b]\nrepo = 1\n",
     }
     for name, text in texts.items():
         write("project_config", name + ".toml", text)

@@ -99,8 +99,11 @@ const std::vector<BadDocument>& bad_documents() {
       {"negative run seconds", false,
        [](json& j) { j["scenes"][0]["rounds"][0]["runs"]["tracer"]["seconds"] = -1.0; },
        "$.scenes[0].rounds[0].runs.tracer.seconds", "out of range"},
-      {"run seconds of a century", false,
-       [](json& j) { j["scenes"][0]["rounds"][0]["runs"]["baseline"]["seconds"] = 3.2e9; },
+      {"wall seconds of a century", false,
+       [](json& j) { j["scenes"][0]["rounds"][0]["runs"]["baseline"]["wall_seconds"] = 3.2e9; },
+       "$.scenes[0].rounds[0].runs.baseline.wall_seconds", "out of range"},
+      {"a measure past any count of cycles", false,
+       [](json& j) { j["scenes"][0]["rounds"][0]["runs"]["baseline"]["seconds"] = 1e30; },
        "$.scenes[0].rounds[0].runs.baseline.seconds", "out of range"},
       {"run seconds not a number", false,
        [](json& j) { j["scenes"][0]["rounds"][0]["runs"]["tracer"]["seconds"] = "fast"; },
@@ -179,6 +182,11 @@ const std::vector<BadDocument>& bad_documents() {
 
 TEST(ResultsCheck, ValidRunAndCompareDocumentsAreRead) {
   EXPECT_EQ(results_from_json(run_document(), "run.json").scenes.size(), 2u);
+  // --timing sim: a run's seconds hold estimated cycles, billions of them.
+  json sim = run_document();
+  sim["scenes"][0]["rounds"][0]["runs"]["tracer"]["seconds"] = 4.2e10;
+  sim["scenes"][0]["ratios"]["tracer"]["tracer_median_seconds"] = 4.2e10;
+  EXPECT_EQ(results_from_json(sim, "sim.json").scenes.size(), 2u);
   const ResultsDocument compare = results_from_json(compare_document(), "compare.json");
   ASSERT_TRUE(compare.scenes[0].change.has_value());
   EXPECT_EQ(compare.scenes[0].change_verdict, "UNCHANGED");

@@ -22,8 +22,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // A second count of a week; no run, scene or build of a CI harness lasts longer, and a larger
 // number in a document is a forgery or a corruption that would skew every sum it enters.
 constexpr double kMaxSeconds = 7.0 * 24 * 3600;
-// The measure a ratio divides: seconds, or under --timing sim estimated cycles (runner/cachegrind.h),
-// which for a week of runs at 5 GHz reach 3e15.
+// The measure a ratio divides: seconds, or under --timing sim estimated cycles
+// (runner/cachegrind.h), which for a week of runs at 5 GHz reach 3e15.
 constexpr double kMaxMeasure = 1e18;
 constexpr std::int64_t kMaxCount = std::int64_t{1} << 40;
 constexpr std::int64_t kMaxSide = 1 << 20;  // pixels: past any image a tracer writes
@@ -32,12 +32,16 @@ constexpr double kMaxLog = 50.0;             // |ln ratio|: a factor of 5e21
 // Typed access over adapter/json_field.h's path-carrying reader, with the ranges a measured
 // document's numbers must be in.
 const JsonField& object(const JsonField& field) {
-  if (!field.value().is_object()) field.fail("expected an object, found " + describe_json(field.value()));
+  if (!field.value().is_object()) {
+    field.fail("expected an object, found " + describe_json(field.value()));
+  }
   return field;
 }
 
 const JsonField& array(const JsonField& field) {
-  if (!field.value().is_array()) field.fail("expected an array, found " + describe_json(field.value()));
+  if (!field.value().is_array()) {
+    field.fail("expected an array, found " + describe_json(field.value()));
+  }
   return field;
 }
 

@@ -74,7 +74,9 @@ class Mutator {
   }
 
  private:
-  std::size_t pick(std::size_t n) { return n == 0 ? 0 : std::uniform_int_distribution<std::size_t>(0, n - 1)(random_); }
+  std::size_t pick(std::size_t n) {
+    return n == 0 ? 0 : std::uniform_int_distribution<std::size_t>(0, n - 1)(random_);
+  }
 
   void mutate(std::string& s) {
     const std::size_t at = pick(s.size() + 1);

@@ -1,6 +1,5 @@
 // Fuzz target: the NFF reader (baseline/nff) on any bytes. A malformed scene is a ParseError with
-// its line and column; nothing else may escape, and a scene it accepts must make a camera or be
-// refused as a SceneError, never crash the tracer's setup.
+// its line and column; nothing else may escape.
 #include <cstddef>
 #include <cstdint>
 
@@ -9,7 +8,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
-    const raygate::nff::Scene scene = raygate::nff::parse_nff(raygate::fuzz::as_text(data, size), "fuzz.nff");
+    const raygate::nff::Scene scene =
+        raygate::nff::parse_nff(raygate::fuzz::as_text(data, size), "fuzz.nff");
     static_cast<void>(scene.primitive_count());
   } catch (const raygate::nff::ParseError&) {
   }

@@ -9,7 +9,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   try {
-    static_cast<void>(raygate::parse_policy(raygate::fuzz::as_text(data, size), "fuzz-policy.json"));
+    static_cast<void>(
+        raygate::parse_policy(raygate::fuzz::as_text(data, size), "fuzz-policy.json"));
   } catch (const raygate::UsageError&) {
   }
   return 0;

@@ -169,7 +169,8 @@ const std::vector<BadDocument>& bad_documents() {
       {"cachegrind counter negative", false,
        [](json& j) {
          json counters;
-         for (const char* key : {"Ir", "I1mr", "ILmr", "Dr", "D1mr", "DLmr", "Dw", "D1mw", "DLmw"}) {
+         for (const char* key :
+              {"Ir", "I1mr", "ILmr", "Dr", "D1mr", "DLmr", "Dw", "D1mw", "DLmw"}) {
            counters[key] = 1;
          }
          counters["Dw"] = -5;

@@ -40,9 +40,12 @@ json path_list(const std::vector<std::filesystem::path>& paths) {
 void to_json(json& j, const Interval& interval) {
   j = json{{"lower", finite_number(interval.lower)}, {"upper", finite_number(interval.upper)}};
 }
+// A bound written as null was not finite: the interval is unbounded on that side. Read as 0 it
+// would say the opposite (an upper bound of +inf read back as 0 put lower above upper; found by
+// fuzzing the round trip, tests/fuzz/corpus/results/found-null-upper.json).
 void from_json(const json& j, Interval& interval) {
-  interval.lower = number_at(j, "lower");
-  interval.upper = number_at(j, "upper");
+  interval.lower = number_at(j, "lower", -std::numeric_limits<double>::infinity());
+  interval.upper = number_at(j, "upper", std::numeric_limits<double>::infinity());
 }
 
 void to_json(json& j, const RatioSummary& r) {

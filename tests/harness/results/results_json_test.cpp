@@ -354,6 +354,20 @@ TEST(ResultsJson, InfinitePsnrIsWrittenAsNullAndReadBackAsInfinity) {
   EXPECT_TRUE(std::isinf(results_from_json(j, "memory").scenes[0].images[0].metrics->psnr_db));
 }
 
+// An unbounded interval is written with null bounds and read back unbounded, not as 0 (which put
+// lower above upper once written again; found by fuzzing the round trip).
+TEST(ResultsJson, AnUnboundedIntervalSurvivesTheRoundTrip) {
+  ResultsDocument d = full_document();
+  d.scenes[0].ratios["tracer"].ratio_interval = {0.5, std::numeric_limits<double>::infinity()};
+  d.scores["tracer"].interval = {-std::numeric_limits<double>::infinity(), 0.52};
+  const json j = to_json(d);
+  EXPECT_TRUE(j["scenes"][0]["ratios"]["tracer"]["ratio_interval"]["upper"].is_null());
+  const ResultsDocument back = results_from_json(j, "memory");
+  EXPECT_TRUE(std::isinf(back.scenes[0].ratios.at("tracer").ratio_interval.upper));
+  EXPECT_LT(back.scores.at("tracer").interval.lower, 0.0);
+  EXPECT_EQ(to_json(back).dump(), j.dump());
+}
+
 TEST(ResultsJson, FailureIsStoredWithItsRoleAndRun) {
   const json j = to_json(full_document());
   const json& failure = j["scenes"][1]["failure"];

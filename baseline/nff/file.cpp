@@ -19,14 +19,16 @@ namespace {
 std::string system_message(int error) { return std::generic_category().message(error); }
 
 // Refuses what cannot be an NFF file before opening it: a directory would open and then fail
-// to read, and a device such as /dev/zero would never end. Pipes are fine (process output).
+// to read, a device such as /dev/zero would never end, and a FIFO with no writer blocks the
+// open forever (issue 25, class 12). Process output comes in on stdin ("-") instead.
 void check_kind(const std::string& path) {
   std::error_code error;
   const std::filesystem::file_status status = std::filesystem::status(path, error);
   switch (status.type()) {
     case std::filesystem::file_type::regular:
-    case std::filesystem::file_type::fifo:
       return;
+    case std::filesystem::file_type::fifo:
+      fail_file(path, "a FIFO (named pipe), not a regular file; pipe a scene in as '-'");
     case std::filesystem::file_type::not_found:
       fail_file(path, "no such file");
     case std::filesystem::file_type::directory:

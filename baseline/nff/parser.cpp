@@ -148,8 +148,10 @@ void Reader::read_view_keyword(int index) {
       if (view.hither < 0.0) fail(value, "the hither of view (v) as 0 or more");
       break;
     default:
-      view.width = integer({.entity = "view (v)", .part = "width of the resolution"}, 1, 16384);
-      view.height = integer({.entity = "view (v)", .part = "height of the resolution"}, 1, 16384);
+      view.width = integer({.entity = "view (v)", .part = "width of the resolution"}, 1,
+                           kMaxResolutionSide);
+      view.height = integer({.entity = "view (v)", .part = "height of the resolution"}, 1,
+                            kMaxResolutionSide);
       break;
   }
 }

@@ -17,6 +17,10 @@ struct FileLoc {
   int column = 0;  // 1-based, in bytes
 };
 
+// The largest side of an image the reader takes (resolution): 16384, as the harness's suites
+// (runner/suite.cpp). One number for the reader, the camera and docs/baseline.md.
+inline constexpr int kMaxResolutionSide = 16384;
+
 struct View {
   Vec3 from;
   Vec3 at;

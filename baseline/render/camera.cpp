@@ -11,7 +11,9 @@ namespace raygate::render {
 namespace {
 
 // Limits that keep a typo in `resolution` from exhausting memory.
-constexpr int kMaxImageSide = 32768;
+// The side is the reader's limit (nff::kMaxResolutionSide), checked again for a scene built in
+// code; the pixel count is the camera's own.
+constexpr int kMaxImageSide = nff::kMaxResolutionSide;
 constexpr double kMaxImagePixels = 67108864.0;  // 2^26, e.g. 8192 x 8192
 
 void require(bool condition, const std::string& what) {
@@ -30,7 +32,8 @@ Camera make_camera(const nff::View& view) {
   require(view.width > 0 && view.height > 0, "resolution must be positive");
   require(view.width <= kMaxImageSide && view.height <= kMaxImageSide &&
               double(view.width) * double(view.height) <= kMaxImagePixels,
-          "resolution too large (at most 32768 per side and 2^26 pixels)");
+          "resolution too large (at most " + std::to_string(kMaxImageSide) +
+              " per side and 2^26 pixels)");
   require(std::isfinite(view.angle_degrees) && view.angle_degrees > 0.0 &&
               view.angle_degrees < 180.0,
           "angle must be between 0 and 180 degrees");

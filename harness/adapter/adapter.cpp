@@ -53,8 +53,21 @@ std::size_t read_choice(const JsonField& field, const std::vector<std::string>& 
   field.fail(message);
 }
 
-std::string read_template(const JsonField& field, TemplateField where) {
+// A string that reaches a process (argument, environment value, path): C strings end at the
+// first NUL, so "\u0000" in one would cut it short without a word (issue 25, class 12).
+std::string read_process_string(const JsonField& field) {
   std::string text = field.as_string();
+  if (const std::size_t at = text.find('\0'); at != std::string::npos) {
+    field.fail(fmt::format("contains a NUL character (\\u0000) at byte {}; a process argument, "
+                           "environment value or path ends at the first one, so the rest "
+                           "would be lost",
+                           at));
+  }
+  return text;
+}
+
+std::string read_template(const JsonField& field, TemplateField where) {
+  std::string text = read_process_string(field);
   if (const auto error = template_error(text, where)) field.fail(*error);
   return text;
 }
@@ -87,7 +100,7 @@ std::string read_name(const JsonField& field) {
 }
 
 std::string read_source_dir(const JsonField& field) {
-  std::string dir = field.as_string();
+  std::string dir = read_process_string(field);
   const std::filesystem::path path(dir);
   bool escapes = path.is_absolute();
   for (const auto& part : path) escapes = escapes || part == "..";

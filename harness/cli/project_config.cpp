@@ -129,22 +129,49 @@ std::string find_config_argument(int argc, const char* const* argv) {
   return "";
 }
 
-void apply_project_defaults(CLI::App& app, const ProjectDefaults& defaults) {
-  if (defaults.empty()) return;
+namespace {
+
+// A default an option's check refused (a policy file that does not exist): an error only for the
+// command that would use it, so `raygate --version` or `adapter check` still work.
+struct RefusedDefault {
+  const CLI::App* command;
+  const CLI::Option* option;
+  std::string message;
+};
+
+void apply_to_subcommands(CLI::App& app, const ProjectDefaults& defaults,
+                          std::vector<RefusedDefault>& refused) {
   for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
-    apply_project_defaults(*command, defaults);
+    apply_to_subcommands(*command, defaults, refused);
     for (const auto& [key, value] : defaults) {
       CLI::Option* option = command->get_option_no_throw("--" + key);
       if (option == nullptr || is_filter(command->get_name(), key)) continue;
       try {
         option->run_callback_for_default()->default_val(value.value);
       } catch (const CLI::Error& e) {
-        throw UsageError(fmt::format("{}: {} {}: {}", value.origin, command->get_name(), key,
-                                     e.what()));
+        refused.push_back({command, option,
+                           fmt::format("{}: {} {}: {}", value.origin, command->get_name(), key,
+                                       e.what())});
       }
       option->required(false);
     }
   }
+}
+
+}  // namespace
+
+void apply_project_defaults(CLI::App& app, const ProjectDefaults& defaults) {
+  if (defaults.empty()) return;
+  std::vector<RefusedDefault> refused;
+  apply_to_subcommands(app, defaults, refused);
+  if (refused.empty()) return;
+  // Runs once parsing is done, before any command's own callback: a refused default matters
+  // only to the command given, and only when its option was not given on the command line.
+  app.parse_complete_callback([refused] {
+    for (const RefusedDefault& r : refused) {
+      if (r.command->parsed() && r.option->count() == 0) throw UsageError(r.message);
+    }
+  });
 }
 
 }  // namespace raygate::cli

@@ -49,8 +49,10 @@ std::string find_config_argument(int argc, const char* const* argv);
 
 // Makes each default the value of the options of that name in every subcommand (a required
 // option is then no longer required), except where the name is a filter over stored results
-// (history's and alert's --adapter and --suite). UsageError naming the origin when a value is
-// refused by the option's check.
+// (history's and alert's --adapter and --suite). A value the option's check refuses (a policy
+// file that does not exist) is a UsageError naming the origin, raised once parsing is done and
+// only when the command parsed is one that takes the option and the command line did not give it:
+// --version, --help and every other command still work.
 void apply_project_defaults(CLI::App& app, const ProjectDefaults& defaults);
 
 }  // namespace raygate::cli

@@ -78,8 +78,21 @@ void sync_directory(const std::filesystem::path& folder) {
 
 std::string read_file(const std::filesystem::path& path) {
   std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) {
+  const std::filesystem::file_type type = std::filesystem::status(path, ec).type();
+  if (type == std::filesystem::file_type::directory) {
     throw UsageError(path.string() + ": is a directory, expected a file");
+  }
+  // A FIFO with no writer blocks the open forever, a device may never end: only regular files
+  // (issue 25, class 12). A missing file falls through to the open's own message.
+  const bool special = type == std::filesystem::file_type::fifo ||
+                       type == std::filesystem::file_type::socket ||
+                       type == std::filesystem::file_type::block ||
+                       type == std::filesystem::file_type::character;
+  if (special) {
+    throw UsageError(path.string() + ": is a " +
+                     (type == std::filesystem::file_type::fifo ? "FIFO (named pipe)"
+                                                               : "device or socket") +
+                     ", expected a regular file");
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UsageError(path.string() + ": cannot open: " + system_reason());

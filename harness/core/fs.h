@@ -45,7 +45,8 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
 // rename that was reported done survives a crash. A WriteError names the folder on failure.
 void sync_directory(const std::filesystem::path& folder);
 
-// Whole file as bytes; throws UsageError (missing or unreadable input is the user's to fix).
+// Whole file as bytes; throws UsageError (missing or unreadable input is the user's to fix, and so
+// is a FIFO, device or socket, which could block or never end).
 std::string read_file(const std::filesystem::path& path);
 
 // The whole of a /proc or /sys file (they report size 0, so it is read to EOF); nullopt when it

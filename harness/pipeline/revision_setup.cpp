@@ -5,6 +5,7 @@
 #include "adapter/placeholders.h"
 #include "builder/builder.h"
 #include "checkout/repository_identity.h"
+#include "measure/stopping.h"
 
 namespace raygate {
 
@@ -71,6 +72,9 @@ PreparedRevision prepared_revision(const std::string& role, const std::string& r
   prepared.setup.raygate_source = context.tools.data_root;
   prepared.setup.metric = context.metric;
   prepared.setup.cachegrind = context.cachegrind;
+  // The adapter's own limit, and the user's budget too (issue 25, class 10), as the baseline's.
+  prepared.setup.run_timeout_seconds =
+      budgeted_run_seconds(context.stopping, context.adapter.timeouts.run_seconds);
   if (context.adapter.pin_cpus && context.schedule.pin_cpus.empty()) {
     // The adapter asks raygate to pin: the first `threads` CPUs this process may use.
     const std::vector<int> allowed = allowed_cpu_list();

@@ -17,6 +17,7 @@
 #include "pipeline/run_images.h"
 #include "runner/baseline_cost_cache.h"
 #include "runner/cachegrind.h"
+#include "runner/deadline_executor.h"
 #include "runner/scene_files.h"
 #include "results/scores.h"
 #include "scaling/scaling_stage.h"
@@ -88,6 +89,7 @@ SuiteMeasurement suite_measurement(const MeasureContext& context, const std::str
   m.schedule = context.schedule;
   m.formats = {context.adapter.scene_format};
   m.images = context.adapter.images;
+  m.budget_seconds = 60.0 * context.stopping.max_minutes;
   return m;
 }
 
@@ -138,6 +140,8 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Pipeli
   const GoldenManifest manifest = load_golden_manifest(m.golden_dir);
   const double started = clock.now_seconds();
   double elapsed_done = 0.0;
+  DeadlineExecutor bounded(io.executor, clock, measurement_deadline(started, m.budget_seconds));
+  Executor& executor = m.budget_seconds > 0.0 ? static_cast<Executor&>(bounded) : io.executor;
   for (std::size_t index = 0; index < m.scenes.size(); ++index) {
     throw_if_interrupted("between scenes");
     const SuiteScene& entry = m.scenes[index];
@@ -159,7 +163,7 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Pipeli
       state.eta_seconds = eta_seconds(elapsed_done, index, m.scenes.size(), spent);
       progress.update(state);
     };
-    result.runs = measure_scene(input, m.contenders, m.schedule, m.stop(entry), io.executor,
+    result.runs = measure_scene(input, m.contenders, m.schedule, m.stop(entry), executor,
                                 clock, join_component(m.work_dir / "scenes", entry.id, "scene id"),
                                 observe);
     result.status = result.runs.failed() ? "failed" : "measured";

@@ -38,6 +38,9 @@ struct SuiteMeasurement {
   std::filesystem::path scene_cache;  // generated scene files
   std::filesystem::path work_dir;     // run directories and evidence images
   std::filesystem::path out;          // the results document
+  // The whole measurement's budget (--max-minutes), in seconds; 0: none. Every run started is
+  // bounded by it (runner/deadline_executor.h), not only the stopping rule between rounds.
+  double budget_seconds = 0.0;
   // Extra per-scene summaries after the ratios and golden checks (compare adds its change).
   std::function<void(SceneResult&)> finish_scene;
   // Once every scene is measured, before the complete document is written: judgements across

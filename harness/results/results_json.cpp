@@ -2,6 +2,7 @@
 // (docs/results-format.md); change them only with a schema_version bump and a migration.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -9,8 +10,10 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "adapter/json_field.h"
 #include "core/json_reader.h"
 #include "results/json_number.h"
+#include "results/results_check.h"
 #include "results/results.h"
 #include "results/shard.h"
 
@@ -37,9 +40,12 @@ json path_list(const std::vector<std::filesystem::path>& paths) {
 void to_json(json& j, const Interval& interval) {
   j = json{{"lower", finite_number(interval.lower)}, {"upper", finite_number(interval.upper)}};
 }
+// A bound written as null was not finite: the interval is unbounded on that side. Read as 0 it
+// would say the opposite (an upper bound of +inf read back as 0 put lower above upper; found by
+// fuzzing the round trip, tests/fuzz/corpus/results/found-null-upper.json).
 void from_json(const json& j, Interval& interval) {
-  interval.lower = number_at(j, "lower");
-  interval.upper = number_at(j, "upper");
+  interval.lower = number_at(j, "lower", -std::numeric_limits<double>::infinity());
+  interval.upper = number_at(j, "upper", std::numeric_limits<double>::infinity());
 }
 
 void to_json(json& j, const RatioSummary& r) {
@@ -347,14 +353,34 @@ nlohmann::json to_json(const ResultsDocument& d) {
   return j;
 }
 
+namespace {
+
+// The schema_version a document says it has; a file without one is not a results document at all
+// (a suite, a policy, a report's JSON given by mistake), which the message says first.
+int schema_version_of(const nlohmann::json& j, const std::string& origin) {
+  try {
+    if (!j.is_object()) throw FieldError("$", "expected an object, found " + describe_json(j));
+    const JsonField field = JsonField(j, "$").member("schema_version");
+    const long long version = field.as_integer();
+    if (version < 1) field.fail("expected 1 or more, found " + describe_json(field.value()));
+    return static_cast<int>(std::min<long long>(version, 1'000'000));
+  } catch (const FieldError& e) {
+    throw UsageError(origin + ": not a raygate results document: " + e.path() + ": " + e.what());
+  }
+}
+
+}  // namespace
+
 ResultsDocument results_from_json(const nlohmann::json& j, const std::string& origin) {
   try {
-    const int version = j.at("schema_version").get<int>();
+    const int version = schema_version_of(j, origin);
     if (version > kResultsSchemaVersion) {
       throw UsageError(fmt::format("{}: results schema_version {} is newer than this raygate "
                                    "reads ({}); upgrade raygate",
                                    origin, version, kResultsSchemaVersion));
     }
+    // Every field checked before any is taken, so what follows cannot meet a wrong type.
+    check_results_json(j);
     ResultsDocument d;
     d.schema_version = version;
     d.kind = j.at("kind").get<std::string>();
@@ -373,6 +399,8 @@ ResultsDocument results_from_json(const nlohmann::json& j, const std::string& or
     d.scores = j.at("scores").get<std::map<std::string, SuiteScore>>();
     d.scaling = j.value("scaling", json());
     return d;
+  } catch (const FieldError& e) {
+    throw UsageError(origin + ": " + e.path() + ": " + e.what());
   } catch (const nlohmann::json::exception& e) {
     throw UsageError(origin + ": not a raygate results document: " + e.what());
   } catch (const std::invalid_argument& e) {  // a field of a known name with an unknown value

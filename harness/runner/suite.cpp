@@ -84,7 +84,13 @@ Suite load_suite(const std::string& name_or_path, const std::filesystem::path& d
   json doc = read_json_file(suite.path);  // duplicate keys refused (core/json_reader.h)
   if (!doc.is_object()) fail(suite, "$", "expected an object");
   check_keys(suite, doc, "$", {"name", "description", "sampling", "scenes"});
-  if (doc.contains("name") && !doc["name"].is_string()) fail(suite, "$.name", "expected a string");
+  // Every optional text checked before it is read: value() of a wrong type throws (found by
+  // fuzzing, tests/fuzz/corpus/suite/found-*).
+  for (const char* key : {"name", "description", "sampling"}) {
+    if (doc.contains(key) && !doc[key].is_string()) {
+      fail(suite, std::string("$.") + key, "expected a string");
+    }
+  }
   suite.name = doc.value("name", suite.path.stem().string());
   // The name names the suite's scene cache folder.
   checked_component(suite.name, suite.path.string() + ": " +

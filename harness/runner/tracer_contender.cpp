@@ -74,7 +74,9 @@ ProcessSpec TracerContender::command(const SceneInput& scene,
   if (adapter.stdin_template) spec.stdin_path = expand(*adapter.stdin_template, values);
   spec.stdout_path = run_dir / "log.txt";
   spec.stderr_path = spec.stdout_path;
-  spec.timeout = std::chrono::milliseconds(static_cast<long long>(adapter.timeouts.run_seconds * 1000));
+  const double timeout_seconds =
+      setup_.run_timeout_seconds > 0.0 ? setup_.run_timeout_seconds : adapter.timeouts.run_seconds;
+  spec.timeout = std::chrono::milliseconds(static_cast<long long>(timeout_seconds * 1000));
   spec.cpu_affinity = setup_.cpus;
   if (adapter.timing.source != TimingSource::simulated) return spec;
   if (!setup_.cachegrind) throw std::logic_error("TracerContender: simulated timing, no cachegrind");

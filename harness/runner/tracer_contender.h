@@ -25,6 +25,9 @@ struct TracerSetup {
   // Overrides the adapter's process metric (raygate run --metric); nullopt: the adapter's own.
   std::optional<TimingMetric> metric;
   std::vector<int> cpus;  // pin runs to these CPUs; empty: no pinning
+  // The longest one run may take: the adapter's run timeout bounded by the user's budget
+  // (budgeted_run_seconds, measure/stopping.h); 0: the adapter's alone.
+  double run_timeout_seconds = 0.0;
   // The simulator, for an adapter timed by "simulated" (--timing sim); required then.
   std::optional<Cachegrind> cachegrind;
 };

@@ -1,6 +1,7 @@
 // raygate-baseline as a process: outputs by extension, stdin scenes, --stats, --version, and
 // the exit codes (0 ok, 1 output not writable, 2 usage or scene error).
 #include <gtest/gtest.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 
 #include <OpenImageIO/imageio.h>
@@ -284,6 +285,35 @@ TEST_F(BaselineCli, MissingSceneAndUnusableViewExitTwo) {
   const RunResult r = run({flat.string(), "-o", (temp_dir() / "flat.png").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("view"), std::string::npos) << r.err;
+}
+
+// A FIFO with no writer would block the open forever (issue 25, class 12): refused at once, with
+// the way to pipe a scene in instead.
+TEST_F(BaselineCli, AFifoAsTheSceneIsRefusedNotWaitedOn) {
+  const fs::path fifo = temp_dir() / "scene.nff";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const RunResult r = run({fifo.string(), "-o", (temp_dir() / "f.png").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find(fifo.string()), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("a FIFO (named pipe), not a regular file; pipe a scene in as '-'"),
+            std::string::npos)
+      << r.err;
+}
+
+// The largest resolution is one number: the reader's, the camera's and docs/baseline.md's.
+TEST_F(BaselineCli, TheLargestResolutionIsTheOneItsDocsSay) {
+  const std::string view = "v\nfrom 0 0 1\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\n";
+  const fs::path wide = temp_dir() / "wide.nff";
+  write_text(wide, view + "resolution 16384 1\n");
+  EXPECT_EQ(run({wide.string(), "-o", (temp_dir() / "wide.ppm").string()}).exit_code, 0);
+  const fs::path wider = temp_dir() / "wider.nff";
+  write_text(wider, view + "resolution 16385 1\n");
+  const RunResult r = run({wider.string(), "-o", (temp_dir() / "wider.ppm").string()});
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("from 1 to 16384"), std::string::npos) << r.err;
+  const std::string docs = read_text(fs::path(RAYGATE_SOURCE_DIR) / "docs" / "baseline.md");
+  EXPECT_NE(docs.find("resolution above 16384 per side"), std::string::npos);
+  EXPECT_EQ(docs.find("32768"), std::string::npos);
 }
 
 TEST_F(BaselineCli, UnwritableOutputExitsOneAndSaysWhere) {

@@ -225,6 +225,25 @@ INSTANTIATE_TEST_SUITE_P(
         Broken{"bad_name",
                R"({"name": "my tracer", "scene_format": "nff", "run": ["t"], "image": "{image}"})",
                "$.name: 'my tracer' must be letters, digits, '.', '_' or '-' (it names folders)"},
+        // A NUL would end the C string the argument becomes (issue 25, class 12): in run, a
+        // build step, env, cwd, stdin and source_dir alike.
+        Broken{"nul_in_run", with("", R"(["t", "{scene}", "-o\u0000x", "{image}"])"),
+               "$.run[2]: contains a NUL character (\\u0000) at byte 2; a process argument, "
+               "environment value or path ends at the first one, so the rest would be lost"},
+        Broken{"nul_in_build", with(R"("build": [["make", "a\u0000b"]])"),
+               "$.build[0][1]: contains a NUL character (\\u0000) at byte 1; a process "
+               "argument, environment value or path ends at the first one, so the rest would "
+               "be lost"},
+        Broken{"nul_in_env", with(R"("env": {"OPT": "\u0000"})"),
+               "$.env.OPT: contains a NUL character (\\u0000) at byte 0; a process argument, "
+               "environment value or path ends at the first one, so the rest would be lost"},
+        Broken{"nul_in_cwd", with(R"("cwd": "{workdir}\u0000/x")"),
+               "$.cwd: contains a NUL character (\\u0000) at byte 9; a process argument, "
+               "environment value or path ends at the first one, so the rest would be lost"},
+        Broken{"nul_in_source_dir", with(R"("source_dir": "src\u0000")"),
+               "$.source_dir: contains a NUL character (\\u0000) at byte 3; a process "
+               "argument, environment value or path ends at the first one, so the rest would "
+               "be lost"},
         Broken{"unknown_placeholder", with("", R"(["t", "-o", "{image}", "{scen}"])"),
                "$.run[3]: unknown placeholder '{scen}' (did you mean '{scene}'?)"},
         Broken{"unknown_placeholder_far", with("", R"(["t", "{scene}", "{image}", "{colour}"])"),

@@ -5,6 +5,8 @@
 // bisect names the commit that made the tracer slower.
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include <string>
 #include <vector>
 
@@ -103,6 +105,24 @@ TEST_F(CompareCli, HeadCrashingWhereBaseRanFailsTheGate) {
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_TRUE(has(r.out, "head failed where base ran")) << r.out;
   EXPECT_EQ(document().scenes.at(0).status, "failed");
+}
+
+// A tracer that hangs is ended at the user's budget (issue 25, class 10): --max-minutes 0.05
+// (3 s) bounds base's run, whose adapter allows 600 s; the compare could not measure (exit 3).
+TEST_F(CompareCli, AHangingTracerEndsAtTheUsersBudget) {
+  const std::string sha = commit(sources_.hanging, "sleep before rendering");
+  const auto started = std::chrono::steady_clock::now();
+  const CliRun r = compare(sha, sha, {"balls"}, {"--max-minutes", "0.05"});
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_LT(seconds, 40.0) << r.out;  // the fixture tracer's build included
+  const ResultsDocument d = document();
+  ASSERT_EQ(d.scenes.size(), 1u);
+  ASSERT_TRUE(d.scenes[0].runs.failed());
+  EXPECT_TRUE(has(d.scenes[0].runs.failed_run->outcome, "timed out after 3"))
+      << d.scenes[0].runs.failed_run->outcome;
+  EXPECT_TRUE(has(r.out, "timed out")) << r.out;
 }
 
 TEST_F(CompareCli, BaseMustBeNamedExactlyOnce) {

@@ -4,7 +4,10 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
+#include <string>
+#include <vector>
 
 #include "cli/project_config.h"
 #include "core/error.h"
@@ -69,6 +72,40 @@ TEST(ProjectConfig, ConfigArgumentIsFoundBeforeParsing) {
   const char* none[] = {"raygate", "run", "--", "--config", "z"};
   EXPECT_EQ(find_config_argument(5, none), "");
   EXPECT_EQ(environment_name("store"), "RAYGATE_STORE");
+}
+
+// A raygate.toml whose policy names a missing file (issue 25, class 12): only a command that
+// takes --policy and was not given one fails, with the file's line; the others, --version and
+// --help included, parse as if the key were not there.
+TEST(ProjectConfig, ARefusedDefaultFailsOnlyTheCommandThatUsesIt) {
+  const TempDir dir;
+  write_file_atomically(dir.path() / "raygate.toml", "policy = \"missing.json\"\n");
+  write_file_atomically(dir.path() / "given.json", "{}");
+  const ProjectDefaults defaults = read_project_config(dir.path() / "raygate.toml");
+  const auto parse = [&](std::vector<std::string> args) {
+    CLI::App app{"test"};
+    app.set_version_flag("--version", "1.0");
+    std::string policy;
+    std::string other;
+    app.add_subcommand("report")->add_option("--policy", policy)->check(CLI::ExistingFile);
+    app.add_subcommand("adapter")->add_option("--name", other);
+    apply_project_defaults(app, defaults);
+    std::reverse(args.begin(), args.end());
+    app.parse(args);
+    return policy;
+  };
+  EXPECT_NO_THROW(parse({"adapter", "--name", "x"}));
+  EXPECT_THROW(parse({"--version"}), CLI::Success);
+  EXPECT_THROW(parse({"--help"}), CLI::Success);
+  EXPECT_EQ(parse({"report", "--policy", (dir.path() / "given.json").string()}),
+            (dir.path() / "given.json").string());
+  try {
+    parse({"report"});
+    FAIL() << "the missing policy was accepted";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr((dir.path() / "raygate.toml").string() + ":1: report policy"));
+    EXPECT_THAT(e.what(), HasSubstr("missing.json"));
+  }
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 // only when made from the same scene settings (an image unlike its golden: exit 1).
 #include <gtest/gtest.h>
 
+#include <chrono>
+
 #include <string>
 #include <vector>
 
@@ -40,6 +42,7 @@ class RunCli : public ::testing::Test {
     std::string max_rounds = "3";
     std::string warmup = "1";
     std::string golden_dir = "no-goldens";
+    std::vector<std::string> extra;  // more options
   };
 
   // The arguments of raygate run of `rev` on the tiny suite.
@@ -51,6 +54,7 @@ class RunCli : public ::testing::Test {
                                   options.golden_dir, "--max-rounds", options.max_rounds,
                                   "--warmup",      options.warmup};
     for (const std::string& id : options.scenes) args.insert(args.end(), {"--scene", id});
+    args.insert(args.end(), options.extra.begin(), options.extra.end());
     return args;
   }
 
@@ -303,6 +307,28 @@ TEST_F(RunCli, HangIsStoppedAtTheAdaptersRunTimeout) {
   EXPECT_EQ(runs.failed_role, "tracer");
   EXPECT_TRUE(has(runs.failed_run->outcome, "timed out after 1")) << runs.failed_run->outcome;
   EXPECT_LT(runs.failed_run->wall_seconds, 5.0);  // SIGTERM at 1 s ended the sleep
+  EXPECT_TRUE(has(r.out, "timed out")) << r.out;
+}
+
+// The adapter allows a run 600 s; the user's --max-seconds 2 bounds the tracer's run too, as it
+// does the baseline's (issue 25, class 10).
+TEST_F(RunCli, HangIsStoppedAtTheUsersBudget) {
+  commit(sources_.hanging, "sleep before rendering");
+  Options options;
+  options.scenes = {"balls"};
+  options.extra = {"--max-seconds", "2"};
+  const auto started = std::chrono::steady_clock::now();
+  const CliRun r = run("HEAD", dir_.path() / "r.json", options);
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_LT(seconds, 30.0) << r.out;  // the build of the fixture tracer included
+  const ResultsDocument d = read_results(dir_.path() / "r.json");
+  ASSERT_EQ(d.scenes.size(), 1u);
+  ASSERT_TRUE(d.scenes[0].runs.failed());
+  EXPECT_EQ(d.scenes[0].runs.failed_role, "tracer");
+  EXPECT_TRUE(has(d.scenes[0].runs.failed_run->outcome, "timed out after 2"))
+      << d.scenes[0].runs.failed_run->outcome;
   EXPECT_TRUE(has(r.out, "timed out")) << r.out;
 }
 

@@ -106,5 +106,28 @@ TEST(Fs, ReadingADirectoryOrMissingFileIsAUsageError) {
   EXPECT_THROW(read_file(dir.path() / "missing"), UsageError);
 }
 
+// A FIFO with no writer would block the open forever, /dev/zero would never end: every input
+// raygate reads (adapters, suites, policies, documents, raygate.toml, cached scenes) goes
+// through read_file, which refuses them at once (issue 25, class 12).
+TEST(Fs, ReadingAFifoOrADeviceIsAUsageErrorNotAHang) {
+  TempDir dir;
+  const std::filesystem::path fifo = dir.path() / "scene.nff";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0) << std::strerror(errno);
+  try {
+    read_file(fifo);
+    ADD_FAILURE() << "a FIFO was read";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find(fifo.string() + ": is a FIFO (named pipe), expected a "
+                                         "regular file"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(read_file("/dev/zero"), UsageError);
+  // A symlink to a regular file is read as the file.
+  write_file_atomically(dir.path() / "real.nff", "s 0 0 0 1\n");
+  std::filesystem::create_symlink(dir.path() / "real.nff", dir.path() / "link.nff");
+  EXPECT_EQ(read_file(dir.path() / "link.nff"), "s 0 0 0 1\n");
+}
+
 }  // namespace
 }  // namespace raygate

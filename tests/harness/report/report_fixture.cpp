@@ -45,7 +45,7 @@ SceneResult scene(const std::string& id, double seconds_spent = 20.0) {
   SceneResult s;
   s.entry = {id, id, 1, 128, 128};
   s.status = "measured";
-  s.runs.stop_reason = "target precision reached";
+  s.runs.stop_reason = "stop_converged";
   s.runs.seconds_spent = seconds_spent;
   return s;
 }

@@ -77,7 +77,7 @@ SceneResult scene(const SceneSpec& s, const std::vector<std::string>& roles) {
   r.entry = {s.id, s.id, 1, 64, 64};
   r.scene_sha256 = sha256_hex(s.id);
   r.status = s.status;
-  r.runs.stop_reason = "target";
+  r.runs.stop_reason = "stop_converged";
   r.runs.seconds_spent = 12.5;
   Round round;
   round.order = {"baseline"};
@@ -90,6 +90,24 @@ SceneResult scene(const SceneSpec& s, const std::vector<std::string>& roles) {
   }
   r.runs.rounds = {round};
   return r;
+}
+
+ChangeSummary change_summary(const SceneSpec& s) {
+  ChangeSummary c;
+  c.rounds = 5;
+  c.change = 0.01;
+  c.change_interval = {-0.01, 0.03};
+  c.interval_kind = ChangeIntervalKind::confidence_sequence;
+  c.equivalence_interval = {-0.02, 0.04};
+  c.equivalence_confidence = 0.99;
+  c.one_look_interval = {0.0, 0.02};
+  c.one_look_confidence = 0.9;
+  c.log_change_median = std::log(1.01);
+  c.log_change_mad_scaled = 0.01;
+  c.base = ratio_summary(s);
+  c.head = ratio_summary(s);
+  c.mann_whitney = {12.0, 0.5, 0.6};
+  return c;
 }
 
 }  // namespace
@@ -115,6 +133,10 @@ ResultsDocument make_document(const DocumentSpec& spec) {
   double log_sum = 0.0;
   for (const SceneSpec& s : spec.scenes) {
     d.scenes.push_back(scene(s, spec.roles));
+    if (spec.with_change) {
+      d.scenes.back().change = change_summary(s);
+      d.scenes.back().change_verdict = "UNCHANGED";
+    }
     log_sum += std::log(s.ratio);
   }
   for (const std::string& role : spec.roles) {

@@ -38,6 +38,9 @@ struct DocumentSpec {
   std::string adapter = "cmake-nff";
   std::string suite = "ci";
   std::vector<SceneSpec> scenes;
+  // compare documents: each scene also carries a change of head against base (+1%, UNCHANGED,
+  // from a confidence sequence), as compare writes it.
+  bool with_change = false;
 };
 
 // A sha that looks real and differs per `seed`.

@@ -54,6 +54,18 @@ TEST(Suite, ErrorsNameTheJsonPath) {
             std::string::npos);
 }
 
+// Found by fuzzing (tests/fuzz/corpus/suite/found-sampling-array.json): an optional text of the
+// wrong type was an internal error (a type_error from nlohmann), not a usage error.
+TEST(Suite, OptionalTextsOfTheWrongTypeAreUsageErrors) {
+  for (const char* key : {"name", "description", "sampling"}) {
+    const std::string text =
+        std::string(R"({")") + key + R"(": [{"corners": 1}], "scenes": [{"scene": "balls"}]})";
+    EXPECT_NE(load_error(text).find(std::string("$.") + key + ": expected a string"),
+              std::string::npos)
+        << key << ": " << load_error(text);
+  }
+}
+
 // Issue 25: of a key given twice the last won silently, and 1e400 was an internal error.
 TEST(Suite, ADuplicateKeyOrAnOutOfRangeNumberIsRefusedWhereItIs) {
   EXPECT_NE(load_error("{\"scenes\": [{\"scene\": \"balls\",\n  \"size\": 1, \"size\": 6}]}")

@@ -1,0 +1,395 @@
+#include "results/results_check.h"
+
+#include <fmt/core.h>
+
+#include <cmath>
+#include <cstdint>
+#include <optional>
+#include <limits>
+#include <set>
+#include <string>
+#include <string_view>
+
+#include "compare/image_check.h"
+#include "measure/change.h"
+#include "adapter/json_field.h"
+
+namespace raygate {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+// A second count of a week; no run, scene or build of a CI harness lasts longer, and a larger
+// number in a document is a forgery or a corruption that would skew every sum it enters.
+constexpr double kMaxSeconds = 7.0 * 24 * 3600;
+// The measure a ratio divides: seconds, or under --timing sim estimated cycles
+// (runner/cachegrind.h), which for a week of runs at 5 GHz reach 3e15.
+constexpr double kMaxMeasure = 1e18;
+constexpr std::int64_t kMaxCount = std::int64_t{1} << 40;
+constexpr std::int64_t kMaxSide = 1 << 20;  // pixels: past any image a tracer writes
+constexpr double kMaxLog = 50.0;             // |ln ratio|: a factor of 5e21
+
+// Typed access over adapter/json_field.h's path-carrying reader, with the ranges a measured
+// document's numbers must be in.
+const JsonField& object(const JsonField& field) {
+  if (!field.value().is_object()) {
+    field.fail("expected an object, found " + describe_json(field.value()));
+  }
+  return field;
+}
+
+const JsonField& array(const JsonField& field) {
+  if (!field.value().is_array()) {
+    field.fail("expected an array, found " + describe_json(field.value()));
+  }
+  return field;
+}
+
+std::optional<JsonField> find(const JsonField& field, std::string_view key) {
+  object(field);
+  if (!field.has(key)) return std::nullopt;
+  return field.member(key);
+}
+
+std::optional<JsonField> find_non_null(const JsonField& field, std::string_view key) {
+  std::optional<JsonField> found = find(field, key);
+  if (found && found->value().is_null()) return std::nullopt;
+  return found;
+}
+
+double number(const JsonField& field, double lowest, double highest) {
+  const double v = field.as_number();
+  if (!std::isfinite(v)) field.fail("expected a finite number");
+  if (v < lowest || v > highest) {
+    field.fail(fmt::format("{} is out of range (from {} to {})", field.value().dump(), lowest,
+                           highest));
+  }
+  return v;
+}
+
+// The document writes a number that is not finite as null.
+std::optional<double> number_or_null(const JsonField& field, double lowest, double highest) {
+  if (field.value().is_null()) return std::nullopt;
+  return number(field, lowest, highest);
+}
+
+std::int64_t integer(const JsonField& field, std::int64_t lowest, std::int64_t highest) {
+  const nlohmann::json& v = field.value();
+  if (!v.is_number_integer()) field.fail("expected a whole number, found " + describe_json(v));
+  const bool above = v.is_number_unsigned()
+                         ? v.get<std::uint64_t>() > static_cast<std::uint64_t>(highest)
+                         : v.get<std::int64_t>() > highest;
+  if (above || (!v.is_number_unsigned() && v.get<std::int64_t>() < lowest)) {
+    field.fail(fmt::format("{} is out of range (from {} to {})", v.dump(), lowest, highest));
+  }
+  return v.get<std::int64_t>();
+}
+
+// A counter of cachegrind's: any whole number a uint64 holds.
+void counter(const JsonField& field) {
+  const nlohmann::json& v = field.value();
+  if (v.is_number_unsigned() || (v.is_number_integer() && v.get<std::int64_t>() >= 0)) return;
+  if (v.is_number_integer()) field.fail(fmt::format("{} must not be negative", v.dump()));
+  field.fail("expected a whole number, found " + describe_json(v));
+}
+
+void require_word(const JsonField& field, std::string_view word,
+                  std::initializer_list<std::string_view> known) {
+  for (const std::string_view k : known) {
+    if (word == k) return;
+  }
+  std::string list;
+  for (const std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+  field.fail(fmt::format("unknown value \"{}\" (one of: {})", word, list));
+}
+
+std::string word_at(const JsonField& parent, std::string_view key,
+                    std::initializer_list<std::string_view> known) {
+  const JsonField field = parent.member(key);
+  const std::string word = field.as_string();
+  require_word(field, word, known);
+  return word;
+}
+
+void require_role(const JsonField& field, const std::string& role,
+                  const std::set<std::string>& roles) {
+  if (roles.count(role) == 0) field.fail(fmt::format("unknown role \"{}\"", role));
+}
+
+void check_strings(const JsonField& object, std::initializer_list<std::string_view> keys) {
+  for (const std::string_view key : keys) object.member(key).as_string();
+}
+
+void check_seconds(const JsonField& object, std::initializer_list<std::string_view> keys) {
+  for (const std::string_view key : keys) number(object.member(key), 0.0, kMaxSeconds);
+}
+
+void check_interval(const JsonField& field, double lowest, double highest) {
+  object(field);
+  const auto lower = number_or_null(field.member("lower"), lowest, highest);
+  const auto upper = number_or_null(field.member("upper"), lowest, highest);
+  if (lower && upper && *lower > *upper) field.fail("lower is above upper");
+}
+
+void check_run(const JsonField& run) {
+  object(run);
+  run.member("ok").as_bool();
+  check_strings(run, {"outcome", "image", "log"});
+  if (const auto failure = find(run, "failure")) failure->as_string();
+  number(run.member("seconds"), 0.0, kMaxMeasure);
+  check_seconds(run, {"wall_seconds", "user_seconds", "system_seconds"});
+  integer(run.member("max_rss_kib"), 0, kMaxCount);
+  number_or_null(run.member("reported_seconds"), 0.0, kMaxMeasure);
+  if (const auto counters = find(run, "cachegrind")) {
+    object(*counters);
+    for (const char* key : {"Ir", "I1mr", "ILmr", "Dr", "D1mr", "DLmr", "Dw", "D1mw", "DLmw"}) {
+      counter(counters->member(key));
+    }
+    if (const auto processes = find(*counters, "processes")) integer(*processes, 1, kMaxCount);
+  }
+}
+
+void check_runs_by_role(const JsonField& runs, const std::set<std::string>& roles) {
+  for (const std::string& role : object(runs).keys()) {
+    const JsonField field = runs.member(role);
+    require_role(field, role, roles);
+    check_run(field);
+  }
+}
+
+void check_ratio(const JsonField& r) {
+  object(r);
+  integer(r.member("rounds"), 0, kMaxCount);
+  number_or_null(r.member("normalized_ratio"), 0.0, kInf);
+  check_interval(r.member("ratio_interval"), 0.0, kInf);
+  number_or_null(r.member("relative_half_width"), 0.0, kInf);
+  number_or_null(r.member("log_ratio_median"), -kMaxLog, kMaxLog);
+  number_or_null(r.member("log_ratio_mad_scaled"), 0.0, kInf);
+  number_or_null(r.member("tracer_median_seconds"), 0.0, kMaxMeasure);
+  number_or_null(r.member("baseline_median_seconds"), 0.0, kMaxMeasure);
+}
+
+void check_verdict(const JsonField& verdict) {
+  const std::string word = verdict.as_string();
+  if (!change_verdict_named(word)) {
+    require_word(verdict, word, {"UNCHANGED", "IMPROVED", "REGRESSED", "INCONCLUSIVE"});
+  }
+}
+
+void check_change(const JsonField& c) {
+  object(c);
+  integer(c.member("rounds"), 0, kMaxCount);
+  number_or_null(c.member("change"), -1.0, kInf);  // head / base - 1
+  check_interval(c.member("change_interval"), -1.0, kInf);
+  if (const auto confidence = find(c, "confidence")) number(*confidence, 0.0, 1.0);
+  std::string kind = "order-statistic";  // documents from before the confidence sequences
+  if (const auto k = find(c, "interval_kind")) {
+    kind = k->as_string();
+    require_word(*k, kind, {"order-statistic", "confidence-sequence"});
+  }
+  if (change_interval_kind(kind) == ChangeIntervalKind::confidence_sequence) {
+    check_interval(c.member("equivalence_interval"), -1.0, kInf);
+    number_or_null(c.member("equivalence_confidence"), 0.0, 1.0);
+    check_interval(c.member("one_look_interval"), -1.0, kInf);
+    number_or_null(c.member("one_look_confidence"), 0.0, 1.0);
+  }
+  number_or_null(c.member("log_change_median"), -kMaxLog, kMaxLog);
+  number_or_null(c.member("log_change_mad_scaled"), 0.0, kInf);
+  check_ratio(c.member("base"));
+  check_ratio(c.member("head"));
+  const JsonField mw = object(c.member("mann_whitney"));
+  number_or_null(mw.member("u"), 0.0, kInf);
+  number_or_null(mw.member("z"), -kInf, kInf);
+  number_or_null(mw.member("p_value"), 0.0, 1.0);
+  if (const auto exact = find(c, "exact")) exact->as_bool();
+  check_verdict(c.member("verdict"));
+}
+
+void check_pixel(const JsonField& field, std::size_t coordinates, const char* shape) {
+  const std::vector<JsonField> parts = array(field).elements();
+  if (parts.size() != coordinates) field.fail(std::string("expected ") + shape);
+  for (const JsonField& part : parts) integer(part, 0, kMaxSide);
+}
+
+void check_metrics(const JsonField& m) {
+  object(m);
+  m.member("size_mismatch").as_bool();
+  for (const char* key : {"width", "height", "expected_width", "expected_height"}) {
+    integer(m.member(key), 0, kMaxSide);
+  }
+  for (const char* key : {"mean_error", "rms_error", "max_error"}) {
+    number_or_null(m.member(key), 0.0, kInf);
+  }
+  for (const char* key : {"psnr_db", "max_actual_value", "max_expected_value",
+                          "mean_luminance_actual", "mean_luminance_expected"}) {
+    number_or_null(m.member(key), -kInf, kInf);
+  }
+  check_pixel(m.member("max_pixel"), 3, "[x, y, channel]");
+  for (const char* key : {"pixels_over_warn", "pixels_over_fail", "nonfinite_values"}) {
+    integer(m.member(key), 0, kMaxCount);
+  }
+  number_or_null(m.member("percent_over_fail"), 0.0, 100.0);
+  for (const char* key : {"nonfinite_pixels", "expected_nonfinite_pixels"}) {
+    if (const auto count = find(m, key)) integer(*count, 0, kMaxCount);
+  }
+  if (const auto first = find(m, "first_nonfinite_pixel")) check_pixel(*first, 2, "[x, y]");
+}
+
+void check_image(const JsonField& image, const std::set<std::string>& roles) {
+  object(image);
+  const JsonField role = image.member("role");
+  require_role(role, role.as_string(), roles);
+  check_strings(image, {"reference", "actual", "expected"});
+  const JsonField verdict = image.member("verdict");
+  if (!parse_image_verdict(verdict.as_string())) {
+    require_word(verdict, verdict.as_string(), {"pass", "warn", "fail", "missing", "error"});
+  }
+  if (const auto error = find(image, "error")) error->as_string();
+  image.member("metrics");  // required, even when null
+  if (const auto metrics = find_non_null(image, "metrics")) check_metrics(*metrics);
+  for (const JsonField& path : array(image.member("evidence")).elements()) path.as_string();
+}
+
+void check_scene_entry(const JsonField& entry) {
+  object(entry);
+  check_strings(entry, {"id", "scene"});
+  integer(entry.member("size"), 0, kMaxCount);
+  integer(entry.member("width"), 1, kMaxSide);
+  integer(entry.member("height"), 1, kMaxSide);
+}
+
+// The roles a document's parts may name: a revision's (tracer in run, base and head in compare)
+// and, for runs, the baseline's too. Any of the words, not only the document's own revisions:
+// documents merged or written by older versions mix them, and a word raygate does not know is
+// what would mislead a reader.
+struct Roles {
+  std::set<std::string> revisions{"tracer", "base", "head"};
+  std::set<std::string> runs{"tracer", "base", "head", "baseline"};
+};
+
+void check_rounds(const JsonField& rounds, const Roles& roles) {
+  for (const JsonField& round : array(rounds).elements()) {
+    object(round);
+    for (const JsonField& role : array(round.member("order")).elements()) {
+      require_role(role, role.as_string(), roles.runs);
+    }
+    check_runs_by_role(round.member("runs"), roles.runs);
+  }
+}
+
+void check_scene(const JsonField& s, const Roles& roles) {
+  object(s);
+  check_scene_entry(s.member("scene"));
+  s.member("scene_sha256").as_string();
+  word_at(s, "status", {"measured", "failed"});
+  word_at(s, "stop_reason",
+          {"stop_converged", "stop_budget_rounds", "stop_budget_time", "failed", "continue"});
+  number_or_null(s.member("seconds_spent"), 0.0, kMaxSeconds);
+  s.member("failure");  // required, even when null
+  if (const auto failure = find_non_null(s, "failure")) {
+    object(*failure);
+    const JsonField role = failure->member("role");
+    require_role(role, role.as_string(), roles.runs);
+    check_run(failure->member("run"));
+  }
+  const JsonField warmup = object(s.member("warmup"));
+  for (const std::string& role : warmup.keys()) {
+    const JsonField runs = warmup.member(role);
+    require_role(runs, role, roles.runs);
+    for (const JsonField& run : array(runs).elements()) check_run(run);
+  }
+  check_rounds(s.member("rounds"), roles);
+  if (const auto partial = find(s, "partial_round")) check_runs_by_role(*partial, roles.runs);
+  const JsonField ratios = object(s.member("ratios"));
+  for (const std::string& role : ratios.keys()) {
+    require_role(ratios.member(role), role, roles.revisions);
+    check_ratio(ratios.member(role));
+  }
+  s.member("change");  // required, even when null
+  if (const auto change = find_non_null(s, "change")) check_change(*change);
+  for (const JsonField& image : array(s.member("images")).elements()) {
+    check_image(image, roles.revisions);
+  }
+}
+
+void check_build(const JsonField& b) {
+  object(b);
+  integer(b.member("record_version"), 1, 1);
+  check_strings(b, {"sha", "adapter_name", "adapter_hash", "compiler", "key", "build_dir",
+                    "src_dir", "failure", "log_tail"});
+  for (const char* key : {"dirty", "cached", "success"}) b.member(key).as_bool();
+  number(b.member("total_seconds"), 0.0, kMaxSeconds);
+  for (const JsonField& step : array(b.member("steps")).elements()) {
+    object(step);
+    for (const JsonField& arg : array(step.member("argv")).elements()) arg.as_string();
+    check_strings(step, {"outcome", "log"});
+    step.member("succeeded").as_bool();
+    check_seconds(step, {"wall_seconds", "cpu_seconds"});
+  }
+}
+
+void check_revision(const JsonField& r) {
+  object(r);
+  check_strings(r, {"repository"});
+  if (const auto id = find(r, "repository_id")) id->as_string();
+  const JsonField w = object(r.member("worktree"));
+  check_strings(w, {"path", "revision", "ref_name", "sha", "short_sha", "subject", "author",
+                    "commit_time"});
+  w.member("dirty").as_bool();
+  check_strings(object(r.member("adapter")), {"name", "hash", "file"});
+  check_build(r.member("build"));
+}
+
+// Each revision once, under a role raygate knows.
+void check_revisions(const JsonField& revisions) {
+  std::set<std::string> seen;
+  for (const JsonField& revision : array(revisions).elements()) {
+    check_revision(revision);
+    const JsonField role = revision.member("role");
+    const std::string word = role.as_string();
+    require_word(role, word, {"tracer", "base", "head"});
+    if (!seen.insert(word).second) role.fail(fmt::format("role \"{}\" is listed twice", word));
+  }
+}
+
+void check_scores(const JsonField& scores, const Roles& roles) {
+  for (const std::string& role : object(scores).keys()) {
+    const JsonField score = object(scores.member(role));
+    require_role(score, role, roles.revisions);
+    integer(score.member("scenes"), 0, kMaxCount);
+    number_or_null(score.member("score"), 0.0, kInf);
+    check_interval(score.member("interval"), 0.0, kInf);
+  }
+}
+
+}  // namespace
+
+void check_results_json(const nlohmann::json& document) {
+  const JsonField d(document, "$");
+  object(d);
+  word_at(d, "kind", {"run", "compare"});
+  check_strings(d, {"raygate_version", "started_at", "finished_at", "suite"});
+  d.member("complete").as_bool();
+  d.member("machine");
+  object(d.member("settings"));
+  if (const auto shard = find(d, "shard")) shard->as_string();
+  const JsonField baseline = object(d.member("baseline"));
+  check_strings(baseline, {"version", "source_sha256"});
+  word_at(baseline, "accel", {"none", "bbox"});
+  word_at(baseline, "sampling", {"center", "corners"});
+  word_at(baseline, "timing",
+          {"process-wall", "process-cpu", "in-process", "in-process-cpu", "simulated-cycles"});
+  check_revisions(d.member("revisions"));
+  const Roles roles{};
+  std::set<std::string> ids;
+  for (const JsonField& scene : array(d.member("scenes")).elements()) {
+    check_scene(scene, roles);
+    const JsonField id = scene.member("scene").member("id");
+    if (!ids.insert(id.as_string()).second) {
+      id.fail(fmt::format("scene \"{}\" is listed twice", id.as_string()));
+    }
+  }
+  check_scores(d.member("scores"), roles);
+}
+
+}  // namespace raygate

@@ -111,6 +111,8 @@ void add_header(const ReportInput& input, Spans& spans) {
     spans.push_back(plain("\n"));
   }
   spans.push_back(dim("policy: " + policy_line(input.policy)));
+  spans.push_back(plain("\n"));
+  spans.push_back(dim("columns: " + columns_line(d)));
   spans.push_back(plain("\n\n"));
 }
 

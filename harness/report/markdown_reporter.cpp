@@ -137,6 +137,7 @@ std::string MarkdownReporter::compose(const ReportInput& input,
     text += table_row(d, views[i]);
     reasons += reasons_of(views[i]);
   }
+  text += fmt::format("\n<sub>{}</sub>\n", md(columns_line(d)));
   if (shown < views.size()) {
     text += fmt::format("\n_{} more scenes not shown: the full report would exceed GitHub's "
                         "comment limit. See the HTML or JSON report._\n",

@@ -243,6 +243,14 @@ std::vector<TableColumn> table_columns(const ResultsDocument& document) {
           {ColumnKind::image, "image"}};
 }
 
+std::string columns_line(const ResultsDocument& document) {
+  const std::string ratio = "ratio = time(tracer) / time(baseline), the median over rounds";
+  if (document.kind != "compare") return ratio + ", [its 95% bootstrap CI]";
+  return ratio + " the baseline joined; head's = base's x (1 + change), so both move with the "
+                 "change; change = median of per-round time(head) / time(base) - 1, [the "
+                 "interval its verdict was drawn from]";
+}
+
 std::string cell_text(ColumnKind kind, const ResultsDocument& document, const SceneView& view,
                       const std::string& arrow, const std::string& none) {
   switch (kind) {

@@ -92,6 +92,10 @@ struct TableColumn {
   std::string heading;
 };
 std::vector<TableColumn> table_columns(const ResultsDocument& document);
+// What the table's numbers are, said once under the heading: "ratio = time(tracer) /
+// time(baseline), median over rounds; head's = base's x (1 + change); change = median of
+// per-round head/base, [the interval its verdict was drawn from]".
+std::string columns_line(const ResultsDocument& document);
 // A cell's text; `arrow` joins base and head ratios, `none` stands for no image checked.
 std::string cell_text(ColumnKind kind, const ResultsDocument& document, const SceneView& view,
                       const std::string& arrow = "->", const std::string& none = "-");

@@ -167,22 +167,41 @@ std::string speed_plots(const ReportInput& input, const SceneView& view) {
   return out;
 }
 
+// "15 rounds (the baseline in 3)", then each program's median cost, in the document's unit.
+std::vector<std::string> round_facts(const ResultsDocument& d, const SceneResult& scene) {
+  std::vector<std::string> facts;
+  const RatioSummary* primary = scene.ratio(primary_role(d));
+  if (primary == nullptr) return facts;
+  if (scene.change && scene.change->rounds != primary->rounds) {
+    facts.push_back(fmt::format("{} rounds (the baseline in {})", scene.change->rounds,
+                                primary->rounds));
+  } else {
+    facts.push_back(fmt::format("{} rounds", primary->rounds));
+  }
+  std::string medians = "medians: baseline " + cost_text(d, primary->baseline_median_seconds);
+  for (const std::string& role : ratio_roles(d)) {
+    if (const RatioSummary* r = scene.ratio(role)) {
+      medians += fmt::format(", {} {}", role, cost_text(d, r->tracer_median_seconds));
+    }
+  }
+  facts.push_back(medians);
+  return facts;
+}
+
 std::string run_facts(const ReportInput& input, const SceneResult& scene) {
   const ResultsDocument& d = input.document;
-  std::vector<std::string> facts;
-  const RatioSummary* r = scene.ratio(primary_role(d));
-  if (r != nullptr) {
-    facts.push_back(fmt::format("{} rounds", r->rounds));
-    facts.push_back(fmt::format("baseline {}, {} {} (medians)",
-                                cost_text(d, r->baseline_median_seconds), primary_role(d),
-                                cost_text(d, r->tracer_median_seconds)));
-  }
+  std::vector<std::string> facts = round_facts(d, scene);
   if (!scene.runs.stop_reason.empty()) facts.push_back("stopped: " + scene.runs.stop_reason);
-  if (scene.change && !scene.runs.failed() && !scene.change->exact) {
-    // The pairing-free second opinion (docs/statistics.md §5); the verdict does not use it. A
-    // counted change has no sampling error for it to test.
-    facts.push_back(fmt::format("Mann–Whitney U {:.1f}, p {:.3g}", scene.change->mann_whitney.u,
-                                scene.change->mann_whitney.p_value));
+  // The pairing-free second opinion (docs/statistics.md §5) on the rounds the baseline joined;
+  // the verdict does not use it. Not beside a counted change (no sampling error to test), nor
+  // with fewer than 6 rounds a side, where no p can fall below 0.05 whatever the change.
+  const RatioSummary* base = scene.ratio("base");
+  if (scene.change && !scene.runs.failed() && !scene.change->exact && base != nullptr &&
+      base->rounds >= 6) {
+    facts.push_back(fmt::format("Mann–Whitney U {:.1f}, p {:.3g} over the {} rounds with the "
+                                "baseline (not used by the verdict)",
+                                scene.change->mann_whitney.u, scene.change->mann_whitney.p_value,
+                                base->rounds));
   }
   facts.push_back(fmt::format("{:.1f} s spent", scene.runs.seconds_spent));
   return fmt::format(R"(<p class="facts">{}</p>)", escape(fmt::format("{}", fmt::join(facts, " · "))));

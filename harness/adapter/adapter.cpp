@@ -26,7 +26,7 @@ const std::vector<std::string>& top_level_keys() {
   static const std::vector<std::string> keys{
       "name",  "description", "scene_format", "source_dir", "requires", "build",
       "run",   "stdin",       "cwd",          "image",      "env",      "timing",
-      "threads", "pin_cpus",  "submodules",   "timeout_s"};
+      "threads", "pin_cpus",  "submodules",   "timeout_s",  "images"};
   return keys;
 }
 
@@ -267,6 +267,25 @@ void check_image(const JsonField& root, const Adapter& adapter) {
   }
 }
 
+ImageKind read_image_kind(const JsonField& field) {
+  return static_cast<ImageKind>(read_choice(field, {"deterministic", "monte-carlo"}));
+}
+
+// A Monte Carlo tracer must get a different seed for every run, or its runs are one sample
+// repeated and their noise cannot be measured; a deterministic one has no use for a seed.
+void check_seed(const JsonField& root, const Adapter& adapter) {
+  const bool seeded = any_uses(invocation(adapter), "seed") ||
+                      (adapter.stdin_template && uses_placeholder(*adapter.stdin_template, "seed"));
+  if (adapter.images == ImageKind::monte_carlo && !seeded) {
+    root.member("run").fail("\"images\": \"monte-carlo\" needs '{seed}' in run or env (e.g. "
+                            "\"--seed\", \"{seed}\"): every run must render with its own seed");
+  }
+  if (adapter.images == ImageKind::deterministic && seeded) {
+    root.member("run").fail("'{seed}' is only given to \"images\": \"monte-carlo\" tracers; "
+                            "add that, or drop '{seed}'");
+  }
+}
+
 Adapter read_fields(const JsonField& root) {
   root.expect_object(top_level_keys());
   Adapter a;
@@ -281,6 +300,7 @@ Adapter read_fields(const JsonField& root) {
   if (root.has("stdin")) a.stdin_template = read_template(root.member("stdin"), TemplateField::run);
   if (root.has("cwd")) a.cwd = read_cwd(root.member("cwd"));
   a.image = read_template(root.member("image"), TemplateField::run);
+  if (root.has("images")) a.images = read_image_kind(root.member("images"));
   if (root.has("env")) a.env = read_env(root.member("env"));
   a.timing.metric_by_threads = true;
   if (root.has("timing")) a.timing = read_timing(root.member("timing"));
@@ -293,6 +313,7 @@ Adapter read_fields(const JsonField& root) {
   if (root.has("timeout_s")) a.timeouts = read_timeouts(root.member("timeout_s"));
   check_scene_reaches_tracer(root, a);
   check_image(root, a);
+  check_seed(root, a);
   return a;
 }
 
@@ -348,5 +369,9 @@ std::string_view to_string(TimingMetric metric) {
 }
 
 std::string_view to_string(TimeUnit unit) { return unit == TimeUnit::seconds ? "s" : "ms"; }
+
+std::string_view to_string(ImageKind kind) {
+  return kind == ImageKind::monte_carlo ? "monte-carlo" : "deterministic";
+}
 
 }  // namespace raygate

@@ -23,6 +23,11 @@ enum class TimingSource {
 enum class TimingMetric { wall, cpu };  // for TimingSource::process
 enum class TimeUnit { seconds, milliseconds };  // for TimingSource::reported
 
+// What kind of images the tracer makes ("images" in the file): the same pixels every run, judged
+// by the per-pixel rule, or Monte Carlo renders whose noise changes with the seed, judged by
+// whether they converge to the same image (docs/monte-carlo-images.md).
+enum class ImageKind { deterministic, monte_carlo };
+
 struct Timing {
   TimingSource source = TimingSource::process;
   TimingMetric metric = TimingMetric::wall;
@@ -55,6 +60,7 @@ struct Adapter {
   std::optional<std::string> stdin_template;  // "stdin": file fed on standard input
   std::string cwd = "{workdir}";              // working directory of the run
   std::string image;                          // where the image appears after a run
+  ImageKind images = ImageKind::deterministic;
   std::map<std::string, std::string> env;     // extra environment of the run
   Timing timing;
   int threads = 1;                            // passed as {threads}
@@ -92,5 +98,6 @@ std::string_view to_string(SceneFormat format);
 std::string_view to_string(TimingSource source);
 std::string_view to_string(TimingMetric metric);
 std::string_view to_string(TimeUnit unit);
+std::string_view to_string(ImageKind kind);  // "deterministic", "monte-carlo"
 
 }  // namespace raygate

@@ -12,7 +12,7 @@ namespace {
 
 using Member = std::optional<std::string> Placeholders::*;
 
-constexpr std::array<std::pair<std::string_view, Member>, 12> kMembers{{
+constexpr std::array<std::pair<std::string_view, Member>, 13> kMembers{{
     {"src", &Placeholders::src},
     {"repo_root", &Placeholders::repo_root},
     {"build", &Placeholders::build},
@@ -25,6 +25,7 @@ constexpr std::array<std::pair<std::string_view, Member>, 12> kMembers{{
     {"scene_stem", &Placeholders::scene_stem},
     {"width", &Placeholders::width},
     {"height", &Placeholders::height},
+    {"seed", &Placeholders::seed},
 }};
 
 // One piece of a template: literal text, or a placeholder name (without braces).
@@ -117,7 +118,7 @@ const std::vector<std::string>& placeholders_allowed_in(TemplateField field) {
   static const std::vector<std::string> run{"src",     "repo_root",      "build",     "threads",
                                             "scene",   "image",          "workdir",
                                             "raygate_source", "scene_stem", "width",
-                                            "height"};
+                                            "height",  "seed"};
   return field == TemplateField::build ? build : run;
 }
 

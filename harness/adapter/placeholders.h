@@ -33,6 +33,9 @@ struct Placeholders {
   std::optional<std::string> scene_stem;      // scene file name without directory or extension
   std::optional<std::string> width;           // the scene's image width in pixels (its NFF view)
   std::optional<std::string> height;          // the scene's image height in pixels
+  // A different number for every run ("images": "monte-carlo" adapters only): a hash of the
+  // run's own directory, which is new for every measurement.
+  std::optional<std::string> seed;
 
   // The value for a placeholder name ("scene"), or nullptr if the name is unknown.
   const std::optional<std::string>* find(std::string_view name) const;

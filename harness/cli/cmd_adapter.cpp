@@ -54,6 +54,17 @@ std::string timing_line(const Timing& timing) {
                      unit);
 }
 
+// What "images" means for how the pictures are judged.
+std::string images_line(ImageKind kind) {
+  if (kind == ImageKind::monte_carlo) {
+    return "monte-carlo: every run renders with its own {seed}; the runs' images are judged "
+           "on whether they converge to the same picture as the reference (per tile, within "
+           "noise, docs/monte-carlo-images.md)";
+  }
+  return "deterministic: the same pixels every run; judged per pixel against the reference "
+         "(docs/gate.md)";
+}
+
 std::string seconds(double s) { return fmt::format("{:g} s", s); }
 
 void print_build(const Adapter& a) {
@@ -73,6 +84,7 @@ void print_run(const Adapter& a) {
   if (a.stdin_template) fmt::print("  stdin       {}\n", *a.stdin_template);
   for (const auto& [key, value] : a.env) fmt::print("  env         {}={}\n", key, value);
   fmt::print("  image       {}\n", a.image);
+  fmt::print("  images      {}\n", images_line(a.images));
   fmt::print("  timing      {}\n", timing_line(a.timing));
   fmt::print("  threads     {}{}\n", a.threads,
              a.pin_cpus ? fmt::format(" (pinned to {} CPU{})", a.threads, a.threads == 1 ? "" : "s")

@@ -43,6 +43,7 @@ nlohmann::json step_json(const BisectStepRecord& step) {
     j["change_interval"] = {step.change->change_interval.lower,
                             step.change->change_interval.upper};
     j["verdict"] = step.verdict;
+    j["rounds"] = step.change->rounds;
   }
   return j;
 }

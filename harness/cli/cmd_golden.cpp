@@ -3,7 +3,9 @@
 // re-renders and demands identical pixels (the baseline is deterministic); bless rewrites goldens
 // only for the scenes named (or all), never as a side effect of anything else.
 // `bless --from-run RESULTS.json` blesses a foreign tracer's images instead: the ones a run
-// already made and checked, copied into golden/<adapter>/ (docs/gate.md).
+// already made and checked, copied into golden/<adapter>/ (docs/gate.md); for an adapter with
+// "images": "monte-carlo" the mean and variance of all its runs' images
+// (docs/monte-carlo-images.md). `verify --from-run RESULTS.json` checks a run against them.
 #include <fmt/core.h>
 
 #include <memory>
@@ -31,7 +33,30 @@ BaselineGoldens open_goldens(const GoldenArgs& args) {
                                args.baseline);
 }
 
+BlessFromRun from_run_request(const GoldenArgs& args) {
+  BlessFromRun request;
+  request.results = std::filesystem::absolute(args.from_run);
+  request.role = args.role;
+  request.scene_ids = args.scenes;
+  request.golden_dir = args.golden_dir;
+  request.baseline = args.baseline;
+  return request;
+}
+
+// verify --from-run: a tracer's run against its adapter's goldens (exact or within noise).
+int run_verify_from_run(const GoldenArgs& args) {
+  Progress lines(stdout, false);
+  const GoldenVerification v = verify_goldens_from_run(
+      from_run_request(args), std::filesystem::path(args.work_dir) / "evidence", lines);
+  fmt::print("{} scenes: {} same, {} different, {} too noisy to tell, {} missing\n",
+             v.identical + v.different + v.inconclusive + v.missing, v.identical, v.different,
+             v.inconclusive, v.missing);
+  if (v.different > 0) return to_int(ExitCode::regression);
+  return v.missing > 0 ? to_int(ExitCode::usage) : 0;
+}
+
 int run_verify(const GoldenArgs& args) {
+  if (!args.from_run.empty()) return run_verify_from_run(args);
   const BaselineGoldens goldens = open_goldens(args);
   Progress lines(stdout, false);  // the per-scene lines are the results: plain, on stdout
   const GoldenVerification v = verify_baseline_goldens(goldens, lines);
@@ -47,13 +72,7 @@ int run_bless(const GoldenArgs& args) {
     bless_baseline_goldens(open_goldens(args), lines);
     return 0;
   }
-  BlessFromRun request;
-  request.results = std::filesystem::absolute(args.from_run);
-  request.role = args.role;
-  request.scene_ids = args.scenes;
-  request.golden_dir = args.golden_dir;
-  request.baseline = args.baseline;
-  bless_goldens_from_run(request, lines);
+  bless_goldens_from_run(from_run_request(args), lines);
   return 0;
 }
 
@@ -76,6 +95,11 @@ void add_golden_command(CLI::App& app, int& exit_code) {
   CLI::App* verify = golden->add_subcommand("verify", "Re-render and demand identical pixels");
   add_common_options(verify, *verify_args);
   verify->add_option("scenes", verify_args->scenes, "Suite scene ids (default: all)");
+  verify->add_option("--from-run", verify_args->from_run,
+                     "Check a tracer's images from this results document against its adapter's "
+                     "goldens (Monte Carlo adapters: within noise) instead of rendering the baseline");
+  verify->add_option("--role", verify_args->role, "With --from-run: whose images (tracer, head, base)")
+      ->capture_default_str();
   verify->callback([verify_args, &exit_code] { exit_code = run_verify(*verify_args); });
 
   auto bless_args = std::make_shared<GoldenArgs>();

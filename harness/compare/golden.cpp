@@ -17,6 +17,28 @@ using nlohmann::json;
 
 constexpr const char* kManifestName = "manifest.json";
 
+GoldenNoise read_noise(const json& j, const std::string& where) {
+  GoldenNoise noise;
+  noise.runs = j.at("runs").get<int>();
+  noise.variance_file = j.at("variance").get<std::string>();
+  noise.variance_sha256 = j.at("variance_sha256").get<std::string>();
+  checked_component(noise.variance_file, where + ".noise.variance");
+  for (const json& s : j.at("inflation")) {
+    noise.inflation.push_back({s.at("tile_px").get<int>(), s.at("factor").get<double>()});
+  }
+  if (noise.runs < 2) throw UsageError(where + ".noise.runs: must be at least 2");
+  return noise;
+}
+
+json write_noise(const GoldenNoise& noise) {
+  json inflation = json::array();
+  for (const ScaleInflation& s : noise.inflation) {
+    inflation.push_back({{"tile_px", s.tile_px}, {"factor", s.factor}});
+  }
+  return {{"runs", noise.runs}, {"variance", noise.variance_file},
+          {"variance_sha256", noise.variance_sha256}, {"inflation", inflation}};
+}
+
 }  // namespace
 
 const GoldenEntry* GoldenManifest::find(const std::string& id) const {
@@ -60,6 +82,7 @@ GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir) {
                                 std::to_string(manifest.entries.size() - 1) + "]";
       checked_component(manifest.entries.back().id, where + ".id");
       checked_component(manifest.entries.back().file, where + ".file");
+      if (e.contains("noise")) manifest.noise[e.at("id")] = read_noise(e.at("noise"), where);
     }
     if (doc.contains("shared_with")) {
       manifest.shared_with = doc.at("shared_with").get<std::vector<std::string>>();
@@ -87,6 +110,9 @@ void save_golden_manifest(const GoldenManifest& manifest,
     images.push_back({{"id", e.id}, {"scene", e.scene}, {"size", e.size}, {"width", e.width},
                       {"height", e.height}, {"sampling", e.sampling}, {"accel", e.accel},
                       {"file", e.file}, {"sha256", e.sha256}});
+    if (const auto noise = manifest.noise.find(e.id); noise != manifest.noise.end()) {
+      images.back()["noise"] = write_noise(noise->second);
+    }
   }
   json doc = {{"schema_version", GoldenManifest::kSchemaVersion},
                     {"suite", manifest.suite},

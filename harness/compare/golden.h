@@ -5,9 +5,12 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
+
+#include "compare/noisy_stats.h"
 
 namespace raygate {
 
@@ -21,6 +24,17 @@ struct GoldenEntry {
   std::string accel;
   std::string file;    // relative to the golden directory
   std::string sha256;  // of the image file's bytes
+};
+
+// A Monte Carlo tracer's golden (docs/monte-carlo-images.md): the entry's file is the per-pixel
+// mean of `runs` renders with independent seeds, and this is the rest the comparison needs.
+struct GoldenNoise {
+  int runs = 0;
+  std::string variance_file;  // per pixel variance of one run, relative to the golden directory
+  std::string variance_sha256;
+  std::vector<ScaleInflation> inflation;
+
+  bool operator==(const GoldenNoise&) const = default;
 };
 
 // Where a foreign tracer's goldens came from (`golden bless --from-run`): the run that rendered
@@ -47,6 +61,8 @@ struct GoldenManifest {
   // Adapters other than the directory's own that these goldens judge: variants that render the
   // same pictures (the baseline's bbox control).
   std::vector<std::string> shared_with;
+  // Monte Carlo goldens' statistics, by entry id ("noise" in the entry's JSON object).
+  std::map<std::string, GoldenNoise> noise;
 
   const GoldenEntry* find(const std::string& id) const;
   void upsert(const GoldenEntry& entry);  // replaces the entry with the same id

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "compare/noisy_image_check.h"
 #include "core/error.h"
 
 namespace raygate {
@@ -88,6 +89,54 @@ ImageCheck check_image(const std::string& role, const std::string& reference,
     }
   }
   return check;
+}
+
+namespace {
+
+// Why no golden of `manifest` judges the image of `rendered` (the same words for every scene of
+// an empty set), or nullopt when one does.
+std::optional<std::string> no_golden(const std::filesystem::path& golden_dir,
+                                     const GoldenManifest& manifest, const GoldenEntry& rendered) {
+  const std::string& id = rendered.id;
+  const GoldenEntry* entry = manifest.find(id);
+  if (manifest.entries.empty()) return "no goldens in " + golden_dir.string() + " (none blessed yet)";
+  if (entry == nullptr || !std::filesystem::exists(golden_dir / entry->file)) {
+    return "no golden image for '" + id + "' in " + golden_dir.string();
+  }
+  if (!same_settings(*entry, rendered)) {
+    return "the golden of '" + id + "' in " + golden_dir.string() + " is " +
+           describe_settings(*entry) + ", but this suite renders " + describe_settings(rendered) +
+           "; bless goldens for this suite in a directory of their own (raygate golden bless "
+           "--suite SUITE --golden-dir DIR)";
+  }
+  return std::nullopt;
+}
+
+}  // namespace
+
+ImageCheck check_runs_against_golden(const std::string& role,
+                                     const std::vector<std::filesystem::path>& actual,
+                                     const std::filesystem::path& golden_dir,
+                                     const GoldenManifest& manifest, const GoldenEntry& rendered,
+                                     const NoisyThresholds& thresholds,
+                                     const std::filesystem::path& evidence_dir) {
+  const std::string& id = rendered.id;
+  const GoldenEntry* entry = manifest.find(id);
+  const std::filesystem::path expected = golden_dir / (entry != nullptr ? entry->file : id + ".exr");
+  const std::filesystem::path first = actual.empty() ? std::filesystem::path() : actual.front();
+  if (auto why = no_golden(golden_dir, manifest, rendered)) {
+    return without_golden(role, first, expected, *why);
+  }
+  const auto noise = manifest.noise.find(id);
+  if (noise == manifest.noise.end()) {
+    return without_golden(role, first, expected,
+                          "the golden of '" + id + "' in " + golden_dir.string() +
+                              " is one image, not the statistics of several runs a Monte Carlo "
+                              "tracer is judged by; bless it from a run of this adapter (raygate "
+                              "golden bless --from-run RESULTS.json)");
+  }
+  return check_noisy_against_stats(role, actual, expected, golden_dir, noise->second, thresholds,
+                                   evidence_dir, id + "." + role + "-vs-golden");
 }
 
 ImageCheck check_against_golden(const std::string& role, const std::filesystem::path& actual,

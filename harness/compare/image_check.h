@@ -13,6 +13,7 @@
 #include "compare/golden.h"
 #include "compare/image_compare.h"
 #include "compare/image_verdict.h"
+#include "compare/noisy_image_compare.h"
 
 namespace raygate {
 
@@ -50,5 +51,15 @@ ImageCheck check_against_golden(const std::string& role, const std::filesystem::
                                 const GoldenManifest& manifest, const GoldenEntry& rendered,
                                 const ImageThresholds& thresholds,
                                 const std::filesystem::path& evidence_dir);
+
+// The same for a Monte Carlo tracer (compare/noisy_image_check.h): every run's image of the
+// scene against the golden's statistics. A golden blessed from a single image (no "noise" in
+// the manifest) cannot judge noisy renders: verdict missing, saying how to bless one.
+ImageCheck check_runs_against_golden(const std::string& role,
+                                     const std::vector<std::filesystem::path>& actual,
+                                     const std::filesystem::path& golden_dir,
+                                     const GoldenManifest& manifest, const GoldenEntry& rendered,
+                                     const NoisyThresholds& thresholds,
+                                     const std::filesystem::path& evidence_dir);
 
 }  // namespace raygate

@@ -219,19 +219,24 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
   // whatever the rounds: no estimate.
   if (std::abs(size - threshold) < 0.1 * threshold) return std::nullopt;
   const bool towards_unchanged = size < threshold;
-  const double room = towards_unchanged ? threshold - size : size;
-  const Interval& interval =
-      towards_unchanged ? summary.equivalence_interval : summary.change_interval;
-  // The side that must move: both for UNCHANGED, the one towards 0 for a change.
-  const double half_width =
-      towards_unchanged ? (interval.upper - interval.lower) / 2.0
-                        : (summary.change > 0.0 ? summary.change - interval.lower
-                                                : interval.upper - summary.change);
-  if (!(room > 1e-4) || !(half_width > 0.0) || !std::isfinite(half_width)) return std::nullopt;
-  const double ratio = half_width / room;
-  const double rounds = static_cast<double>(summary.rounds) * std::max(1.0, ratio * ratio);
+  const double c = summary.change;
+  // How many times too wide the interval is on the side that must move: both sides for
+  // UNCHANGED (each end must come inside the limit on its side of the estimate), the side
+  // towards 0 for a change.
+  double ratio = 0.0;
+  if (towards_unchanged) {
+    const Interval& e = summary.equivalence_interval;
+    ratio = std::max((e.upper - c) / (threshold - c), (c - e.lower) / (c + threshold));
+  } else {
+    const Interval& d = summary.change_interval;
+    ratio = (c > 0.0 ? c - d.lower : d.upper - c) / size;
+  }
+  if (!(ratio > 0.0) || !std::isfinite(ratio)) return std::nullopt;
+  const double n = static_cast<double>(summary.rounds);
+  const double rounds = n * std::max(1.0, ratio * ratio);
   if (rounds > 1e7) return std::nullopt;
-  return static_cast<std::size_t>(std::ceil(rounds - 1e-6));  // 80.000000001 rounds is 80
+  // Undecided now, so at least one more round; 80.000000001 rounds is 80.
+  return std::max(summary.rounds + 1, static_cast<std::size_t>(std::ceil(rounds - 1e-6)));
 }
 
 DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict) {

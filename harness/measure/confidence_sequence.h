@@ -1,9 +1,12 @@
 // An anytime-valid confidence sequence for the median of a stream of values: intervals that
-// contain the true median at every round simultaneously with probability 1 - 2 alpha, so a
-// compare may look after every round and stop at the first decided verdict without inflating
-// its error (docs/statistics.md §6). The construction is the sign process of Howard & Ramdas'
-// sequential quantile confidence sequences with a normal-mixture boundary (Robbins; Howard,
-// Ramdas, McAuliffe & Sekhon 2021); only ranks enter, so spikes of any size cost one sign.
+// contain the true median at every round simultaneously with probability 1 - 2 alpha (each end
+// is wrong with probability at most alpha), so a compare may look after every round and stop at
+// the first decided verdict without inflating its error (docs/statistics.md §6a). Only ranks
+// enter, so spikes of any size cost one sign. The construction is a mixture martingale of the
+// sign process (Howard & Ramdas' sequential quantile confidence sequences): at the true median
+// each 1{x <= m} is a fair coin, so the likelihood ratio of "P(x <= m) = p" against "= 1/2",
+// mixed over p uniform on one side of 1/2, is a martingale, and Ville's inequality bounds the
+// chance it ever reaches 1 / alpha.
 #pragma once
 
 #include <cstddef>
@@ -14,26 +17,23 @@
 
 namespace raygate {
 
-// The round count the boundary is tuned for: it is tightest near here and valid everywhere.
-inline constexpr double kSequenceDesignRounds = 24.0;
+// ln of the one-sided mixture martingale after n values of which `count` fell on the tested
+// side (e.g. count = #{x_i <= m} when testing whether m lies above the median):
+//   M = 2^n * 2 * integral over p in (1/2, 1) of p^count (1 - p)^(n - count) dp
+//     = 2^(n+1) * B(count + 1, n - count + 1) * P(Binomial(n + 1, 1/2) <= count).
+// Increasing in count. Throws std::invalid_argument for count > n.
+double median_sequence_log_wealth(std::size_t n, std::size_t count);
 
-// A normal-mixture boundary on |S_n|, S_n = sum over i <= n of (1{x_i <= m} - 1/2) for the true
-// median m, with each side crossed at any round with probability at most alpha_each_side:
-//   b_n = sqrt((V + rho) ln((V + rho) / (rho (2 alpha)^2))),  V = n / 4.
-// Throws std::invalid_argument for alpha outside (0, 0.5) or rho <= 0.
-double median_sequence_boundary(std::size_t n, double alpha_each_side, double rho);
-
-// The mixture precision rho that makes the boundary tightest at V = design_rounds / 4 (Howard et
-// al. 2021, §3.5): rho = V / (2 ln(1/a) + ln(1 + 2 ln(1/a))), a = 2 alpha_each_side.
-double sequence_rho(double alpha_each_side, double design_rounds = kSequenceDesignRounds);
-
-// The interval at this round, [x(lo), x(hi)] of the sorted values: every m whose count of
-// values <= m lies strictly within n/2 +- b_n. nullopt while it is unbounded on either side
-// (too few values for any finite interval at this level). Values in measurement order.
+// The interval at this round, [x(lo), x(hi)] of the sorted values: every m that neither side's
+// martingale has rejected at this round, with k* the smallest count whose wealth reaches
+// 1 / alpha_each_side, hi = k* and lo = n + 1 - k*. nullopt while it is unbounded (k* > n: too
+// few values for any finite interval at this level). Throws std::invalid_argument for alpha
+// outside (0, 0.5). Values in measurement order.
 std::optional<Interval> median_sequence_interval(std::span<const double> values,
                                                  double alpha_each_side);
 
-// The fewest values for which the interval can be finite (19 at alpha 0.0004, 13 at 0.025).
+// The fewest values for which the interval can be finite: all n values on one side must reach
+// 1 / alpha (8 at alpha 0.025, 14 at 0.01/13).
 std::size_t min_values_for_median_sequence(double alpha_each_side);
 
 }  // namespace raygate

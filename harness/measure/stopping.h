@@ -31,7 +31,7 @@ struct StoppingPolicy {
 };
 
 // The defaults of compare and bisect. Their verdicts come from confidence sequences, which stay
-// unbounded for the first 9-17 rounds (docs/statistics.md §6a), and a round without the
+// unbounded for the first 7-14 rounds (docs/statistics.md §6a), and a round without the
 // baseline costs only base and head, so a scene near its limit may take 300 rounds; the whole
 // compare is bounded instead, by 8 minutes, so a full `ci` compare fits a 10-minute CI step.
 StoppingPolicy change_stopping_policy();

@@ -8,7 +8,9 @@
 #include "core/time_text.h"
 #include "measure/confidence_sequence.h"
 #include "measure/simulated_cost.h"
+#include "compare/noisy_image_check.h"
 #include "pipeline/compare_family.h"
+#include "pipeline/run_images.h"
 #include "pipeline/stopping.h"
 #include "runner/baseline_contender.h"
 #include "runner/tracer_contender.h"
@@ -17,10 +19,20 @@ namespace raygate {
 
 namespace {
 
+// A Monte Carlo tracer's images: every run of head against every run of base, within noise.
+ImageCheck check_noisy_change(const SceneResult& scene, std::size_t family_size,
+                              const std::filesystem::path& evidence_dir) {
+  return check_noisy_images("head", "base", run_images(scene.runs, "head"),
+                            run_images(scene.runs, "base"), noisy_thresholds_for(family_size),
+                            evidence_dir, scene.entry.id + ".head-vs-base");
+}
+
 // The change head vs base at the scene's share `alpha` of the family, and head's image against
-// base's.
+// base's (against all of base's runs, within noise, when `noisy_family` is set: the number of
+// images the Monte Carlo check's 1% is shared by).
 void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, double alpha,
-                          const std::filesystem::path& evidence_dir, bool counted) {
+                          const std::filesystem::path& evidence_dir, bool counted,
+                          std::optional<std::size_t> noisy_family) {
   const ScenePolicy& policy = gate_policy.for_scene(scene.entry.id);
   scene.change = measured_change(compare_samples(scene.runs.rounds), change_bootstrap(policy),
                                  counted, scene_levels(policy, alpha));
@@ -33,7 +45,9 @@ void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, dou
   }
   const RunRecord* base = scene.runs.first_run("base");
   const RunRecord* head = scene.runs.first_run("head");
-  if (base != nullptr && head != nullptr) {
+  if (base != nullptr && head != nullptr && noisy_family) {
+    scene.images.push_back(check_noisy_change(scene, *noisy_family, evidence_dir));
+  } else if (base != nullptr && head != nullptr) {
     scene.images.push_back(check_image("head", "base", head->image, base->image, policy.image,
                                        evidence_dir, scene.entry.id + ".head-vs-base"));
   }
@@ -105,7 +119,10 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
   };
   m.finish_scene = [&](SceneResult& scene) {
     finish_compare_scene(scene, context.policy, alpha, work_dir / "evidence",
-                         simulated(context));
+                         simulated(context),
+                         context.adapter.images == ImageKind::monte_carlo
+                             ? std::optional<std::size_t>(family_size)
+                             : std::nullopt);
   };
   m.finish_suite = [&](ResultsDocument& document) {
     std::vector<std::string> lines;

@@ -3,17 +3,23 @@
 #include <OpenImageIO/imagebuf.h>
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cctype>
 #include <utility>
 
+#include "adapter/adapter.h"
 #include "compare/golden.h"
+#include "compare/image_check.h"
 #include "compare/image_compare.h"
+#include "compare/noisy_image_check.h"
+#include "compare/noisy_image_files.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/path_component.h"
 #include "core/paths.h"
 #include "core/replace_directory.h"
 #include "core/sha256.h"
+#include "pipeline/run_images.h"
 #include "results/results.h"
 #include "runner/scene_files.h"
 
@@ -110,6 +116,9 @@ struct Blessing {
   std::string file;
   std::filesystem::path image;
   GoldenEntry entry;
+  // A Monte Carlo golden: `image` is the runs' mean, this their variance (noise.variance_file).
+  std::optional<GoldenNoise> noise;
+  std::filesystem::path variance_image;
 };
 
 // Fills `fresh` with the new golden set: the old set's files (linked, not copied), each
@@ -124,6 +133,13 @@ void write_new_set(const std::filesystem::path& golden_dir, const std::filesyste
     entry.file = b.file;
     entry.sha256 = sha256_file_hex(fresh / b.file);
     next.upsert(entry);
+    next.noise.erase(entry.id);
+    if (b.noise) {
+      GoldenNoise noise = *b.noise;
+      write_file_atomically(fresh / noise.variance_file, read_file(b.variance_image));
+      noise.variance_sha256 = sha256_file_hex(fresh / noise.variance_file);
+      next.noise[entry.id] = std::move(noise);
+    }
   }
   save_golden_manifest(next, fresh);
 }
@@ -143,6 +159,46 @@ void swap_in_goldens(const std::filesystem::path& golden_dir, GoldenManifest& ma
                                      "); the goldens there are unchanged");
   }
   manifest = std::move(next);
+}
+
+// How the run's tracer makes images: its adapter file's "images", when that file is still there
+// and is the adapter the run used (same hash); otherwise deterministic.
+ImageKind run_image_kind(const RevisionRecord& revision) {
+  std::error_code ec;
+  if (revision.adapter_file.empty() || !std::filesystem::is_regular_file(revision.adapter_file, ec)) {
+    return ImageKind::deterministic;
+  }
+  try {
+    const Adapter adapter = load_adapter(revision.adapter_file);
+    if (adapter_hash(adapter) == revision.adapter_hash) return adapter.images;
+  } catch (const UsageError&) {
+  }
+  return ImageKind::deterministic;
+}
+
+// A Monte Carlo tracer's goldens: per scene the mean and variance of every run's image (each
+// rendered with its own seed), written into `stats_dir` before any is blessed.
+std::vector<Blessing> monte_carlo_blessings(const ChosenImages& chosen, const std::string& role,
+                                            const std::string& sampling,
+                                            const std::filesystem::path& stats_dir) {
+  std::vector<Blessing> blessings;
+  for (const auto& [scene, first_image] : chosen) {
+    const SuiteScene& e = scene->entry;
+    const std::vector<std::filesystem::path> images = run_images(scene->runs, role);
+    if (images.size() < 2) {
+      throw UsageError("'" + e.id + "' has " + std::to_string(images.size()) + " " + role +
+                       " image(s); a Monte Carlo golden needs at least 2 runs with their own "
+                       "seeds (run with more rounds: --min-rounds)");
+    }
+    const NoisyImageStats stats = stats_of_images(images);
+    const std::string mean_file = e.id + ".mean.exr";
+    GoldenNoise noise{stats.runs, e.id + ".variance.exr", {}, stats.inflation};
+    write_stats_images(stats, stats_dir / mean_file, stats_dir / noise.variance_file);
+    blessings.push_back({mean_file, stats_dir / mean_file,
+                         {e.id, e.scene, e.size, stats.width, stats.height, sampling, "", {}, {}},
+                         noise, stats_dir / noise.variance_file});
+  }
+  return blessings;
 }
 
 }  // namespace
@@ -215,7 +271,9 @@ void bless_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progre
                     {{file, render.image,
                       {scene.id, scene.scene, scene.size, render.stats.value("width", 0),
                        render.stats.value("height", 0), goldens.suite.sampling, "none", file,
-                       {}}}});
+                       {}},
+                      std::nullopt,
+                      {}}});
     progress.line(fmt::format("blessed   {:<12} {} ({:.2f} s)", scene.id,
                               (goldens.golden_dir / file).string(), render.process.wall_seconds));
   }
@@ -246,6 +304,17 @@ void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress)
   manifest.tracer = GoldenProvenance{revision->adapter_name, revision->adapter_hash,
                                      revision->worktree.revision, revision->worktree.sha,
                                      revision->worktree.dirty, results, document.started_at};
+  if (run_image_kind(*revision) == ImageKind::monte_carlo) {
+    const TempDir stats_dir("raygate-bless");
+    const std::vector<Blessing> blessings =
+        monte_carlo_blessings(chosen, request.role, document.baseline.sampling, stats_dir.path());
+    swap_in_goldens(golden_dir, manifest, blessings);
+    for (const Blessing& b : blessings) {
+      progress.line(fmt::format("blessed   {:<12} {} (mean and variance of {} runs)", b.entry.id,
+                                (golden_dir / b.file).string(), b.noise->runs));
+    }
+    return;
+  }
   // Every image decoded before any is blessed; then one swap for all of them.
   std::vector<Blessing> blessings;
   for (const auto& [scene, image] : chosen) {
@@ -257,13 +326,82 @@ void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress)
     // The hash is provenance only: goldens are compared by decoded pixels, never by bytes.
     blessings.push_back({e.id + image.extension().string(), image,
                          {e.id, e.scene, e.size, decoded.spec().width, decoded.spec().height,
-                          document.baseline.sampling, "", {}, {}}});
+                          document.baseline.sampling, "", {}, {}},
+                         std::nullopt,
+                         {}});
   }
   swap_in_goldens(golden_dir, manifest, blessings);
   for (const Blessing& b : blessings) {
     progress.line(fmt::format("blessed   {:<12} {} (from {})", b.entry.id,
                               (golden_dir / b.file).string(), b.image.string()));
   }
+}
+
+namespace {
+
+// One scene's check as a verify line, counted.
+void report_check(const std::string& id, const ImageCheck& check, GoldenVerification& counts,
+                  ProgressSink& progress) {
+  const std::string what = check.metrics ? summarize(*check.metrics) : check.error;
+  const char* word = "ok       ";
+  if (check.verdict == ImageVerdict::missing || check.verdict == ImageVerdict::error) {
+    word = "MISSING  ";
+    ++counts.missing;
+  } else if (check.verdict == ImageVerdict::fail) {
+    word = "DIFFERENT";
+    ++counts.different;
+  } else if (check.verdict == ImageVerdict::warn && !check.metrics) {
+    word = "UNSURE   ";  // a Monte Carlo check too noisy to decide
+    ++counts.inconclusive;
+  } else {
+    ++counts.identical;
+  }
+  std::string line = fmt::format("{} {:<12} {}", word, id, what);
+  if (!check.evidence.empty()) line += "; evidence in " + check.evidence.front().parent_path().string();
+  progress.line(line);
+}
+
+}  // namespace
+
+GoldenVerification verify_goldens_from_run(const BlessFromRun& request,
+                                           const std::filesystem::path& evidence_dir,
+                                           ProgressSink& progress) {
+  const ResultsDocument document = read_results(request.results);
+  const RevisionRecord* revision = document.revision(request.role);
+  if (revision == nullptr) {
+    throw UsageError(request.results.string() + " has no revision with role '" + request.role +
+                     "' (use --role tracer, base or head)");
+  }
+  const std::filesystem::path golden_dir =
+      request.golden_dir.empty()
+          ? adapter_golden_dir(locate_tools(request.baseline).data_root / "golden",
+                               revision->adapter_name)
+          : request.golden_dir;
+  const GoldenManifest manifest = load_golden_manifest(golden_dir);
+  const ImageKind kind = run_image_kind(*revision);
+  GoldenVerification counts;
+  for (const SceneResult& scene : document.scenes) {
+    const SuiteScene& e = scene.entry;
+    const auto& ids = request.scene_ids;
+    if (!ids.empty() && std::find(ids.begin(), ids.end(), e.id) == ids.end()) continue;
+    const RunRecord* run = scene.runs.first_run(request.role);
+    if (run == nullptr) {
+      progress.line(fmt::format("MISSING   {:<12} no successful {} run", e.id, request.role));
+      ++counts.missing;
+      continue;
+    }
+    const GoldenEntry rendered{e.id, e.scene, e.size, e.width, e.height,
+                               document.baseline.sampling, {}, {}, {}};
+    const ImageCheck check =
+        kind == ImageKind::monte_carlo
+            ? check_runs_against_golden(request.role, run_images(scene.runs, request.role),
+                                        golden_dir, manifest, rendered,
+                                        noisy_thresholds_for(document.scenes.size()), evidence_dir)
+            : check_against_golden(request.role, run->image, golden_dir, manifest, rendered, {},
+                                   evidence_dir);
+    report_check(e.id, check, counts, progress);
+  }
+  return counts;
 }
 
 }  // namespace raygate

@@ -32,9 +32,10 @@ BaselineGoldens open_baseline_goldens(const std::string& suite,
                                       const std::filesystem::path& baseline);
 
 struct GoldenVerification {
-  std::size_t identical = 0;
+  std::size_t identical = 0;  // identical pixels, or (Monte Carlo) the same within noise
   std::size_t different = 0;  // evidence written under work_dir/evidence
   std::size_t missing = 0;
+  std::size_t inconclusive = 0;  // Monte Carlo: too noisy to tell
 };
 
 // Renders each selected scene that has a golden and compares pixels; a render that fails is an
@@ -61,5 +62,13 @@ struct BlessFromRun {
 // blesses nothing; then the whole new set is swapped in at once, so a failed write (a full disk)
 // blesses nothing either and leaves the old set and its manifest as they were.
 void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress);
+
+// `golden verify --from-run`: a run's images of `role` checked against its adapter's goldens
+// (request.golden_dir, or the adapter's under the data root), as the run itself would check
+// them: per pixel, or for a Monte Carlo adapter every run's image against the golden's
+// statistics. Evidence goes to `evidence_dir`.
+GoldenVerification verify_goldens_from_run(const BlessFromRun& request,
+                                           const std::filesystem::path& evidence_dir,
+                                           ProgressSink& progress);
 
 }  // namespace raygate

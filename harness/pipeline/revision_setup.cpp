@@ -61,7 +61,7 @@ void require_run_program(const Adapter& adapter, const BuildRecord& build,
   if (adapter.run.empty()) return;
   const std::string& written = adapter.run.front();
   for (const char* name :
-       {"workdir", "scene", "image", "scene_stem", "threads", "width", "height", "jobs"}) {
+       {"workdir", "scene", "image", "scene_stem", "threads", "width", "height", "jobs", "seed"}) {
     if (uses_placeholder(written, name)) return;  // known only at run time
   }
   Placeholders values;

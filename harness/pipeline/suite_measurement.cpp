@@ -12,7 +12,9 @@
 #include "core/time_text.h"
 #include "gate/growth_gate.h"
 #include "measure/machine_context.h"
+#include "compare/noisy_image_check.h"
 #include "pipeline/document_output.h"
+#include "pipeline/run_images.h"
 #include "runner/baseline_cost_cache.h"
 #include "runner/cachegrind.h"
 #include "runner/scene_files.h"
@@ -51,6 +53,12 @@ void check_images(SceneResult& result, const SuiteMeasurement& m, const GoldenMa
   for (const std::string& role : m.tracer_roles) {
     const RunRecord* run = result.runs.first_run(role);
     if (run == nullptr) continue;  // failed before producing an image; the failure says why
+    if (m.images == ImageKind::monte_carlo) {
+      result.images.push_back(check_runs_against_golden(
+          role, run_images(result.runs, role), m.golden_dir, manifest, rendered,
+          noisy_thresholds_for(m.scenes.size()), m.work_dir / "evidence"));
+      continue;
+    }
     result.images.push_back(check_against_golden(role, run->image, m.golden_dir, manifest,
                                                  rendered,
                                                  m.policy.for_scene(result.entry.id).image,
@@ -92,6 +100,7 @@ SuiteMeasurement suite_measurement(const MeasureContext& context, const std::str
   m.scenes = context.scenes;
   m.schedule = context.schedule;
   m.formats = {context.adapter.scene_format};
+  m.images = context.adapter.images;
   return m;
 }
 
@@ -248,6 +257,12 @@ std::string scene_line(const SceneResult& scene, const std::vector<std::string>&
     std::string detail = check.error;
     if (check.metrics) {
       detail = check.metrics->identical() ? "identical" : summarize(*check.metrics);
+    }
+    // The Monte Carlo check's words start with their own verdict ("fail (biased): ...").
+    const std::string verdict(to_string(check.verdict));
+    if (!check.metrics && (detail.starts_with(verdict + " (") || detail.starts_with("inconclusive ("))) {
+      text += fmt::format("  image {} {}", what, detail);
+      continue;
     }
     text += fmt::format("  image {} {} ({})", what, to_string(check.verdict), detail);
   }

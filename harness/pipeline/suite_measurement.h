@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "adapter/adapter.h"
 #include "compare/golden.h"
 #include "compare/image_compare.h"
 #include "gate/policy.h"
@@ -32,6 +33,7 @@ struct SuiteMeasurement {
   ScheduleOptions schedule;
   std::function<StopRule(const SuiteScene&)> stop;  // the stopping rule of each scene
   GatePolicy policy;  // image thresholds per scene
+  ImageKind images = ImageKind::deterministic;  // the adapter's: how its images are judged
   std::filesystem::path golden_dir;
   std::filesystem::path scene_cache;  // generated scene files
   std::filesystem::path work_dir;     // run directories and evidence images

@@ -1,5 +1,6 @@
 #include "runner/tracer_contender.h"
 
+#include <cstdint>
 #include <system_error>
 
 #include "core/error.h"
@@ -24,6 +25,17 @@ std::pair<int, int> image_size(const SceneInput& scene) {
   }
 }
 
+// {seed}: FNV-1a of the run's own directory (<run>/scenes/<id>/<role>/<label>), 31 bits. Every
+// run gets its own seed, within a measurement and across measurements (each has a fresh run
+// directory), so repeated compares are independent samples, as a statistical check needs.
+std::string run_seed(const std::filesystem::path& run_dir) {
+  std::uint32_t hash = 2166136261u;
+  for (const char c : run_dir.lexically_normal().string()) {
+    hash = (hash ^ static_cast<unsigned char>(c)) * 16777619u;
+  }
+  return std::to_string(hash & 0x7FFFFFFFu);
+}
+
 }  // namespace
 
 TracerContender::TracerContender(TracerSetup setup)
@@ -46,6 +58,7 @@ Placeholders TracerContender::placeholders(const SceneInput& scene,
   const auto [width, height] = image_size(scene);
   values.width = std::to_string(width);
   values.height = std::to_string(height);
+  values.seed = run_seed(run_dir);
   return values;
 }
 

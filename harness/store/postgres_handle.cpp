@@ -1,10 +1,12 @@
-// libpq connections, results and transactions, with errors that say where and what to do.
+// libpq connections and results, with errors that say where and what to do, and PostgreSQL's
+// dialect.
 #include "store/postgres_handle.h"
 
 #include <fmt/core.h>
 #include <libpq-fe.h>
 
 #include <charconv>
+#include <type_traits>
 
 #include "core/error.h"
 
@@ -191,21 +193,90 @@ void PgConnection::fail(const pg_result* result, const std::string& sql) const {
                                sqlstate.empty() ? "" : " " + sqlstate, message, where));
 }
 
-// READ COMMITTED whatever the server's default: adding a document relies on each statement
-// seeing what other writers committed before it (docs/store.md, "The team store").
-PgTransaction::PgTransaction(PgConnection& db) : db_(db) {
-  db_.exec("BEGIN ISOLATION LEVEL READ COMMITTED");
+namespace {
+
+// One row of a result, for the dialect layer's readers.
+class ResultRow final : public SqlRow {
+ public:
+  ResultRow(const PgResult& result, int row) : result_(result), row_(row) {}
+  std::string text(int column) const override { return result_.text(row_, column); }
+  std::optional<std::int64_t> integer(int column) const override {
+    return result_.optional_integer(row_, column);
+  }
+  std::optional<double> real(int column) const override { return result_.real(row_, column); }
+  bool flag(int column) const override { return result_.flag(row_, column); }
+
+ private:
+  const PgResult& result_;
+  int row_;
+};
+
+// Every value travels as text: PostgreSQL reads it as the type its parameter is cast to.
+std::optional<std::string> text_of(const SqlParams::Value& value) {
+  return std::visit(
+      [](const auto& v) -> std::optional<std::string> {
+        using T = std::decay_t<decltype(v)>;
+        if constexpr (std::is_same_v<T, std::monostate>) return std::nullopt;
+        if constexpr (std::is_same_v<T, std::string>) return v;
+        if constexpr (std::is_same_v<T, bool>) return v ? "true" : "false";
+        // Integers exactly; doubles as the shortest text that reads back the same double.
+        if constexpr (std::is_same_v<T, std::int64_t> || std::is_same_v<T, double>) {
+          return fmt::format("{}", v);
+        }
+      },
+      value);
 }
 
-PgTransaction::~PgTransaction() {
-  // Never throws: a ROLLBACK that fails means the connection is gone, and the server rolls
-  // back a dead connection's transaction itself.
-  if (open_ && PQstatus(db_.get()) == CONNECTION_OK) PQclear(PQexec(db_.get(), "ROLLBACK"));
+PgParams pg_params(const SqlParams& params) {
+  PgParams out;
+  for (const SqlParams::Value& value : params.values()) {
+    const std::optional<std::string> text = text_of(value);
+    if (text) {
+      out.text(*text);
+    } else {
+      out.integer(std::nullopt);
+    }
+  }
+  return out;
 }
 
-void PgTransaction::commit() {
-  open_ = false;  // a failed COMMIT has ended the transaction on the server too
-  db_.exec("COMMIT");
+}  // namespace
+
+void PgConnection::query(const std::string& sql, const SqlParams& params,
+                         const std::function<void(const SqlRow&)>& each_row) {
+  const PgResult result = exec(sql, pg_params(params));
+  if (!each_row) return;
+  for (int i = 0; i < result.rows(); ++i) each_row(ResultRow(result, i));
+}
+
+std::string PgConnection::parameter(int number, SqlType type) const {
+  return fmt::format("${}::{}", number, type_name(type));
+}
+
+std::string PgConnection::type_name(SqlType type) const {
+  // By SqlType: int32, int64, real, text, flag.
+  constexpr const char* kNames[] = {"INTEGER", "BIGINT", "DOUBLE PRECISION", "TEXT", "BOOLEAN"};
+  return kNames[static_cast<int>(type)];
+}
+
+std::string PgConnection::position(const std::string& haystack, const std::string& needle) const {
+  return fmt::format("strpos({}, {})", haystack, needle);
+}
+
+void PgConnection::rollback() noexcept {
+  // A ROLLBACK that fails means the connection is gone, and the server rolls back a dead
+  // connection's transaction itself.
+  if (PQstatus(conn_.get()) == CONNECTION_OK) PQclear(PQexec(conn_.get(), "ROLLBACK"));
+}
+
+void PgConnection::lock_schema() {
+  exec("SELECT pg_advisory_xact_lock($1)", PgParams().integer(kMigrationLockKey));
+}
+
+int PgConnection::schema_version() {
+  if (!exec("SELECT to_regclass('schema_migrations') IS NOT NULL").flag(0, 0)) return 0;
+  return static_cast<int>(
+      exec("SELECT coalesce(max(version), 0) FROM schema_migrations").integer(0, 0));
 }
 
 }  // namespace raygate

@@ -1,8 +1,9 @@
-// RAII over libpq: a connection (PGconn), a query's result (PGresult), parameters and a
-// transaction. Values always travel as parameters of PQexecParams in text form, never inside
-// the SQL. Every failure becomes a raygate error naming the server without its password, the
-// server's message with its SQLSTATE and the SQL that was running: a server that cannot be
-// reached or a connection lost midway is an InfraError saying to check the server and retry.
+// RAII over libpq: a connection (PGconn), which is the PostgreSQL side of the store's dialect
+// layer (store/sql_database.h), a query's result (PGresult) and parameters. Values always travel
+// as parameters of PQexecParams in text form, never inside the SQL. Every failure becomes a
+// raygate error naming the server without its password, the server's message with its SQLSTATE
+// and the SQL that was running: a server that cannot be reached or a connection lost midway is
+// an InfraError saying to check the server and retry.
 #pragma once
 
 #include <chrono>
@@ -13,11 +14,15 @@
 #include <vector>
 
 #include "store/postgres_url.h"
+#include "store/sql_database.h"
 
 struct pg_conn;    // PGconn
 struct pg_result;  // PGresult
 
 namespace raygate {
+
+// The advisory lock key every raygate takes while migrating ("raygate" in ASCII).
+inline constexpr std::int64_t kMigrationLockKey = 0x72617967617465;
 
 // How long connecting may take when the URL sets no connect_timeout.
 inline constexpr std::chrono::seconds kPostgresConnectTimeout{10};
@@ -60,7 +65,7 @@ class PgResult {
   std::unique_ptr<pg_result, Clear> result_;
 };
 
-class PgConnection {
+class PgConnection final : public SqlDatabase {
  public:
   // Connects (UsageError for a malformed URL, InfraError for a server that cannot be reached
   // or refuses the login); sets UTF-8 and exact float text, and silences server notices.
@@ -69,10 +74,27 @@ class PgConnection {
   // One statement; its values as parameters. Returns the rows (none for commands).
   PgResult exec(const std::string& sql, const PgParams& params = {});
   // Constant SQL with several statements and no values (the schema's DDL).
-  void exec_script(const std::string& sql);
+  void exec_script(const std::string& sql) override;
 
-  // The URL without its password.
-  const std::string& location() const { return url_.redacted; }
+  // The dialect layer. Transactions are READ COMMITTED whatever the server's default: adding a
+  // document relies on each statement seeing what other writers committed before it
+  // (docs/store.md, "The team store"). The schema lock is a transaction-level advisory lock
+  // (kMigrationLockKey): CREATE TABLE IF NOT EXISTS alone races on the catalog. The version is
+  // the largest in schema_migrations.
+  std::string location() const override { return url_.redacted; }  // without the password
+  void query(const std::string& sql, const SqlParams& params,
+             const std::function<void(const SqlRow&)>& each_row) override;
+  std::string parameter(int number, SqlType type) const override;
+  std::string type_name(SqlType type) const override;
+  std::string identity_key() const override { return "BIGSERIAL PRIMARY KEY"; }
+  std::string position(const std::string& haystack, const std::string& needle) const override;
+  std::string bytewise() const override { return " COLLATE \"C\""; }
+  void begin() override { exec("BEGIN ISOLATION LEVEL READ COMMITTED"); }
+  void commit() override { exec("COMMIT"); }  // a failed COMMIT ends the transaction too
+  void rollback() noexcept override;
+  void lock_schema() override;
+  int schema_version() override;
+  void set_schema_version(int) override {}  // the row in schema_migrations says it
   pg_conn* get() const { return conn_.get(); }
 
  private:
@@ -85,21 +107,6 @@ class PgConnection {
 
   std::unique_ptr<pg_conn, Finish> conn_;
   PostgresUrl url_;
-};
-
-// BEGIN, and ROLLBACK from the destructor unless commit() ran (a dead connection rolls back on
-// the server by itself).
-class PgTransaction {
- public:
-  explicit PgTransaction(PgConnection& db);
-  PgTransaction(const PgTransaction&) = delete;
-  PgTransaction& operator=(const PgTransaction&) = delete;
-  ~PgTransaction();
-  void commit();
-
- private:
-  PgConnection& db_;
-  bool open_ = true;
 };
 
 }  // namespace raygate

@@ -1,8 +1,10 @@
-// SQLite connections, statements and transactions, with errors that say where and what.
+// SQLite connections and statements, with errors that say where and what, and SQLite's dialect.
 #include "store/sqlite_handle.h"
 
 #include <fmt/core.h>
 #include <sqlite3.h>
+
+#include <thread>
 
 #include "core/error.h"
 
@@ -66,7 +68,8 @@ SqliteDb SqliteDb::open(const std::filesystem::path& path, bool create,
 }
 
 SqliteDb::SqliteDb(SqliteDb&& other) noexcept
-    : db_(other.db_), path_(std::move(other.path_)), busy_timeout_(other.busy_timeout_) {
+    : SqlDatabase(std::move(other)),
+      db_(other.db_), path_(std::move(other.path_)), busy_timeout_(other.busy_timeout_) {
   other.db_ = nullptr;
 }
 
@@ -147,16 +150,103 @@ std::optional<double> SqliteStatement::real(int column) const {
   return sqlite3_column_double(statement_, column);
 }
 
-SqliteTransaction::SqliteTransaction(SqliteDb& db) : db_(db) { db_.exec("BEGIN IMMEDIATE"); }
+namespace {
 
-SqliteTransaction::~SqliteTransaction() {
-  // A failed ROLLBACK leaves SQLite to roll back when the connection closes; never throw here.
-  if (open_) sqlite3_exec(db_.get(), "ROLLBACK", nullptr, nullptr, nullptr);
+// The current row of a statement, for the dialect layer's readers.
+class StatementRow final : public SqlRow {
+ public:
+  explicit StatementRow(const SqliteStatement& statement) : statement_(statement) {}
+  std::string text(int column) const override { return statement_.text(column); }
+  std::optional<std::int64_t> integer(int column) const override {
+    return statement_.optional_integer(column);
+  }
+  std::optional<double> real(int column) const override { return statement_.real(column); }
+  bool flag(int column) const override { return statement_.integer(column) != 0; }
+
+ private:
+  const SqliteStatement& statement_;
+};
+
+void bind(SqliteStatement& statement, int index, const SqlParams::Value& value) {
+  if (const auto* text = std::get_if<std::string>(&value)) {
+    statement.bind_text(index, *text);
+  } else if (const auto* integer = std::get_if<std::int64_t>(&value)) {
+    statement.bind_int(index, *integer);
+  } else if (const auto* real = std::get_if<double>(&value)) {
+    statement.bind_real(index, *real);
+  } else if (const auto* flag = std::get_if<bool>(&value)) {
+    statement.bind_flag(index, *flag);
+  } else {
+    statement.bind_int(index, std::nullopt);
+  }
 }
 
-void SqliteTransaction::commit() {
-  db_.exec("COMMIT");
-  open_ = false;
+}  // namespace
+
+void SqliteDb::query(const std::string& sql, const SqlParams& params,
+                     const std::function<void(const SqlRow&)>& each_row) {
+  SqliteStatement statement(*this, sql);
+  const std::vector<SqlParams::Value>& values = params.values();
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    bind(statement, static_cast<int>(i) + 1, values[i]);
+  }
+  while (statement.step()) {
+    if (each_row) each_row(StatementRow(statement));
+  }
+}
+
+std::string SqliteDb::parameter(int number, SqlType) const { return fmt::format("?{}", number); }
+
+std::string SqliteDb::type_name(SqlType type) const {
+  // By SqlType: int32, int64 (SQLite's integers are 64-bit), real, text, flag (0/1).
+  constexpr const char* kNames[] = {"INTEGER", "INTEGER", "REAL", "TEXT", "INTEGER"};
+  return kNames[static_cast<int>(type)];
+}
+
+std::string SqliteDb::position(const std::string& haystack, const std::string& needle) const {
+  return fmt::format("instr({}, {})", haystack, needle);
+}
+
+void SqliteDb::commit() {
+  try {
+    exec("COMMIT");
+  } catch (...) {
+    rollback();  // a COMMIT that failed (busy) leaves the transaction open
+    throw;
+  }
+}
+
+void SqliteDb::rollback() noexcept {
+  // A failed ROLLBACK leaves SQLite to roll back when the connection closes; never throw here.
+  sqlite3_exec(db_, "ROLLBACK", nullptr, nullptr, nullptr);
+}
+
+int SqliteDb::schema_version() {
+  int version = 0;
+  query("PRAGMA user_version", {},
+        [&version](const SqlRow& row) { version = static_cast<int>(*row.integer(0)); });
+  return version;
+}
+
+void SqliteDb::set_schema_version(int version) {
+  exec(fmt::format("PRAGMA user_version = {}", version));
+}
+
+// Switching to WAL takes an exclusive lock that the busy handler does not always wait for
+// (a fresh file opened by several processes at once): retry until the busy timeout.
+void SqliteDb::configure_for_store() {
+  const auto deadline = std::chrono::steady_clock::now() + busy_timeout_;
+  for (;;) {
+    const int code = sqlite3_exec(db_, "PRAGMA journal_mode = WAL", nullptr, nullptr, nullptr);
+    if (code == SQLITE_OK) break;
+    const bool busy = (code & 0xff) == SQLITE_BUSY || (code & 0xff) == SQLITE_LOCKED;
+    if (!busy || std::chrono::steady_clock::now() > deadline) {
+      fail(code, "PRAGMA journal_mode = WAL");
+    }
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  exec("PRAGMA synchronous = FULL");
+  exec("PRAGMA foreign_keys = ON");
 }
 
 }  // namespace raygate

@@ -1,7 +1,8 @@
-// RAII over the SQLite C API: a connection, a prepared statement, a write transaction. Every
-// failure becomes a raygate error carrying SQLite's message, the database path and the SQL it
-// was running; "database is locked" (another writer held the file past the busy timeout) is an
-// InfraError, a file that is not a database a UsageError.
+// RAII over the SQLite C API: a connection, which is the SQLite side of the store's dialect
+// layer (store/sql_database.h), and a prepared statement. Every failure becomes a raygate error
+// carrying SQLite's message, the database path and the SQL it was running; "database is locked"
+// (another writer held the file past the busy timeout) is an InfraError, a file that is not a
+// database a UsageError.
 #pragma once
 
 #include <chrono>
@@ -10,6 +11,8 @@
 #include <optional>
 #include <string>
 
+#include "store/sql_database.h"
+
 struct sqlite3;
 struct sqlite3_stmt;
 
@@ -17,7 +20,7 @@ namespace raygate {
 
 inline constexpr std::chrono::milliseconds kStoreBusyTimeout{30000};
 
-class SqliteDb {
+class SqliteDb final : public SqlDatabase {
  public:
   // Opens (and with `create`, creates) the file; sets the busy timeout and extended codes.
   static SqliteDb open(const std::filesystem::path& path, bool create,
@@ -25,12 +28,35 @@ class SqliteDb {
   SqliteDb(SqliteDb&& other) noexcept;
   SqliteDb& operator=(SqliteDb&&) = delete;
   SqliteDb(const SqliteDb&) = delete;
-  ~SqliteDb();
+  ~SqliteDb() override;
+
+  // Write-ahead log (readers never block the writer), full sync (a committed document survives
+  // a power cut), foreign keys on: how the store uses its file.
+  void configure_for_store();
 
   // Runs statements that return no rows (several, separated by ';').
   void exec(const std::string& sql);
   // Throws the raygate error for SQLite result `code` while running `sql`.
   [[noreturn]] void fail(int code, const std::string& sql) const;
+
+  // The dialect layer. The schema's version is the file's PRAGMA user_version; BEGIN IMMEDIATE
+  // takes the write lock up front, so two writers never deadlock upgrading a read, and it is the
+  // schema lock too.
+  std::string location() const override { return path_.string(); }
+  void query(const std::string& sql, const SqlParams& params,
+             const std::function<void(const SqlRow&)>& each_row) override;
+  void exec_script(const std::string& sql) override { exec(sql); }
+  std::string parameter(int number, SqlType type) const override;
+  std::string type_name(SqlType type) const override;
+  std::string identity_key() const override { return "INTEGER PRIMARY KEY"; }
+  std::string position(const std::string& haystack, const std::string& needle) const override;
+  std::string bytewise() const override { return ""; }  // BINARY is SQLite's default
+  void begin() override { exec("BEGIN IMMEDIATE"); }
+  void commit() override;
+  void rollback() noexcept override;
+  void lock_schema() override {}
+  int schema_version() override;
+  void set_schema_version(int version) override;
 
   sqlite3* get() const { return db_; }
   const std::filesystem::path& path() const { return path_; }
@@ -74,21 +100,6 @@ class SqliteStatement {
   SqliteDb& db_;
   std::string sql_;
   sqlite3_stmt* statement_ = nullptr;
-};
-
-// BEGIN IMMEDIATE (the write lock is taken up front, so two writers never deadlock upgrading a
-// read); rolled back by the destructor unless commit() ran.
-class SqliteTransaction {
- public:
-  explicit SqliteTransaction(SqliteDb& db);
-  SqliteTransaction(const SqliteTransaction&) = delete;
-  SqliteTransaction& operator=(const SqliteTransaction&) = delete;
-  ~SqliteTransaction();
-  void commit();
-
- private:
-  SqliteDb& db_;
-  bool open_ = true;
 };
 
 }  // namespace raygate

@@ -1,13 +1,13 @@
-// Choosing a backend for a --store location, and the backend-independent parts of the interface.
+// Choosing a backend for a --store location (both are the one SQL store, store/sql_store.h, over
+// their dialect's handle), and the backend-independent parts of the interface.
 #include "store/store.h"
 
 #include <fmt/core.h>
 
 #include "core/error.h"
 #include "store/history.h"
-#include "store/postgres_store.h"
 #include "store/postgres_url.h"
-#include "store/sqlite_store.h"
+#include "store/sql_store.h"
 #include "store/store_rows.h"
 
 namespace raygate {
@@ -18,7 +18,7 @@ std::vector<HistoryRow> ResultsStore::history(const HistoryQuery& query) {
 
 std::unique_ptr<ResultsStore> open_store(const std::string& location, StoreOpen mode) {
   if (location.empty()) return open_store(kDefaultStorePath, mode);
-  if (is_postgresql_url(location)) return std::make_unique<PostgresStore>(location, mode);
+  if (is_postgresql_url(location)) return open_postgres_store(location, mode);
   if (location.find("://") != std::string::npos) {
     throw UsageError(
         fmt::format("--store {}: unknown kind of URL; give a file path for an "
@@ -33,7 +33,7 @@ std::unique_ptr<ResultsStore> open_store(const std::string& location, StoreOpen 
                                  location,
                                  (std::filesystem::path(location) / "results.db").string()));
   }
-  return std::make_unique<SqliteStore>(std::filesystem::absolute(location), mode);
+  return open_sqlite_store(std::filesystem::absolute(location), mode);
 }
 
 std::string branch_of(const ResultsDocument& document, const std::string& fallback) {

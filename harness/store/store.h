@@ -1,9 +1,9 @@
 // The results store (DESIGN.md §8): every results document raygate writes or imports, kept
 // whole (so export gives it back byte for byte) and indexed by commit, branch, scene and machine
-// for history, trends and drift checks. One interface, two backends: an SQLite file (the
-// embedded default) and a PostgreSQL database for teams (same schema, docs/store.md).
-// Backends store and filter; the choices made on rows (latest per commit, --last) live in
-// store/history.h so every backend answers a query the same way.
+// for history, trends and drift checks. One interface, one SQL store (store/sql_store.h) over two
+// dialects: an SQLite file (the embedded default) and a PostgreSQL database for teams (one
+// schema, store/schema.h; docs/store.md). The store stores and filters; the choices made on rows
+// (latest per commit, --last) live in store/history.h so every backend answers a query alike.
 #pragma once
 
 #include <cstddef>
@@ -119,7 +119,7 @@ enum class StoreOpen {
 };
 
 // An SQLite file for a path; a "postgresql://" or "postgres://" URL connects to the team store
-// (store/postgres_store.h: a malformed URL is a UsageError, a server that cannot be reached an
+// (store/postgres_url.h: a malformed URL is a UsageError, a server that cannot be reached an
 // InfraError). Migrates the schema to the newest version.
 std::unique_ptr<ResultsStore> open_store(const std::string& location,
                                          StoreOpen mode = StoreOpen::create_if_missing);

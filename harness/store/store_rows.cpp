@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/sha256.h"
+#include "core/utf8.h"
 #include "results/series.h"
 
 namespace raygate {

@@ -139,6 +139,21 @@ TEST(AdapterLoad, AutoMetricFollowsThreadsAndAnExplicitOneStays) {
   EXPECT_THROW(load(R"("timing": {"metric": "fastest"})"), UsageError);
 }
 
+// "images": deterministic unless said otherwise; a Monte Carlo tracer gets {seed} (in argv or
+// env) and the shipped path tracer's adapter is one.
+TEST(AdapterLoad, ImagesKindAndSeed) {
+  EXPECT_EQ(parse_adapter(with(""), "x").images, ImageKind::deterministic);
+  const Adapter mc = parse_adapter(
+      with(R"("images": "monte-carlo")", R"(["t", "{scene}", "{image}", "--seed={seed}"])"), "x");
+  EXPECT_EQ(mc.images, ImageKind::monte_carlo);
+  EXPECT_EQ(to_string(mc.images), "monte-carlo");
+  EXPECT_EQ(parse_adapter(with(R"("images": "monte-carlo", "env": {"SEED": "{seed}"})"), "x").images,
+            ImageKind::monte_carlo);
+  const Adapter shipped = load_adapter(std::filesystem::path(RAYGATE_SOURCE_DIR) / "adapters" /
+                                       "cmake-path-tracer.json");
+  EXPECT_EQ(shipped.images, ImageKind::monte_carlo);
+}
+
 TEST(AdapterLoad, LoadNamesAMissingFile) {
   TempDir dir;
   try {
@@ -187,7 +202,7 @@ INSTANTIATE_TEST_SUITE_P(
         Broken{"unknown_key_far", with(R"("colour": 1)"),
                "$.colour: unknown key 'colour' (known keys: name, description, scene_format, "
                "source_dir, requires, build, run, stdin, cwd, image, env, timing, threads, "
-               "pin_cpus, submodules, timeout_s)"},
+               "pin_cpus, submodules, timeout_s, images)"},
         Broken{"unknown_nested_key", with(R"("timing": {"sorce": "process"})"),
                "$.timing.sorce: unknown key 'sorce' (did you mean 'source'?)"},
         Broken{"wrong_type_in_step", with(R"("build": [["make"], ["make", "-j", 8]])"),
@@ -215,7 +230,7 @@ INSTANTIATE_TEST_SUITE_P(
         Broken{"unknown_placeholder_far", with("", R"(["t", "{scene}", "{image}", "{colour}"])"),
                "$.run[3]: unknown placeholder '{colour}' (known: {src}, {repo_root}, {build}, "
                "{jobs}, {threads}, {scene}, {image}, {workdir}, {raygate_source}, {scene_stem}, "
-               "{width}, {height})"},
+               "{width}, {height}, {seed})"},
         Broken{"unmatched_brace", with("", R"(["t", "{scene}", "{image", "{image}"])"),
                "$.run[2]: unmatched '{' (write '{{' for a literal brace)"},
         Broken{"scene_in_build", with(R"("build": [["make", "{scene}"]])"),
@@ -224,7 +239,16 @@ INSTANTIATE_TEST_SUITE_P(
         Broken{"jobs_in_run", with("", R"(["t", "{scene}", "{image}", "-j{jobs}"])"),
                "$.run[3]: placeholder '{jobs}' is not available in run settings (available: "
                "{src}, {repo_root}, {build}, {threads}, {scene}, {image}, {workdir}, "
-               "{raygate_source}, {scene_stem}, {width}, {height})"},
+               "{raygate_source}, {scene_stem}, {width}, {height}, {seed})"},
+        Broken{"monte_carlo_without_seed", with(R"("images": "monte-carlo")"),
+               "$.run: \"images\": \"monte-carlo\" needs '{seed}' in run or env (e.g. "
+               "\"--seed\", \"{seed}\"): every run must render with its own seed"},
+        Broken{"seed_when_deterministic", with("", R"(["t", "{scene}", "{image}", "{seed}"])"),
+               "$.run: '{seed}' is only given to \"images\": \"monte-carlo\" tracers; add "
+               "that, or drop '{seed}'"},
+        Broken{"bad_images_kind", with(R"("images": "montecarlo")"),
+               "$.images: expected one of deterministic, monte-carlo, found \"montecarlo\" "
+               "(did you mean 'monte-carlo'?)"},
         Broken{"placeholder_in_env", with(R"("env": {"N": "{job}"})"),
                "$.env.N: unknown placeholder '{job}' (did you mean '{jobs}'?)"},
         Broken{"missing_scene", with("", R"(["t", "-o", "{image}"])"),

@@ -99,12 +99,13 @@ TEST(Placeholders, WhereEachIsAllowed) {
         << name;
   }
   for (const char* name : {"src", "repo_root", "build", "threads", "scene", "image", "workdir",
-                           "raygate_source", "scene_stem", "width", "height"}) {
+                           "raygate_source", "scene_stem", "width", "height", "seed"}) {
     EXPECT_EQ(template_error(std::string("{") + name + "}", TemplateField::run), std::nullopt)
         << name;
   }
   EXPECT_NE(template_error("{jobs}", TemplateField::run), std::nullopt);
-  EXPECT_EQ(placeholder_names().size(), 12u);
+  EXPECT_NE(template_error("{seed}", TemplateField::build), std::nullopt);
+  EXPECT_EQ(placeholder_names().size(), 13u);
 }
 
 TEST(Placeholders, BraceErrors) {
@@ -113,7 +114,7 @@ TEST(Placeholders, BraceErrors) {
   EXPECT_EQ(template_error("{}", TemplateField::run),
             "unknown placeholder '{}' (known: {src}, {repo_root}, {build}, {jobs}, {threads}, "
             "{scene}, {image}, {workdir}, {raygate_source}, {scene_stem}, {width}, "
-            "{height})");
+            "{height}, {seed})");
   EXPECT_EQ(template_error("{Scene}", TemplateField::run),
             "unknown placeholder '{Scene}' (did you mean '{scene}'?)");
 }

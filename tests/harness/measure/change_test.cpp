@@ -179,6 +179,15 @@ TEST(MeasureRoundsToDecide, ScaleWithTheSquareOfHowMuchTheIntervalMustNarrow) {
   EXPECT_EQ(estimated_rounds_to_decide(sequence_summary(0.06, {-0.03, 0.2}, {0.0, 0.1}, 40),
                                        0.03),
             90u);
+  // An interval narrow enough but off-centre: its upper end must come from +3.5% to inside +3%
+  // (1.17 times too far: 1.36 times the rounds), not its half-width (2.25 points, which fits).
+  EXPECT_EQ(estimated_rounds_to_decide(sequence_summary(0.0, {-0.1, 0.1}, {-0.01, 0.035}, 27),
+                                       0.03),
+            37u);
+  // Undecided is never "decided by now": at least one more round.
+  EXPECT_EQ(estimated_rounds_to_decide(sequence_summary(0.0, {-0.1, 0.1}, {-0.029, 0.029}, 27),
+                                       0.03),
+            28u);
   // A change on the limit has no room: no number of rounds decides it.
   EXPECT_FALSE(
       estimated_rounds_to_decide(sequence_summary(0.03, {-0.1, 0.2}, {0.0, 0.06}, 40), 0.03));

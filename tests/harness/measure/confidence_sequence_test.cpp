@@ -1,5 +1,5 @@
-// The anytime-valid confidence sequence for a median: the boundary against values worked by
-// hand, the interval's ranks, and its error rate by simulation under the VM's noise (vm_noise.h)
+// The anytime-valid confidence sequence for a median: the mixture martingale against values
+// worked by hand, the interval's ranks, and its error rate by simulation under the VM's noise (vm_noise.h)
 // at every one of 60 looks, against the one-look interval that the old rule looked at 25 times.
 #include "measure/confidence_sequence.h"
 
@@ -14,41 +14,52 @@
 namespace raygate {
 namespace {
 
-TEST(MeasureConfidenceSequence, BoundaryMatchesTheMixtureFormula) {
-  // n = 20, alpha 0.025 each side, rho 1: V = 5, b^2 = 6 ln(6 / 0.0025) = 6 * 7.78322 = 46.699.
-  EXPECT_NEAR(median_sequence_boundary(20, 0.025, 1.0), std::sqrt(6.0 * std::log(6.0 / 0.0025)),
-              1e-12);
-  EXPECT_NEAR(median_sequence_boundary(20, 0.025, 1.0), 6.83368, 1e-4);
-  // rho = (24 / 4) / (2 ln 20 + ln(1 + 2 ln 20)) = 6 / (5.991465 + 1.944691) = 0.756034.
-  EXPECT_NEAR(sequence_rho(0.025), 0.756034, 1e-5);
-  EXPECT_THROW(median_sequence_boundary(5, 0.0, 1.0), std::invalid_argument);
-  EXPECT_THROW(median_sequence_boundary(5, 0.5, 1.0), std::invalid_argument);
-  EXPECT_THROW(median_sequence_boundary(5, 0.01, 0.0), std::invalid_argument);
+TEST(MeasureConfidenceSequence, WealthMatchesTheMixtureWorkedByHand) {
+  // n = 1: count 0 -> 2^2 * B(1, 2) * P(Bin(2, 1/2) <= 0) = 4 * 1/2 * 1/4 = 0.5;
+  //        count 1 -> 4 * B(2, 1) * P(Bin(2, 1/2) <= 1) = 4 * 1/2 * 3/4 = 1.5.
+  EXPECT_NEAR(median_sequence_log_wealth(1, 0), std::log(0.5), 1e-12);
+  EXPECT_NEAR(median_sequence_log_wealth(1, 1), std::log(1.5), 1e-12);
+  // n = 4, count 3: 2^5 * B(4, 2) * P(Bin(5, 1/2) <= 3) = 32 * (1/20) * (26/32) = 1.3.
+  EXPECT_NEAR(median_sequence_log_wealth(4, 3), std::log(1.3), 1e-12);
+  // All n on one side: 2^(n+1) / (n+1) * (1 - 2^-(n+1)); n = 13: 16383 / 14.
+  EXPECT_NEAR(median_sequence_log_wealth(13, 13), std::log(16383.0 / 14.0), 1e-9);
+  // The wealth grows with the count (the scan for k* relies on it).
+  for (std::size_t count = 1; count <= 40; ++count) {
+    EXPECT_GT(median_sequence_log_wealth(40, count), median_sequence_log_wealth(40, count - 1));
+  }
+  EXPECT_THROW(median_sequence_log_wealth(5, 6), std::invalid_argument);
+  const std::vector<double> some{1.0, 2.0};
+  EXPECT_THROW(median_sequence_interval(some, 0.0), std::invalid_argument);
+  EXPECT_THROW(median_sequence_interval(some, 0.5), std::invalid_argument);
 }
 
 TEST(MeasureConfidenceSequence, WiderThanOneLookAndNarrowingWithRounds) {
-  EXPECT_EQ(min_values_for_median_sequence(0.025), 10u);
-  EXPECT_EQ(min_values_for_median_sequence(0.01 / 13), 17u);
+  // All n values on one side must reach 1 / alpha. At alpha 0.025 (40): 7 values reach 31.9, 8
+  // reach 56.8. At 0.01/13 (1300): 13 values reach 1170, 14 reach 2184, three fewer than the
+  // normal-mixture sequence raygate used before needed (17).
+  EXPECT_EQ(min_values_for_median_sequence(0.025), 8u);
+  EXPECT_EQ(min_values_for_median_sequence(0.01 / 13), 14u);
   // Below the minimum no interval; at it, the range of the values.
   std::vector<double> values;
-  for (int i = 0; i < 9; ++i) values.push_back(i);
+  for (int i = 0; i < 7; ++i) values.push_back(i);
   EXPECT_FALSE(median_sequence_interval(values, 0.025).has_value());
-  values.push_back(9);
+  values.push_back(7);
   const std::optional<Interval> first = median_sequence_interval(values, 0.025);
   ASSERT_TRUE(first.has_value());
   EXPECT_EQ(first->lower, 0.0);
-  EXPECT_EQ(first->upper, 9.0);
-  // 40 values 0..39 in shuffled order: the ends are the order statistics of ranks
-  // floor(20 - b) + 1 and ceil(20 + b), and the one-look 95% interval lies strictly inside.
+  EXPECT_EQ(first->upper, 7.0);
+  // 40 values 0..39 in shuffled order: the ends are the order statistics of ranks n + 1 - k*
+  // and k*, k* the smallest count whose wealth reaches 1 / 0.025, and the one-look 95% interval
+  // lies strictly inside.
   std::vector<double> forty;
   for (int i = 0; i < 40; ++i) forty.push_back((i * 17) % 40);
-  const double b = median_sequence_boundary(40, 0.025, sequence_rho(0.025));
-  const long lo = static_cast<long>(std::floor(20.0 - b)) + 1;
-  const long hi = static_cast<long>(std::ceil(20.0 + b));
+  std::size_t k_star = 0;
+  while (median_sequence_log_wealth(40, k_star) < std::log(40.0)) ++k_star;
+  EXPECT_EQ(k_star, 30u);  // 29 values at or below m do not reject it yet, 30 do
   const std::optional<Interval> cs = median_sequence_interval(forty, 0.025);
   ASSERT_TRUE(cs.has_value());
-  EXPECT_EQ(cs->lower, static_cast<double>(lo - 1));  // sorted values are 0..39: x(k) = k - 1
-  EXPECT_EQ(cs->upper, static_cast<double>(hi - 1));
+  EXPECT_EQ(cs->lower, static_cast<double>(40 - k_star));  // sorted values are 0..39: x(k) = k - 1
+  EXPECT_EQ(cs->upper, static_cast<double>(k_star - 1));
   const std::optional<Interval> one_look = median_interval(forty, 0.95);
   EXPECT_LT(cs->lower, one_look->lower);
   EXPECT_GT(cs->upper, one_look->upper);

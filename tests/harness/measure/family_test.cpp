@@ -34,7 +34,7 @@ TEST(MeasureFamily, SharesSplitTheFamily) {
 
 TEST(MeasureFamily, HolmGivesUndecidedScenesTheRejectedScenesShares) {
   // Scene 0: +20% in 30 rounds, REGRESSED at the Bonferroni share 0.01/2. Scene 1: +6% in just
-  // enough rounds for a finite sequence at 0.01 (12) but not at 0.005 (13): REGRESSED only
+  // enough rounds for a finite sequence at 0.01 (9) but not at 0.005 (11): REGRESSED only
   // once scene 0's rejection frees its share.
   const double tight = scene_sequence_alpha(0.01, 2);
   const std::size_t n_tight = min_values_for_median_sequence(tight);

@@ -37,9 +37,9 @@ TEST_F(ComparePipelineTest, ASlowerHeadIsRegressedOnEveryScene) {
     EXPECT_NEAR(scene.change->change, 0.2, 1e-9);
     EXPECT_EQ(scene.change_verdict, "REGRESSED");
     // Two scenes share the family's 1%: each decision sequence (0.5% each side) is bounded from
-    // its 13th round, and with exact times the verdict is decided then.
-    EXPECT_EQ(min_values_for_median_sequence(0.01 / 2), 13u);
-    EXPECT_EQ(scene.runs.rounds.size(), 13u);
+    // its 11th round, and with exact times the verdict is decided then.
+    EXPECT_EQ(min_values_for_median_sequence(0.01 / 2), 11u);
+    EXPECT_EQ(scene.runs.rounds.size(), 11u);
     EXPECT_EQ(scene.runs.stop_reason, "stop_converged");
     EXPECT_DOUBLE_EQ(scene.ratio("base")->ratio, 2.0);
     EXPECT_DOUBLE_EQ(scene.ratio("head")->ratio, 2.4);
@@ -67,11 +67,11 @@ TEST_F(ComparePipelineTest, AnUndecidedChangeGetsRoundsUntilTheBudget) {
   const std::string base = commit_tracer("2.0", "base");
   const std::string head = commit_tracer("2.06", "head: 3% slower, right at the limit");
   set_tracer_noise({1.0, 1.0, 1.04, 0.97});  // base and head alternate through these
-  context_.stopping.max_rounds = 12;
+  context_.stopping.max_rounds = 10;
   const auto [document, path, unwritten] = compare(base, head);
   for (const SceneResult& scene : document.scenes) {
     EXPECT_EQ(scene.change_verdict, "INCONCLUSIVE") << scene.entry.id;
-    EXPECT_EQ(scene.runs.rounds.size(), 12u);
+    EXPECT_EQ(scene.runs.rounds.size(), 10u);
     EXPECT_EQ(scene.runs.stop_reason, "stop_budget_rounds");
   }
   // One closing line names every undecided scene, its change and how wide its interval is.
@@ -80,8 +80,8 @@ TEST_F(ComparePipelineTest, AnUndecidedChangeGetsRoundsUntilTheBudget) {
   for (const SceneResult& scene : document.scenes) {
     EXPECT_NE(undecided[0].find(scene.entry.id + " +"), std::string::npos) << undecided[0];
   }
-  // Its 12 rounds are one short of a bounded decision sequence for two scenes.
-  EXPECT_NE(undecided[0].find("after 12 rounds, no interval yet (needs 13 rounds)"),
+  // Its 10 rounds are one short of a bounded decision sequence for two scenes.
+  EXPECT_NE(undecided[0].find("after 10 rounds, no interval yet (needs 11 rounds)"),
             std::string::npos)
       << undecided[0];
 }

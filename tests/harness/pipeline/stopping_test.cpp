@@ -38,17 +38,17 @@ std::vector<Round> compare_rounds(int count, double factor) {
 TEST(PipelineStopping, ChangeRuleStopsWhenTheVerdictIsDecided) {
   const StoppingPolicy policy;
   const ScenePolicy scene;  // 3% limit at 5% significance
-  // One scene of a family at 1%: the decision sequence is bounded from the 12th round, the
-  // equivalence sequence (5% each side) from the 9th.
+  // One scene of a family at 1%: the decision sequence is bounded from the 9th round, the
+  // equivalence sequence (5% each side) from the 7th.
   const StopRule rule = change_stop_rule(policy, scene, scene_levels(scene, 0.01));
-  EXPECT_EQ(rule(compare_rounds(11, 1.2), 10.0), StopDecision::continue_measuring);
-  EXPECT_EQ(rule(compare_rounds(12, 1.2), 10.0), StopDecision::stop_converged);
-  EXPECT_EQ(rule(compare_rounds(8, 1.0), 10.0), StopDecision::continue_measuring);
-  EXPECT_EQ(rule(compare_rounds(9, 1.0), 10.0), StopDecision::stop_converged);
+  EXPECT_EQ(rule(compare_rounds(8, 1.2), 10.0), StopDecision::continue_measuring);
+  EXPECT_EQ(rule(compare_rounds(9, 1.2), 10.0), StopDecision::stop_converged);
+  EXPECT_EQ(rule(compare_rounds(6, 1.0), 10.0), StopDecision::continue_measuring);
+  EXPECT_EQ(rule(compare_rounds(7, 1.0), 10.0), StopDecision::stop_converged);
   // A smaller share (six scenes) needs more rounds before a regression is called.
   const StopRule sixth = change_stop_rule(policy, scene, scene_levels(scene, 0.01 / 6));
-  EXPECT_EQ(sixth(compare_rounds(15, 1.2), 10.0), StopDecision::continue_measuring);
-  EXPECT_EQ(sixth(compare_rounds(16, 1.2), 10.0), StopDecision::stop_converged);
+  EXPECT_EQ(sixth(compare_rounds(11, 1.2), 10.0), StopDecision::continue_measuring);
+  EXPECT_EQ(sixth(compare_rounds(12, 1.2), 10.0), StopDecision::stop_converged);
 }
 
 TEST(PipelineStopping, SceneLevelsSplitTheFamilyAndKeepTheScenesSignificance) {

@@ -9,7 +9,8 @@
 #include "results_fixture.h"
 #include "store/history.h"
 #include "results/series.h"
-#include "store/sqlite_schema.h"
+#include "store/migrate.h"
+#include "store/sqlite_handle.h"
 #include "store/store.h"
 #include "store/store_rows.h"
 
@@ -77,7 +78,7 @@ TEST(StoreMigration, AVersionOneStoreGetsItsSeriesFromItsDocumentsAndStaysReadab
   {
     SqliteDb db = SqliteDb::open(path, true);
     // Migration 1 is released and never edited: its SQL is the version 1 schema.
-    ASSERT_EQ(migrate(db, sqlite_migrations().first(1)), 1);
+    ASSERT_EQ(migrate(db, store_migrations().first(1)), 1);
     insert_v1(db, document_rows(first, "main", "2026-07-01T13:00:00Z"));
     insert_v1(db, document_rows(second, "main", "2026-07-02T13:00:00Z"));
     // A document this raygate cannot read back (from a newer schema, say).

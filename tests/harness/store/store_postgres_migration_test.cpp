@@ -6,7 +6,8 @@
 #include "postgres_server.h"
 #include "results_fixture.h"
 #include "store/history.h"
-#include "store/postgres_schema.h"
+#include "store/migrate.h"
+#include "store/postgres_handle.h"
 #include "results/series.h"
 #include "store/store.h"
 #include "store/store_rows.h"
@@ -74,7 +75,7 @@ TEST(StorePostgresMigration, AVersionOneStoreGetsItsSeriesFromItsDocumentsAndSta
   {
     PgConnection db = PgConnection::connect(url);
     // Migration 1 is released and never edited: its SQL is the version 1 schema.
-    ASSERT_EQ(migrate(db, postgres_migrations().first(1)), 1);
+    ASSERT_EQ(migrate(db, store_migrations().first(1)), 1);
     insert_v1(db, document_rows(first, "main", "2026-07-01T13:00:00Z"));
     insert_v1(db, document_rows(second, "main", "2026-07-02T13:00:00Z"));
     insert_v1(db, document_rows(make_document(balls(3, 3, 9.0)), "main", "t"),

@@ -11,7 +11,8 @@
 #include "core/error.h"
 #include "postgres_server.h"
 #include "results_fixture.h"
-#include "store/postgres_schema.h"
+#include "store/migrate.h"
+#include "store/postgres_handle.h"
 #include "store/postgres_url.h"
 #include "store/store.h"
 
@@ -86,7 +87,8 @@ TEST_F(StorePostgres, SchemaIsVersionedAndMigratedOnce) {
   EXPECT_EQ(raw.text("SELECT description FROM schema_migrations WHERE version = 1"),
             "documents, revisions, scene_results");
   EXPECT_EQ(raw.text("SELECT description FROM schema_migrations WHERE version = 2"),
-            kSeriesColumnsDescription);
+            "series columns: documents.timing, baseline_accel; revisions.repository_key; "
+            "scene_results.scene_settings, series_id");
   EXPECT_EQ(raw.text("SELECT data_type FROM information_schema.columns WHERE table_name = "
                      "'scene_results' AND column_name = 'normalized_ratio'"),
             "double precision");
@@ -98,7 +100,7 @@ TEST_F(StorePostgres, SchemaIsVersionedAndMigratedOnce) {
 
 TEST_F(StorePostgres, ASecondMigrationAppliesOnceOnTopOfTheFirst) {
   open_store(url);
-  std::vector<Migration> migrations(postgres_migrations().begin(), postgres_migrations().end());
+  std::vector<Migration> migrations(store_migrations().begin(), store_migrations().end());
   migrations.push_back({3, "documents.note", "ALTER TABLE documents ADD COLUMN note TEXT"});
   PgConnection db = PgConnection::connect(url);
   EXPECT_EQ(migrate(db, migrations), 3);
@@ -110,7 +112,7 @@ TEST_F(StorePostgres, ASecondMigrationAppliesOnceOnTopOfTheFirst) {
 
 TEST_F(StorePostgres, AFailingMigrationLeavesTheVersionBefore) {
   open_store(url);
-  std::vector<Migration> migrations(postgres_migrations().begin(), postgres_migrations().end());
+  std::vector<Migration> migrations(store_migrations().begin(), store_migrations().end());
   migrations.push_back(
       {3, "broken", "CREATE TABLE extra (x INTEGER); INSERT INTO nope VALUES (1)"});
   PgConnection db = PgConnection::connect(url);

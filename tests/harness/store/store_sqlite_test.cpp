@@ -7,8 +7,8 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "results_fixture.h"
-#include "store/sqlite_schema.h"
-#include "store/sqlite_store.h"
+#include "store/migrate.h"
+#include "store/sql_store.h"
 #include "store/store.h"
 
 namespace raygate::test {
@@ -96,7 +96,7 @@ TEST(StoreSqlite, ASecondMigrationAppliesOnceOnTopOfTheFirst) {
   TempDir dir;
   const auto path = dir.path() / "results.db";
   open_store(path.string());
-  std::vector<Migration> migrations(sqlite_migrations().begin(), sqlite_migrations().end());
+  std::vector<Migration> migrations(store_migrations().begin(), store_migrations().end());
   migrations.push_back({3, "documents.note", "ALTER TABLE documents ADD COLUMN note TEXT"});
   SqliteDb db = SqliteDb::open(path, false);
   EXPECT_EQ(migrate(db, migrations), 3);
@@ -110,7 +110,7 @@ TEST(StoreSqlite, AFailingMigrationLeavesTheVersionBefore) {
   TempDir dir;
   const auto path = dir.path() / "results.db";
   open_store(path.string());
-  std::vector<Migration> migrations(sqlite_migrations().begin(), sqlite_migrations().end());
+  std::vector<Migration> migrations(store_migrations().begin(), store_migrations().end());
   migrations.push_back(
       {3, "broken", "CREATE TABLE extra (x); INSERT INTO no_such_table VALUES (1)"});
   SqliteDb db = SqliteDb::open(path, false);
@@ -177,9 +177,9 @@ TEST(StoreSqlite, ALockedDatabaseIsAnInfrastructureError) {
   open_store(path.string());
   Raw holder(path);
   ASSERT_EQ(holder.exec("BEGIN IMMEDIATE"), SQLITE_OK);
-  SqliteStore store(path, StoreOpen::must_exist, std::chrono::milliseconds(200));
+  const auto store = open_sqlite_store(path, StoreOpen::must_exist, std::chrono::milliseconds(200));
   try {
-    store.add(make_document(two_scenes(1)), "main");
+    store->add(make_document(two_scenes(1)), "main");
     FAIL() << "expected InfraError";
   } catch (const InfraError& e) {
     EXPECT_THAT(e.what(), HasSubstr("database is locked"));

@@ -1,0 +1,190 @@
+#include "compare/noisy_image_check.h"
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include "compare/image_compare.h"
+#include "compare/noisy_image_files.h"
+#include "core/error.h"
+
+namespace raygate {
+
+namespace {
+
+// Why one of the tracer's own images is unusable (it fails the check), or nothing.
+std::optional<std::string> broken_image(const std::filesystem::path& image) {
+  if (std::string problem = unreadable_image(image); !problem.empty()) return problem;
+  const RgbImage pixels = read_rgb_image(image);
+  const auto bad = std::find_if(pixels.rgb.begin(), pixels.rgb.end(),
+                                [](float v) { return !std::isfinite(v); });
+  if (bad == pixels.rgb.end()) return std::nullopt;
+  const auto pixel = static_cast<std::size_t>(bad - pixels.rgb.begin()) / 3;
+  return image.string() + ": NaN/Inf pixels, first at (" +
+         std::to_string(pixel % static_cast<std::size_t>(pixels.width)) + "," +
+         std::to_string(pixel / static_cast<std::size_t>(pixels.width)) + ")";
+}
+
+// The runs' mean as a picture to look at: gamma 2.2 like a tracer's own 8-bit output (the
+// statistics are linear radiance; written as is, mid-tones look almost black).
+RgbImage mean_image(const NoisyImageStats& stats) {
+  RgbImage image{stats.width, stats.height, stats.mean};
+  for (float& v : image.rgb) v = v > 0 ? std::pow(std::min(v, 1.0f), 1 / 2.2f) : 0.0f;
+  return image;
+}
+
+// |actual - expected| x 16, with each biased tile's border painted: red where actual is
+// brighter, blue where darker.
+RgbImage tile_map(const NoisyImageStats& actual, const NoisyImageStats& expected,
+                  const NoisyComparison& comparison) {
+  RgbImage map{actual.width, actual.height, std::vector<float>(actual.mean.size())};
+  for (std::size_t i = 0; i < map.rgb.size(); ++i) {
+    map.rgb[i] = std::min(1.0f, 16 * std::abs(actual.mean[i] - expected.mean[i]));
+  }
+  for (const BiasedTile& t : comparison.biased) {
+    const float colour[3] = {t.relative_change > 0 ? 1.0f : 0.0f, 0.0f,
+                             t.relative_change > 0 ? 0.0f : 1.0f};
+    for (int y = t.rect.y; y < t.rect.y + t.rect.height; ++y) {
+      for (int x = t.rect.x; x < t.rect.x + t.rect.width; ++x) {
+        const bool border = x == t.rect.x || y == t.rect.y || x == t.rect.x + t.rect.width - 1 ||
+                            y == t.rect.y + t.rect.height - 1;
+        if (!border) continue;
+        for (int c = 0; c < 3; ++c) {
+          map.rgb[(static_cast<std::size_t>(y) * map.width + x) * 3 + c] = colour[c];
+        }
+      }
+    }
+  }
+  return map;
+}
+
+void write_noisy_evidence(ImageCheck& check, const NoisyImageStats& actual,
+                          const NoisyImageStats& expected, const NoisyComparison& comparison,
+                          const std::filesystem::path& dir, const std::string& stem) {
+  if (comparison.size_mismatch) return;
+  try {
+    std::filesystem::create_directories(dir);
+    const std::filesystem::path paths[3] = {dir / (stem + ".actual.png"),
+                                            dir / (stem + ".expected.png"),
+                                            dir / (stem + ".tiles.png")};
+    write_rgb_image(mean_image(actual), paths[0]);
+    write_rgb_image(mean_image(expected), paths[1]);
+    write_rgb_image(tile_map(actual, expected, comparison), paths[2]);
+    check.evidence.assign(std::begin(paths), std::end(paths));
+  } catch (const Error& e) {
+    check.error += std::string("; evidence not written: ") + e.what();
+  }
+}
+
+// The tracer's images checked for what fails them whatever the reference; nullopt when usable.
+std::optional<ImageCheck> unusable_actual(ImageCheck check,
+                                          const std::vector<std::filesystem::path>& actual) {
+  if (actual.empty()) {
+    check.verdict = ImageVerdict::error;
+    check.error = "no successful run, so no image to check";
+    return check;
+  }
+  for (const std::filesystem::path& image : actual) {
+    if (std::optional<std::string> problem = broken_image(image)) {
+      check.verdict = ImageVerdict::fail;
+      check.error = std::move(*problem);
+      return check;
+    }
+  }
+  return std::nullopt;
+}
+
+// Several runs and not one pixel differs: the tracer ignores its seed (or is deterministic), and
+// the test's noise estimate is zero.
+bool identical_runs(const NoisyImageStats& stats) {
+  return stats.runs >= 2 && std::all_of(stats.variance.begin(), stats.variance.end(),
+                                        [](float v) { return v == 0.0f; });
+}
+
+// The tracer's runs against the reference's statistics; runs of different sizes fail.
+ImageCheck judged(ImageCheck check, const std::vector<std::filesystem::path>& actual_images,
+                  const NoisyImageStats& expected, const NoisyThresholds& thresholds,
+                  const std::filesystem::path& evidence_dir, const std::string& stem) {
+  NoisyImageStats actual;
+  try {
+    actual = stats_of_images(actual_images);
+  } catch (const Error& e) {
+    check.verdict = ImageVerdict::fail;
+    check.error = e.what();
+    return check;
+  }
+  const NoisyComparison comparison = compare_noisy(actual, expected, thresholds);
+  check.verdict = to_image_verdict(comparison.verdict);
+  check.error = summarize(comparison);
+  if (identical_runs(actual)) {
+    check.error += "; note: the " + std::to_string(actual.runs) +
+                   " runs' images are identical: is {seed} reaching the tracer's random numbers?";
+  }
+  if (comparison.verdict == NoisyVerdict::fail) {
+    write_noisy_evidence(check, actual, expected, comparison, evidence_dir, stem);
+  }
+  return check;
+}
+
+}  // namespace
+
+NoisyThresholds noisy_thresholds_for(std::size_t images_in_family) {
+  NoisyThresholds thresholds;
+  thresholds.alpha = kNoisyFamilyAlpha / static_cast<double>(std::max<std::size_t>(1, images_in_family));
+  return thresholds;
+}
+
+ImageVerdict to_image_verdict(NoisyVerdict verdict) {
+  switch (verdict) {
+    case NoisyVerdict::pass: return ImageVerdict::pass;
+    case NoisyVerdict::fail: return ImageVerdict::fail;
+    case NoisyVerdict::inconclusive: return ImageVerdict::warn;
+  }
+  return ImageVerdict::warn;
+}
+
+ImageCheck check_noisy_images(const std::string& role, const std::string& reference,
+                              const std::vector<std::filesystem::path>& actual,
+                              const std::vector<std::filesystem::path>& expected,
+                              const NoisyThresholds& thresholds,
+                              const std::filesystem::path& evidence_dir, const std::string& stem) {
+  ImageCheck check{role, reference, actual.empty() ? std::filesystem::path() : actual.front(),
+                   expected.empty() ? std::filesystem::path() : expected.front(),
+                   ImageVerdict::error, {}, std::nullopt, {}};
+  if (auto unusable = unusable_actual(check, actual)) return *unusable;
+  if (expected.empty()) {
+    check.error = "the " + reference + " revision has no image to compare with";
+    return check;
+  }
+  NoisyImageStats expected_stats;
+  try {
+    expected_stats = stats_of_images(expected);
+  } catch (const Error& e) {
+    check.error = e.what();  // the reference's images: the check could not be made
+    return check;
+  }
+  return judged(check, actual, expected_stats, thresholds, evidence_dir, stem);
+}
+
+ImageCheck check_noisy_against_stats(const std::string& role,
+                                     const std::vector<std::filesystem::path>& actual,
+                                     const std::filesystem::path& mean_file,
+                                     const std::filesystem::path& golden_dir,
+                                     const GoldenNoise& noise, const NoisyThresholds& thresholds,
+                                     const std::filesystem::path& evidence_dir,
+                                     const std::string& stem) {
+  ImageCheck check{role, "golden", actual.empty() ? std::filesystem::path() : actual.front(),
+                   mean_file, ImageVerdict::error, {}, std::nullopt, {}};
+  if (auto unusable = unusable_actual(check, actual)) return *unusable;
+  NoisyImageStats golden;
+  try {
+    golden = read_stats_images(mean_file, golden_dir / noise.variance_file, noise.runs,
+                               noise.inflation);
+  } catch (const Error& e) {
+    check.error = e.what();
+    return check;
+  }
+  return judged(check, actual, golden, thresholds, evidence_dir, stem);
+}
+
+}  // namespace raygate

@@ -1,0 +1,45 @@
+// The Monte Carlo image check as an ImageCheck (compare/image_check.h), so results documents,
+// the gate and every report show it where they show the per-pixel check: a role's runs (each
+// rendered with its own {seed}) against the reference's runs or a golden's statistics. The
+// verdict's words go into ImageCheck::error, metrics stay empty; pass and fail keep their
+// meaning, inconclusive (too noisy to tell) is a warn.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "compare/golden.h"
+#include "compare/image_check.h"
+#include "compare/noisy_image_compare.h"
+
+namespace raygate {
+
+// The chance that a suite whose images did not change fails any of them, split evenly over the
+// images checked (Bonferroni across scenes; Holm within each image).
+inline constexpr double kNoisyFamilyAlpha = 0.01;
+NoisyThresholds noisy_thresholds_for(std::size_t images_in_family);
+
+ImageVerdict to_image_verdict(NoisyVerdict verdict);
+
+// `actual` against `expected` (both: every successful run's image). An actual image that cannot
+// be read or has NaN/Inf pixels fails; an expected one makes the check an error. On fail, writes
+// evidence into evidence_dir: <stem>.actual.png and <stem>.expected.png (the runs' means) and
+// <stem>.tiles.png (the mean difference x 16, biased tiles outlined red where actual is brighter
+// and blue where darker).
+ImageCheck check_noisy_images(const std::string& role, const std::string& reference,
+                              const std::vector<std::filesystem::path>& actual,
+                              const std::vector<std::filesystem::path>& expected,
+                              const NoisyThresholds& thresholds,
+                              const std::filesystem::path& evidence_dir, const std::string& stem);
+
+// Against the golden statistics `noise` (whose mean image is `mean_file`).
+ImageCheck check_noisy_against_stats(const std::string& role,
+                                     const std::vector<std::filesystem::path>& actual,
+                                     const std::filesystem::path& mean_file,
+                                     const std::filesystem::path& golden_dir,
+                                     const GoldenNoise& noise, const NoisyThresholds& thresholds,
+                                     const std::filesystem::path& evidence_dir,
+                                     const std::string& stem);
+
+}  // namespace raygate

@@ -1,0 +1,87 @@
+#include "compare/noisy_image_files.h"
+
+#include <OpenImageIO/imagebuf.h>
+#include <OpenImageIO/imagebufalgo.h>
+
+#include <stdexcept>
+
+#include "core/error.h"
+
+namespace raygate {
+
+namespace {
+
+namespace OIIO = OIIO_NAMESPACE;
+
+RgbImage from_values(int width, int height, const std::vector<float>& values) {
+  return {width, height, values};
+}
+
+}  // namespace
+
+const std::vector<int>& default_tile_sides() {
+  static const std::vector<int> sides{8, 32, 128};
+  return sides;
+}
+
+RgbImage read_rgb_image(const std::filesystem::path& path) {
+  OIIO::ImageBuf buf(path.string());
+  if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
+    throw UsageError(path.string() + ": cannot read image: " + buf.geterror());
+  }
+  const int channels = buf.nchannels();
+  const int map[3] = {0, channels > 1 ? 1 : 0, channels > 2 ? 2 : 0};
+  const OIIO::ImageBuf rgb = OIIO::ImageBufAlgo::channels(buf, 3, map);
+  RgbImage image;
+  image.width = rgb.spec().width;
+  image.height = rgb.spec().height;
+  image.rgb.resize(static_cast<std::size_t>(image.width) * image.height * 3);
+  if (!rgb.get_pixels(rgb.roi(), OIIO::TypeDesc::FLOAT, image.rgb.data())) {
+    throw UsageError(path.string() + ": cannot read pixels: " + rgb.geterror());
+  }
+  return image;
+}
+
+NoisyImageStats stats_of_images(const std::vector<std::filesystem::path>& images) {
+  if (images.empty()) throw std::logic_error("stats_of_images: no images");
+  const RgbImage first = read_rgb_image(images.front());
+  NoisyStatsBuilder builder(first.width, first.height, default_tile_sides());
+  builder.add(first);
+  for (std::size_t i = 1; i < images.size(); ++i) {
+    try {
+      builder.add(read_rgb_image(images[i]));
+    } catch (const std::invalid_argument& e) {
+      throw UsageError(images[i].string() + ": " + e.what());
+    }
+  }
+  return builder.finish();
+}
+
+void write_rgb_image(const RgbImage& image, const std::filesystem::path& path) {
+  OIIO::ImageSpec spec(image.width, image.height, 3, OIIO::TypeDesc::FLOAT);
+  OIIO::ImageBuf buf(spec);
+  buf.set_pixels(buf.roi(), OIIO::TypeDesc::FLOAT, image.rgb.data());
+  const bool eight_bit = path.extension() == ".png";
+  if (!buf.write(path.string(), eight_bit ? OIIO::TypeDesc::UINT8 : OIIO::TypeDesc::FLOAT)) {
+    throw InfraError("cannot write " + path.string() + ": " + buf.geterror());
+  }
+}
+
+void write_stats_images(const NoisyImageStats& stats, const std::filesystem::path& mean_file,
+                        const std::filesystem::path& variance_file) {
+  write_rgb_image(from_values(stats.width, stats.height, stats.mean), mean_file);
+  write_rgb_image(from_values(stats.width, stats.height, stats.variance), variance_file);
+}
+
+NoisyImageStats read_stats_images(const std::filesystem::path& mean_file,
+                                  const std::filesystem::path& variance_file, int runs,
+                                  std::vector<ScaleInflation> inflation) {
+  const RgbImage mean = read_rgb_image(mean_file);
+  const RgbImage variance = read_rgb_image(variance_file);
+  if (mean.width != variance.width || mean.height != variance.height) {
+    throw UsageError(variance_file.string() + " is not the size of " + mean_file.string());
+  }
+  return {mean.width, mean.height, runs, mean.rgb, variance.rgb, std::move(inflation)};
+}
+
+}  // namespace raygate

@@ -1,0 +1,242 @@
+// The Monte Carlo image verdict on synthetic noisy renders: every run is an expected image times
+// gamma-distributed noise of mean 1 (a skewed, path-tracer-like pixel error), drawn from a fixed
+// seed so each test sees the same numbers every time. Different seeds of the same expected image
+// must pass at the stated false-alarm rate; a 3% global dimming and a 10% change in a small
+// region must fail, saying where and by how much; too few samples must be inconclusive.
+#include "compare/noisy_image_compare.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <random>
+
+namespace raygate {
+namespace {
+
+constexpr int kSize = 48;
+
+// An expected image with structure: a horizontal gradient, a bright disc and a dark corner.
+RgbImage expected_image(int size = kSize) {
+  RgbImage image{size, size, {}};
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      const double dx = x - size * 0.6, dy = y - size * 0.4;
+      double v = 0.2 + 0.5 * x / size + (dx * dx + dy * dy < size * size / 16.0 ? 0.6 : 0.0);
+      if (x < size / 6 && y > size * 5 / 6) v = 0.01;
+      image.rgb.insert(image.rgb.end(), {static_cast<float>(v), static_cast<float>(0.8 * v),
+                                         static_cast<float>(0.6 * v)});
+    }
+  }
+  return image;
+}
+
+// One run: every value times an independent Gamma(k, 1/k) factor (mean 1, relative sd 1/sqrt(k)).
+RgbImage noisy_run(const RgbImage& truth, double relative_sd, std::mt19937_64& rng) {
+  const double shape = 1 / (relative_sd * relative_sd);
+  std::gamma_distribution<double> noise(shape, 1 / shape);
+  RgbImage run = truth;
+  for (float& v : run.rgb) v = static_cast<float>(v * noise(rng));
+  return run;
+}
+
+NoisyImageStats runs_of(const RgbImage& truth, int runs, double relative_sd, std::mt19937_64& rng) {
+  NoisyStatsBuilder builder(truth.width, truth.height, {8, 32, 128});
+  for (int i = 0; i < runs; ++i) builder.add(noisy_run(truth, relative_sd, rng));
+  return builder.finish();
+}
+
+RgbImage scaled(RgbImage image, double factor, TileRect where) {
+  for (int y = where.y; y < where.y + where.height; ++y) {
+    for (int x = where.x; x < where.x + where.width; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        float& v = image.rgb[(static_cast<std::size_t>(y) * image.width + x) * 3 + c];
+        v = static_cast<float>(v * factor);
+      }
+    }
+  }
+  return image;
+}
+
+NoisyThresholds without_min_effect(double alpha) {
+  NoisyThresholds t;
+  t.alpha = alpha;
+  for (TileScale& s : t.scales) s.min_effect = s.must_resolve = 0;
+  return t;
+}
+
+TEST(NoisyImageCompare, NormalHelpersMatchTables) {
+  EXPECT_NEAR(normal_quantile(0.975), 1.959964, 1e-5);
+  EXPECT_NEAR(normal_quantile(0.5), 0.0, 1e-9);
+  EXPECT_NEAR(two_sided_p(1.959964), 0.05, 1e-6);
+  EXPECT_NEAR(two_sided_p(-3.0), 0.0026998, 1e-6);
+}
+
+// The test proper (no minimum effect, so only alpha guards): 300 pairs of 8 runs each with
+// different seeds. A family-wise rate of 5% allows about 15 false alarms; the binomial's 99.9%
+// bound is 27. An estimator that forgot a factor (the runs, the tile's pixels) fails far more.
+TEST(NoisyImageCompare, DifferentSeedsOfTheSameImageFailAtMostAlphaOfTheTime) {
+  std::mt19937_64 rng(20261126);
+  const RgbImage truth = expected_image();
+  const NoisyThresholds thresholds = without_min_effect(0.05);
+  int false_alarms = 0;
+  constexpr int kTrials = 300;
+  for (int trial = 0; trial < kTrials; ++trial) {
+    const NoisyComparison c =
+        compare_noisy(runs_of(truth, 8, 0.3, rng), runs_of(truth, 8, 0.3, rng), thresholds);
+    ASSERT_NE(c.verdict, NoisyVerdict::inconclusive) << summarize(c);
+    if (c.verdict == NoisyVerdict::fail) ++false_alarms;
+  }
+  std::printf("alpha 0.05, no minimum effect: %d false alarms in %d trials\n", false_alarms, kTrials);
+  EXPECT_LE(false_alarms, 27) << "of " << kTrials;
+}
+
+// With the default thresholds (minimum effects on), the same noise never fails.
+TEST(NoisyImageCompare, DefaultThresholdsPassNoise) {
+  std::mt19937_64 rng(7);
+  const RgbImage truth = expected_image();
+  for (int trial = 0; trial < 50; ++trial) {
+    const NoisyComparison c = compare_noisy(runs_of(truth, 8, 0.3, rng), runs_of(truth, 8, 0.3, rng), {});
+    EXPECT_EQ(c.verdict, NoisyVerdict::pass) << summarize(c);
+    EXPECT_NE(summarize(c).find("pass (same within noise)"), std::string::npos);
+  }
+}
+
+TEST(NoisyImageCompare, AThreePercentDimmerImageFails) {
+  std::mt19937_64 rng(11);
+  const RgbImage truth = expected_image();
+  const RgbImage dimmer = scaled(truth, 0.97, {0, 0, kSize, kSize});
+  for (int trial = 0; trial < 20; ++trial) {
+    const NoisyComparison c = compare_noisy(runs_of(dimmer, 8, 0.3, rng), runs_of(truth, 8, 0.3, rng), {});
+    ASSERT_EQ(c.verdict, NoisyVerdict::fail) << summarize(c);
+    EXPECT_NEAR(c.image_change, -0.03, 0.01);
+    EXPECT_LT(c.image_low, -0.01);
+    EXPECT_LT(c.image_high, 0.0);
+    EXPECT_NE(summarize(c).find("fail (biased)"), std::string::npos) << summarize(c);
+  }
+}
+
+// The words of a whole-image failure name no tile rectangle.
+TEST(NoisyImageCompare, AWholeImageFailureSaysSo) {
+  std::mt19937_64 rng(37);
+  const RgbImage truth = expected_image();
+  const RgbImage dimmer = scaled(truth, 0.97, {0, 0, kSize, kSize});
+  const NoisyComparison c = compare_noisy(runs_of(dimmer, 16, 0.05, rng), runs_of(truth, 16, 0.05, rng), {});
+  ASSERT_EQ(c.verdict, NoisyVerdict::fail);
+  const std::string text = summarize(c);
+  EXPECT_EQ(text.rfind("fail (biased): ", 0), 0u) << text;
+  EXPECT_NE(text.find("image mean -3.0"), std::string::npos) << text;
+  EXPECT_NE(text.find("; 16 vs 16 runs"), std::string::npos) << text;
+}
+
+// 10% brighter in a 8x8 region at (16,24): 2.8% of the pixels. The worst tile must be inside or
+// around it, and the change found about +10%.
+TEST(NoisyImageCompare, ATenPercentChangeInASmallRegionFailsThere) {
+  std::mt19937_64 rng(13);
+  const RgbImage truth = expected_image();
+  const TileRect region{16, 24, 8, 8};
+  const RgbImage changed = scaled(truth, 1.10, region);
+  int found = 0;
+  for (int trial = 0; trial < 20; ++trial) {
+    const NoisyComparison c = compare_noisy(runs_of(changed, 8, 0.3, rng), runs_of(truth, 8, 0.3, rng), {});
+    if (c.verdict != NoisyVerdict::fail) continue;
+    ++found;
+    const BiasedTile& worst = c.biased.front();
+    EXPECT_LE(worst.rect.x, region.x) << summarize(c);
+    EXPECT_GE(worst.rect.x + worst.rect.width, region.x + region.width);
+    EXPECT_LE(worst.rect.y, region.y);
+    EXPECT_GE(worst.rect.y + worst.rect.height, region.y + region.height);
+    EXPECT_GT(worst.relative_change, 0.0);
+    // The worst of many tiles overstates its change a little (the winner's curse).
+    if (worst.tile_px == 8) {
+      EXPECT_GT(worst.relative_change, 0.05);
+      EXPECT_LT(worst.relative_change, 0.25);
+    }
+    EXPECT_LT(std::abs(c.image_change), 0.01);  // the image as a whole hardly changed
+    EXPECT_NE(summarize(c).find(" tile at ("), std::string::npos) << summarize(c);
+  }
+  std::printf("10%% in an 8x8 region of 48x48: found in %d of 20\n", found);
+  EXPECT_GE(found, 19);
+}
+
+TEST(NoisyImageCompare, TooFewSamplesIsInconclusiveAndSaysHowManyMore) {
+  std::mt19937_64 rng(17);
+  const RgbImage truth = expected_image();
+  const NoisyComparison c = compare_noisy(runs_of(truth, 3, 3.0, rng), runs_of(truth, 3, 3.0, rng), {});
+  ASSERT_EQ(c.verdict, NoisyVerdict::inconclusive) << summarize(c);
+  EXPECT_GT(c.samples_factor, 1.5);
+  EXPECT_NE(summarize(c).find("inconclusive (too noisy"), std::string::npos) << summarize(c);
+  EXPECT_NE(summarize(c).find("x the samples"), std::string::npos) << summarize(c);
+}
+
+TEST(NoisyImageCompare, OneRunASideCannotMeasureItsNoise) {
+  std::mt19937_64 rng(19);
+  const RgbImage truth = expected_image();
+  const NoisyComparison c = compare_noisy(runs_of(truth, 1, 0.3, rng), runs_of(truth, 8, 0.3, rng), {});
+  EXPECT_EQ(c.verdict, NoisyVerdict::inconclusive);
+  EXPECT_NE(summarize(c).find("at least 2"), std::string::npos) << summarize(c);
+}
+
+// A real but tiny bias (0.5% everywhere) found with very many samples is below the whole
+// image's 1% minimum effect: a pass. Without the minimum it would fail.
+TEST(NoisyImageCompare, ATinyBiasBelowTheMinimumEffectPasses) {
+  std::mt19937_64 rng(23);
+  const RgbImage truth = expected_image();
+  const RgbImage slightly = scaled(truth, 1.005, {0, 0, kSize, kSize});
+  const NoisyImageStats a = runs_of(slightly, 16, 0.02, rng);
+  const NoisyImageStats b = runs_of(truth, 16, 0.02, rng);
+  EXPECT_EQ(compare_noisy(a, b, {}).verdict, NoisyVerdict::pass) << summarize(compare_noisy(a, b, {}));
+  EXPECT_EQ(compare_noisy(a, b, without_min_effect(0.01)).verdict, NoisyVerdict::fail);
+}
+
+// Noise shared by 4x4 pixel blocks (a sampler that correlates neighbours): the tile means vary
+// 16 times more than independent pixels would. The inflation measured from the runs says so,
+// and the false alarms stay within alpha.
+TEST(NoisyImageCompare, CorrelatedPixelNoiseIsMeasuredNotIgnored) {
+  std::mt19937_64 rng(29);
+  const RgbImage truth = expected_image();
+  std::normal_distribution<double> normal(0, 0.1);
+  auto blocky_runs = [&](int runs) {
+    NoisyStatsBuilder builder(kSize, kSize, {8, 32, 128});
+    for (int r = 0; r < runs; ++r) {
+      RgbImage run = truth;
+      for (int by = 0; by < kSize; by += 4) {
+        for (int bx = 0; bx < kSize; bx += 4) {
+          const double factor = 1 + normal(rng);
+          run = scaled(run, factor, {bx, by, 4, 4});
+        }
+      }
+      builder.add(run);
+    }
+    return builder.finish();
+  };
+  const NoisyImageStats first = blocky_runs(8);
+  EXPECT_GT(first.inflation_for(8), 8.0);
+  EXPECT_LT(first.inflation_for(8), 30.0);
+  int false_alarms = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    if (compare_noisy(blocky_runs(8), blocky_runs(8), without_min_effect(0.05)).verdict ==
+        NoisyVerdict::fail) {
+      ++false_alarms;
+    }
+  }
+  EXPECT_LE(false_alarms, 7);  // 5% of 40 is 2; 7 is the binomial's 99.9% bound
+}
+
+TEST(NoisyImageCompare, ImagesOfDifferentSizesFail) {
+  std::mt19937_64 rng(31);
+  const NoisyComparison c = compare_noisy(runs_of(expected_image(48), 4, 0.3, rng),
+                                          runs_of(expected_image(32), 4, 0.3, rng), {});
+  EXPECT_EQ(c.verdict, NoisyVerdict::fail);
+  EXPECT_EQ(summarize(c), "fail (size 48x48 against 32x32)");
+}
+
+TEST(NoisyImageCompare, TileGridCoversTheImageOnce) {
+  const std::vector<TileRect> grid = tile_grid(20, 10, 8);
+  ASSERT_EQ(grid.size(), 6u);
+  EXPECT_EQ(grid.back(), (TileRect{16, 8, 4, 2}));
+  EXPECT_EQ(tile_scales(48, 48, {8, 32, 128}), (std::vector<int>{8, 32, kWholeImage}));
+}
+
+}  // namespace
+}  // namespace raygate

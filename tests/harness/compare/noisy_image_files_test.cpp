@@ -1,0 +1,126 @@
+// The Monte Carlo check's files: float images written and read back exactly (the golden's mean
+// and variance), the statistics of a set of image files, and what the statistical check costs
+// against the per-pixel one on the same files (printed; docs/monte-carlo-images.md quotes it).
+#include "compare/noisy_image_files.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cstdio>
+#include <random>
+
+#include "compare/golden.h"
+#include "compare/image_compare.h"
+#include "compare/noisy_image_compare.h"
+#include "core/fs.h"
+
+namespace raygate {
+namespace {
+
+namespace fs = std::filesystem;
+
+RgbImage noisy(int size, std::mt19937_64& rng) {
+  std::gamma_distribution<double> noise(4.0, 0.25);  // mean 1, relative sd 0.5
+  RgbImage image{size, size, {}};
+  for (int y = 0; y < size; ++y) {
+    for (int x = 0; x < size; ++x) {
+      const double v = 0.1 + 0.8 * x / size;
+      for (int c = 0; c < 3; ++c) image.rgb.push_back(static_cast<float>(v * noise(rng)));
+    }
+  }
+  return image;
+}
+
+std::vector<fs::path> write_runs(const fs::path& dir, const std::string& stem, int runs, int size,
+                                 std::mt19937_64& rng) {
+  std::vector<fs::path> files;
+  for (int i = 0; i < runs; ++i) {
+    files.push_back(dir / (stem + std::to_string(i) + ".exr"));
+    write_rgb_image(noisy(size, rng), files.back());
+  }
+  return files;
+}
+
+TEST(NoisyImageFiles, StatisticsSurviveTheGoldenFilesExactly) {
+  const TempDir dir;
+  std::mt19937_64 rng(3);
+  const NoisyImageStats stats = stats_of_images(write_runs(dir.path(), "run", 4, 24, rng));
+  EXPECT_EQ(stats.runs, 4);
+  write_stats_images(stats, dir.path() / "m.exr", dir.path() / "v.exr");
+  const NoisyImageStats back =
+      read_stats_images(dir.path() / "m.exr", dir.path() / "v.exr", stats.runs, stats.inflation);
+  EXPECT_EQ(back.width, 24);
+  EXPECT_EQ(back.mean, stats.mean);
+  EXPECT_EQ(back.variance, stats.variance);
+  EXPECT_EQ(back.inflation, stats.inflation);
+}
+
+// A Monte Carlo golden's statistics live in its manifest entry's "noise" object and come back
+// the same; an entry that claims fewer than 2 runs is refused (no variance to judge with).
+TEST(NoisyImageFiles, GoldenManifestKeepsTheNoiseOfEachEntry) {
+  const TempDir dir;
+  GoldenManifest manifest;
+  manifest.suite = "ci";
+  manifest.entries.push_back({"balls", "balls", 1, 48, 48, "center", "", "balls.mean.exr", "ab"});
+  manifest.entries.push_back({"gears", "gears", 1, 48, 48, "center", "", "gears.png", "cd"});
+  manifest.noise["balls"] = {8, "balls.variance.exr", "ef", {{8, 1.02}, {kWholeImage, 1.5}}};
+  save_golden_manifest(manifest, dir.path());
+  const GoldenManifest back = load_golden_manifest(dir.path());
+  ASSERT_EQ(back.noise.size(), 1u);
+  EXPECT_EQ(back.noise.at("balls"), manifest.noise.at("balls"));
+  EXPECT_EQ(back.noise.count("gears"), 0u);
+
+  std::string text = read_file(dir.path() / "manifest.json");
+  const std::string runs = "\"runs\": 8";
+  text.replace(text.find(runs), runs.size(), "\"runs\": 1");
+  write_file_atomically(dir.path() / "manifest.json", text);
+  try {
+    load_golden_manifest(dir.path());
+    FAIL() << "no error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("$.images[0].noise.runs: must be at least 2"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(NoisyImageFiles, ImagesOfDifferentSizesAreAUsageError) {
+  const TempDir dir;
+  std::mt19937_64 rng(5);
+  std::vector<fs::path> files = write_runs(dir.path(), "a", 2, 16, rng);
+  const std::vector<fs::path> other = write_runs(dir.path(), "b", 1, 20, rng);
+  files.push_back(other.front());
+  try {
+    stats_of_images(files);
+    FAIL() << "no error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("b0.exr: image is 20x20, the other runs 16x16"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
+// 9 runs a side of 128x128 float EXR images (what a compare with a warm-up and 8 rounds has), from
+// the files: the statistical check (reading 18 images, statistics, 3 scales x tiles x channels)
+// against the per-pixel check of one pair. Both verdicts are asserted; the times are printed.
+TEST(NoisyImageFiles, CostAgainstThePerPixelCheck) {
+  const TempDir dir;
+  std::mt19937_64 rng(7);
+  const std::vector<fs::path> a = write_runs(dir.path(), "a", 9, 128, rng);
+  const std::vector<fs::path> b = write_runs(dir.path(), "b", 9, 128, rng);
+  using Clock = std::chrono::steady_clock;
+  const auto t0 = Clock::now();
+  const NoisyComparison noisy_result = compare_noisy(stats_of_images(a), stats_of_images(b), {});
+  const auto t1 = Clock::now();
+  const ImageMetrics per_pixel = compare_images(a.front(), b.front(), {});
+  const auto t2 = Clock::now();
+  EXPECT_EQ(noisy_result.verdict, NoisyVerdict::pass) << summarize(noisy_result);
+  EXPECT_EQ(judge(per_pixel, {}), ImageVerdict::fail);  // why the per-pixel rule cannot be used
+  const double noisy_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
+  const double pixel_ms = std::chrono::duration<double, std::milli>(t2 - t1).count();
+  std::printf("128x128, 9 vs 9 runs: statistical check %.1f ms, per-pixel check of one pair %.1f ms\n",
+              noisy_ms, pixel_ms);
+}
+
+}  // namespace
+}  // namespace raygate

@@ -4,9 +4,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cstdlib>
 #include <cstdio>
 #include <fstream>
 #include <vector>
+
+#include <fmt/format.h>
 
 #include "core/error.h"
 #include "core/fs.h"
@@ -60,11 +63,61 @@ bool matches(const BuildRecord& record, const BuildCacheEntry& entry,
          record.adapter_hash == inputs.adapter_hash && record.compiler == inputs.compiler;
 }
 
+// One labelled line per value, each value's bytes hashed, so no two inputs give the same text.
+void add_line(std::string& text, const std::string& label, const std::string& value) {
+  text += label + " " + sha256_hex(value) + "\n";
+}
+
+std::string joined_argv(const std::vector<std::string>& argv) {
+  std::string text;
+  for (const std::string& arg : argv) text += sha256_hex(arg) + ",";
+  return text;
+}
+
 }  // namespace
+
+std::map<std::string, std::string> build_environment() {
+  static constexpr const char* kNames[] = {
+      "CC",          "CXX",           "CFLAGS",           "CXXFLAGS",        "CPPFLAGS",
+      "LDFLAGS",     "LIBS",          "CMAKE_GENERATOR",  "CMAKE_BUILD_TYPE", "CMAKE_PREFIX_PATH",
+      "CMAKE_TOOLCHAIN_FILE",         "CMAKE_ARGS",       "PKG_CONFIG_PATH", "CARGO_BUILD_TARGET",
+      "RUSTFLAGS",   "GOFLAGS",       "CUDAFLAGS",        "FC",              "FFLAGS"};
+  std::map<std::string, std::string> found;
+  for (const char* name : kNames) {
+    if (const char* value = std::getenv(name)) found[name] = value;
+  }
+  return found;
+}
+
+std::string build_inputs_hash(const Adapter& adapter,
+                              const std::map<std::string, std::string>& environment) {
+  std::string text = "raygate build inputs 1\n";
+  for (const std::vector<std::string>& step : adapter.build) add_line(text, "step", joined_argv(step));
+  add_line(text, "source_dir", adapter.source_dir);
+  add_line(text, "requires", joined_argv(adapter.packages));
+  text += adapter.submodules ? "submodules\n" : "no-submodules\n";
+  for (const auto& [name, value] : environment) add_line(text, "env " + name, value);
+  return sha256_hex(text);
+}
+
+std::string measurement_hash(const Adapter& adapter, const std::string& build_hash) {
+  std::string text = "raygate measurement 1\nbuild " + build_hash + "\n";
+  add_line(text, "run", joined_argv(adapter.run));
+  add_line(text, "stdin", adapter.stdin_template.value_or("<none>"));
+  add_line(text, "cwd", adapter.cwd);
+  for (const auto& [name, value] : adapter.env) add_line(text, "env " + name, value);
+  text += fmt::format("threads {} pin {} format {}\n", adapter.threads, adapter.pin_cpus,
+                      to_string(adapter.scene_format));
+  const Timing& t = adapter.timing;
+  text += fmt::format("timing {} {} {} {}\n", to_string(t.source),
+                      t.metric_by_threads ? "auto" : to_string(t.metric), to_string(t.unit),
+                      sha256_hex(t.regex));
+  return sha256_hex(text).substr(0, 16);
+}
 
 std::string build_key(const BuildKeyInputs& inputs) {
   // Every input on its own labelled line, so no two different inputs hash the same text.
-  std::string text = "raygate build key 1\n";
+  std::string text = "raygate build key 2\n";  // 2: the adapter's build inputs, not all of it
   text += "sha " + inputs.sha + "\n";
   text += inputs.dirty ? "dirty\n" : "clean\n";
   text += "adapter " + inputs.adapter_name + " " + inputs.adapter_hash + "\n";

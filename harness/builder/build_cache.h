@@ -1,5 +1,8 @@
-// The build cache: one folder per (commit, adapter hash, compiler identity), so a commit is
-// built once per adapter and toolchain, and a later run, compare or bisect step reuses it.
+// The build cache: one folder per (commit, build inputs, compiler identity), so a commit is
+// built once per way of building it and toolchain, and a later run, compare or bisect step
+// reuses it. The build inputs are what of the adapter the build depends on (its steps, source
+// folder, packages, submodules) and the build tools' environment variables, not how the tracer
+// is run: fixing an adapter's `run` line does not rebuild.
 //
 //   <cache>/builds/<key>.lock        flock'd while the entry is looked up or built
 //   <cache>/builds/<key>/build/      {build}
@@ -12,19 +15,37 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 
+#include "adapter/adapter.h"
 #include "builder/build_record.h"
 
 namespace raygate {
+
+// The environment variables compilers and build systems read (CC, CXXFLAGS, CMAKE_GENERATOR,
+// PKG_CONFIG_PATH...) that are set in this process: a build inherits them, so they are inputs.
+std::map<std::string, std::string> build_environment();
+
+// Hex SHA-256 of what of the adapter a build depends on, with `environment`: the build steps as
+// written (before {jobs} and paths are filled in), source_dir, requires and submodules. Not the
+// run command, image, timing, timeouts or description: those change no file the build makes.
+std::string build_inputs_hash(const Adapter& adapter,
+                              const std::map<std::string, std::string>& environment);
+
+// Hex SHA-256 (16 digits) of what a measurement depends on besides the commit: the build's
+// inputs (`build_hash`) and how the tracer is run (run, stdin, cwd, env, threads, pinning,
+// timing, scene format). A history series keys on it (results/series.h), so builds with other
+// flags or runs with other options are never one trend.
+std::string measurement_hash(const Adapter& adapter, const std::string& build_hash);
 
 // What a build depends on, besides the files of the commit.
 struct BuildKeyInputs {
   std::string sha;
   bool dirty = false;  // gets its own key, so a dirty build never replaces a clean one
   std::string adapter_name;
-  std::string adapter_hash;
+  std::string adapter_hash;  // build_inputs_hash(), not the whole adapter
   std::string compiler;  // detect_compiler_identity()
   std::string extra;     // anything else the caller knows the build depends on
 };

@@ -5,6 +5,8 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
+#include <fstream>
 #include <chrono>
 #include <string_view>
 #include <thread>
@@ -47,7 +49,8 @@ BuildKeyInputs key_inputs(const Worktree& worktree, const Adapter& adapter,
   inputs.sha = worktree.sha;
   inputs.dirty = worktree.dirty;
   inputs.adapter_name = adapter.name;
-  inputs.adapter_hash = adapter_hash(adapter);
+  // What the build depends on, not the whole adapter: a new run line reuses the build.
+  inputs.adapter_hash = build_inputs_hash(adapter, build_environment());
   inputs.compiler = options.compiler_identity ? *options.compiler_identity
                                               : detect_compiler_identity();
   inputs.extra = options.key_extra;
@@ -151,6 +154,76 @@ BuildRecord build(const Worktree& worktree, const Adapter& adapter, const BuildO
   return record;
 }
 
+namespace {
+
+bool contains_word(std::string_view line, std::string_view word) {
+  const auto lower = [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); };
+  std::string text(line);
+  std::transform(text.begin(), text.end(), text.begin(), lower);
+  return text.find(word) != std::string::npos;
+}
+
+// A configure step that downloads (CMake FetchContent, ExternalProject) fails offline; Debian
+// ships many such sources as packages (googletest in /usr/src/googletest).
+std::string download_hint(std::string_view line) {
+  if (!contains_word(line, "could not resolve host") && !contains_word(line, "unable to access") &&
+      !contains_word(line, "failed to connect")) {
+    return "";
+  }
+  return "\n  the build downloads something and this machine is offline: point CMake at an "
+         "installed copy with -DFETCHCONTENT_SOURCE_DIR_<NAME>=<dir> in the adapter's configure "
+         "step (e.g. FETCHCONTENT_SOURCE_DIR_GOOGLETEST=/usr/src/googletest from the Debian "
+         "package googletest; adapters/README.md)";
+}
+
+bool names_an_error(std::string_view line) {
+  if (line.starts_with("-- ")) return false;  // CMake's "-- Looking for x - not found" chatter
+  for (const std::string_view word :
+       {"error:", "error ", "fatal:", "fatal error", "could not resolve", "undefined reference",
+        "no such file or directory", "permission denied", "command not found",
+        "unable to access"}) {
+    if (contains_word(line, word)) return true;
+  }
+  return line.starts_with("CMake Error") || line.starts_with("Error");
+}
+
+}  // namespace
+
+std::optional<LogLine> first_error_line(const fs::path& log) {
+  std::ifstream in(log);
+  if (!in) return std::nullopt;
+  std::size_t number = 0;
+  for (std::string line; std::getline(in, line);) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (names_an_error(line)) return LogLine{number, line.substr(0, 400)};
+  }
+  return std::nullopt;
+}
+
+std::vector<fs::path> built_executables(const fs::path& build_dir, std::size_t limit) {
+  std::vector<fs::path> found;
+  std::error_code ec;
+  fs::recursive_directory_iterator it(build_dir, fs::directory_options::skip_permission_denied, ec);
+  for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    const std::string name = it->path().filename().string();
+    if (it->is_directory(ec) && (name == "CMakeFiles" || name == "_deps" || name.starts_with("."))) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    if (!it->is_regular_file(ec)) continue;
+    const auto perms = it->status(ec).permissions();
+    if ((perms & fs::perms::owner_exec) == fs::perms::none) continue;
+    if (name.ends_with(".so") || name.find(".so.") != std::string::npos || name.ends_with(".sh")) {
+      continue;
+    }
+    found.push_back(it->path().lexically_relative(build_dir));
+  }
+  std::sort(found.begin(), found.end());
+  if (found.size() > limit) found.resize(limit);
+  return found;
+}
+
 std::string failure_message(const BuildRecord& record) {
   if (record.success) return "";
   std::string message = fmt::format("build failed: adapter '{}', commit {}{}: {}",
@@ -158,7 +231,13 @@ std::string failure_message(const BuildRecord& record) {
                                     record.dirty ? " (dirty)" : "", record.failure);
   message += fmt::format("\n  source: {}", record.src_dir.string());
   if (!record.steps.empty() && !record.steps.back().log.empty()) {
-    message += fmt::format("\n  log: {}", record.steps.back().log.string());
+    const fs::path& log = record.steps.back().log;
+    message += fmt::format("\n  log: {}", log.string());
+    if (const std::optional<LogLine> first = first_error_line(log)) {
+      message += fmt::format("\n  first error (line {} of the log): {}", first->number,
+                             first->text);
+      message += download_hint(first->text);
+    }
     if (record.log_tail.empty()) {
       message += "\n  (the log is empty)";
     } else {

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "adapter/adapter.h"
 #include "builder/build_record.h"
@@ -37,8 +38,24 @@ struct BuildOptions {
 // line) or when the cache itself cannot be written.
 BuildRecord build(const Worktree& worktree, const Adapter& adapter, const BuildOptions& options);
 
-// What went wrong, where, the last lines of the log, and what to do; "" for a successful build.
+// What went wrong, where, the first error line of the log (the cause, often far above the
+// tail: "Could not resolve host" 80 lines before "Build step for googletest failed"), the last
+// lines, and what to do; "" for a successful build.
 std::string failure_message(const BuildRecord& record);
+
+// The first line of a build log that names an error ("error:", "CMake Error", "fatal:",
+// "Could not resolve host", "undefined reference"...), with its 1-based line number; nullopt
+// when none does or the log cannot be read.
+struct LogLine {
+  std::size_t number = 0;
+  std::string text;
+};
+std::optional<LogLine> first_error_line(const std::filesystem::path& log);
+
+// Executable regular files under `build_dir` (CMake's own CMakeFiles/ and _deps/ trees
+// skipped), relative to it, sorted, at most `limit`: what a wrong `run` path is told to pick from.
+std::vector<std::filesystem::path> built_executables(const std::filesystem::path& build_dir,
+                                                     std::size_t limit = 12);
 
 // Throws InfraError(failure_message(record)) unless the build succeeded.
 void require_success(const BuildRecord& record);

@@ -46,7 +46,9 @@ void say(const std::string& line) {
 int main(int argc, char** argv) {
   CLI::App app{"raygate: ray tracer regression harness, normalized against a baseline tracer"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("raygate ") + RAYGATE_VERSION);
+  // The commit tells two builds of one version apart (cmake/RaygateGitCommit.cmake).
+  app.set_version_flag("--version", std::string("raygate ") + RAYGATE_VERSION + " (git " +
+                                        RAYGATE_GIT_COMMIT + ")");
   // Before any child starts: Ctrl-C, SIGTERM and SIGHUP stop children and write what was
   // measured, and orphans of children re-parent to raygate, to be swept (core/interrupt.h,
   // core/strays.h).

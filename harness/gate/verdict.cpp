@@ -31,14 +31,6 @@ void judge_failure(const ResultsDocument& document, const SceneResult& scene, Sc
         head_only ? "head failed where base ran: " + what : what);
 }
 
-// "95% CI" for a one-look interval, "99.83% confidence sequence" for the sequential rule's.
-std::string interval_name(const DecidingInterval& interval) {
-  if (interval.kind == ChangeIntervalKind::confidence_sequence) {
-    return fmt::format("{:.4g}% confidence sequence", 100.0 * interval.confidence);
-  }
-  return fmt::format("{:.4g}% CI", 100.0 * interval.confidence);
-}
-
 void judge_speed(const SceneResult& scene, const ScenePolicy& policy, bool fail_on_inconclusive,
                  SceneGate& gate) {
   if (!scene.change) {
@@ -48,12 +40,11 @@ void judge_speed(const SceneResult& scene, const ScenePolicy& policy, bool fail_
   const ChangeSummary& change = *scene.change;
   const ChangeVerdict verdict = classify_change(change, policy.max_slowdown);
   gate.speed = std::string(to_string(verdict));
-  const DecidingInterval decided = deciding_interval(change, verdict);
+  // The same words as the reports' change column (measure/change.h change_with_interval).
   const std::string numbers = fmt::format(
-      "head vs base {} ({} {} to {}), ratio {:.3f} -> {:.3f}, {} rounds, limit {}",
-      signed_percent(change.change), interval_name(decided),
-      signed_percent(decided.interval.lower), signed_percent(decided.interval.upper),
-      change.base.ratio, change.head.ratio, change.rounds, signed_percent(policy.max_slowdown));
+      "head vs base {}, ratio {:.3f} -> {:.3f}, {} rounds, limit {}",
+      change_with_interval(change, verdict), change.base.ratio, change.head.ratio, change.rounds,
+      signed_percent(policy.max_slowdown));
   if (verdict == ChangeVerdict::regressed) raise(gate, GateOutcome::fail, "slower: " + numbers);
   if (verdict == ChangeVerdict::inconclusive) {
     raise(gate, fail_on_inconclusive ? GateOutcome::fail : GateOutcome::warn,

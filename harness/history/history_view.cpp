@@ -41,6 +41,7 @@ std::string short_repository(const std::string& repository_key) {
 
 TrendPoint trend_point(const HistoryRow& row) {
   TrendPoint point;
+  point.sha = row.sha;
   point.short_sha = row.short_sha;
   point.subject = row.subject;
   point.commit_time = row.commit_time;

@@ -16,9 +16,10 @@ struct StoreTrends {
   std::string warning;              // why there are none although a store was named; "" if fine
 };
 
-// The normalized ratio of each of the document's scenes over the last `commits` commits in the
-// store (oldest first), within the scene's series (results/series.h: the same repository,
-// adapter, suite, scene settings, timing and baseline). No store, or none yet: no trends and no
+// The normalized ratio of each of the document's scenes over `commits` commits in the store
+// (oldest first) ending at the newest of the document's own commits (its base and head, or the
+// tracer; widened to reach both), within the scene's series (results/series.h: the same
+// repository, adapter and measurement, suite, scene settings, timing and baseline). No store, or none yet: no trends and no
 // warning; a store that cannot be read: no trends and a warning (a report is still written).
 StoreTrends trends_from_store(const std::filesystem::path& store, const ResultsDocument& document,
                               std::size_t commits = 20);

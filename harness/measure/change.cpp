@@ -9,6 +9,7 @@
 #include <fmt/core.h>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "measure/confidence_sequence.h"
 #include "measure/descriptive.h"
 #include "measure/median_interval.h"
@@ -244,6 +245,29 @@ DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict v
     return {summary.equivalence_interval, summary.equivalence_confidence, summary.interval_kind};
   }
   return {summary.change_interval, summary.confidence, summary.interval_kind};
+}
+
+std::string interval_name(const DecidingInterval& interval) {
+  const bool sequence = interval.kind == ChangeIntervalKind::confidence_sequence;
+  return fmt::format("{:.4g}% {}", 100.0 * interval.confidence, sequence ? "CS" : "CI");
+}
+
+std::size_t rounds_to_bound(const ChangeSummary& summary, const DecidingInterval& interval) {
+  if (summary.exact || interval.kind != ChangeIntervalKind::confidence_sequence) return 0;
+  return min_values_for_median_sequence((1.0 - interval.confidence) / 2.0);
+}
+
+std::string change_with_interval(const ChangeSummary& summary, ChangeVerdict verdict) {
+  // Counted in simulated cycles, every count repeated: the change is a fact, not an estimate.
+  if (summary.exact) return signed_percent(summary.change, 3) + " exact (simulated cycles)";
+  const DecidingInterval decided = deciding_interval(summary, verdict);
+  if (const std::size_t needed = rounds_to_bound(summary, decided); summary.rounds < needed) {
+    return fmt::format("{}, no interval yet (needs {} rounds)", signed_percent(summary.change),
+                       needed);
+  }
+  return fmt::format("{} [{}, {}] {}", signed_percent(summary.change),
+                     signed_percent(decided.interval.lower),
+                     signed_percent(decided.interval.upper), interval_name(decided));
 }
 
 }  // namespace raygate

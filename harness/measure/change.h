@@ -8,6 +8,7 @@
 #include <cstddef>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -152,5 +153,21 @@ struct DecidingInterval {
   ChangeIntervalKind kind = ChangeIntervalKind::order_statistic;
 };
 DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict);
+
+// The one name every output gives an interval (reports, gate reasons, progress lines, docs):
+// "99.33% CS" for an anytime-valid confidence sequence, "95% CI" for a one-look interval.
+std::string interval_name(const DecidingInterval& interval);
+// What the abbreviations stand for, said once where a reader meets them (policy lines, footers).
+inline constexpr const char* kIntervalLegend =
+    "CS = anytime-valid confidence sequence, CI = one-look confidence interval";
+
+// The rounds before the deciding interval is bounded (below them it is only the observed range
+// and no verdict but INCONCLUSIVE is drawn from it); 0 for a one-look interval or an exact change.
+std::size_t rounds_to_bound(const ChangeSummary& summary, const DecidingInterval& interval);
+
+// The change as every output prints it, with the interval `verdict` was drawn from:
+// "+7.9% [+6.1%, +9.8%] 99.33% CS"; "+0.4%, no interval yet (needs 16 rounds)" while that
+// interval is unbounded; "+0.912% exact (simulated cycles)" for a counted change.
+std::string change_with_interval(const ChangeSummary& summary, ChangeVerdict verdict);
 
 }  // namespace raygate

@@ -19,9 +19,9 @@ bool in_family(const SceneResult& scene) {
   return scene.change && !scene.change->exact && !scene.runs.rounds.empty();
 }
 
-// "balls +0.4% [-3.9%, +4.8%] (width 8.7 points) after 38 rounds", or, below the rounds its
-// sequence needs, "balls +0.4% after 9 rounds, no interval yet (needs 14 rounds)": the stored
-// interval is then only the observed range.
+// "balls +0.4% [-3.9%, +4.8%] 99.85% CS (width 8.7 points) after 38 rounds", or, below the
+// rounds its sequence needs, "balls +0.4% after 9 rounds, no interval yet (needs 14 rounds)": the
+// stored interval is then only the observed range.
 // "(about 180 rounds in all would decide it, 3 min more at this scene's pace, or a quieter
 // runner)", or why no number of rounds would do.
 std::string what_would_decide(const SceneResult& scene, double threshold) {
@@ -49,9 +49,10 @@ std::string undecided_scene(const SceneResult& scene, double threshold) {
     return fmt::format("{} {:+.1f}% after {} rounds, no interval yet (needs {} rounds)",
                        scene.entry.id, 100 * c.change, c.rounds, needed);
   }
+  // The interval named as the reports name it (measure/change.h change_with_interval).
   std::string text = fmt::format(
-      "{} {:+.1f}% [{:+.1f}%, {:+.1f}%] (width {:.1f} points) after {} rounds", scene.entry.id,
-      100 * c.change, 100 * c.change_interval.lower, 100 * c.change_interval.upper,
+      "{} {} (width {:.1f} points) after {} rounds", scene.entry.id,
+      change_with_interval(c, ChangeVerdict::inconclusive),
       100 * (c.change_interval.upper - c.change_interval.lower), c.rounds);
   return text + " " + what_would_decide(scene, threshold);
 }

@@ -81,10 +81,18 @@ std::optional<std::string> round_budget_warning(const MeasureContext& context, d
 MeasuredDocument measure_compare(const CompareRequest& request, PipelineIo& io) {
   const MeasureContext& context = request.context;
   const std::string source_hash = request.baseline.source_hash();
-  const PreparedRevision base = prepare_revision("base", request.repository, request.base,
-                                                 context, source_hash, context.jobs, io.progress);
-  const PreparedRevision head = prepare_revision("head", request.repository, request.head,
-                                                 context, source_hash, context.jobs, io.progress);
+  // Both sides are built before either failure is reported, so one job says whether each builds.
+  const BuildRecord base_build =
+      build_revision(request.base, context, source_hash, context.jobs, io.progress);
+  const BuildRecord head_build =
+      build_revision(request.head, context, source_hash, context.jobs, io.progress);
+  require_both_built(base_build, head_build);
+  require_run_program(context.adapter, base_build, request.base.path, context.tools.data_root);
+  require_run_program(context.adapter, head_build, request.head.path, context.tools.data_root);
+  const PreparedRevision base =
+      prepared_revision("base", request.repository, request.base, context, base_build);
+  const PreparedRevision head =
+      prepared_revision("head", request.repository, request.head, context, head_build);
   return measure_prepared_compare(request, base, head, io);
 }
 

@@ -2,6 +2,10 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+
+#include "core/process.h"
+
 namespace raygate {
 
 bool simulated(const MeasureContext& context) {
@@ -22,11 +26,25 @@ std::string shard_note(const MeasureContext& context) {
                      context.shard->suite_scenes.size());
 }
 
+std::vector<int> adapter_pinned_cpus(const MeasureContext& context) {
+  if (!context.adapter.pin_cpus || !context.schedule.pin_cpus.empty()) return {};
+  const std::vector<int> allowed = allowed_cpu_list();
+  const std::size_t count = std::min(
+      allowed.size(), static_cast<std::size_t>(std::max(context.adapter.threads, 1)));
+  return {allowed.begin(), allowed.begin() + static_cast<long>(count)};
+}
+
 nlohmann::json measure_settings(const MeasureContext& c) {
+  // What was really pinned: --pin's CPUs, or those the adapter's pin_cpus chose (issue 26: a
+  // document said "pin_cpus": [] while the adapter had pinned the tracer to CPU 0).
+  const std::vector<int> adapter_cpus = adapter_pinned_cpus(c);
   nlohmann::json settings = {
       {"schedule", std::string(to_string(c.schedule.kind))},
       {"warmup_runs", c.schedule.warmup_runs},
-      {"pin_cpus", c.schedule.pin_cpus},
+      {"pin_cpus", adapter_cpus.empty() ? c.schedule.pin_cpus : adapter_cpus},
+      {"pinned_by", !adapter_cpus.empty()            ? "adapter"
+                    : !c.schedule.pin_cpus.empty()   ? "--pin"
+                                                     : ""},
       {"duet_cpus", c.schedule.duet_cpus},
       {"round_cpus", c.schedule.round_cpus},
       {"baseline_rounds", c.schedule.normalizer_rounds},

@@ -55,6 +55,10 @@ BaselineClock baseline_clock(const MeasureContext& context);
 // ", shard K/N of M selected scenes" with --shard, else "": for the line that opens a run.
 std::string shard_note(const MeasureContext& context);
 
+// The CPUs the tracer's runs are pinned to because its adapter asks (pin_cpus: true) and no
+// --pin names others: the first `threads` CPUs this process may use; empty otherwise.
+std::vector<int> adapter_pinned_cpus(const MeasureContext& context);
+
 // The settings object of a results document: how this measurement was made.
 nlohmann::json measure_settings(const MeasureContext& context);
 

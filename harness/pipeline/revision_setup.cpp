@@ -3,8 +3,10 @@
 #include <fmt/core.h>
 
 #include "adapter/placeholders.h"
+#include "builder/build_cache.h"
 #include "builder/builder.h"
 #include "checkout/repository_identity.h"
+#include "core/error.h"
 #include "measure/stopping.h"
 
 namespace raygate {
@@ -50,7 +52,50 @@ PreparedRevision prepare_revision(const std::string& role, const std::string& re
   const BuildRecord build_record =
       build_revision(worktree, context, baseline_source_hash, jobs, progress);
   require_success(build_record);
+  require_run_program(context.adapter, build_record, worktree.path, context.tools.data_root);
   return prepared_revision(role, repository, worktree, context, build_record);
+}
+
+void require_run_program(const Adapter& adapter, const BuildRecord& build,
+                         const std::filesystem::path& repo_root,
+                         const std::filesystem::path& raygate_source) {
+  if (adapter.run.empty()) return;
+  const std::string& written = adapter.run.front();
+  for (const char* name :
+       {"workdir", "scene", "image", "scene_stem", "threads", "width", "height", "jobs", "seed"}) {
+    if (uses_placeholder(written, name)) return;  // known only at run time
+  }
+  Placeholders values;
+  values.src = build.src_dir.string();
+  values.repo_root = repo_root.string();
+  values.build = build.build_dir.string();
+  values.raygate_source = raygate_source.string();
+  const std::filesystem::path program = expand(written, values);
+  // A bare name is looked up on PATH, a relative path from the run's working folder.
+  if (!program.is_absolute() || std::filesystem::exists(program)) return;
+  std::string message = fmt::format(
+      "adapter '{}': its run program {} does not exist after the build (`run` in {})", adapter.name,
+      written, adapter.file.string());
+  const std::vector<std::filesystem::path> made = built_executables(build.build_dir);
+  if (made.empty()) {
+    message += fmt::format("\n  the build made no executable under {{build}} ({})",
+                           build.build_dir.string());
+  } else {
+    message += "\n  the build made these executables:";
+    for (const std::filesystem::path& path : made) message += "\n    {build}/" + path.string();
+  }
+  message += "\n  a CMake add_subdirectory(x) target lands in {build}/x/; fixing `run` reuses this "
+             "build (adapters/README.md)";
+  throw InfraError(message);
+}
+
+void require_both_built(const BuildRecord& base, const BuildRecord& head) {
+  if (base.success && head.success) return;
+  const auto side = [](const char* role, const BuildRecord& r) {
+    return r.success ? fmt::format("{} ({}) built", role, r.sha.substr(0, 12))
+                     : fmt::format("{} did not build:\n{}", role, failure_message(r));
+  };
+  throw InfraError(fmt::format("{}\n{}", side("base", base), side("head", head)));
 }
 
 PreparedRevision prepared_revision(const std::string& role, const std::string& repository,
@@ -64,6 +109,7 @@ PreparedRevision prepared_revision(const std::string& role, const std::string& r
   prepared.record.adapter_name = context.adapter.name;
   prepared.record.adapter_hash = adapter_hash(context.adapter);
   prepared.record.adapter_file = context.adapter.file.string();
+  prepared.record.adapter_measurement = measurement_hash(context.adapter, build_record.adapter_hash);
   prepared.record.build = build_record;
   prepared.setup.role = role;
   prepared.setup.adapter = context.adapter;
@@ -75,13 +121,8 @@ PreparedRevision prepared_revision(const std::string& role, const std::string& r
   // The adapter's own limit, and the user's budget too (issue 25, class 10), as the baseline's.
   prepared.setup.run_timeout_seconds =
       budgeted_run_seconds(context.stopping, context.adapter.timeouts.run_seconds);
-  if (context.adapter.pin_cpus && context.schedule.pin_cpus.empty()) {
-    // The adapter asks raygate to pin: the first `threads` CPUs this process may use.
-    const std::vector<int> allowed = allowed_cpu_list();
-    const std::size_t count =
-        std::min(allowed.size(), static_cast<std::size_t>(std::max(context.adapter.threads, 1)));
-    prepared.setup.cpus.assign(allowed.begin(), allowed.begin() + static_cast<long>(count));
-  }
+  // The adapter asks raygate to pin: the first `threads` CPUs this process may use.
+  prepared.setup.cpus = adapter_pinned_cpus(context);
   return prepared;
 }
 

@@ -29,6 +29,17 @@ PreparedRevision prepared_revision(const std::string& role, const std::string& r
                                    const Worktree& worktree, const MeasureContext& context,
                                    const BuildRecord& build_record);
 
+// Throws InfraError (exit 3) unless the adapter's run program is where the build should have
+// put it: said once, with the executables the build did make, before any scene is measured.
+// Programs found on PATH, or named by placeholders only a run knows ({workdir}), are not checked.
+void require_run_program(const Adapter& adapter, const BuildRecord& build,
+                         const std::filesystem::path& repo_root,
+                         const std::filesystem::path& raygate_source);
+
+// A compare's two builds: nothing when both succeeded, else InfraError saying how each side
+// did (issue 26: compare stopped at base's failure and never said whether head builds).
+void require_both_built(const BuildRecord& base, const BuildRecord& head);
+
 // The build record for `worktree` without throwing on failure (bisect skips such commits).
 BuildRecord build_revision(const Worktree& worktree, const MeasureContext& context,
                            const std::string& baseline_source_hash, int jobs,

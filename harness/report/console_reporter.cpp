@@ -4,7 +4,6 @@
 // outside never carries its own (render() below).
 #include <fmt/format.h>
 
-#include <array>
 #include <cctype>
 #include <utility>
 #include <vector>
@@ -17,8 +16,8 @@
 namespace raygate::report {
 namespace {
 
-constexpr std::size_t kColumns = 6;
-using Row = std::array<std::string, kColumns>;
+// scene, the data columns of table_columns(), verdict: console, Markdown and HTML share them.
+using Row = std::vector<std::string>;
 
 const char* colour_code(GateOutcome outcome) {
   switch (outcome) {
@@ -58,31 +57,35 @@ Span painted(std::string text, GateOutcome outcome) {
 Span plain(std::string text) { return {std::move(text), Style::plain, GateOutcome::pass}; }
 
 Row heading(const ResultsDocument& document) {
-  const bool compare = document.kind == "compare";
-  return {"scene", compare ? "ratio base->head" : "ratio [95% CI]",
-          compare ? kChangeHeading : "", "speed", "image", "verdict"};
+  Row row{"scene"};
+  for (const TableColumn& column : table_columns(document)) row.push_back(column.heading);
+  row.push_back("verdict");
+  return row;
 }
 
 Row row_of(const ResultsDocument& document, const SceneView& view) {
   std::string verdict(to_string(view.gate.outcome));
   for (char& c : verdict) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return {view.gate.id, ratio_text(document, *view.result), change_text(*view.result),
-          view.gate.speed, image_text(view.gate, "-"), verdict};
+  Row row{view.gate.id};
+  for (const TableColumn& column : table_columns(document)) {
+    row.push_back(cell_text(column.kind, document, view));
+  }
+  row.push_back(verdict);
+  return row;
 }
 
 // Column widths as rendered: a cell's control characters are shown escaped, so wider.
-std::array<std::size_t, kColumns> widths_of(const std::vector<Row>& rows) {
-  std::array<std::size_t, kColumns> widths{};
+std::vector<std::size_t> widths_of(const std::vector<Row>& rows) {
+  std::vector<std::size_t> widths(rows.front().size(), 0);
   for (const Row& row : rows) {
-    for (std::size_t i = 0; i < kColumns; ++i) {
+    for (std::size_t i = 0; i < row.size(); ++i) {
       widths[i] = std::max(widths[i], terminal_text(row[i]).size());
     }
   }
   return widths;
 }
 
-std::string padded(const Row& row, const std::array<std::size_t, kColumns>& widths,
-                   std::size_t columns) {
+std::string padded(const Row& row, const std::vector<std::size_t>& widths, std::size_t columns) {
   std::string line;
   for (std::size_t i = 0; i < columns; ++i) {
     if (widths[i] == 0) continue;
@@ -109,6 +112,8 @@ void add_header(const ReportInput& input, Spans& spans) {
     spans.push_back(plain("\n"));
   }
   spans.push_back(dim("policy: " + policy_line(input.policy)));
+  spans.push_back(plain("\n"));
+  spans.push_back(dim("columns: " + columns_line(d)));
   spans.push_back(plain("\n\n"));
 }
 
@@ -116,13 +121,14 @@ void add_table(const ReportInput& input, const std::vector<SceneView>& views, Sp
   std::vector<Row> rows{heading(input.document)};
   for (const SceneView& view : views) rows.push_back(row_of(input.document, view));
   const auto widths = widths_of(rows);
-  std::string head = padded(rows[0], widths, kColumns);
+  const std::size_t columns = widths.size();
+  std::string head = padded(rows[0], widths, columns);
   head.erase(head.find_last_not_of(' ') + 1);
   spans.push_back(dim(head));
   spans.push_back(plain("\n"));
   for (std::size_t i = 0; i < views.size(); ++i) {
     const GateOutcome outcome = views[i].gate.outcome;
-    spans.push_back(plain(padded(rows[i + 1], widths, kColumns - 1)));
+    spans.push_back(plain(padded(rows[i + 1], widths, columns - 1)));
     spans.push_back(painted(rows[i + 1].back(), outcome));
     spans.push_back(plain("\n"));
     for (const std::string& reason : views[i].gate.reasons) {

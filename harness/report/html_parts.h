@@ -40,11 +40,17 @@ struct IntervalRow {
 
 // The ratios' CIs of one scene on a shared axis (one row per revision).
 std::string ratio_bars_svg(const std::vector<IntervalRow>& rows);
-// The change and its CI against the ±threshold band, in percent.
-std::string change_bar_svg(double change, const Interval& interval, double threshold,
-                           const std::string& css_class);
-// The normalized ratio over commits: CI band, line, points with tooltips.
-std::string trend_svg(const TrendSeries& series);
+// The change and the interval that decided it against the ±threshold band, in percent; the
+// point alone while the interval is unbounded or the change exact.
+std::string change_bar_svg(const ChangeCell& cell, double threshold, const std::string& css_class);
+// A commit the trend marks and names: the compare's base and head, or the run's tracer.
+struct TrendMark {
+  std::string sha;    // full id, or a prefix of one (a short sha)
+  std::string label;  // "base", "head", "this run"
+};
+// The normalized ratio over commits: CI band, line, points with tooltips. The points of `marks`
+// are drawn large and labelled; without marks, the newest point is (a history page).
+std::string trend_svg(const TrendSeries& series, const std::vector<TrendMark>& marks = {});
 
 // <section> of the scaling analysis (html_scaling.cpp): a log-log plot per scene family with
 // the fitted growth; "" when the document has none.

@@ -94,25 +94,36 @@ std::string counts_html(const GateResult& gate) {
   return html + "</div>";
 }
 
+// A cell of the overview table; speed and image are tags coloured by their verdict.
+std::string overview_cell(const TableColumn& column, const ResultsDocument& d,
+                          const SceneView& view) {
+  const std::string text = cell_text(column.kind, d, view, "→", "");
+  switch (column.kind) {
+    case ColumnKind::speed:
+      return fmt::format(R"(<td><span class="tag speed-{0}">{0}</span></td>)", escape(text));
+    case ColumnKind::image:
+      if (!view.gate.image) return "<td>–</td>";
+      return fmt::format(R"(<td><span class="verdict v-{}">{}</span></td>)",
+                         escape(std::string(to_string(*view.gate.image))), escape(text));
+    case ColumnKind::ratio:
+    case ColumnKind::change: break;
+  }
+  return fmt::format(R"(<td class="num">{}</td>)", escape(text));
+}
+
 std::string overview(const ReportInput& input, const std::vector<SceneView>& views) {
   const ResultsDocument& d = input.document;
-  const bool compare = d.kind == "compare";
+  const std::vector<TableColumn> columns = table_columns(d);
   std::string html = R"(<section class="card overview"><h2>Scenes</h2>)" + counts_html(input.gate);
-  html += fmt::format(
-      R"(<table class="scenes"><thead><tr><th>scene</th><th>verdict</th><th>{}</th>{}<th>speed</th><th>image</th></tr></thead><tbody>)",
-      compare ? "ratio base → head" : "ratio [95% CI]", compare ? fmt::format("<th>{}</th>", kChangeHeading) : "");
+  html += R"(<table class="scenes"><thead><tr><th>scene</th><th>verdict</th>)";
+  for (const TableColumn& column : columns) html += "<th>" + escape(column.heading) + "</th>";
+  html += "</tr></thead><tbody>";
   for (const SceneView& view : views) {
-    html += fmt::format(R"(<tr class="{}"><td><a href="#{}">{}</a></td><td>{}</td><td class="num">{}</td>)",
+    html += fmt::format(R"(<tr class="{}"><td><a href="#{}">{}</a></td><td>{}</td>)",
                         outcome_class(view.gate.outcome), anchor(view.gate.id),
-                        escape(view.gate.id), badge(view.gate.outcome),
-                        escape(ratio_text(d, *view.result, "→")));
-    if (compare) html += fmt::format(R"(<td class="num">{}</td>)", escape(change_text(*view.result)));
-    html += fmt::format(R"(<td><span class="tag speed-{0}">{0}</span></td><td>{1}</td></tr>)",
-                        escape(view.gate.speed),
-                        !view.gate.image
-                            ? std::string("–")
-                            : fmt::format(R"(<span class="verdict v-{0}">{0}</span>)",
-                                          escape(image_text(view.gate, ""))));
+                        escape(view.gate.id), badge(view.gate.outcome));
+    for (const TableColumn& column : columns) html += overview_cell(column, d, view);
+    html += "</tr>";
   }
   return html + "</tbody></table></section>";
 }
@@ -146,10 +157,11 @@ class HtmlReporter final : public Reporter {
         << memory_html(input) << explanation_html(input) << '\n';  // issue 27
     for (const SceneView& view : views) out << scene_section(input, view) << '\n';
     out << "<footer>raygate " << escape(d.raygate_version)
-        << " · normalized ratio = time(tracer) / time(baseline), median of paired rounds with a "
-           "bootstrap 95% CI · change = median of per-round head/base with the interval that "
-           "decided its verdict (CS: anytime-valid confidence sequence) · hover an image to see "
-           "its reference</footer></div>\n"
+        << " · normalized ratio = time(tracer) / time(baseline), median of the rounds the "
+           "baseline joined, with its 95% bootstrap CI (head's: base's times the change) · "
+           "change = median of per-round head/base, with the interval that decided its verdict ("
+        << escape(kIntervalLegend)
+        << ") · hover an image to see its reference</footer></div>\n"
         << "<script>" << page_script() << "</script></body></html>\n";
   }
 };

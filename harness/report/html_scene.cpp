@@ -110,8 +110,9 @@ std::string gallery(const ReportInput& input, const SceneView& view) {
 
 std::string metric_row(const ImageCheck& check) {
   const std::string who = fmt::format("{} vs {}", escape(check.role), escape(check.reference));
-  const std::string verdict = fmt::format(R"(<span class="verdict v-{0}">{0}</span>)",
-                                          escape(std::string(to_string(check.verdict))));
+  const std::string verdict = fmt::format(R"(<span class="verdict v-{}">{}</span>)",
+                                          escape(std::string(to_string(check.verdict))),
+                                          escape(image_verdict_text(check.verdict)));
   if (!check.metrics) {
     return fmt::format(R"(<tr><td>{}</td><td>{}</td><td colspan="5" class="muted">{}</td></tr>)",
                        who, verdict, escape(check.error));
@@ -159,28 +160,48 @@ std::string speed_plots(const ReportInput& input, const SceneView& view) {
     }
   }
   std::string out = ratio_bars_svg(rows);
-  if (scene.change && !scene.runs.failed()) {
+  if (const std::optional<ChangeCell> cell = change_cell(scene, view.gate.speed)) {
     const double limit = input.policy.for_scene(scene.entry.id).max_slowdown;
-    out += change_bar_svg(scene.change->change, scene.change->change_interval, limit,
-                          outcome_class(view.speed_outcome));
+    out += change_bar_svg(*cell, limit, outcome_class(view.speed_outcome));
   }
   return out;
 }
 
-std::string run_facts(const ReportInput& input, const SceneResult& scene) {
+// "15 rounds (the baseline in 3)", then each program's median cost, in the document's unit.
+std::vector<std::string> round_facts(const ResultsDocument& d, const SceneResult& scene) {
   std::vector<std::string> facts;
-  const RatioSummary* r = scene.ratio(primary_role(input.document));
-  if (r != nullptr) {
-    facts.push_back(fmt::format("{} rounds", r->rounds));
-    facts.push_back(fmt::format("baseline {:.3f} s, {} {:.3f} s (medians)",
-                                r->baseline_median_seconds, primary_role(input.document),
-                                r->tracer_median_seconds));
+  const RatioSummary* primary = scene.ratio(primary_role(d));
+  if (primary == nullptr) return facts;
+  if (scene.change && scene.change->rounds != primary->rounds) {
+    facts.push_back(fmt::format("{} rounds (the baseline in {})", scene.change->rounds,
+                                primary->rounds));
+  } else {
+    facts.push_back(fmt::format("{} rounds", primary->rounds));
   }
+  std::string medians = "medians: baseline " + cost_text(d, primary->baseline_median_seconds);
+  for (const std::string& role : ratio_roles(d)) {
+    if (const RatioSummary* r = scene.ratio(role)) {
+      medians += fmt::format(", {} {}", role, cost_text(d, r->tracer_median_seconds));
+    }
+  }
+  facts.push_back(medians);
+  return facts;
+}
+
+std::string run_facts(const ReportInput& input, const SceneResult& scene) {
+  const ResultsDocument& d = input.document;
+  std::vector<std::string> facts = round_facts(d, scene);
   if (!scene.runs.stop_reason.empty()) facts.push_back("stopped: " + scene.runs.stop_reason);
-  if (scene.change && !scene.runs.failed()) {
-    // The pairing-free second opinion (docs/statistics.md §5); the verdict does not use it.
-    facts.push_back(fmt::format("Mann–Whitney U {:.1f}, p {:.3g}", scene.change->mann_whitney.u,
-                                scene.change->mann_whitney.p_value));
+  // The pairing-free second opinion (docs/statistics.md §5) on the rounds the baseline joined;
+  // the verdict does not use it. Not beside a counted change (no sampling error to test), nor
+  // with fewer than 6 rounds a side, where no p can fall below 0.05 whatever the change.
+  const RatioSummary* base = scene.ratio("base");
+  if (scene.change && !scene.runs.failed() && !scene.change->exact && base != nullptr &&
+      base->rounds >= 6) {
+    facts.push_back(fmt::format("Mann–Whitney U {:.1f}, p {:.3g} over the {} rounds with the "
+                                "baseline (not used by the verdict)",
+                                scene.change->mann_whitney.u, scene.change->mann_whitney.p_value,
+                                base->rounds));
   }
   facts.push_back(fmt::format("{:.1f} s spent", scene.runs.seconds_spent));
   return fmt::format(R"(<p class="facts">{}</p>)", escape(fmt::format("{}", fmt::join(facts, " · "))));
@@ -200,7 +221,8 @@ std::string head_line(const SceneView& view) {
   if (entry.width > 0) spec += fmt::format(" · {}×{}", entry.width, entry.height);
   std::string tags = fmt::format(R"(<span class="tag speed-{0}">{0}</span>)", escape(view.gate.speed));
   if (view.gate.image) {
-    tags += fmt::format(R"(<span class="tag v-{0}">image {0}</span>)",
+    tags += fmt::format(R"(<span class="tag v-{}">image: {}</span>)",
+                        escape(std::string(to_string(*view.gate.image))),
                         escape(image_text(view.gate, "")));
   }
   return fmt::format(
@@ -222,10 +244,15 @@ std::string scene_section(const ReportInput& input, const SceneView& view) {
   std::string numbers = "<h3>Speed</h3>" + failure_note(scene) + speed_plots(input, view) +
                         run_facts(input, scene);
   if (const TrendSeries* trend = input.trend(scene.entry.id)) {
+    std::vector<TrendMark> marks;
+    for (const RevisionRecord& revision : input.document.revisions) {
+      marks.push_back({revision.worktree.sha, revision.role == "tracer" ? "this run" : revision.role});
+    }
     numbers += fmt::format("<h3>Trend over {} commits</h3>", trend->points.size()) +
-               trend_svg(*trend) +
+               trend_svg(*trend, marks) +
                R"(<p class="facts">normalized ratio per commit, oldest first; the band is its )"
-               R"(95% CI; point at a commit for its subject</p>)";
+               R"(95% CI; this report's commits are marked; point at a commit for its )"
+               R"(subject</p>)";
   }
   return fmt::format(
       R"(<section class="scene card {}" id="{}">{}{}<div class="scene-body">)"

@@ -51,10 +51,10 @@ text-transform:uppercase;letter-spacing:.06em;white-space:nowrap}
 border:1px solid var(--line);color:var(--muted);background:#f6f8fa}
 .tag.speed-REGRESSED,.tag.v-fail{color:var(--fail);border-color:#ffcecb;background:var(--fail-bg)}
 .tag.speed-IMPROVED{color:var(--pass);border-color:#aceebb;background:var(--pass-bg)}
-.tag.speed-INCONCLUSIVE,.tag.v-warn,.tag.v-missing{color:var(--warn);border-color:#eac54f;background:var(--warn-bg)}
+.tag.speed-INCONCLUSIVE,.tag.v-warn{color:var(--warn);border-color:#eac54f;background:var(--warn-bg)}
 .tag.speed-FAILED,.tag.v-error{color:var(--unm);border-color:#e3c8fb;background:var(--unm-bg)}
 .verdict{font-weight:700;font-size:13px}
-.v-pass{color:var(--pass)}.v-warn,.v-missing{color:var(--warn)}.v-fail{color:var(--fail)}.v-error{color:var(--unm)}
+.v-pass{color:var(--pass)}.v-warn{color:var(--warn)}.v-missing{color:var(--muted);font-weight:400}.v-fail{color:var(--fail)}.v-error{color:var(--unm)}
 table{border-collapse:collapse;width:100%}
 th{text-align:left;font-size:11px;text-transform:uppercase;letter-spacing:.06em;color:var(--muted);
 font-weight:700;border-bottom:1px solid var(--line);padding:6px 10px}
@@ -106,6 +106,7 @@ svg.plot{display:block;max-width:100%;height:auto;margin:2px 0 4px;overflow:visi
 .svg-label{font-size:12px;fill:var(--fg);font-weight:650}
 .svg-value{font-size:12px;fill:var(--fg);font-family:var(--mono)}
 .svg-note{font-size:10px;fill:var(--pass)}
+.svg-interval{font-size:10px;fill:var(--muted);font-family:var(--mono)}
 .mark .ci{stroke-width:5;stroke-linecap:round;opacity:.35}
 .mark .cap{stroke-width:1.5}
 .mark circle{stroke:#fff;stroke-width:1.5}
@@ -122,10 +123,10 @@ ul.scaling-fits{font-size:13px;margin:4px 0 14px;padding-left:18px}
 .trend-band{fill:#ddf4ff}
 .trend-line{fill:none;stroke:var(--accent);stroke-width:2}
 .trend-point{fill:var(--accent);stroke:#fff;stroke-width:1.5}
-.trend-point.last{fill:#0550ae}
+.trend-point.marked{fill:#0550ae;stroke-width:2}
 .trend-point.flagged{fill:var(--fail)}
 .note{background:#fff8c5;padding:.6em;border-left:4px solid #d4a72c}
-.trend-last{font-size:11px;fill:#0550ae;font-weight:700;font-family:var(--mono)}
+.trend-mark{font-size:11px;fill:#0550ae;font-weight:700;font-family:var(--mono)}
 .sha{fill:var(--muted)}
 footer{color:var(--muted);font-size:12px;text-align:center;padding:8px 0 24px}
 )css";

@@ -130,34 +130,57 @@ std::string ratio_bars_svg(const std::vector<IntervalRow>& rows) {
   return out + "</svg>";
 }
 
-std::string change_bar_svg(double change, const Interval& interval, double threshold,
-                           const std::string& css_class) {
+std::string change_bar_svg(const ChangeCell& cell, double threshold, const std::string& css_class) {
+  const Interval interval = cell.interval.value_or(Interval{cell.change, cell.change});
+  const double change = cell.change;
   const double reach = std::max({2.0 * threshold, std::abs(interval.lower),
                                  std::abs(interval.upper), std::abs(change), 0.01}) * 1.15;
   const Scale x{-reach, reach, 58.0, 290.0};
   const double y = 22;
-  std::string out = svg_open(440, 62, "plot change-plot", "change head vs base with 95% CI");
+  const std::string title =
+      "change head vs base" + (cell.interval_name.empty() ? "" : " with its " + cell.interval_name);
+  std::string out = svg_open(440, 62, "plot change-plot", title);
   out += fmt::format(R"(<rect class="band" x="{:.1f}" y="8" width="{:.1f}" height="28"/>)",
                      x(-threshold), x(threshold) - x(-threshold));
   out += fmt::format(R"(<line class="zero" x1="{0:.1f}" x2="{0:.1f}" y1="6" y2="38"/>)", x(0.0));
   out += text(50, y + 4, "svg-label", "change", "end");
-  const std::string numbers = fmt::format("{} [{}, {}]", signed_percent(change),
-                                          signed_percent(interval.lower),
-                                          signed_percent(interval.upper));
   out += interval_mark(x, y, change, interval.lower, interval.upper, css_class,
-                       "head vs base " + numbers);
-  out += text(302, y + 4, "svg-value", numbers);
+                       "head vs base " + cell.text);
+  out += text(302, y + 4, "svg-value", signed_percent(change, cell.exact ? 3 : 1));
+  std::string note = cell.exact ? "exact (simulated cycles)"
+                                : fmt::format("no interval yet (needs {} rounds)", cell.rounds_needed);
+  if (cell.interval && !cell.exact) {
+    note = fmt::format("[{}, {}] {}", signed_percent(interval.lower),
+                       signed_percent(interval.upper), cell.interval_name);
+  }
+  out += text(302, y + 18, "svg-interval", note);
   out += text(x(threshold) + 3, 16, "svg-note", "limit " + signed_percent(threshold));
   out += x_axis(x, 40, 4, std::max(0, decimals_for(-reach * 100, reach * 100, 4)), "%", 100.0);
   return out + "</svg>";
 }
 
-std::string trend_svg(const TrendSeries& series) {
+namespace {
+
+// The label of the mark `point` is, or "" when it is none.
+std::string mark_of(const TrendPoint& point, const std::vector<TrendMark>& marks) {
+  std::string label;
+  for (const TrendMark& mark : marks) {
+    const std::string& full = point.sha.empty() ? point.short_sha : point.sha;
+    const bool same = !mark.sha.empty() && !full.empty() &&
+                      (full.starts_with(mark.sha) || mark.sha.starts_with(full));
+    if (same) label += (label.empty() ? "" : " = ") + mark.label;
+  }
+  return label;
+}
+
+}  // namespace
+
+std::string trend_svg(const TrendSeries& series, const std::vector<TrendMark>& marks) {
   const std::vector<TrendPoint>& p = series.points;
   if (p.empty()) return "";
   const auto [dlo, dhi] = padded_range(interval_span(p, &TrendPoint::ratio), 0.1);
   const int width = 560, height = 210;
-  const double left = 52, right = width - 14, top = 12, bottom = height - 50;
+  const double left = 52, right = width - 14, top = 18, bottom = height - 50;
   const std::size_t n = p.size();
   auto px = [&](std::size_t i) {
     return n == 1 ? (left + right) / 2 : left + (right - left) * static_cast<double>(i) /
@@ -179,26 +202,34 @@ std::string trend_svg(const TrendSeries& series) {
   out += fmt::format(R"(<polygon class="trend-band" points="{}"/>)", band);
   out += fmt::format(R"(<polyline class="trend-line" points="{}"/>)", line);
   const std::size_t label_every = (n + 11) / 12;
+  std::string labels;  // drawn last, over the line
   for (std::size_t i = 0; i < n; ++i) {
     const TrendPoint& point = p[i];
+    // The compare's own commits are marked; a history page (no marks) marks its newest.
+    std::string mark = mark_of(point, marks);
+    if (marks.empty() && i + 1 == n) mark = "newest";
     std::string title = fmt::format("{} {}\nratio {:.3f} [{:.3f}, {:.3f}]", point.short_sha,
                                     point.subject, point.ratio, point.lower, point.upper);
+    if (!mark.empty()) title = mark + ": " + title;
     if (!point.note.empty()) title += "\n" + point.note;
     out += fmt::format(
         R"(<circle class="trend-point{}{}" cx="{:.1f}" cy="{:.1f}" r="{}"><title>{}</title></circle>)",
-        i + 1 == n ? " last" : "", point.flagged ? " flagged" : "", px(i), y(point.ratio),
-        i + 1 == n ? 5 : 3.5, escape(title));
-    if ((n - 1 - i) % label_every != 0) continue;
+        mark.empty() ? "" : " marked", point.flagged ? " flagged" : "", px(i), y(point.ratio),
+        mark.empty() ? 3.5 : 5.5, escape(title));
+    if (!mark.empty()) {
+      const double my = y(point.ratio);
+      const char* anchor = i + 1 == n ? "end" : i == 0 ? "start" : "middle";
+      labels += text(px(i), my < top + 16 ? my + 17 : my - 9, "trend-mark",
+                     fmt::format("{} {:.3f}", mark, point.ratio), anchor);
+    }
+    if ((n - 1 - i) % label_every != 0 && mark.empty()) continue;
     out += fmt::format(
         R"svg(<text class="svg-tick sha" transform="translate({:.1f},{:.1f}) rotate(-35)" text-anchor="end">{}</text>)svg",
         px(i) + 3, bottom + 14, escape(point.short_sha));
   }
   out += fmt::format(R"(<line class="svg-axis" x1="{0}" x2="{1}" y1="{2}" y2="{2}"/>)", left, right,
                      bottom);
-  const double last_y = y(p.back().ratio);
-  out += text(px(n - 1) - 8, last_y < top + 14 ? last_y + 16 : last_y - 9, "trend-last",
-              fmt::format("{:.3f}", p.back().ratio), "end");
-  return out + "</svg>";
+  return out + labels + "</svg>";
 }
 
 }  // namespace raygate::report::html

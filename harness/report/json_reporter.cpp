@@ -42,13 +42,19 @@ json ratios(const SceneResult& scene) {
   return out;
 }
 
-json change(const SceneResult& scene) {
-  if (!scene.change) return nullptr;
-  const ChangeSummary& c = *scene.change;
-  return {{"change", finite_number(c.change)},
-          {"interval", interval(c.change_interval)},
-          {"rounds", c.rounds},
-          {"verdict", scene.change_verdict}};
+// The change with the interval its verdict was drawn from, named as every format names it.
+json change(const SceneView& view) {
+  const std::optional<ChangeCell> cell = change_cell(*view.result, view.gate.speed);
+  if (!cell) return nullptr;
+  return {{"change", finite_number(cell->change)},
+          {"interval", cell->interval ? interval(*cell->interval) : json(nullptr)},
+          {"interval_name", cell->interval_name},
+          {"interval_confidence", finite_number(cell->interval_confidence)},
+          {"rounds", cell->rounds},
+          {"rounds_needed", cell->rounds_needed},
+          {"exact", cell->exact},
+          {"verdict", std::string(to_string(cell->verdict))},
+          {"text", cell->text}};
 }
 
 json images(const SceneResult& scene) {
@@ -76,11 +82,12 @@ json scene_json(const SceneView& view) {
           {"outcome", to_string(view.gate.outcome)},
           {"speed", view.gate.speed},
           {"speed_outcome", to_string(view.speed_outcome)},
-          {"image", image_text(view.gate, "")},
+          // Bots read the stable word ("missing"), not the reader's ("no golden yet").
+          {"image", view.gate.image ? std::string(to_string(*view.gate.image)) : ""},
           {"image_outcome", to_string(view.image_outcome)},
           {"reasons", view.gate.reasons},
           {"ratios", ratios(*view.result)},
-          {"change", change(*view.result)}, {"images", images(*view.result)}};
+          {"change", change(view)}, {"images", images(*view.result)}};
 }
 
 json counts(const GateResult& gate) {

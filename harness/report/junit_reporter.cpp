@@ -77,7 +77,7 @@ void add_case(pugi::xml_node suite, Tally& tally, const std::string& classname,
 std::string speed_numbers(const ResultsDocument& d, const SceneView& view) {
   std::string text = fmt::format("speed {}; normalized ratio {}", view.gate.speed,
                                  ratio_text(d, *view.result));
-  if (const std::string change = change_text(*view.result); !change.empty()) {
+  if (const std::string change = change_text(view); !change.empty()) {
     text += "; change " + change;
   }
   return text;
@@ -87,7 +87,7 @@ std::string image_numbers(const SceneView& view) {
   std::vector<std::string> lines;
   for (const ImageCheck& check : view.result->images) {
     std::string line = fmt::format("{} vs {}: {}", check.role, check.reference,
-                                   to_string(check.verdict));
+                                   image_verdict_text(check.verdict));
     if (check.metrics) line += ": " + summarize(*check.metrics);
     if (!check.error.empty()) line += ": " + check.error;
     lines.push_back(line);

@@ -17,7 +17,7 @@ namespace raygate::report {
 namespace {
 
 // Text in a table cell or list item: nothing in it may end the cell or open HTML, emphasis or
-// a link. A "]" right before "(" or "[" is escaped, which unmakes "[x](javascript:...)" and
+// a link. A lone '>' opens nothing inside a line, so "ratio 0.731 -> 0.789" stays as written. A "]" right before "(" or "[" is escaped, which unmakes "[x](javascript:...)" and
 // "![x](url)" from a commit subject while "[+6.1%, +9.8%]" stays as written. Control
 // characters become visible escapes (core/sanitize.h).
 std::string md(const std::string& raw) {
@@ -32,7 +32,6 @@ std::string md(const std::string& raw) {
     switch (c) {
       case '|': out += "\\|"; break;
       case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
       case '&': out += "&amp;"; break;
       case '*': case '_': case '`': case '\\':
         out += '\\';
@@ -60,20 +59,21 @@ std::string intro(const ResultsDocument& d) {
 }
 
 std::string table_head(const ResultsDocument& d) {
-  if (d.kind == "compare") {
-    return fmt::format("| verdict | scene | ratio base → head | {} | speed | image |\n"
-                       "|---|---|---|---|---|---|\n",
-                       kChangeHeading);
+  std::string names = "| verdict | scene |", rule = "|---|---|";
+  for (const TableColumn& column : table_columns(d)) {
+    names += fmt::format(" {} |", md(column.heading));
+    rule += "---|";
   }
-  return "| verdict | scene | ratio [95% CI] | speed | image |\n|---|---|---|---|---|\n";
+  return names + "\n" + rule + "\n";
 }
 
 std::string table_row(const ResultsDocument& d, const SceneView& view) {
-  const std::string image = image_text(view.gate, "–");
-  std::string row = fmt::format("| **{}** | {} | {} |", upper(to_string(view.gate.outcome)),
-                                md(view.gate.id), md(ratio_text(d, *view.result, "→")));
-  if (d.kind == "compare") row += fmt::format(" {} |", md(change_text(*view.result)));
-  return row + fmt::format(" {} | {} |\n", md(view.gate.speed), md(image));
+  std::string row = fmt::format("| **{}** | {} |", upper(to_string(view.gate.outcome)),
+                                md(view.gate.id));
+  for (const TableColumn& column : table_columns(d)) {
+    row += fmt::format(" {} |", md(cell_text(column.kind, d, view, "→", "–")));
+  }
+  return row + "\n";
 }
 
 std::string reasons_of(const SceneView& view) {
@@ -138,6 +138,7 @@ std::string MarkdownReporter::compose(const ReportInput& input,
     text += table_row(d, views[i]);
     reasons += reasons_of(views[i]);
   }
+  text += fmt::format("\n<sub>{}</sub>\n", md(columns_line(d)));
   if (shown < views.size()) {
     text += fmt::format("\n_{} more scenes not shown: the full report would exceed GitHub's "
                         "comment limit. See the HTML or JSON report._\n",

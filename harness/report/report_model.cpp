@@ -176,22 +176,90 @@ std::string verdict_word(int exit_code) {
   return "could not measure";
 }
 
-std::string image_text(const SceneGate& gate, const std::string& none) {
-  return gate.image ? std::string(to_string(*gate.image)) : none;
+std::string image_verdict_text(ImageVerdict verdict) {
+  // "missing" read as "the image is missing"; what it means is that nobody blessed one yet.
+  if (verdict == ImageVerdict::missing) return "no golden yet";
+  return std::string(to_string(verdict));
 }
 
-std::string change_text(const SceneResult& scene) {
-  if (!scene.change || scene.runs.failed()) return "";
+std::string image_text(const SceneGate& gate, const std::string& none) {
+  return gate.image ? image_verdict_text(*gate.image) : none;
+}
+
+std::optional<ChangeCell> change_cell(const SceneResult& scene, std::string_view speed) {
+  if (!scene.change || scene.runs.failed()) return std::nullopt;
   const ChangeSummary& c = *scene.change;
-  // Counted in simulated cycles, every count repeated: the change is a fact, not an estimate.
-  if (c.exact) return signed_percent(c.change, 3) + " exact (simulated cycles)";
-  const ChangeVerdict verdict =
-      change_verdict_named(scene.change_verdict).value_or(ChangeVerdict::inconclusive);
-  const DecidingInterval d = deciding_interval(c, verdict);
-  return fmt::format("{} [{}, {}] {:.4g}% {}, {} rounds", signed_percent(c.change),
-                     signed_percent(d.interval.lower), signed_percent(d.interval.upper),
-                     100.0 * d.confidence,
-                     d.kind == ChangeIntervalKind::confidence_sequence ? "CS" : "CI", c.rounds);
+  ChangeCell cell;
+  cell.change = c.change;
+  cell.rounds = c.rounds;
+  cell.exact = c.exact;
+  // The gate's word, so a report judged under another policy prints that policy's interval.
+  cell.verdict = change_verdict_named(speed).value_or(
+      change_verdict_named(scene.change_verdict).value_or(ChangeVerdict::inconclusive));
+  if (c.exact) {
+    cell.interval_name = "exact";
+    cell.text = change_with_interval(c, cell.verdict);
+    return cell;
+  }
+  const DecidingInterval decided = deciding_interval(c, cell.verdict);
+  cell.rounds_needed = rounds_to_bound(c, decided);
+  if (c.rounds >= cell.rounds_needed) {
+    cell.interval = decided.interval;
+    cell.interval_name = interval_name(decided);
+    cell.interval_confidence = decided.confidence;
+  }
+  cell.text = fmt::format("{}, {} rounds", change_with_interval(c, cell.verdict), c.rounds);
+  return cell;
+}
+
+std::string change_text(const SceneView& view) {
+  const auto cell = change_cell(*view.result, view.gate.speed);
+  return cell ? cell->text : "";
+}
+
+bool simulated_timing(const ResultsDocument& document) {
+  const nlohmann::json& s = document.settings;
+  const auto is = [&](const char* key, const char* value) {
+    return s.is_object() && s.contains(key) && s.at(key).is_string() &&
+           s.at(key).get<std::string>() == value;
+  };
+  return is("timing_source", "simulated") || is("tracer_clock", "simulated-cycles");
+}
+
+std::string cost_text(const ResultsDocument& document, double value) {
+  if (simulated_timing(document)) return fmt::format("{:.4g} cycles", value);
+  return fmt::format("{:.3f} s", value);
+}
+
+std::vector<TableColumn> table_columns(const ResultsDocument& document) {
+  if (document.kind == "compare") {
+    return {{ColumnKind::ratio, "ratio base->head"},
+            {ColumnKind::change, kChangeHeading},
+            {ColumnKind::speed, "speed"},
+            {ColumnKind::image, "image"}};
+  }
+  return {{ColumnKind::ratio, "ratio [95% CI]"},
+          {ColumnKind::speed, "speed"},
+          {ColumnKind::image, "image"}};
+}
+
+std::string columns_line(const ResultsDocument& document) {
+  const std::string ratio = "ratio = time(tracer) / time(baseline), the median over rounds";
+  if (document.kind != "compare") return ratio + ", [its 95% bootstrap CI]";
+  return ratio + " the baseline joined; head's = base's x (1 + change), so both move with the "
+                 "change; change = median of per-round time(head) / time(base) - 1, [the "
+                 "interval its verdict was drawn from]";
+}
+
+std::string cell_text(ColumnKind kind, const ResultsDocument& document, const SceneView& view,
+                      const std::string& arrow, const std::string& none) {
+  switch (kind) {
+    case ColumnKind::ratio: return ratio_text(document, *view.result, arrow);
+    case ColumnKind::change: return change_text(view);
+    case ColumnKind::speed: return view.gate.speed;
+    case ColumnKind::image: return image_text(view.gate, none);
+  }
+  return "";
 }
 
 std::string clock_line(const ResultsDocument& document) {
@@ -275,13 +343,16 @@ std::string revision_line(const ResultsDocument& document, const std::string& ro
 
 std::string policy_line(const GatePolicy& policy) {
   const ScenePolicy& d = policy.defaults;
+  // The equivalence sequence's level, the one UNCHANGED rows name (measure/change.h).
+  const DecidingInterval equivalence{{}, 1.0 - 2.0 * d.significance,
+                                     ChangeIntervalKind::confidence_sequence};
   std::string line = fmt::format(
-      "max slowdown {} (within it on a {:.4g}% confidence sequence; at most {:.4g}% false "
-      "alarms per compare); image fail over {:.4g} on more than {:.4g}% of pixels, warn over "
-      "{:.4g}",
-      signed_percent(d.max_slowdown), 100.0 * (1.0 - 2.0 * d.significance),
-      100.0 * policy.family_significance, d.image.fail_threshold, d.image.fail_percent,
-      d.image.warn_threshold);
+      "max slowdown {} (UNCHANGED: the {} within ±{:.4g}%; REGRESSED: the decision CS above 0, "
+      "at most {:.4g}% false alarms per compare; {}); image fail over {:.4g} on more than "
+      "{:.4g}% of pixels, warn over {:.4g}",
+      signed_percent(d.max_slowdown), interval_name(equivalence), 100.0 * d.max_slowdown,
+      100.0 * policy.family_significance, kIntervalLegend, d.image.fail_threshold,
+      d.image.fail_percent, d.image.warn_threshold);
   if (d.image.hard_fail < 1e29) line += fmt::format(", hard fail over {:.4g}", d.image.hard_fail);
   if (policy.fail_on_inconclusive) line += "; inconclusive fails";
   if (!policy.scenes.empty()) {

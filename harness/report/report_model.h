@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/format.h"
+#include "measure/change.h"
 #include "report/reporter.h"
 
 namespace raygate::report {
@@ -40,19 +41,65 @@ Headline headline(const ReportInput& input, const std::vector<SceneView>& views)
 // "pass", "fail" or "could not measure", from the gate's exit code.
 std::string verdict_word(int exit_code);
 
-// The scene's worst image verdict as its word; `none` when no image was checked.
+// The scene's worst image verdict in a reader's words ("no golden yet" for "missing"); `none`
+// when no image was checked.
 std::string image_text(const SceneGate& gate, const std::string& none);
+// An image check's verdict in a reader's words: "no golden yet" for ImageVerdict::missing (a
+// note, never a problem), the verdict's own word otherwise.
+std::string image_verdict_text(ImageVerdict verdict);
+
 // The change column's heading, the same in every format: the change is the median of per-round
 // head/base, the interval the one its verdict was drawn from (measure/change.h
 // deciding_interval), named in each row because UNCHANGED and REGRESSED use different levels.
 inline constexpr const char* kChangeHeading = "change [interval that decided]";
-// "+7.9% [+6.1%, +9.8%] 99.85% CS, 40 rounds" (CS: anytime-valid confidence sequence; CI: a
-// one-look interval in older documents), or "+0.912% exact (simulated cycles)" when counted
-// (--timing sim); "" when the scene has no change (a run, or a failed scene).
-std::string change_text(const SceneResult& scene);
+
+// One scene's change as every format shows it, taken apart for the formats that print numbers
+// (JSON, the HTML plot) and for the test that checks all formats agree.
+struct ChangeCell {
+  double change = 0.0;
+  // The interval `verdict` was drawn from; nullopt for an exact change, or while the interval
+  // is unbounded (rounds < rounds_needed).
+  std::optional<Interval> interval;
+  std::string interval_name;  // "99.33% CS", "95% CI", "exact"; "" while unbounded
+  double interval_confidence = 0.0;
+  std::size_t rounds = 0;
+  std::size_t rounds_needed = 0;
+  bool exact = false;
+  ChangeVerdict verdict = ChangeVerdict::inconclusive;
+  std::string text;  // change_text(): what the change column prints
+};
+// The scene's change judged as `speed` (the gate's word for it, which the policy decided);
+// nullopt when the scene has no change (a run, or a failed scene).
+std::optional<ChangeCell> change_cell(const SceneResult& scene, std::string_view speed);
+// "+7.9% [+6.1%, +9.8%] 99.33% CS, 40 rounds" (CS: anytime-valid confidence sequence; CI: a
+// one-look interval in older documents); "+0.4%, no interval yet (needs 16 rounds), 9 rounds";
+// "+0.912% exact (simulated cycles)" when counted (--timing sim); "" without a change.
+std::string change_text(const SceneView& view);
 // "process CPU seconds (auto: one thread), baseline process CPU": how the runs were timed, from
 // the document's settings; "" when it does not say.
 std::string clock_line(const ResultsDocument& document);
+// Whether the runs were counted in simulated cycles (--timing sim) rather than timed.
+bool simulated_timing(const ResultsDocument& document);
+// A run's median cost with its unit: "0.512 s", or "1.76e+09 cycles" when simulated.
+std::string cost_text(const ResultsDocument& document, double value);
+
+// The data columns of the scenes table, in order, between the scene's name and its outcome:
+// console, Markdown and HTML all lay out these (a new column is one entry here and one case in
+// cell_text; HTML may style a kind, as it does speed and image).
+enum class ColumnKind { ratio, change, speed, image };
+struct TableColumn {
+  ColumnKind kind;
+  std::string heading;
+};
+std::vector<TableColumn> table_columns(const ResultsDocument& document);
+// What the table's numbers are, said once under the heading: "ratio = time(tracer) /
+// time(baseline), median over rounds; head's = base's x (1 + change); change = median of
+// per-round head/base, [the interval its verdict was drawn from]".
+std::string columns_line(const ResultsDocument& document);
+// A cell's text; `arrow` joins base and head ratios, `none` stands for no image checked.
+std::string cell_text(ColumnKind kind, const ResultsDocument& document, const SceneView& view,
+                      const std::string& arrow = "->", const std::string& none = "-");
+
 // A run: "0.512 [0.507, 0.518]"; a compare: "0.512 -> 0.553" (arrow as given).
 std::string ratio_text(const ResultsDocument& document, const SceneResult& scene,
                        const std::string& arrow = "->");

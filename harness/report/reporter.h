@@ -28,6 +28,7 @@ struct TrendPoint {
   double upper = 0.0;
   std::string note;      // more for the point's tooltip (the image check); may be empty
   bool flagged = false;  // drawn in the failure colour: the image check failed
+  std::string sha;       // the full commit id, to mark the report's own commits; may be empty
 };
 
 // A scene's history, oldest commit first. The store fills these; a report without history

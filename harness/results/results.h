@@ -34,6 +34,9 @@ struct RevisionRecord {
   std::string adapter_name;
   std::string adapter_hash;
   std::string adapter_file;
+  // builder/build_cache.h measurement_hash: what the measurement depends on (build inputs and
+  // how the tracer is run); a history series keys on it. "" in documents from before issue 26.
+  std::string adapter_measurement;
   BuildRecord build;
 };
 

@@ -297,6 +297,7 @@ void to_json(json& j, const RevisionRecord& r) {
   // Written only when known, so a document from before it was recorded reads back and hashes
   // the same (the store's duplicate check compares canonical JSON).
   if (!r.repository_id.empty()) j["repository_id"] = r.repository_id;
+  if (!r.adapter_measurement.empty()) j["adapter"]["measurement"] = r.adapter_measurement;
 }
 void from_json(const json& j, RevisionRecord& r) {
   r.role = j.at("role").get<std::string>();
@@ -307,6 +308,9 @@ void from_json(const json& j, RevisionRecord& r) {
   r.adapter_name = adapter.at("name").get<std::string>();
   r.adapter_hash = adapter.at("hash").get<std::string>();
   r.adapter_file = adapter.at("file").get<std::string>();
+  if (adapter.contains("measurement")) {
+    r.adapter_measurement = adapter.at("measurement").get<std::string>();
+  }
   r.build = build_record_from_json(j.at("build"));
 }
 

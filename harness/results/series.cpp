@@ -11,8 +11,10 @@ namespace raygate {
 
 std::string SeriesKey::id() const {
   // A separator that no part contains keeps ("ab", "c") and ("a", "bc") apart.
-  const std::string text = fmt::format("{}\n{}\n{}\n{}\n{}\n{}\n{}", repository, adapter, suite,
-                                       scene, settings, timing, baseline);
+  std::string text = fmt::format("{}\n{}\n{}\n{}\n{}\n{}\n{}", repository, adapter, suite, scene,
+                                 settings, timing, baseline);
+  // Appended only when known, so stored rows of older documents keep their series.
+  if (!measurement.empty()) text += "\nmeasurement " + measurement;
   return sha256_hex(text).substr(0, 16);
 }
 
@@ -55,7 +57,8 @@ SeriesKey series_key(const ResultsDocument& document, const RevisionRecord& revi
           scene.entry.id,
           scene_settings(scene.entry, document.baseline),
           timing_identity(document),
-          baseline_identity(document.baseline)};
+          baseline_identity(document.baseline),
+          revision.adapter_measurement};
 }
 
 std::string unknown_series_id(std::int64_t document_id) {

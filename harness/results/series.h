@@ -19,6 +19,10 @@ struct SeriesKey {
   std::string settings;  // scene_settings()
   std::string timing;    // timing_identity()
   std::string baseline;  // baseline_identity()
+  // What the measurement depends on (RevisionRecord::adapter_measurement): the build's flags
+  // and how the tracer is run, so another build of the same adapter name is another series.
+  // "" for documents from before it was recorded, whose ids stay what they were.
+  std::string measurement;
 
   // 16 hex digits of the SHA-256 of every part: equal keys, equal ids.
   std::string id() const;

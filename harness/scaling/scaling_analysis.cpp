@@ -56,7 +56,8 @@ std::string family_series(const ResultsDocument& document, const std::vector<con
                       "family:" + scenes.front()->entry.scene,
                       settings,
                       timing_identity(document),
-                      baseline_identity(document.baseline)};
+                      baseline_identity(document.baseline),
+                      revision ? revision->adapter_measurement : ""};
   return key.id();
 }
 

@@ -20,7 +20,8 @@ std::string read_text(const fs::path& path) {
 }
 
 BuildKeyInputs inputs_for(const Worktree& w, const Adapter& a, const BuildOptions& o) {
-  return {w.sha, w.dirty, a.name, adapter_hash(a), *o.compiler_identity, o.key_extra};
+  return {w.sha, w.dirty, a.name, build_inputs_hash(a, build_environment()), *o.compiler_identity,
+          o.key_extra};
 }
 
 TEST(BuilderCache, RunsEveryStepWithPlaceholdersInSrc) {
@@ -50,7 +51,7 @@ TEST(BuilderCache, RunsEveryStepWithPlaceholdersInSrc) {
   EXPECT_EQ(r.steps[2].log, f.cache() / "builds" / r.key / "logs" / "step-3.log");
   EXPECT_EQ(r.build_dir, f.cache() / "builds" / r.key / "build");
   EXPECT_EQ(r.sha, kShaA);
-  EXPECT_EQ(r.adapter_hash, adapter_hash(a));
+  EXPECT_EQ(r.adapter_hash, build_inputs_hash(a, build_environment()));
   EXPECT_EQ(r.compiler, "test compiler 1.0");
 }
 
@@ -89,7 +90,10 @@ TEST(BuilderCache, BuildJsonIsWrittenOnSuccess) {
 TEST(BuilderCache, OtherCommitAdapterOrCompilerBuildsAgain) {
   BuilderFixture f;
   const Adapter a = toy_adapter({count_step(f.counter())});
-  const Adapter slower = toy_adapter({count_step(f.counter())}, {{"timeout_s", {{"run", 9}}}});
+  // Another build flag: the count step with one more argument, as a CMake -D would be.
+  nlohmann::json flagged = count_step(f.counter());
+  flagged.push_back("-DFAST=ON");
+  const Adapter slower = toy_adapter({flagged});
   const BuildRecord base = build(f.worktree(kShaA), a, f.options());
   const BuildRecord other_sha = build(f.worktree(kShaB), a, f.options());
   const BuildRecord other_adapter = build(f.worktree(kShaA), slower, f.options());
@@ -105,6 +109,35 @@ TEST(BuilderCache, OtherCommitAdapterOrCompilerBuildsAgain) {
     EXPECT_NE(r->build_dir, base.build_dir);
   }
   EXPECT_TRUE(build(f.worktree(kShaB), a, f.options()).cached);
+}
+
+// Fixing how the tracer is run (its path, its options, its timeouts) changes no file the build
+// makes, so the build is reused (issue 26: a wrong run path cost a 35 s rebuild to fix).
+TEST(BuilderCache, ARunOnlyChangeReusesTheBuild) {
+  BuilderFixture f;
+  const Adapter a = toy_adapter({count_step(f.counter())});
+  const Adapter fixed = toy_adapter(
+      {count_step(f.counter())},
+      {{"run", {"{build}/bin/tracer", "{scene}", "-o", "{image}"}},
+       {"timeout_s", {{"run", 9}}},
+       {"env", {{"OMP_NUM_THREADS", "1"}}},
+       {"description", "the run path fixed"}});
+  const BuildRecord first = build(f.worktree(), a, f.options());
+  const BuildRecord second = build(f.worktree(), fixed, f.options());
+  ASSERT_TRUE(first.success);
+  EXPECT_TRUE(second.cached);
+  EXPECT_EQ(second.key, first.key);
+  EXPECT_EQ(lines_in(f.counter()), 1);
+  // The measurement is another one all the same: a history series of its own.
+  EXPECT_NE(measurement_hash(fixed, second.adapter_hash), measurement_hash(a, first.adapter_hash));
+}
+
+// The build tools' environment is an input: CXXFLAGS set in the job changes the binary.
+TEST(BuilderCacheKey, BuildEnvironmentIsAnInput) {
+  const Adapter a = toy_adapter({{"true"}});
+  EXPECT_NE(build_inputs_hash(a, {{"CXXFLAGS", "-O3"}}), build_inputs_hash(a, {}));
+  EXPECT_NE(build_inputs_hash(a, {{"CXXFLAGS", "-O3"}}), build_inputs_hash(a, {{"CXXFLAGS", "-O2"}}));
+  EXPECT_EQ(build_inputs_hash(a, {}), build_inputs_hash(toy_adapter({{"true"}}, {{"threads", 4}}), {}));
 }
 
 TEST(BuilderCache, DirtyWorktreeIsAlwaysRebuiltAndNeverRecorded) {

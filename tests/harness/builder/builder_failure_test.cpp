@@ -9,6 +9,7 @@
 #include "builder/build_steps.h"
 #include "builder_fixture.h"
 #include "core/error.h"
+#include "core/fs.h"
 
 namespace raygate::testing {
 namespace {
@@ -62,6 +63,63 @@ TEST(BuilderFailure, MessageNamesStepOutcomeLogAndTail) {
     EXPECT_EQ(e.code(), ExitCode::infrastructure);
   }
   EXPECT_EQ(failure_message(build(f.worktree(), toy_adapter({}), f.options())), "");
+}
+
+// An offline FetchContent configure: the cause is far above the tail, which ends in "Build step
+// for googletest failed". The message shows the first error line and the Debian recipe.
+TEST(BuilderFailure, MessageShowsTheFirstErrorLineFarAboveTheTail) {
+  BuilderFixture f;
+  const char* const offline =
+      "echo '-- Looking for pthread_create in pthreads - not found'; "
+      "echo \"fatal: unable to access 'https://github.com/google/googletest.git/': Could not "
+      "resolve host: github.com\"; "
+      "for i in $(seq 1 40); do echo retry $i; done; "
+      "echo 'CMake Error at googletest-subbuild/CMakeLists.txt: Build step for googletest "
+      "failed: 2'; exit 1";
+  const BuildRecord r = build(f.worktree(), toy_adapter({{"sh", "-c", offline}}), f.options());
+  const std::string message = failure_message(r);
+  EXPECT_NE(message.find("first error (line 2 of the log): fatal: unable to access "
+                         "'https://github.com/google/googletest.git/': Could not resolve host: "
+                         "github.com"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("FETCHCONTENT_SOURCE_DIR_GOOGLETEST=/usr/src/googletest"),
+            std::string::npos);
+  EXPECT_NE(message.find("| CMake Error at googletest-subbuild"), std::string::npos);
+  EXPECT_EQ(message.find("| fatal: unable"), std::string::npos) << "it is not in the tail";
+}
+
+TEST(BuilderFailure, FirstErrorLineSkipsCMakeChatter) {
+  TempDir dir;
+  const fs::path log = dir.path() / "step-1.log";
+  write_file_atomically(log, "-- Looking for x - not found\n-- Configuring incomplete, errors "
+                             "occurred!\nsrc/a.cpp:3:1: error: 'foo' was not declared\n");
+  const std::optional<LogLine> first = first_error_line(log);
+  ASSERT_TRUE(first.has_value());
+  EXPECT_EQ(first->number, 3u);
+  EXPECT_EQ(first->text, "src/a.cpp:3:1: error: 'foo' was not declared");
+  write_file_atomically(log, "all fine\n");
+  EXPECT_FALSE(first_error_line(log).has_value());
+  EXPECT_FALSE(first_error_line(dir.path() / "absent.log").has_value());
+}
+
+// The executables a build made, for the hint under a wrong run path: CMake's own trees skipped.
+TEST(BuilderFailure, BuiltExecutablesAreListedRelativeToTheBuild) {
+  TempDir dir;
+  const fs::path build_dir = dir.path();
+  fs::create_directories(build_dir / "renderer");
+  fs::create_directories(build_dir / "CMakeFiles" / "3.25.1" / "CompilerIdCXX");
+  for (const fs::path& file : {build_dir / "renderer" / "tracer", build_dir / "notes.txt",
+                               build_dir / "CMakeFiles" / "3.25.1" / "CompilerIdCXX" / "a.out",
+                               build_dir / "libshade.so"}) {
+    write_file_atomically(file, "x");
+  }
+  for (const fs::path& file : {build_dir / "renderer" / "tracer",
+                               build_dir / "CMakeFiles" / "3.25.1" / "CompilerIdCXX" / "a.out",
+                               build_dir / "libshade.so"}) {
+    fs::permissions(file, fs::perms::owner_exec, fs::perm_options::add);
+  }
+  EXPECT_EQ(built_executables(build_dir), (std::vector<fs::path>{"renderer/tracer"}));
 }
 
 TEST(BuilderFailure, StaleBinaryOfAnotherBuildIsNeverUsed) {

@@ -107,7 +107,7 @@ TEST(GateVerdict, RegressionFailsWithItsNumbers) {
   EXPECT_EQ(gate.scenes[0].speed, "REGRESSED");
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::fail);
   ASSERT_EQ(gate.scenes[0].reasons.size(), 1u);
-  EXPECT_NE(gate.scenes[0].reasons[0].find("+7.9% (95% CI +6.1% to +9.8%)"), std::string::npos)
+  EXPECT_NE(gate.scenes[0].reasons[0].find("+7.9% [+6.1%, +9.8%] 95% CI"), std::string::npos)
       << gate.scenes[0].reasons[0];
   EXPECT_EQ(gate.scenes[1].speed, "UNCHANGED");
   EXPECT_EQ(gate.scenes[1].outcome, GateOutcome::pass);

@@ -86,6 +86,36 @@ TEST_F(HistoryFromStore, ANewDocumentsTrendIsItsOwnSeriesOldestFirst) {
   EXPECT_TRUE(trends_from_store(path, make_document(other)).trends.empty());
 }
 
+// A report about commit 2 shows the history up to commit 2, not the newest commits of the store
+// (issue 26: the compare's report marked a commit outside the compare).
+TEST_F(HistoryFromStore, TheTrendWindowEndsAtTheDocumentsOwnCommit) {
+  const StoreTrends found = trends_from_store(path, make_document(commit(2, "12", 0.90)), 2);
+  ASSERT_EQ(found.trends.size(), 2u);
+  ASSERT_EQ(found.trends[0].points.size(), 2u);
+  EXPECT_EQ(found.trends[0].points[0].ratio, 1.00);
+  EXPECT_EQ(found.trends[0].points[1].ratio, 0.90);
+  EXPECT_EQ(found.trends[0].points[1].sha, fake_sha(2));
+}
+
+// Another build of the same adapter name (other CMake flags) is another series: its document
+// says what it measured, and rows of older documents, which do not, keep their own series.
+TEST_F(HistoryFromStore, AnotherBuildOfTheSameAdapterIsAnotherSeries) {
+  ResultsDocument flagged = make_document(commit(4, "16", 1.0));
+  for (RevisionRecord& revision : flagged.revisions) revision.adapter_measurement = "0123456789abcdef";
+  EXPECT_TRUE(trends_from_store(path, flagged).trends.empty());
+  open_store(path.string())->add(flagged, "main");
+  ResultsDocument again = make_document(commit(5, "18", 1.0));
+  for (RevisionRecord& revision : again.revisions) revision.adapter_measurement = "0123456789abcdef";
+  open_store(path.string())->add(again, "main");
+  const StoreTrends found = trends_from_store(path, again);
+  ASSERT_EQ(found.trends.size(), 2u);
+  ASSERT_EQ(found.trends[0].points.size(), 2u);  // commits 4 and 5, none of the older build
+  EXPECT_EQ(found.trends[0].points[0].sha, fake_sha(4));
+  const StoreTrends old = trends_from_store(path, make_document(commit(3, "14", 0.99)));
+  ASSERT_EQ(old.trends.size(), 2u);
+  EXPECT_EQ(old.trends[0].points.size(), 3u);  // commits 1 to 3, as before
+}
+
 TEST(StoreTrends, NoStoreIsNoTrendAndAnUnreadableOneIsAWarning) {
   TempDir dir;
   const ResultsDocument document = make_document(commit(1, "10", 1.0));

@@ -94,6 +94,55 @@ TEST(HtmlReport, DrawsIntervalsAndTrendAsSvg) {
   EXPECT_EQ(count(html, "image max error 0.5 (fail)"), 1u);
 }
 
+// The compare's own commits are marked in its trend, wherever they are in the history; the
+// newest stored commit is not (issue 26: it was, though it was outside the compare).
+TEST(HtmlReport, TrendMarksBaseAndHeadNotTheNewestCommit) {
+  Fixture f(true);
+  TrendSeries trend = make_trend("mount", 12);
+  trend.points[4].sha = f.document.revision("base")->worktree.sha;
+  trend.points[7].sha = f.document.revision("head")->worktree.sha;
+  f.input->trends.push_back(trend);
+  const std::string html = f.render("html");
+  EXPECT_EQ(count(html, R"(<circle class="trend-point marked)"), 2u);
+  EXPECT_EQ(count(html, R"(class="trend-mark" text-anchor="middle">base 0.726<)"), 1u);
+  EXPECT_EQ(count(html, R"(class="trend-mark" text-anchor="middle">head 0.731<)"), 1u);
+  EXPECT_EQ(count(html, "newest"), 0u);
+  EXPECT_NE(html.find("this report's commits are marked"), std::string::npos);
+}
+
+// A counted change is shown as counted: cycles, not seconds, and no test of sampling error.
+TEST(HtmlReport, SimulatedCostsAreCyclesWithoutAMannWhitneyP) {
+  Fixture f(true);
+  f.document.settings["timing_source"] = "simulated";
+  for (SceneResult& scene : f.document.scenes) {
+    if (scene.change) scene.change->exact = true;
+    for (auto& [role, ratio] : scene.ratios) {
+      ratio.baseline_median_seconds = 1760492178.0;
+      ratio.tracer_median_seconds = 1284000000.0;
+    }
+  }
+  f.gate = evaluate_gate(f.document, f.policy);
+  const std::string html = f.render("html");
+  EXPECT_EQ(html.find("1760492178.000 s"), std::string::npos);
+  EXPECT_NE(html.find("baseline 1.76e+09 cycles"), std::string::npos) << html;
+  EXPECT_EQ(count(html, "Mann–Whitney"), 0u);
+  EXPECT_NE(html.find("exact (simulated cycles)"), std::string::npos);
+}
+
+// With the baseline in 3 rounds (compare's default), the test on its rounds can never reach
+// p < 0.05: a p of 0.08 beside +1262% REGRESSED only confused readers. The rounds say both counts.
+TEST(HtmlReport, NoMannWhitneyOnTheBaselinesFewRounds) {
+  Fixture f(true);
+  for (SceneResult& scene : f.document.scenes) {
+    for (auto& [role, ratio] : scene.ratios) ratio.rounds = 3;
+    if (scene.change) scene.change->rounds = 15;
+  }
+  const std::string html = f.render("html");
+  EXPECT_EQ(count(html, "Mann–Whitney"), 0u);
+  EXPECT_NE(html.find("15 rounds (the baseline in 3)"), std::string::npos);
+  EXPECT_NE(html.find("medians: baseline 1.500 s, base "), std::string::npos);
+}
+
 TEST(HtmlReport, MissingImageIsShownNotFatal) {
   Fixture f(true);
   f.document.scenes[1].images[0].actual = f.dir.path() / "gone.png";

@@ -39,8 +39,9 @@ TEST(ConsoleReport, CompareHasNumbersAndFailuresFirst) {
   const std::string text = f.render("console");
   at(text, "0.731 -> 0.789");
   // The policy line names the intervals the rows print, not a third confidence.
-  at(text, "max slowdown +3.0% (within it on a 90% confidence sequence; at most 1% false alarms "
-           "per compare)");
+  at(text, "max slowdown +3.0% (UNCHANGED: the 90% CS within ±3%; REGRESSED: the decision CS "
+           "above 0, at most 1% false alarms per compare; CS = anytime-valid confidence "
+           "sequence, CI = one-look confidence interval)");
   at(text, "+7.9% [+6.1%, +9.8%]");
   at(text, "REGRESSED");
   EXPECT_LT(at(text, "\nmount "), at(text, "\ngears "));
@@ -95,7 +96,7 @@ TEST(MarkdownReport, HeadlineTableAndDetails) {
 TEST(MarkdownReport, EscapesWhatWouldBreakTheComment) {
   const Fixture f(true);
   const std::string text = f.render("markdown");
-  at(text, R"(Use &lt;fast&gt; BVH &amp; "SAH" split)");
+  at(text, R"(Use &lt;fast> BVH &amp; "SAH" split)");  // '<' opens no tag now
   EXPECT_EQ(text.find("<fast>"), std::string::npos);
 }
 
@@ -127,6 +128,26 @@ TEST(ConsoleReport, NoGoldensIsSaidOnce) {
            "blessed yet) (2 images); look at the images, then bless them: raygate golden bless "
            "--from-run RESULTS.json");
   at(text, "raygate: pass (2 scenes; suite score 0.439), exit 0");
+}
+
+// "missing" read as "the image is missing": the column says what it means, in no warning colour.
+TEST(ConsoleReport, NoGoldenYetInPlainWords) {
+  Fixture f(false);
+  without_goldens(f);
+  ReportOptions options;
+  options.colour = true;
+  const std::string text = f.render("console", options);
+  at(text, "no golden yet");
+  EXPECT_EQ(text.find("missing"), std::string::npos) << text;
+  EXPECT_EQ(text.find("\033[33m"), std::string::npos) << "no amber: " << text;
+}
+
+// Reasons keep their arrows: "->" is not a tag and needs no escape.
+TEST(MarkdownReport, ArrowsInReasonsStayArrows) {
+  const Fixture f(true);
+  const std::string text = f.render("markdown");
+  EXPECT_EQ(text.find("-&gt;"), std::string::npos) << text;
+  at(text, "ratio 0.731 -> 0.789");
 }
 
 TEST(ConsoleReport, NoScenesIsNoPass) {

@@ -20,12 +20,13 @@ constexpr const char* kSuite = R"({
   ]
 })";
 
-// The build copies the committed cost beside the (never started) tracer.
+// The build copies the committed cost beside the tracer, which it makes as an empty file: it is
+// never started (the executor is fake), but run and compare check that the run program exists.
 constexpr const char* kAdapter = R"({
   "name": "fake-cost-tracer",
   "description": "pipeline tests: a tracer whose time per render is the committed file 'cost'",
   "scene_format": "nff",
-  "build": [["cp", "{src}/cost", "{build}/cost"]],
+  "build": [["cp", "{src}/cost", "{build}/cost"], ["touch", "{build}/tracer"]],
   "run": ["{build}/tracer", "{scene}", "-o", "{workdir}/image.ppm"],
   "image": "{workdir}/image.ppm",
   "timing": {"source": "process", "metric": "wall"},

@@ -4,6 +4,10 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <optional>
+
+#include "compare/image_verdict.h"
+#include "report/report_model.h"
 
 namespace raygate {
 
@@ -11,7 +15,7 @@ namespace {
 
 constexpr std::size_t kSubjectWidth = 32;
 constexpr std::size_t kRatioWidth = 12;
-constexpr std::size_t kImageWidth = 11;
+constexpr std::size_t kImageWidth = 13;  // "no golden yet"
 
 // Table rows are padded column by column; the last column's padding is not wanted.
 std::string trimmed_line(std::string line) {
@@ -38,12 +42,15 @@ std::string ratio_cell(const HistoryRow& row) {
   return fmt::format("{:.3f} ±{:.1f}%", *row.ratio, half_width * 100.0);
 }
 
+// The stored word in the reports' words ("no golden yet", not "missing").
 std::string image_cell(const HistoryRow& row) {
   if (row.image_verdict.empty()) return "-";
-  if (!row.image_max_error) return row.image_verdict;
+  const std::optional<ImageVerdict> verdict = parse_image_verdict(row.image_verdict);
+  const std::string words = verdict ? report::image_verdict_text(*verdict) : row.image_verdict;
+  if (!row.image_max_error) return words;
   const std::string error =
       *row.image_max_error == 0.0 ? "0" : fmt::format("{:.4f}", *row.image_max_error);
-  return row.image_verdict == "pass" ? error : error + " " + row.image_verdict;
+  return verdict == ImageVerdict::pass ? error : error + " " + words;
 }
 
 bool any_incomplete(const CommitLine& line) {

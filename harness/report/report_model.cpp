@@ -346,8 +346,11 @@ std::string policy_line(const GatePolicy& policy) {
   // The equivalence sequence's level, the one UNCHANGED rows name (measure/change.h).
   const DecidingInterval equivalence{{}, 1.0 - 2.0 * d.significance,
                                      ChangeIntervalKind::confidence_sequence};
+  // No verdict words here: a report of a passing compare must not contain them (CI templates
+  // search a comment for REGRESSED).
   std::string line = fmt::format(
-      "max slowdown {} (UNCHANGED: the {} within ±{:.4g}%; REGRESSED: the decision CS above 0, "
+      "max slowdown {} (unchanged when the {} lies within ±{:.4g}%, slower when the decision CS "
+      "lies above 0, "
       "at most {:.4g}% false alarms per compare; {}); image fail over {:.4g} on more than "
       "{:.4g}% of pixels, warn over {:.4g}",
       signed_percent(d.max_slowdown), interval_name(equivalence), 100.0 * d.max_slowdown,

@@ -194,7 +194,8 @@ TEST_F(HistoryCli, HtmlPageWithOnePlotPerScene) {
   // The HTML report's trend plot (report/html_svg.cpp): band, line, points.
   EXPECT_THAT(html, HasSubstr("<polygon class=\"trend-band\" points=\""));
   EXPECT_THAT(html, HasSubstr("<polyline class=\"trend-line\" points=\""));
-  EXPECT_THAT(html, HasSubstr("<title>" + fake_sha(3).substr(0, 7) + " speed up the BVH"));
+  // A history page marks its newest commit (report/html_svg.cpp trend marks).
+  EXPECT_THAT(html, HasSubstr("<title>newest: " + fake_sha(3).substr(0, 7) + " speed up the BVH"));
   EXPECT_THAT(html, HasSubstr("ratio 0.880 [0.871, 0.889]"));
   EXPECT_THAT(html, Not(HasSubstr("<script")));
   EXPECT_THAT(html, Not(HasSubstr("https://")));

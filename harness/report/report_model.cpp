@@ -349,7 +349,7 @@ std::string policy_line(const GatePolicy& policy) {
   // No verdict words here: a report of a passing compare must not contain them (CI templates
   // search a comment for REGRESSED).
   std::string line = fmt::format(
-      "max slowdown {} (unchanged when the {} lies within ±{:.4g}%, slower when the decision CS "
+      "max slowdown {} (within the limit when the {} lies within ±{:.4g}%, slower when the decision CS "
       "lies above 0, "
       "at most {:.4g}% false alarms per compare; {}); image fail over {:.4g} on more than "
       "{:.4g}% of pixels, warn over {:.4g}",

@@ -39,7 +39,7 @@ TEST(ConsoleReport, CompareHasNumbersAndFailuresFirst) {
   const std::string text = f.render("console");
   at(text, "0.731 -> 0.789");
   // The policy line names the intervals the rows print, not a third confidence.
-  at(text, "max slowdown +3.0% (unchanged when the 90% CS lies within ±3%, slower when the "
+  at(text, "max slowdown +3.0% (within the limit when the 90% CS lies within ±3%, slower when the "
            "decision CS lies above 0, at most 1% false alarms per compare; CS = anytime-valid "
            "confidence sequence, CI = one-look confidence interval)");
   at(text, "+7.9% [+6.1%, +9.8%]");

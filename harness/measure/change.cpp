@@ -231,12 +231,18 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
     const Interval& d = summary.change_interval;
     ratio = (c > 0.0 ? c - d.lower : d.upper - c) / size;
   }
-  if (!(ratio > 0.0) || !std::isfinite(ratio)) return std::nullopt;
+  if (!(ratio >= 0.0) || !std::isfinite(ratio)) return std::nullopt;
   const double n = static_cast<double>(summary.rounds);
   const double rounds = n * std::max(1.0, ratio * ratio);
   if (rounds > 1e7) return std::nullopt;
-  // Undecided now, so at least one more round; 80.000000001 rounds is 80.
-  return std::max(summary.rounds + 1, static_cast<std::size_t>(std::ceil(rounds - 1e-6)));
+  // Undecided now, so at least one more round, and never fewer than the interval that decides
+  // needs to be bounded at all (below them it is the observed range, which may already fit);
+  // 80.000000001 rounds is 80.
+  const std::size_t to_bound = rounds_to_bound(
+      summary, deciding_interval(summary, towards_unchanged ? ChangeVerdict::unchanged
+                                                            : ChangeVerdict::regressed));
+  return std::max({summary.rounds + 1, to_bound,
+                   static_cast<std::size_t>(std::ceil(rounds - 1e-6))});
 }
 
 DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict) {

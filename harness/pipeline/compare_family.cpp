@@ -19,9 +19,6 @@ bool in_family(const SceneResult& scene) {
   return scene.change && !scene.change->exact && !scene.runs.rounds.empty();
 }
 
-// "balls +0.4% [-3.9%, +4.8%] 99.85% CS (width 8.7 points) after 38 rounds", or, below the
-// rounds its sequence needs, "balls +0.4% after 9 rounds, no interval yet (needs 14 rounds)": the
-// stored interval is then only the observed range.
 // "(about 180 rounds in all would decide it, 3 min more at this scene's pace, or a quieter
 // runner)", or why no number of rounds would do.
 std::string what_would_decide(const SceneResult& scene, double threshold) {
@@ -40,21 +37,31 @@ std::string what_would_decide(const SceneResult& scene, double threshold) {
                      *rounds, duration_text(seconds_per_round * static_cast<double>(more)));
 }
 
+// The interval that would decide the scene: for an estimate inside the limit the equivalence
+// sequence UNCHANGED must fit in, else the decision sequence REGRESSED or IMPROVED must clear
+// the limit with (the reports' tables print the latter for every INCONCLUSIVE scene: what a
+// regression must clear).
+DecidingInterval deciding_sequence(const ChangeSummary& c, double threshold) {
+  return deciding_interval(
+      c, std::abs(c.change) < threshold ? ChangeVerdict::unchanged : ChangeVerdict::regressed);
+}
+
+// "balls +0.4% [-3.9%, +4.8%] 90% CS (width 8.7 points) after 38 rounds (about ...)", with the
+// interval that would decide it (see deciding_sequence), or, below the rounds that sequence
+// needs, "balls +0.4% after 5 rounds, no 90% CS yet (needs 7 rounds) (about ...)".
 std::string undecided_scene(const SceneResult& scene, double threshold) {
   const ChangeSummary& c = *scene.change;
-  const std::size_t needed = c.interval_kind == ChangeIntervalKind::confidence_sequence
-                                 ? min_values_for_median_sequence((1.0 - c.confidence) / 2.0)
-                                 : 0;
-  if (c.rounds < needed) {
-    return fmt::format("{} {:+.1f}% after {} rounds, no interval yet (needs {} rounds)",
-                       scene.entry.id, 100 * c.change, c.rounds, needed);
+  const DecidingInterval sequence = deciding_sequence(c, threshold);
+  if (const std::size_t needed = rounds_to_bound(c, sequence); c.rounds < needed) {
+    return fmt::format("{} {:+.1f}% after {} rounds, no {} yet (needs {} rounds) {}",
+                       scene.entry.id, 100 * c.change, c.rounds, interval_name(sequence), needed,
+                       what_would_decide(scene, threshold));
   }
-  // The interval named as the reports name it (measure/change.h change_with_interval).
-  std::string text = fmt::format(
-      "{} {} (width {:.1f} points) after {} rounds", scene.entry.id,
-      change_with_interval(c, ChangeVerdict::inconclusive),
-      100 * (c.change_interval.upper - c.change_interval.lower), c.rounds);
-  return text + " " + what_would_decide(scene, threshold);
+  const Interval& i = sequence.interval;
+  return fmt::format("{} {:+.1f}% [{:+.1f}%, {:+.1f}%] {} (width {:.1f} points) after {} rounds {}",
+                     scene.entry.id, 100 * c.change, 100 * i.lower, 100 * i.upper,
+                     interval_name(sequence), 100 * (i.upper - i.lower), c.rounds,
+                     what_would_decide(scene, threshold));
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <limits>
 #include <optional>
 
 #include "core/time_text.h"
@@ -31,9 +32,7 @@ ImageCheck check_noisy_change(const SceneResult& scene, std::size_t family_size,
 // The change head vs base at the scene's share `alpha` of the family, and head's image against
 // base's (against all of base's runs, within noise, when `noisy_family` is set: the number of
 // images the Monte Carlo check's 1% is shared by).
-void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, double alpha,
-                          const std::filesystem::path& evidence_dir, bool counted,
-                          std::optional<std::size_t> noisy_family) {
+void judge_change(SceneResult& scene, const GatePolicy& gate_policy, double alpha, bool counted) {
   const ScenePolicy& policy = gate_policy.for_scene(scene.entry.id);
   scene.change = measured_change(compare_samples(scene.runs.rounds), change_bootstrap(policy),
                                  counted, scene_levels(policy, alpha));
@@ -44,6 +43,25 @@ void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, dou
     scene.ratios["base"] = scene.change->base;
     scene.ratios["head"] = scene.change->head;
   }
+}
+
+// About how many seconds more a scene left INCONCLUSIVE needs (infinity: no estimate), at the
+// pace of its rounds so far: the second pass visits the cheapest first.
+double seconds_to_decide(const SceneResult& scene, const GatePolicy& gate_policy) {
+  const std::size_t rounds = scene.runs.rounds.size();
+  if (!scene.change || rounds == 0) return std::numeric_limits<double>::infinity();
+  const std::optional<std::size_t> needed =
+      estimated_rounds_to_decide(*scene.change, gate_policy.for_scene(scene.entry.id).max_slowdown);
+  if (!needed) return std::numeric_limits<double>::infinity();
+  const double seconds_per_round = scene.runs.seconds_spent / static_cast<double>(rounds);
+  return seconds_per_round * static_cast<double>(*needed > rounds ? *needed - rounds : 0);
+}
+
+void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, double alpha,
+                          const std::filesystem::path& evidence_dir, bool counted,
+                          std::optional<std::size_t> noisy_family) {
+  judge_change(scene, gate_policy, alpha, counted);
+  const ScenePolicy& policy = gate_policy.for_scene(scene.entry.id);
   const RunRecord* base = scene.runs.first_run("base");
   const RunRecord* head = scene.runs.first_run("head");
   if (base != nullptr && head != nullptr && noisy_family) {
@@ -116,12 +134,22 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
       baseline_contender(context, request.baseline.source_hash());
   const TracerContender base_runs(base.setup);
   const TracerContender head_runs(head.setup);
-  SuiteBudget budget(context.stopping, m.scenes.size(), io.clock);
+  SuiteBudget budget(context.stopping, m.scenes.size(), io.clock,
+                     revisit_reserve_scenes(m.scenes.size()));
   m.stop = [&](const SuiteScene& scene) {
     const ScenePolicy& policy = context.policy.for_scene(scene.id);
     return change_stop_rule(budget.next_scene(), policy, scene_levels(policy, alpha),
                             simulated(context));
   };
+  m.revisits = SceneRevisits{
+      [&](const SceneResult& scene, std::size_t scenes_left) -> std::optional<StopRule> {
+        const ScenePolicy& policy = context.policy.for_scene(scene.entry.id);
+        const StoppingPolicy again = budget.again(scene.runs.seconds_spent, scenes_left);
+        if (again.max_seconds <= scene.runs.seconds_spent) return std::nullopt;
+        return change_stop_rule(again, policy, scene_levels(policy, alpha), simulated(context));
+      },
+      [&](const SceneResult& scene) { return seconds_to_decide(scene, context.policy); },
+      [&](SceneResult& scene) { judge_change(scene, context.policy, alpha, simulated(context)); }};
   m.finish_scene = [&](SceneResult& scene) {
     finish_compare_scene(scene, context.policy, alpha, work_dir / "evidence",
                          simulated(context),

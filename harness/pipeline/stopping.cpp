@@ -55,17 +55,35 @@ BootstrapOptions change_bootstrap(const ScenePolicy& scene) {
   return options;
 }
 
-SuiteBudget::SuiteBudget(const StoppingPolicy& policy, std::size_t scenes, Clock& clock)
-    : policy_(policy), scenes_left_(scenes), clock_(clock), started_(clock.now_seconds()) {}
+SuiteBudget::SuiteBudget(const StoppingPolicy& policy, std::size_t scenes, Clock& clock,
+                         std::size_t reserve_scenes)
+    : policy_(policy),
+      scenes_left_(scenes),
+      reserve_scenes_(reserve_scenes),
+      clock_(clock),
+      started_(clock.now_seconds()) {}
 
 StoppingPolicy SuiteBudget::next_scene() {
   StoppingPolicy scene = policy_;
   const double share = scene_time_share(60.0 * policy_.max_minutes,
                                         clock_.now_seconds() - started_,
-                                        std::max<std::size_t>(scenes_left_, 1));
+                                        std::max<std::size_t>(scenes_left_, 1) + reserve_scenes_);
   scene.max_seconds = std::min(scene.max_seconds, share);
   if (scenes_left_ > 0) --scenes_left_;
   return scene;
+}
+
+StoppingPolicy SuiteBudget::again(double seconds_spent, std::size_t scenes_left) const {
+  StoppingPolicy scene = policy_;
+  const double share = scene_time_share(60.0 * policy_.max_minutes,
+                                        clock_.now_seconds() - started_,
+                                        std::max<std::size_t>(scenes_left, 1));
+  scene.max_seconds = std::min(scene.max_seconds, seconds_spent + share);
+  return scene;
+}
+
+std::size_t revisit_reserve_scenes(std::size_t scenes) {
+  return scenes <= 1 ? 0 : (scenes + 3) / 4;
 }
 
 }  // namespace raygate

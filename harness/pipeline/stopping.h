@@ -47,20 +47,37 @@ StopRule change_stop_rule(const StoppingPolicy& policy, const ScenePolicy& scene
 // The bootstrap of a compare scene: its confidence is 1 - the scene's significance.
 BootstrapOptions change_bootstrap(const ScenePolicy& scene);
 
-// The whole measurement's time budget (StoppingPolicy::max_minutes) shared by its scenes in the
-// order they are measured: each may use what is left divided by the scenes left, so the time a
-// scene saves by deciding early goes to the undecided scenes after it.
+// The whole measurement's time budget (StoppingPolicy::max_minutes), spent in two passes.
+// The first pass measures the scenes in order, each with what is left divided by the scenes left
+// plus `reserve_scenes`, so the time a scene saves by deciding early goes to the scenes after it
+// and about reserve / (scenes + reserve) of the budget stays for the second pass. The second
+// pass continues the scenes the first left undecided when their share ran out, each with what is
+// left divided by the undecided scenes left (pipeline/suite_measurement.h, SceneRevisits). A
+// scene that decides in the first pass costs no more than before; one that needs more rounds
+// than an even share gets them once every scene has had its turn, instead of starving the
+// scenes after it or being starved by them.
 class SuiteBudget {
  public:
-  SuiteBudget(const StoppingPolicy& policy, std::size_t scenes, Clock& clock);
-  // The stopping policy of the next scene: `policy` with max_seconds capped at its share.
+  SuiteBudget(const StoppingPolicy& policy, std::size_t scenes, Clock& clock,
+              std::size_t reserve_scenes = 0);
+  // The stopping policy of the next scene of the first pass: `policy` with max_seconds capped
+  // at its share.
   StoppingPolicy next_scene();
+  // The stopping policy of a second visit to a scene that has used `seconds_spent` so far, with
+  // `scenes_left` undecided scenes (this one included) still to visit: max_seconds is its
+  // seconds so far plus its share of what is left (the scheduler counts both visits' seconds).
+  StoppingPolicy again(double seconds_spent, std::size_t scenes_left) const;
 
  private:
   StoppingPolicy policy_;
   std::size_t scenes_left_;
+  std::size_t reserve_scenes_;
   Clock& clock_;
   double started_;
 };
+
+// How many scenes' worth of a compare's budget the first pass keeps for the second: a quarter
+// of the scenes, rounded up (4 of the ci suite's 13), none for a single scene.
+std::size_t revisit_reserve_scenes(std::size_t scenes);
 
 }  // namespace raygate

@@ -134,6 +134,67 @@ std::string kept_message(const Interrupted& stop, const ResultsDocument& documen
                      kept.path->string());
 }
 
+std::filesystem::path scene_dir(const SuiteMeasurement& m, const SuiteScene& entry) {
+  return join_component(m.work_dir / "scenes", entry.id, "scene id");
+}
+
+// The scenes of `document` the first pass stopped undecided for lack of time, the cheapest to
+// decide first (a stable order: equal estimates keep the suite's order).
+std::vector<std::size_t> scenes_to_revisit(const ResultsDocument& document,
+                                           const SceneRevisits& revisits) {
+  std::vector<std::pair<double, std::size_t>> undecided;
+  for (std::size_t i = 0; i < document.scenes.size(); ++i) {
+    const SceneResult& scene = document.scenes[i];
+    if (scene.runs.failed() || scene.runs.rounds.empty() ||
+        scene.runs.stop_reason != to_string(StopDecision::stop_budget_time)) {
+      continue;
+    }
+    undecided.emplace_back(revisits.seconds_to_decide(scene), i);
+  }
+  std::stable_sort(undecided.begin(), undecided.end(),
+                   [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<std::size_t> order;
+  for (const auto& [seconds, index] : undecided) order.push_back(index);
+  return order;
+}
+
+// The second pass: more rounds for each scene scenes_to_revisit() names, the document kept after
+// each as after the first pass, and one line per scene revisited ("[again 1/3] balls ...").
+void revisit_scenes(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
+                    PipelineIo& io) {
+  const std::vector<std::size_t> order = scenes_to_revisit(document, *m.revisits);
+  for (std::size_t n = 0; n < order.size(); ++n) {
+    throw_if_interrupted("between scenes");
+    SceneResult& scene = document.scenes[order[n]];
+    const std::optional<StopRule> stop = m.revisits->stop(scene, order.size() - n);
+    if (!stop) continue;
+    ProgressState state{n + 1, order.size(), scene.entry.id + " (again)", scene.runs.rounds.size(),
+                        0.0, 0.0, -1.0};
+    io.progress.update(state);
+    const RoundObserver observe = [&](const std::vector<Round>& rounds, double) {
+      state.round = rounds.size();
+      io.progress.update(state);
+    };
+    const SceneInput input = prepare_scene_input(scene.entry, m);
+    scene.runs = continue_scene(input, m.contenders, m.schedule, *stop, executor, io.clock,
+                                scene_dir(m, scene.entry), std::move(scene.runs), observe);
+    summarize_ratios(scene, m);
+    if (scene.runs.failed()) {
+      // As in the first pass, a scene whose run failed has no change to judge: the failure is
+      // its result.
+      scene.status = "failed";
+      scene.change.reset();
+      scene.change_verdict.clear();
+    } else {
+      m.revisits->rejudge(scene);
+    }
+    update_scores(document, m.tracer_roles);
+    keep(document, m);
+    io.progress.line(fmt::format("[again {}/{}] {}", n + 1, order.size(),
+                                 scene_line(scene, m.tracer_roles)));
+  }
+}
+
 void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io) {
   Clock& clock = io.clock;
   ProgressSink& progress = io.progress;
@@ -164,8 +225,7 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Pipeli
       progress.update(state);
     };
     result.runs = measure_scene(input, m.contenders, m.schedule, m.stop(entry), executor,
-                                clock, join_component(m.work_dir / "scenes", entry.id, "scene id"),
-                                observe);
+                                clock, scene_dir(m, entry), observe);
     result.status = result.runs.failed() ? "failed" : "measured";
     summarize_ratios(result, m);
     check_images(result, m, manifest, document.baseline.sampling);
@@ -178,6 +238,8 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Pipeli
     progress.line(fmt::format("[{}/{}] {}", index + 1, m.scenes.size(),
                               scene_line(document.scenes.back(), m.tracer_roles)));
   }
+  // Only a whole-measurement budget leaves a scene undecided for want of its share.
+  if (m.revisits && m.budget_seconds > 0.0) revisit_scenes(document, m, executor, io);
 }
 
 }  // namespace

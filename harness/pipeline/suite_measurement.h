@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,20 @@
 
 namespace raygate {
 
+// The second pass of a measurement (pipeline/stopping.h, SuiteBudget): the scenes the first
+// pass left undecided when their share of the time ran out get more rounds, continued where they
+// stopped (runner/scheduler.h, continue_scene), the cheapest to decide first.
+struct SceneRevisits {
+  // The stopping rule of a scene's further rounds; `scenes_left` counts it and the scenes still
+  // to be visited after it. nullopt: no time is left for it (--max-seconds reached, say).
+  std::function<std::optional<StopRule>(const SceneResult& scene, std::size_t scenes_left)> stop;
+  // About how many seconds more the scene needs to decide; infinity when no number of rounds is
+  // known to decide it (those go last).
+  std::function<double(const SceneResult& scene)> seconds_to_decide;
+  // The scene's summaries again, over all its rounds (its image checks stay the first visit's).
+  std::function<void(SceneResult& scene)> rejudge;
+};
+
 struct SuiteMeasurement {
   std::vector<SuiteScene> scenes;
   std::vector<const Contender*> contenders;  // the baseline first
@@ -41,6 +56,8 @@ struct SuiteMeasurement {
   // The whole measurement's budget (--max-minutes), in seconds; 0: none. Every run started is
   // bounded by it (runner/deadline_executor.h), not only the stopping rule between rounds.
   double budget_seconds = 0.0;
+  // Unset: one pass over the scenes.
+  std::optional<SceneRevisits> revisits;
   // Extra per-scene summaries after the ratios and golden checks (compare adds its change).
   std::function<void(SceneResult&)> finish_scene;
   // Once every scene is measured, before the complete document is written: judgements across

@@ -112,27 +112,31 @@ void check_options(std::span<const Contender* const> contenders, const ScheduleO
   }
 }
 
-}  // namespace
-
-SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* const> contenders,
-                        const ScheduleOptions& options, const StopRule& stop, Executor& executor,
-                        Clock& clock, const std::filesystem::path& scene_dir,
-                        const RoundObserver& on_round) {
+// measure_scene() from `earlier`'s rounds on: a first visit (no rounds yet) starts with the
+// warm-ups; a later one continues the round numbering, the rotation and the CPU alternation
+// where the first visit left them, and adds its seconds to the earlier ones.
+SceneRuns run_scene(const SceneInput& scene, std::span<const Contender* const> contenders,
+                    const ScheduleOptions& options, const StopRule& stop, Executor& executor,
+                    Clock& clock, const std::filesystem::path& scene_dir,
+                    const RoundObserver& on_round, SceneRuns earlier) {
   check_options(contenders, options);
   const RunLauncher launcher(scene, executor, scene_dir);
   const double started = clock.now_seconds();
-  SceneRuns out;
+  SceneRuns out = std::move(earlier);
+  const double spent_before = out.seconds_spent;
+  const bool first_visit = out.rounds.empty();
+  out.stop_reason.clear();
   auto fail = [&](const std::string& role, const RunRecord& run,
                   std::map<std::string, RunRecord> partial_round = {}) {
     out.failed_role = role;
     out.failed_run = run;
     out.partial_round = std::move(partial_round);
     out.stop_reason = "failed";
-    out.seconds_spent = clock.now_seconds() - started;
+    out.seconds_spent = spent_before + clock.now_seconds() - started;
     return out;
   };
 
-  for (int w = 1; w <= options.warmup_runs; ++w) {
+  for (int w = 1; first_visit && w <= options.warmup_runs; ++w) {
     for (const Contender* contender : contenders) {
       RunRecord run = launcher.run(*contender, fmt::format("warmup-{}", w), cpus_of_round(options, 0));
       out.warmup[contender->role()].push_back(run);
@@ -141,7 +145,7 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
   }
 
   const std::vector<const Contender*> roster(contenders.begin(), contenders.end());
-  for (std::size_t index = 0;; ++index) {
+  for (std::size_t index = out.rounds.size();; ++index) {
     const std::string label = fmt::format("round-{:03}", index + 1);
     Round round;
     if (options.kind == ScheduleKind::duet) {
@@ -187,7 +191,7 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
       }
     }
     out.rounds.push_back(std::move(round));
-    out.seconds_spent = clock.now_seconds() - started;
+    out.seconds_spent = spent_before + clock.now_seconds() - started;
     if (on_round) on_round(out.rounds, out.seconds_spent);
     const StopDecision decision = stop(out.rounds, out.seconds_spent);
     if (decision != StopDecision::continue_measuring) {
@@ -195,6 +199,27 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
       return out;
     }
   }
+}
+
+}  // namespace
+
+SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* const> contenders,
+                        const ScheduleOptions& options, const StopRule& stop, Executor& executor,
+                        Clock& clock, const std::filesystem::path& scene_dir,
+                        const RoundObserver& on_round) {
+  return run_scene(scene, contenders, options, stop, executor, clock, scene_dir, on_round, {});
+}
+
+SceneRuns continue_scene(const SceneInput& scene, std::span<const Contender* const> contenders,
+                         const ScheduleOptions& options, const StopRule& stop,
+                         Executor& executor, Clock& clock,
+                         const std::filesystem::path& scene_dir, SceneRuns earlier,
+                         const RoundObserver& on_round) {
+  if (earlier.failed() || earlier.rounds.empty()) {
+    throw std::invalid_argument("continue_scene: only a scene measured without failure continues");
+  }
+  return run_scene(scene, contenders, options, stop, executor, clock, scene_dir, on_round,
+                   std::move(earlier));
 }
 
 std::vector<int> cpus_of_round(const ScheduleOptions& options, std::size_t index) {

@@ -92,6 +92,18 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
                         Clock& clock, const std::filesystem::path& scene_dir,
                         const RoundObserver& on_round = {});
 
+// More rounds of a scene measure_scene() stopped without a failure (its time share spent):
+// no warm-ups (its programs and files were warmed by the first visit), the round numbering,
+// rotation and CPU alternation continued, and seconds_spent the total of both visits, which
+// `stop` sees too. The statistics allow it: compare's confidence sequences hold at every round,
+// however the rounds are spread over time. Throws std::invalid_argument for `earlier` failed or
+// without rounds.
+SceneRuns continue_scene(const SceneInput& scene, std::span<const Contender* const> contenders,
+                         const ScheduleOptions& options, const StopRule& stop,
+                         Executor& executor, Clock& clock,
+                         const std::filesystem::path& scene_dir, SceneRuns earlier,
+                         const RoundObserver& on_round = {});
+
 // The rounds as (tracer, baseline) pairs of their `seconds`, of the rounds both ran in.
 std::vector<RoundSample> round_samples(const std::vector<Round>& rounds,
                                        const std::string& tracer_role,

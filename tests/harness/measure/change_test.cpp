@@ -1,6 +1,7 @@
 // Change between two revisions: the paired change and its CI, Mann-Whitney U against values
 // worked by hand, and the verdict table of docs/statistics.md.
 #include "measure/change.h"
+#include "measure/confidence_sequence.h"
 
 #include <gtest/gtest.h>
 
@@ -188,6 +189,11 @@ TEST(MeasureRoundsToDecide, ScaleWithTheSquareOfHowMuchTheIntervalMustNarrow) {
   EXPECT_EQ(estimated_rounds_to_decide(sequence_summary(0.0, {-0.1, 0.1}, {-0.029, 0.029}, 27),
                                        0.03),
             28u);
+  // Too few rounds for the equivalence sequence to be bounded: its interval is the observed
+  // range, which may fit already (identical times), but the verdict waits for the bound.
+  EXPECT_EQ(estimated_rounds_to_decide(sequence_summary(0.0, {0.0, 0.0}, {0.0, 0.0}, 4), 0.03),
+            min_values_for_median_sequence(0.05));
+  EXPECT_GT(min_values_for_median_sequence(0.05), 5u);
   // A change on the limit has no room: no number of rounds decides it.
   EXPECT_FALSE(
       estimated_rounds_to_decide(sequence_summary(0.03, {-0.1, 0.2}, {0.0, 0.06}, 40), 0.03));

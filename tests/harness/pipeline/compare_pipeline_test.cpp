@@ -81,9 +81,32 @@ TEST_F(ComparePipelineTest, AnUndecidedChangeGetsRoundsUntilTheBudget) {
     EXPECT_NE(undecided[0].find(scene.entry.id + " +"), std::string::npos) << undecided[0];
   }
   // Its 10 rounds are one short of a bounded decision sequence for two scenes.
-  EXPECT_NE(undecided[0].find("after 10 rounds, no interval yet (needs 11 rounds)"),
+  EXPECT_NE(undecided[0].find("after 10 rounds, no 99% CS yet (needs 11 rounds)"),
             std::string::npos)
       << undecided[0];
+}
+
+TEST_F(ComparePipelineTest, ScenesTheirShareLeftUndecidedGetASecondVisit) {
+  const std::string base = commit_tracer("2.0", "base");
+  const std::string head = commit_tracer("2.0", "head: the same speed");
+  // A round costs 5 s while the baseline joins (its first 3), then 4 s; warm-ups 5 s. An A/A
+  // scene is UNCHANGED from its 7th round (36 s). 90 s for two scenes and a reserve of one:
+  // the first pass gives each about 30 s, too little, and the second pass the rest.
+  context_.stopping.max_minutes = 1.5;
+  const double started = clock_.now_seconds();
+  const auto [document, path, unwritten] = compare(base, head);
+  ASSERT_EQ(document.scenes.size(), 2u);
+  EXPECT_EQ(progress_.lines_with("[again ").size(), 2u);
+  for (const SceneResult& scene : document.scenes) {
+    EXPECT_EQ(scene.change_verdict, "UNCHANGED") << scene.entry.id;
+    EXPECT_EQ(scene.runs.stop_reason, "stop_converged") << scene.entry.id;
+    EXPECT_EQ(scene.runs.warmup.at("head").size(), 1u) << "warmed up once, on the first visit";
+    EXPECT_EQ(progress_.lines_with("[again ").size(), 2u);
+    EXPECT_EQ(progress_.lines_with("] " + scene.entry.id).size(), 2u) << scene.entry.id;
+  }
+  EXPECT_LE(clock_.now_seconds() - started, 90.0 + 5.0)
+      << "the budget, and at most the round in flight";
+  EXPECT_TRUE(progress_.lines_with("undecided (INCONCLUSIVE)").empty());
 }
 
 TEST_F(ComparePipelineTest, OpensWithWhatItCompares) {

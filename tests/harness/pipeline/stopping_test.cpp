@@ -121,12 +121,47 @@ TEST(PipelineStopping, SuiteBudgetGivesEachSceneItsShareOfWhatIsLeft) {
   EXPECT_EQ(budget.next_scene().max_rounds, policy.max_rounds);
 }
 
+TEST(PipelineStopping, SuiteBudgetKeepsAReserveForASecondVisit) {
+  StoppingPolicy policy;
+  policy.max_seconds = 1000.0;
+  policy.max_minutes = 8.0;  // 480 s for 4 scenes and a reserve of 2 scenes' worth
+  testing::FakeClock clock;
+  SuiteBudget budget(policy, 4, clock, 2);
+  EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, 80.0);
+  clock.advance(80.0);
+  EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, 80.0);
+  clock.advance(80.0);
+  EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, 80.0);
+  clock.advance(20.0);  // this one decided early
+  EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, 100.0);  // 300 s left for 1 + 2
+  clock.advance(100.0);
+  // Second pass: 200 s left for two undecided scenes; the first has used 80 s already, and the
+  // scheduler counts both visits' seconds.
+  EXPECT_DOUBLE_EQ(budget.again(80.0, 2).max_seconds, 180.0);
+  clock.advance(100.0);
+  EXPECT_DOUBLE_EQ(budget.again(100.0, 1).max_seconds, 200.0);
+  // --max-seconds bounds a scene's two visits together.
+  clock.advance(50.0);
+  policy.max_seconds = 120.0;
+  SuiteBudget capped(policy, 1, clock);
+  EXPECT_DOUBLE_EQ(capped.again(100.0, 1).max_seconds, 120.0);
+}
+
+TEST(PipelineStopping, TheReserveIsAQuarterOfTheScenesAndNoneForOne) {
+  EXPECT_EQ(revisit_reserve_scenes(0), 0u);
+  EXPECT_EQ(revisit_reserve_scenes(1), 0u);
+  EXPECT_EQ(revisit_reserve_scenes(2), 1u);
+  EXPECT_EQ(revisit_reserve_scenes(13), 4u);
+  EXPECT_EQ(revisit_reserve_scenes(16), 4u);
+}
+
 TEST(PipelineStopping, SuiteBudgetOfZeroMinutesLeavesThePolicyAlone) {
   StoppingPolicy policy;
   testing::FakeClock clock;
   SuiteBudget budget(policy, 2, clock);
   clock.advance(1e6);
   EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, policy.max_seconds);
+  EXPECT_DOUBLE_EQ(budget.again(50.0, 1).max_seconds, policy.max_seconds);
 }
 
 }  // namespace

@@ -217,6 +217,56 @@ TEST_F(SchedulerTest, StopRuleSeesCompleteRoundsAndTheSecondsSpent) {
   EXPECT_FALSE(runs.failed());
 }
 
+TEST_F(SchedulerTest, AContinuedSceneSkipsTheWarmupsAndCarriesOnItsRoundsAndSeconds) {
+  options_.warmup_runs = 1;
+  options_.normalizer_rounds = 2;
+  options_.round_cpus = {0, 1};
+  executor_.set_seconds("baseline", {2.0});
+  executor_.set_seconds("base", {1.0});
+  executor_.set_seconds("head", {1.0});
+  const std::vector<const Contender*> three{&baseline_, &base_, &head_};
+  SceneRuns first = measure(three, stop_after(3));
+  // 3 warm-ups (4 s), 2 rounds with the baseline (4 s each), 1 without (2 s).
+  ASSERT_DOUBLE_EQ(first.seconds_spent, 14.0);
+  const std::size_t calls_before = executor_.calls().size();
+
+  std::vector<std::pair<std::size_t, double>> seen;
+  const StopRule rule = [&](const std::vector<Round>& rounds, double seconds) {
+    seen.emplace_back(rounds.size(), seconds);
+    return rounds.size() == 5 ? StopDecision::stop_converged : StopDecision::continue_measuring;
+  };
+  const SceneRuns runs = continue_scene(scene_, three, options_, rule, executor_, clock_,
+                                        dir_.path() / "scene", std::move(first));
+  // No warm-ups again, no baseline (past its 2 rounds); the rotation goes on from round 4.
+  ASSERT_EQ(runs.rounds.size(), 5u);
+  EXPECT_EQ(executor_.calls().size(), calls_before + 4u);
+  EXPECT_EQ(runs.rounds[3].order, (Roles{"head", "base"}));
+  EXPECT_EQ(runs.rounds[4].order, (Roles{"base", "head"}));
+  // Rounds 4 and 5 alternate CPUs as a first visit would have: rounds 2k, 2k+1 share a CPU.
+  EXPECT_EQ(executor_.calls()[calls_before].cpus, std::vector<int>{1});
+  EXPECT_EQ(executor_.calls()[calls_before + 2].cpus, std::vector<int>{0});
+  EXPECT_NE(runs.rounds[4].runs.at("head").log.string().find("round-005"), std::string::npos);
+  // The stop rule and the document see the seconds of both visits.
+  const std::vector<std::pair<std::size_t, double>> expected{{4, 16.0}, {5, 18.0}};
+  EXPECT_EQ(seen, expected);
+  EXPECT_DOUBLE_EQ(runs.seconds_spent, 18.0);
+  EXPECT_EQ(runs.stop_reason, "stop_converged");
+  EXPECT_EQ(runs.warmup.size(), 3u);  // the first visit's warm-ups are kept
+}
+
+TEST_F(SchedulerTest, OnlyASceneMeasuredWithoutFailureContinues) {
+  const std::vector<const Contender*> pair{&baseline_, &tracer_};
+  EXPECT_THROW(continue_scene(scene_, pair, options_, stop_after(2), executor_,
+                              clock_, dir_.path() / "scene", SceneRuns{}),
+               std::invalid_argument);
+  executor_.script("tracer", 2, killed_by(SIGSEGV));  // its warm-up runs, its first round crashes
+  SceneRuns failed = measure_pair(stop_after(2));
+  ASSERT_TRUE(failed.failed());
+  EXPECT_THROW(continue_scene(scene_, pair, options_, stop_after(2), executor_,
+                              clock_, dir_.path() / "scene", std::move(failed)),
+               std::invalid_argument);
+}
+
 TEST_F(SchedulerTest, ObserverSeesEveryRoundBeforeTheStopRule) {
   std::vector<std::size_t> observed;
   const RoundObserver observer = [&](const std::vector<Round>& rounds, double /*seconds*/) {

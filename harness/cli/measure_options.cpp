@@ -67,6 +67,11 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
                      "time of a process-timed tracer: wall or cpu; sim: simulated cycles under "
                      "cachegrind (default: the adapter's)")
       ->check(CLI::IsMember({"wall", "cpu", "sim"}));
+  command.add_option("--repeats", args.repeats,
+                     "runs of each program per round, in mirrored order; the round keeps each "
+                     "one's fastest (steadier on a busy machine, at that many times the runs)")
+      ->check(CLI::Range(1, 10))
+      ->capture_default_str();
   command.add_option("--jobs", args.jobs, "parallel build jobs (default: all allowed CPUs)");
   command.add_option("--policy", args.policy,
                      "gate policy file: slowdown limit, significance, image thresholds "
@@ -174,6 +179,11 @@ MeasureContext load_measure_context(const MeasureArgs& args) {
   c.schedule.duet_cpus = args.duet_cpus;
   c.schedule.round_cpus = default_round_cpus(args, c);
   c.schedule.normalizer_rounds = args.baseline_rounds;
+  c.schedule.repeats = args.repeats;
+  if (c.schedule.kind == ScheduleKind::duet && args.repeats != 1) {
+    throw UsageError("--repeats applies to the alternate schedule (a duet round runs each "
+                     "program once)");
+  }
   if (c.schedule.kind == ScheduleKind::duet &&
       (args.duet_cpus.size() != 2 || args.duet_cpus[0] == args.duet_cpus[1])) {
     throw UsageError("--duet-cpus needs two different CPUs, e.g. --duet-cpus 0,1");

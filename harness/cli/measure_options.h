@@ -25,6 +25,7 @@ struct MeasureArgs {
   std::vector<int> pin_cpus;
   bool no_pin = false;  // --no-pin: not even the default pinning of a round to one CPU
   std::size_t baseline_rounds = 0;  // rounds per scene the baseline joins; 0 = every round
+  std::size_t repeats = 1;  // runs of each contender per round, the fastest kept
   std::vector<int> duet_cpus{0, 1};
   int warmup = 1;
   StoppingPolicy stopping;  // --target, --min-rounds, ...; its defaults are the policy's own

@@ -36,6 +36,7 @@ void apply_simulated_mode(const MeasureArgs& args, MeasureContext& context) {
   // are then the same round twice, every contender in each.
   context.schedule.normalizer_rounds = 0;
   context.schedule.round_cpus.clear();
+  context.schedule.repeats = 1;  // a count does not vary: the fastest of two is the same count
   context.stopping.min_rounds = 2;
   context.stopping.max_rounds = std::max(context.stopping.max_rounds, std::size_t{2});
   if (args.policy.empty()) context.policy.defaults.max_slowdown = kSimulatedDefaultLimit;

@@ -215,10 +215,17 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
     return std::nullopt;
   }
   const double size = std::abs(summary.change);
+  const bool towards_unchanged = size < threshold;
+  // Below the rounds the interval that decides needs to be bounded at all, those rounds are the
+  // estimate: a point estimate from a handful of rounds says too little to call a scene
+  // hopeless or cheap.
+  const std::size_t to_bound = rounds_to_bound(
+      summary, deciding_interval(summary, towards_unchanged ? ChangeVerdict::unchanged
+                                                            : ChangeVerdict::regressed));
+  if (summary.rounds < to_bound) return to_bound;
   // Within a tenth of the limit the point estimate itself may fall on either side of it
   // whatever the rounds: no estimate.
   if (std::abs(size - threshold) < 0.1 * threshold) return std::nullopt;
-  const bool towards_unchanged = size < threshold;
   const double c = summary.change;
   // How many times too wide the interval is on the side that must move: both sides for
   // UNCHANGED (each end must come inside the limit on its side of the estimate), the side
@@ -235,14 +242,8 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
   const double n = static_cast<double>(summary.rounds);
   const double rounds = n * std::max(1.0, ratio * ratio);
   if (rounds > 1e7) return std::nullopt;
-  // Undecided now, so at least one more round, and never fewer than the interval that decides
-  // needs to be bounded at all (below them it is the observed range, which may already fit);
-  // 80.000000001 rounds is 80.
-  const std::size_t to_bound = rounds_to_bound(
-      summary, deciding_interval(summary, towards_unchanged ? ChangeVerdict::unchanged
-                                                            : ChangeVerdict::regressed));
-  return std::max({summary.rounds + 1, to_bound,
-                   static_cast<std::size_t>(std::ceil(rounds - 1e-6))});
+  // Undecided now, so at least one more round; 80.000000001 rounds is 80.
+  return std::max(summary.rounds + 1, static_cast<std::size_t>(std::ceil(rounds - 1e-6)));
 }
 
 DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict) {

@@ -19,6 +19,11 @@ bool in_family(const SceneResult& scene) {
   return scene.change && !scene.change->exact && !scene.runs.rounds.empty();
 }
 
+double seconds_per_round(const SceneResult& scene) {
+  const std::size_t rounds = scene.runs.rounds.size();
+  return rounds > 0 ? scene.runs.seconds_spent / static_cast<double>(rounds) : 0.0;
+}
+
 // "(about 180 rounds in all would decide it, 3 min more at this scene's pace, or a quieter
 // runner)", or why no number of rounds would do.
 std::string what_would_decide(const SceneResult& scene, double threshold) {
@@ -29,12 +34,10 @@ std::string what_would_decide(const SceneResult& scene, double threshold) {
                        "budget; a limit below the smallest slowdown that matters decides it)",
                        100 * threshold);
   }
-  const double seconds_per_round =
-      c.rounds > 0 ? scene.runs.seconds_spent / static_cast<double>(c.rounds) : 0.0;
   const std::size_t more = *rounds > c.rounds ? *rounds - c.rounds : 0;
   return fmt::format("(about {} rounds in all would decide it, {} more at this scene's pace, or "
                      "a quieter runner)",
-                     *rounds, duration_text(seconds_per_round * static_cast<double>(more)));
+                     *rounds, duration_text(seconds_per_round(scene) * static_cast<double>(more)));
 }
 
 // The interval that would decide the scene: for an estimate inside the limit the equivalence
@@ -53,9 +56,11 @@ std::string undecided_scene(const SceneResult& scene, double threshold) {
   const ChangeSummary& c = *scene.change;
   const DecidingInterval sequence = deciding_sequence(c, threshold);
   if (const std::size_t needed = rounds_to_bound(c, sequence); c.rounds < needed) {
-    return fmt::format("{} {:+.1f}% after {} rounds, no {} yet (needs {} rounds) {}",
+    return fmt::format("{} {:+.1f}% after {} rounds, no {} yet (it needs {} rounds at least, {} "
+                       "more at this scene's pace)",
                        scene.entry.id, 100 * c.change, c.rounds, interval_name(sequence), needed,
-                       what_would_decide(scene, threshold));
+                       duration_text(seconds_per_round(scene) *
+                                     static_cast<double>(needed - c.rounds)));
   }
   const Interval& i = sequence.interval;
   return fmt::format("{} {:+.1f}% [{:+.1f}%, {:+.1f}%] {} (width {:.1f} points) after {} rounds {}",

@@ -48,6 +48,7 @@ nlohmann::json measure_settings(const MeasureContext& c) {
       {"duet_cpus", c.schedule.duet_cpus},
       {"round_cpus", c.schedule.round_cpus},
       {"baseline_rounds", c.schedule.normalizer_rounds},
+      {"repeats", c.schedule.repeats},
       {"target_relative_half_width", c.stopping.target_relative_half_width},
       {"min_rounds", c.stopping.min_rounds},
       {"max_rounds", c.stopping.max_rounds},

@@ -98,9 +98,36 @@ std::vector<T> rotated(const std::vector<T>& items, std::size_t by) {
   return out;
 }
 
+// The order of a round's runs with each contender `repeats` times: the order, then mirrored
+// (A B C C B A, and A B C again for a third), so each contender's runs sit at mirrored places
+// and no one is always first or always last.
+std::vector<const Contender*> mirrored(const std::vector<const Contender*>& order,
+                                       std::size_t repeats) {
+  std::vector<const Contender*> sequence;
+  for (std::size_t k = 0; k < repeats; ++k) {
+    if (k % 2 == 0) {
+      sequence.insert(sequence.end(), order.begin(), order.end());
+    } else {
+      sequence.insert(sequence.end(), order.rbegin(), order.rend());
+    }
+  }
+  return sequence;
+}
+
+// A round keeps each role's fastest run (by its timing metric: `seconds`).
+void keep_fastest(std::map<std::string, RunRecord>& runs, const std::string& role, RunRecord run) {
+  const auto found = runs.find(role);
+  if (found == runs.end() || run.seconds < found->second.seconds) runs[role] = std::move(run);
+}
+
 void check_options(std::span<const Contender* const> contenders, const ScheduleOptions& options) {
   if (contenders.empty()) throw std::invalid_argument("measure_scene: no contenders");
+  if (options.repeats < 1) throw UsageError("--repeats must be at least 1");
   if (options.kind != ScheduleKind::duet) return;
+  if (options.repeats != 1) {
+    throw UsageError("--repeats applies to the alternate schedule (a duet round runs each "
+                     "contender once)");
+  }
   if (contenders.size() != 2 && contenders.size() != 3) {
     throw UsageError(fmt::format("the duet schedule runs two programs at once (baseline and "
                                  "tracer, or base and head after the baseline); this "
@@ -183,11 +210,18 @@ SceneRuns run_scene(const SceneInput& scene, std::span<const Contender* const> c
               ? roster
               : std::vector<const Contender*>(roster.begin() + 1, roster.end());
       const std::vector<int> cpus = cpus_of_round(options, index);
-      for (const Contender* contender : rotated(present, index)) {
-        RunRecord run = launcher.run(*contender, label, cpus);
-        if (!run.ok) return fail(contender->role(), run, round.runs);
-        round.order.push_back(contender->role());
-        round.runs[contender->role()] = std::move(run);
+      const std::vector<const Contender*> sequence =
+          mirrored(rotated(present, index), options.repeats);
+      for (std::size_t n = 0; n < sequence.size(); ++n) {
+        const Contender& contender = *sequence[n];
+        // A repeat's run directory is "<round>-<k>", so no run overwrites another's files.
+        const std::size_t earlier = static_cast<std::size_t>(
+            std::count(sequence.begin(), sequence.begin() + static_cast<long>(n), &contender));
+        RunRecord run = launcher.run(
+            contender, earlier == 0 ? label : fmt::format("{}-{}", label, earlier + 1), cpus);
+        if (!run.ok) return fail(contender.role(), run, round.runs);
+        round.order.push_back(contender.role());
+        keep_fastest(round.runs, contender.role(), std::move(run));
       }
     }
     out.rounds.push_back(std::move(round));

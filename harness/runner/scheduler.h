@@ -43,6 +43,12 @@ struct ScheduleOptions {
   // rounds of a scene; 0 = every round. compare judges ln(head / base) within a round, where
   // the baseline cancels, so it is timed only as often as the normalized ratio needs.
   std::size_t normalizer_rounds = 0;
+  // Alternate schedule: each contender of a round runs this many times, in a mirrored order
+  // (baseline, base, head, head, base, baseline; the next round rotated), and the round keeps
+  // each one's fastest run. A run is only ever slowed by what else the machine does, so the
+  // fastest of two is much steadier than one (the identity tracer's per-round spread fell from
+  // 1.0-6.9% to 0.2-1.6%); every contender repeats alike, so no ratio is biased by it.
+  std::size_t repeats = 1;
 };
 
 // The CPUs the runs of round `index` (0-based) are pinned to: pin_cpus if given, else one of
@@ -53,11 +59,11 @@ std::vector<int> cpus_of_round(const ScheduleOptions& options, std::size_t index
 bool normalizer_runs_in(const ScheduleOptions& options, std::size_t index);
 
 struct Round {
-  // Roles in the order they ran (the baseline only in the rounds it joined, see
+  // Roles in the order they ran (a role once per run: twice with ScheduleOptions::repeats 2) (the baseline only in the rounds it joined, see
   // ScheduleOptions::normalizer_rounds); in a duet, the pair in CPU order (after the baseline that ran
   // alone before them, with three contenders).
   std::vector<std::string> order;
-  std::map<std::string, RunRecord> runs;  // by role
+  std::map<std::string, RunRecord> runs;  // by role; its fastest run when it repeated
 };
 
 struct SceneRuns {

@@ -182,6 +182,39 @@ TEST_F(SchedulerTest, NormalizerJoinsOnlyTheFirstRoundsAndTheOthersStillAlternat
   EXPECT_EQ(executor_.calls().size(), 3u + 6u + 6u);
 }
 
+TEST_F(SchedulerTest, RepeatsRunEveryContenderInAMirroredOrderAndKeepItsFastestRun) {
+  options_.warmup_runs = 0;
+  options_.normalizer_rounds = 1;
+  options_.repeats = 2;
+  executor_.set_seconds("baseline", {2.0, 1.5});
+  executor_.set_seconds("base", {1.0, 0.8, 0.9, 0.7});
+  executor_.set_seconds("head", {1.2});
+  const SceneRuns runs = measure({&baseline_, &base_, &head_}, stop_after(2));
+  ASSERT_EQ(runs.rounds.size(), 2u);
+  // The baseline repeats too while it joins, so no ratio compares a fastest-of-two with one run.
+  EXPECT_EQ(runs.rounds[0].order, (Roles{"baseline", "base", "head", "head", "base", "baseline"}));
+  EXPECT_EQ(runs.rounds[1].order, (Roles{"head", "base", "base", "head"}));
+  EXPECT_DOUBLE_EQ(runs.rounds[0].runs.at("baseline").seconds, 1.5);
+  EXPECT_DOUBLE_EQ(runs.rounds[0].runs.at("base").seconds, 0.8);
+  EXPECT_DOUBLE_EQ(runs.rounds[1].runs.at("base").seconds, 0.7);
+  EXPECT_DOUBLE_EQ(runs.rounds[1].runs.at("head").seconds, 1.2);
+  EXPECT_EQ(executor_.calls().size(), 6u + 4u);
+  // Each repeat has its own run directory: the kept run is the one whose files are named.
+  EXPECT_NE(runs.rounds[0].runs.at("baseline").log.string().find("round-001-2"), std::string::npos);
+  EXPECT_NE(runs.rounds[0].runs.at("base").log.string().find("round-001-2"), std::string::npos);
+  // A tie keeps the first.
+  EXPECT_NE(runs.rounds[0].runs.at("head").log.string().find("round-001/"), std::string::npos);
+}
+
+TEST_F(SchedulerTest, RepeatsAreForTheAlternateScheduleOnly) {
+  options_.kind = ScheduleKind::duet;
+  options_.repeats = 2;
+  EXPECT_THROW(measure_pair(stop_after(1)), UsageError);
+  options_.kind = ScheduleKind::alternate;
+  options_.repeats = 0;
+  EXPECT_THROW(measure_pair(stop_after(1)), UsageError);
+}
+
 TEST_F(SchedulerTest, SamplesOfRoundsWithoutTheNormalizer) {
   options_.warmup_runs = 0;
   options_.normalizer_rounds = 1;

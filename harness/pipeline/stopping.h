@@ -24,8 +24,8 @@ using SceneVerdict = std::function<bool(const std::vector<Round>& rounds)>;
 StopRule stop_rule(const StoppingPolicy& policy, SceneVerdict verdict);
 
 // `run`: the normalized ratio of `tracer_role` is known to the target precision.
-SceneVerdict ratio_verdict(const StoppingPolicy& policy, const std::string& tracer_role,
-                           const std::string& baseline_role = "baseline");
+SceneVerdict ratio_verdict(const StoppingPolicy& policy, Role tracer_role,
+                           Role baseline_role = Role::baseline);
 
 // The levels of a compare scene's confidence sequences (docs/statistics.md §6b): the decision
 // sequence at `decision_alpha`, the scene's share of the family (measure/family.h); the
@@ -39,8 +39,8 @@ SceneVerdict change_verdict(const StoppingPolicy& policy, const ScenePolicy& sce
                             const SequenceLevels& levels, bool counted = false);
 
 // The rules of the commands: stop_rule() with the verdicts above.
-StopRule ratio_stop_rule(const StoppingPolicy& policy, const std::string& tracer_role,
-                         const std::string& baseline_role = "baseline");
+StopRule ratio_stop_rule(const StoppingPolicy& policy, Role tracer_role,
+                         Role baseline_role = Role::baseline);
 StopRule change_stop_rule(const StoppingPolicy& policy, const ScenePolicy& scene,
                           const SequenceLevels& levels, bool counted = false);
 

@@ -17,7 +17,7 @@
 namespace raygate {
 
 struct TracerSetup {
-  std::string role = "tracer";
+  Role role = Role::tracer;
   Adapter adapter;
   BuildRecord build;                     // build_dir and src_dir come from here
   std::filesystem::path repo_root;       // the worktree

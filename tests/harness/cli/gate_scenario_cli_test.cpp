@@ -115,7 +115,7 @@ TEST_F(GateScenario, WrongShadingFailsOnTheImageNotOnSpeed) {
   for (const SceneResult& scene : document().scenes) {
     bool base_check_failed = false;
     for (const ImageCheck& check : scene.images) {
-      if (check.reference == "base") base_check_failed = check.verdict == ImageVerdict::fail;
+      if (check.reference == ImageReference::base) base_check_failed = check.verdict == ImageVerdict::fail;
     }
     EXPECT_TRUE(base_check_failed) << scene.entry.id;
   }

@@ -149,8 +149,8 @@ TEST_F(NewTracerCli, FirstCompareWithoutGoldensPassesAndSaysSoOnce) {
   ASSERT_EQ(d.scenes.size(), 1u);
   bool head_vs_base = false;
   for (const ImageCheck& check : d.scenes[0].images) {
-    if (check.reference == "base") head_vs_base = check.verdict == ImageVerdict::pass;
-    if (check.reference == "golden") {
+    if (check.reference == ImageReference::base) head_vs_base = check.verdict == ImageVerdict::pass;
+    if (check.reference == ImageReference::golden) {
       EXPECT_EQ(check.verdict, ImageVerdict::missing);
     }
   }

@@ -73,7 +73,7 @@ SceneResult compared(const std::string& id, double change, double lower, double 
                      std::size_t rounds = 10) {
   SceneResult scene;
   scene.entry.id = id;
-  scene.status = "measured";
+  scene.status = SceneStatus::measured;
   scene.change = ChangeSummary{};
   scene.change->change = change;
   scene.change->change_interval = {lower, upper};
@@ -83,7 +83,7 @@ SceneResult compared(const std::string& id, double change, double lower, double 
 
 ResultsDocument compare_document(std::vector<SceneResult> scenes) {
   ResultsDocument document;
-  document.kind = "compare";
+  document.kind = DocumentKind::compare;
   document.complete = true;
   document.scenes = std::move(scenes);
   return document;
@@ -93,7 +93,7 @@ TEST(GateVerdict, TooFewRoundsDecideNothing) {
   // Five rounds cannot give a 95% interval for a median: whatever the numbers, INCONCLUSIVE.
   const GateResult gate = evaluate_gate(
       compare_document({compared("tetra", 0.40, 0.002, 0.45, 5)}), GatePolicy{});
-  EXPECT_EQ(gate.scenes[0].speed, "INCONCLUSIVE");
+  EXPECT_EQ(gate.scenes[0].speed, SpeedVerdict::inconclusive);
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::warn);
   EXPECT_EQ(gate.exit_code, 0);
 }
@@ -104,12 +104,12 @@ TEST(GateVerdict, RegressionFailsWithItsNumbers) {
       GatePolicy{});
   EXPECT_EQ(gate.exit_code, 1);
   ASSERT_EQ(gate.scenes.size(), 2u);
-  EXPECT_EQ(gate.scenes[0].speed, "REGRESSED");
+  EXPECT_EQ(gate.scenes[0].speed, SpeedVerdict::regressed);
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::fail);
   ASSERT_EQ(gate.scenes[0].reasons.size(), 1u);
   EXPECT_NE(gate.scenes[0].reasons[0].find("+7.9% [+6.1%, +9.8%] 95% CI"), std::string::npos)
       << gate.scenes[0].reasons[0];
-  EXPECT_EQ(gate.scenes[1].speed, "UNCHANGED");
+  EXPECT_EQ(gate.scenes[1].speed, SpeedVerdict::unchanged);
   EXPECT_EQ(gate.scenes[1].outcome, GateOutcome::pass);
 }
 
@@ -120,14 +120,14 @@ TEST(GateVerdict, APerSceneLimitDecides) {
   policy.scenes["mount"].reason = "noisy";
   const GateResult gate = evaluate_gate(compare_document({compared("mount", 0.079, 0.061, 0.098)}), policy);
   EXPECT_EQ(gate.exit_code, 0);
-  EXPECT_EQ(gate.scenes[0].speed, "UNCHANGED");
+  EXPECT_EQ(gate.scenes[0].speed, SpeedVerdict::unchanged);
 }
 
 TEST(GateVerdict, InconclusiveWarnsUnlessTheFlagSaysFail) {
   const ResultsDocument document = compare_document({compared("tetra", 0.02, -0.01, 0.05)});
   GatePolicy policy;
   GateResult gate = evaluate_gate(document, policy);
-  EXPECT_EQ(gate.scenes[0].speed, "INCONCLUSIVE");
+  EXPECT_EQ(gate.scenes[0].speed, SpeedVerdict::inconclusive);
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::warn);
   EXPECT_EQ(gate.exit_code, 0);
   policy.fail_on_inconclusive = true;
@@ -139,7 +139,7 @@ TEST(GateVerdict, InconclusiveWarnsUnlessTheFlagSaysFail) {
 SceneResult failed(const std::string& id, const std::string& role, bool base_ran) {
   SceneResult scene;
   scene.entry.id = id;
-  scene.status = "failed";
+  scene.status = SceneStatus::failed;
   RunRecord crash;
   crash.outcome = "killed by signal 6 (ABRT)";
   crash.failure = "tracer killed by signal 6 (ABRT)";
@@ -284,14 +284,14 @@ TEST(GateVerdict, AnUnreadableImageFailsWithItsReason) {
 
 TEST(GateVerdict, ARunIsJudgedOnFailuresAndImagesOnly) {
   ResultsDocument document;
-  document.kind = "run";
+  document.kind = DocumentKind::run;
   document.complete = true;
   SceneResult scene;
   scene.entry.id = "tetra";
-  scene.status = "measured";
+  scene.status = SceneStatus::measured;
   document.scenes.push_back(scene);
   const GateResult gate = evaluate_gate(document, GatePolicy{});
-  EXPECT_EQ(gate.scenes[0].speed, "MEASURED");
+  EXPECT_EQ(gate.scenes[0].speed, SpeedVerdict::measured);
   EXPECT_EQ(gate.exit_code, 0);
 }
 

@@ -58,7 +58,7 @@ std::vector<CompareRound> rounds(std::size_t n, double change, double noise, uns
 SceneResult scene(const std::string& id, const ChangeSummary& change) {
   SceneResult s;
   s.entry = {id, id, 1, 64, 64};
-  s.status = "measured";
+  s.status = SceneStatus::measured;
   s.runs.stop_reason = "decided";
   s.change = change;
   s.ratios["base"] = change.base;
@@ -79,9 +79,9 @@ RevisionRecord revision(const std::string& role, char digit) {
 
 ResultsDocument compare_document(bool simulated) {
   ResultsDocument d;
-  d.kind = "compare";
+  d.kind = DocumentKind::compare;
   d.suite = "ci";
-  d.revisions = {revision("base", 'a'), revision("head", 'b')};
+  d.revisions = {revision(Role::base, 'a'), revision(Role::head, 'b')};
   if (simulated) {
     d.settings = {{"timing_source", "simulated"}, {"tracer_clock", "simulated-cycles"}};
     ChangeSummary counted = summarize_change(rounds(2, 0.00912, 0.0, 1));

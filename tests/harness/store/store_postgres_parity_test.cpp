@@ -44,8 +44,8 @@ std::vector<DocumentSpec> documents() {
     specs.push_back(part);
   }
   DocumentSpec compare = commit(6, 17, 1.1);
-  compare.kind = "compare";
-  compare.roles = {"base", "head"};
+  compare.kind = DocumentKind::compare;
+  compare.roles = {Role::base, Role::head};
   specs.push_back(compare);
   DocumentSpec dirty = commit(3, 14, 0.5);
   dirty.dirty = true;

@@ -12,7 +12,7 @@
 #include <optional>
 
 #include "cli/commands.h"
-#include "cli/progress.h"
+#include "cli/terminal_progress.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
 #include "pipeline/golden_images.h"

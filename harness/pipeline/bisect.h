@@ -17,7 +17,7 @@
 #include "explain/explanation.h"
 #include "measure/change.h"
 #include "pipeline/measure_context.h"
-#include "pipeline/progress.h"
+#include "pipeline/pipeline_io.h"
 #include "runner/baseline_tool.h"
 
 namespace raygate {

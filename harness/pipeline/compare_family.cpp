@@ -8,7 +8,7 @@
 #include "core/format.h"
 #include "measure/confidence_sequence.h"
 #include "measure/family.h"
-#include "pipeline/stopping.h"
+#include "pipeline/stop_rules.h"
 
 namespace raygate {
 

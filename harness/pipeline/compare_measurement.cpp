@@ -12,7 +12,7 @@
 #include "pipeline/compare_family.h"
 #include "pipeline/run_images.h"
 #include "pipeline/explain_stage.h"
-#include "pipeline/stopping.h"
+#include "pipeline/stop_rules.h"
 #include "runner/baseline_contender.h"
 #include "runner/tracer_contender.h"
 

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "core/domain.h"
-#include "pipeline/progress.h"
+#include "pipeline/pipeline_io.h"
 #include "runner/baseline_tool.h"
 #include "runner/suite.h"
 

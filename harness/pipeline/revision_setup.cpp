@@ -7,7 +7,7 @@
 #include "builder/builder.h"
 #include "checkout/repository_identity.h"
 #include "core/error.h"
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 
 namespace raygate {
 

@@ -7,7 +7,7 @@
 
 #include "checkout/repository.h"
 #include "pipeline/measure_context.h"
-#include "pipeline/progress.h"
+#include "pipeline/pipeline_io.h"
 #include "results/results.h"
 #include "runner/tracer_contender.h"
 

@@ -3,7 +3,7 @@
 #include <fmt/core.h>
 
 #include "core/time_text.h"
-#include "pipeline/stopping.h"
+#include "pipeline/stop_rules.h"
 #include "runner/tracer_contender.h"
 
 namespace raygate {

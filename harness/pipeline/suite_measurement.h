@@ -19,7 +19,7 @@
 #include "runner/scheduler.h"
 #include "pipeline/document_output.h"
 #include "pipeline/measure_context.h"
-#include "pipeline/progress.h"
+#include "pipeline/pipeline_io.h"
 #include "results/results.h"
 #include "runner/suite.h"
 

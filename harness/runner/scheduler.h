@@ -5,7 +5,7 @@
 // round start together, each pinned to its own CPU, and the CPUs rotate too; with three
 // (compare), the first (the baseline) runs alone on the round's first CPU, then the other two
 // start together. Rounds continue
-// until a stop rule (pipeline/stopping.h: the one stopping policy) says enough.
+// until a stop rule (pipeline/stop_rules.h: the one stopping policy) says enough.
 //
 // Processes and time come through Executor and Clock, so the loop is tested with fakes.
 #pragma once
@@ -20,7 +20,7 @@
 
 #include "measure/change.h"
 #include "measure/ratio.h"
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 #include "runner/contender.h"
 #include "runner/executor.h"
 #include "runner/run_record.h"

@@ -26,7 +26,7 @@ struct TracerSetup {
   std::optional<TimingMetric> metric;
   std::vector<int> cpus;  // pin runs to these CPUs; empty: no pinning
   // The longest one run may take: the adapter's run timeout bounded by the user's budget
-  // (budgeted_run_seconds, measure/stopping.h); 0: the adapter's alone.
+  // (budgeted_run_seconds, measure/stopping_policy.h); 0: the adapter's alone.
   double run_timeout_seconds = 0.0;
   // The simulator, for an adapter timed by "simulated" (--timing sim); required then.
   std::optional<Cachegrind> cachegrind;

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "checkout/git_fixture.h"
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 #include "cli_support.h"
 #include "results/results.h"
 #include "tracer_fixture.h"

@@ -10,7 +10,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
-#include "pipeline/stopping.h"
+#include "pipeline/stop_rules.h"
 #include "fake_executor.h"
 
 namespace raygate {

@@ -1,6 +1,6 @@
-// The stopping policy bound to a scene's rounds (pipeline/stopping.h): the rules of run and of
+// The stopping policy bound to a scene's rounds (pipeline/stop_rules.h): the rules of run and of
 // compare/bisect are one rule with different verdicts, and a verdict of one's own plugs in.
-#include "pipeline/stopping.h"
+#include "pipeline/stop_rules.h"
 
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-#include "pipeline/stopping.h"
+#include "pipeline/stop_rules.h"
 
 #include <algorithm>
 #include <utility>

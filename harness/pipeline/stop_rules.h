@@ -1,4 +1,4 @@
-// The stopping policy (measure/stopping.h) bound to a scene's rounds: the StopRule the
+// The stopping policy (measure/stopping_policy.h) bound to a scene's rounds: the StopRule the
 // scheduler asks after each round, one per measuring command. Both are should_stop() over the
 // same budget; they differ only in the verdict function, which is the seam for another way of
 // deciding: write a SceneVerdict and pass it to stop_rule(). Also the whole measurement's time
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "gate/policy.h"
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 #include "runner/executor.h"
 #include "runner/scheduler.h"
 

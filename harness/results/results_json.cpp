@@ -10,7 +10,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
-#include "adapter/json_field.h"
+#include "core/json_field.h"
 #include "core/json_reader.h"
 #include "results/json_number.h"
 #include "results/results_check.h"

@@ -104,9 +104,9 @@ void judge_images(const SceneResult& scene, SceneGate& gate, MissingGoldens& mis
       // The base revision is the reference a compare judges head against: a broken base image
       // means the change could not be checked (exit 3), not that the change broke it.
       raise_image(gate, GateOutcome::unmeasured,
-            fmt::format("{}: {} (the base revision's image is broken, so the change could not be "
-                        "checked)",
-                        who, what));
+                  fmt::format("{}: {} (the base revision's image is broken, so the change could "
+                              "not be checked)",
+                              who, what));
     } else if (check.verdict == ImageVerdict::fail || check.verdict == ImageVerdict::warn) {
       raise_image(gate, check.failed() ? GateOutcome::fail : GateOutcome::warn,
                   fmt::format("{}: {}", who, what));

@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include <nlohmann/json_fwd.hpp>
+
 namespace raygate {
 
 // A program a scene's rounds run: raygate's own reference tracer, or a revision of the tracer
@@ -40,5 +42,14 @@ enum class SceneStatus { measured, failed };
 
 std::string_view to_string(SceneStatus status);
 std::optional<SceneStatus> parse_scene_status(std::string_view word);
+
+// No JSON but the words: nlohmann would write an enum as its number and read one back from it,
+// silently. Deleted, so `json{{"role", role}}` does not compile; write to_string(role).
+void to_json(nlohmann::json&, Role) = delete;
+void to_json(nlohmann::json&, DocumentKind) = delete;
+void to_json(nlohmann::json&, SceneStatus) = delete;
+void from_json(const nlohmann::json&, Role&) = delete;
+void from_json(const nlohmann::json&, DocumentKind&) = delete;
+void from_json(const nlohmann::json&, SceneStatus&) = delete;
 
 }  // namespace raygate

@@ -270,7 +270,7 @@ void to_json(json& j, const SceneResult& s) {
            {"change", nullptr},
            {"images", s.images}};
   if (s.runs.failed_run) {
-    j["failure"] = {{"role", s.runs.failed_role}, {"run", *s.runs.failed_run}};
+    j["failure"] = {{"role", word(s.runs.failed_role)}, {"run", *s.runs.failed_run}};
   }
   if (!s.runs.partial_round.empty()) j["partial_round"] = s.runs.partial_round;
   if (s.change) {
@@ -286,7 +286,7 @@ void from_json(const json& j, SceneResult& s) {
   s.runs.stop_reason = j.at("stop_reason").get<std::string>();
   s.runs.seconds_spent = number_at(j, "seconds_spent");
   if (const json& failure = j.at("failure"); !failure.is_null()) {
-    s.runs.failed_role = failure.at("role").get<std::string>();
+    s.runs.failed_role = word_at(failure, "role", parse_role, "failure.role");
     s.runs.failed_run = failure.at("run").get<RunRecord>();
   }
   s.runs.warmup = j.at("warmup").get<std::map<std::string, std::vector<RunRecord>>>();

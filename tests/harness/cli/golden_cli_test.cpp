@@ -194,8 +194,8 @@ TEST_F(NewTracerCli, GarbageImageOfHeadFailsTheChange) {
   // and read freed strings (this test once failed on garbage where the path began).
   const ResultsDocument d = read_results(dir_.path() / "c.json");
   for (const ImageCheck& check : d.scenes.at(0).images) {
-    if (check.role != "head") continue;
-    EXPECT_EQ(check.verdict, ImageVerdict::fail) << check.reference;
+    if (check.role != Role::head) continue;
+    EXPECT_EQ(check.verdict, ImageVerdict::fail) << to_string(check.reference);
     EXPECT_EQ(check.error.find('\n'), std::string::npos) << check.error;
   }
 }

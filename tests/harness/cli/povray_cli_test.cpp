@@ -58,7 +58,7 @@ TEST(PovrayCli, RunMeasuresRatiosAndPassesItsGoldens) {
   for (const char* id : {"tetra", "balls"}) {
     const SceneResult* scene = scene_of(doc, id);
     ASSERT_NE(scene, nullptr) << id;
-    EXPECT_EQ(scene->status, "measured") << id;
+    EXPECT_EQ(scene->status, SceneStatus::measured) << id;
     EXPECT_EQ(scene->runs.rounds.size(), 3u) << id;
     const RatioSummary* ratio = scene->ratio(Role::tracer);
     ASSERT_NE(ratio, nullptr) << id;

@@ -43,7 +43,7 @@ TEST(NoisyImageCheck, ABiasedHeadFailsWithEvidence) {
   const TempDir dir;
   std::mt19937_64 rng(41);
   const ImageCheck check = check_noisy_images(
-      "head", "base", renders(dir.path(), "head", 6, 0.9, rng), renders(dir.path(), "base", 6, 1.0, rng),
+      Role::head, ImageReference::base, renders(dir.path(), "head", 6, 0.9, rng), renders(dir.path(), "base", 6, 1.0, rng),
       noisy_thresholds_for(1), dir.path() / "evidence", "s.head-vs-base");
   EXPECT_EQ(check.verdict, ImageVerdict::fail) << check.error;
   EXPECT_FALSE(check.metrics.has_value());
@@ -57,7 +57,7 @@ TEST(NoisyImageCheck, SameImageOtherSeedsPasses) {
   const TempDir dir;
   std::mt19937_64 rng(43);
   const ImageCheck check = check_noisy_images(
-      "head", "base", renders(dir.path(), "head", 6, 1.0, rng), renders(dir.path(), "base", 6, 1.0, rng),
+      Role::head, ImageReference::base, renders(dir.path(), "head", 6, 1.0, rng), renders(dir.path(), "base", 6, 1.0, rng),
       noisy_thresholds_for(1), dir.path() / "evidence", "s");
   EXPECT_EQ(check.verdict, ImageVerdict::pass) << check.error;
   EXPECT_TRUE(check.evidence.empty());

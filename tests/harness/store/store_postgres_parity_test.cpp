@@ -25,7 +25,7 @@ DocumentSpec commit(int seed, int day, double ratio, const std::string& branch =
   spec.scenes = {{"balls", ratio},
                  {"Gears", ratio * 2, 0.02, 2.0, 0.004, ImageVerdict::warn},
                  {"gears", ratio * 3},
-                 {"tetra", ratio / 3, 0.01, 0.5, 0.0, ImageVerdict::pass, "failed"}};
+                 {"tetra", ratio / 3, 0.01, 0.5, 0.0, ImageVerdict::pass, SceneStatus::failed}};
   return spec;
 }
 

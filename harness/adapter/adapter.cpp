@@ -8,10 +8,10 @@
 #include <nlohmann/json.hpp>
 #include <regex>
 
-#include "adapter/json_field.h"
+#include "core/json_field.h"
 #include "adapter/placeholders.h"
 #include "adapter/reported_time.h"
-#include "adapter/suggest.h"
+#include "core/suggest.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/json_reader.h"

@@ -5,7 +5,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "adapter/suggest.h"
+#include "core/suggest.h"
 
 namespace raygate {
 namespace {

@@ -114,8 +114,9 @@ std::string_view to_string(AlertAction action) {
 }
 
 AlertAction parse_alert_action(std::string_view text) {
-  if (text == "fail") return AlertAction::fail;
-  if (text == "annotate") return AlertAction::annotate;
+  for (const AlertAction action : {AlertAction::fail, AlertAction::annotate}) {
+    if (to_string(action) == text) return action;
+  }
   throw UsageError(fmt::format("alert action '{}': expected fail or annotate", text));
 }
 

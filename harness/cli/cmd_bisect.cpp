@@ -43,7 +43,7 @@ nlohmann::json step_json(const BisectStepRecord& step) {
     j["change"] = step.change->change;
     j["change_interval"] = {step.change->change_interval.lower,
                             step.change->change_interval.upper};
-    j["verdict"] = step.verdict;
+    j["verdict"] = step.verdict ? std::string(to_string(*step.verdict)) : std::string();
     j["rounds"] = step.change->rounds;
   }
   return j;

@@ -9,9 +9,11 @@
 #include <fmt/core.h>
 
 #include <memory>
+#include <optional>
 
 #include "cli/commands.h"
-#include "cli/progress.h"
+#include "cli/terminal_progress.h"
+#include "core/error.h"
 #include "core/exit_codes.h"
 #include "pipeline/golden_images.h"
 
@@ -36,7 +38,11 @@ BaselineGoldens open_goldens(const GoldenArgs& args) {
 BlessFromRun from_run_request(const GoldenArgs& args) {
   BlessFromRun request;
   request.results = std::filesystem::absolute(args.from_run);
-  request.role = args.role;
+  const std::optional<Role> role = parse_role(args.role);
+  if (!role || *role == Role::baseline) {
+    throw UsageError("--role: no such revision role '" + args.role + "' (tracer, base or head)");
+  }
+  request.role = *role;
   request.scene_ids = args.scenes;
   request.golden_dir = args.golden_dir;
   request.baseline = args.baseline;

@@ -4,7 +4,7 @@
 
 #include <cstdlib>
 
-#include "cli/progress.h"
+#include "cli/terminal_progress.h"
 #include "core/error.h"
 
 namespace raygate::cli {

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 #include "pipeline/measure_context.h"
 
 namespace raygate::cli {

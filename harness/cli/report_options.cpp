@@ -7,7 +7,7 @@
 #include <iostream>
 #include <cstring>
 
-#include "cli/progress.h"
+#include "cli/terminal_progress.h"
 #include "core/error.h"
 #include "history/store_trends.h"
 #include "report/reporter.h"

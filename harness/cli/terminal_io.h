@@ -6,8 +6,8 @@
 #include <cstdio>
 
 #include "cli/console.h"
-#include "cli/progress.h"
-#include "pipeline/progress.h"
+#include "cli/terminal_progress.h"
+#include "pipeline/pipeline_io.h"
 #include "runner/executor.h"
 
 namespace raygate::cli {

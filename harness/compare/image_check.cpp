@@ -26,9 +26,10 @@ bool same_settings(const GoldenEntry& golden, const GoldenEntry& rendered) {
 
 // With nothing to compare against, the image is still read: a tracer that exited 0 but wrote
 // an unreadable image, or one with NaN pixels, has failed on it, golden or not.
-ImageCheck without_golden(const std::string& role, const std::filesystem::path& actual,
+ImageCheck without_golden(Role role, const std::filesystem::path& actual,
                           const std::filesystem::path& expected, const std::string& why) {
-  ImageCheck check{role, "golden", actual, expected, ImageVerdict::missing, why, std::nullopt, {}};
+  ImageCheck check{role, ImageReference::golden, actual, expected,
+                   ImageVerdict::missing, why, std::nullopt, {}};
   if (const std::string problem = unreadable_image(actual); !problem.empty()) {
     check.verdict = ImageVerdict::fail;
     check.error = problem;
@@ -57,7 +58,24 @@ std::optional<std::string> broken_reference(const ImageMetrics& m,
 
 }  // namespace
 
-ImageCheck check_image(const std::string& role, const std::string& reference,
+std::string_view to_string(ImageReference reference) {
+  return reference == ImageReference::base ? "base" : "golden";
+}
+
+std::optional<ImageReference> parse_image_reference(std::string_view word) {
+  for (const ImageReference reference : {ImageReference::golden, ImageReference::base}) {
+    if (to_string(reference) == word) return reference;
+  }
+  return std::nullopt;
+}
+
+std::string check_label(const ImageCheck& check, std::string_view between) {
+  std::string label = role_name(check.role);
+  if (check.reference == ImageReference::golden) return label;
+  return label.append(between).append(to_string(check.reference));
+}
+
+ImageCheck check_image(Role role, ImageReference reference,
                        const std::filesystem::path& actual, const std::filesystem::path& expected,
                        const ImageThresholds& thresholds, const std::filesystem::path& evidence_dir,
                        const std::string& stem) {
@@ -114,7 +132,7 @@ std::optional<std::string> no_golden(const std::filesystem::path& golden_dir,
 
 }  // namespace
 
-ImageCheck check_runs_against_golden(const std::string& role,
+ImageCheck check_runs_against_golden(Role role,
                                      const std::vector<std::filesystem::path>& actual,
                                      const std::filesystem::path& golden_dir,
                                      const GoldenManifest& manifest, const GoldenEntry& rendered,
@@ -136,10 +154,10 @@ ImageCheck check_runs_against_golden(const std::string& role,
                               "golden bless --from-run RESULTS.json)");
   }
   return check_noisy_against_stats(role, actual, expected, golden_dir, noise->second, thresholds,
-                                   evidence_dir, id + "." + role + "-vs-golden");
+                                   evidence_dir, id + "." + role_name(role) + "-vs-golden");
 }
 
-ImageCheck check_against_golden(const std::string& role, const std::filesystem::path& actual,
+ImageCheck check_against_golden(Role role, const std::filesystem::path& actual,
                                 const std::filesystem::path& golden_dir,
                                 const GoldenManifest& manifest, const GoldenEntry& rendered,
                                 const ImageThresholds& thresholds,
@@ -165,8 +183,8 @@ ImageCheck check_against_golden(const std::string& role, const std::filesystem::
             "; bless goldens for this suite in a directory of their own (raygate golden bless "
             "--suite SUITE --golden-dir DIR)");
   }
-  return check_image(role, "golden", actual, expected, thresholds, evidence_dir,
-                     id + "." + role + "-vs-golden");
+  return check_image(role, ImageReference::golden, actual, expected, thresholds, evidence_dir,
+                     id + "." + role_name(role) + "-vs-golden");
 }
 
 }  // namespace raygate

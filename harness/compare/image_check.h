@@ -14,12 +14,19 @@
 #include "compare/image_compare.h"
 #include "compare/image_verdict.h"
 #include "compare/noisy_image_compare.h"
+#include "core/domain.h"
 
 namespace raygate {
 
+// What an image was checked against: a blessed golden, or (compare) the base revision's image.
+enum class ImageReference { golden, base };
+
+std::string_view to_string(ImageReference reference);  // "golden", "base"
+std::optional<ImageReference> parse_image_reference(std::string_view word);
+
 struct ImageCheck {
-  std::string role;       // whose image ("tracer", "base", "head")
-  std::string reference;  // "golden" or the role of the reference image ("base")
+  Role role = Role::tracer;  // whose image: tracer, base or head
+  ImageReference reference = ImageReference::golden;
   std::filesystem::path actual;
   std::filesystem::path expected;
   // pass, warn, fail (also: the actual image unreadable or with NaN pixels); missing when
@@ -33,8 +40,12 @@ struct ImageCheck {
   bool failed() const { return verdict == ImageVerdict::fail; }
 };
 
+// Whose image against what, as logs name a check: "tracer" against a golden, else
+// "head<between>base" ("head-vs-base", "head vs base").
+std::string check_label(const ImageCheck& check, std::string_view between);
+
 // Compares `actual` with `expected`; on fail writes evidence into evidence_dir as <stem>.*.png.
-ImageCheck check_image(const std::string& role, const std::string& reference,
+ImageCheck check_image(Role role, ImageReference reference,
                        const std::filesystem::path& actual, const std::filesystem::path& expected,
                        const ImageThresholds& thresholds, const std::filesystem::path& evidence_dir,
                        const std::string& stem);
@@ -46,7 +57,7 @@ ImageCheck check_image(const std::string& role, const std::string& reference,
 // settings, gives verdict missing, saying why; an empty golden set says the same words for
 // every scene ("no goldens in DIR"), so a report says it once. The image is still read: one
 // that is unreadable or has NaN pixels fails all the same.
-ImageCheck check_against_golden(const std::string& role, const std::filesystem::path& actual,
+ImageCheck check_against_golden(Role role, const std::filesystem::path& actual,
                                 const std::filesystem::path& golden_dir,
                                 const GoldenManifest& manifest, const GoldenEntry& rendered,
                                 const ImageThresholds& thresholds,
@@ -55,7 +66,7 @@ ImageCheck check_against_golden(const std::string& role, const std::filesystem::
 // The same for a Monte Carlo tracer (compare/noisy_image_check.h): every run's image of the
 // scene against the golden's statistics. A golden blessed from a single image (no "noise" in
 // the manifest) cannot judge noisy renders: verdict missing, saying how to bless one.
-ImageCheck check_runs_against_golden(const std::string& role,
+ImageCheck check_runs_against_golden(Role role,
                                      const std::vector<std::filesystem::path>& actual,
                                      const std::filesystem::path& golden_dir,
                                      const GoldenManifest& manifest, const GoldenEntry& rendered,

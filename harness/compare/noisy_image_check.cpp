@@ -143,7 +143,7 @@ ImageVerdict to_image_verdict(NoisyVerdict verdict) {
   return ImageVerdict::warn;
 }
 
-ImageCheck check_noisy_images(const std::string& role, const std::string& reference,
+ImageCheck check_noisy_images(Role role, ImageReference reference,
                               const std::vector<std::filesystem::path>& actual,
                               const std::vector<std::filesystem::path>& expected,
                               const NoisyThresholds& thresholds,
@@ -153,7 +153,8 @@ ImageCheck check_noisy_images(const std::string& role, const std::string& refere
                    ImageVerdict::error, {}, std::nullopt, {}};
   if (auto unusable = unusable_actual(check, actual)) return *unusable;
   if (expected.empty()) {
-    check.error = "the " + reference + " revision has no image to compare with";
+    check.error =
+        "the " + std::string(to_string(reference)) + " revision has no image to compare with";
     return check;
   }
   NoisyImageStats expected_stats;
@@ -166,15 +167,16 @@ ImageCheck check_noisy_images(const std::string& role, const std::string& refere
   return judged(check, actual, expected_stats, thresholds, evidence_dir, stem);
 }
 
-ImageCheck check_noisy_against_stats(const std::string& role,
+ImageCheck check_noisy_against_stats(Role role,
                                      const std::vector<std::filesystem::path>& actual,
                                      const std::filesystem::path& mean_file,
                                      const std::filesystem::path& golden_dir,
                                      const GoldenNoise& noise, const NoisyThresholds& thresholds,
                                      const std::filesystem::path& evidence_dir,
                                      const std::string& stem) {
-  ImageCheck check{role, "golden", actual.empty() ? std::filesystem::path() : actual.front(),
-                   mean_file, ImageVerdict::error, {}, std::nullopt, {}};
+  ImageCheck check{role, ImageReference::golden,
+                   actual.empty() ? std::filesystem::path() : actual.front(), mean_file,
+                   ImageVerdict::error, {}, std::nullopt, {}};
   if (auto unusable = unusable_actual(check, actual)) return *unusable;
   NoisyImageStats golden;
   try {

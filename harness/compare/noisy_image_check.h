@@ -27,14 +27,14 @@ ImageVerdict to_image_verdict(NoisyVerdict verdict);
 // evidence into evidence_dir: <stem>.actual.png and <stem>.expected.png (the runs' means) and
 // <stem>.tiles.png (the mean difference x 16, biased tiles outlined red where actual is brighter
 // and blue where darker).
-ImageCheck check_noisy_images(const std::string& role, const std::string& reference,
+ImageCheck check_noisy_images(Role role, ImageReference reference,
                               const std::vector<std::filesystem::path>& actual,
                               const std::vector<std::filesystem::path>& expected,
                               const NoisyThresholds& thresholds,
                               const std::filesystem::path& evidence_dir, const std::string& stem);
 
 // Against the golden statistics `noise` (whose mean image is `mean_file`).
-ImageCheck check_noisy_against_stats(const std::string& role,
+ImageCheck check_noisy_against_stats(Role role,
                                      const std::vector<std::filesystem::path>& actual,
                                      const std::filesystem::path& mean_file,
                                      const std::filesystem::path& golden_dir,

@@ -242,11 +242,11 @@ DocumentRatios document_ratios(const ResultsDocument& document, const std::strin
   d.label = label;
   d.path = path;
   d.kind = document.kind;
-  d.role = document.kind == "compare" ? "head" : "tracer";
+  d.role = primary_role(document.kind);
   const RevisionRecord* revision = document.revision(d.role);
   if (revision == nullptr) {
     throw UsageError(fmt::format("{}: a {} document without a '{}' revision (revisions[].role)",
-                                 path, document.kind, d.role));
+                                 path, to_string(document.kind), to_string(d.role)));
   }
   d.hostname = machine_field(document.machine, "hostname", "unknown host");
   d.cpu_model = machine_field(document.machine, "cpu_model", "unknown CPU");
@@ -263,7 +263,7 @@ DocumentRatios document_ratios(const ResultsDocument& document, const std::strin
   d.adapter_hash = revision->adapter_hash;
   for (const SceneResult& scene : document.scenes) {
     const RatioSummary* ratio = scene.ratio(d.role);
-    if (scene.status != "measured" || ratio == nullptr) continue;
+    if (scene.status != SceneStatus::measured || ratio == nullptr) continue;
     if (!(ratio->ratio > 0.0) || !std::isfinite(ratio->ratio)) continue;
     d.scenes[scene.entry.id] = {ratio->ratio, ratio->ratio_interval, scene.scene_sha256};
     d.scene_order.push_back(scene.entry.id);

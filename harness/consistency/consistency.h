@@ -38,8 +38,8 @@ struct SceneRatio {
 struct DocumentRatios {
   std::string label;  // "A", "B", ...
   std::string path;   // as the user named it
-  std::string kind;   // "run" or "compare"
-  std::string role;   // the revision whose ratios are used: "tracer" (run) or "head" (compare)
+  DocumentKind kind = DocumentKind::run;
+  Role role = Role::tracer;  // the revision whose ratios are used: tracer (run), head (compare)
   std::string hostname;
   std::string cpu_model;
   std::string baseline_version;

@@ -24,7 +24,7 @@ std::string labels(const ConsistencyResult& result, const std::vector<std::size_
 
 std::string document_line(const DocumentRatios& d) {
   return fmt::format("{}  {}  {} ({})  tracer {} {}  baseline {} ({})", d.path, d.hostname,
-                     d.cpu_model, d.kind == "compare" ? "compare, head" : "run", d.adapter_name,
+                     d.cpu_model, is_compare(d.kind) ? "compare, head" : "run", d.adapter_name,
                      d.tracer_short_sha, d.baseline_version,
                      d.baseline_source_sha256.substr(0, 12));
 }
@@ -101,8 +101,8 @@ json consistency_json(const ConsistencyResult& result) {
   for (const DocumentRatios& d : result.documents) {
     documents.push_back({{"label", d.label},
                          {"path", d.path},
-                         {"kind", d.kind},
-                         {"role", d.role},
+                         {"kind", std::string(to_string(d.kind))},
+                         {"role", std::string(to_string(d.role))},
                          {"hostname", d.hostname},
                          {"cpu_model", d.cpu_model},
                          {"baseline",

@@ -9,8 +9,8 @@
 namespace raygate {
 namespace {
 
-const RunRecord* round_run(const Round& round, const std::string& role) {
-  const auto found = round.runs.find(role);
+const RunRecord* round_run(const Round& round, Role role) {
+  const auto found = round.runs.find(role_name(role));
   return found == round.runs.end() ? nullptr : &found->second;
 }
 
@@ -19,7 +19,7 @@ std::filesystem::path profile_dir(const RunRecord& run) {
   return cachegrind_dir(run.log.parent_path());
 }
 
-double median_wall(const SceneRuns& runs, const std::string& role) {
+double median_wall(const SceneRuns& runs, Role role) {
   std::vector<double> walls;
   for (const Round& round : runs.rounds) {
     if (const RunRecord* run = round_run(round, role); run != nullptr) {
@@ -44,7 +44,7 @@ FunctionProfile profile_once(const SceneInput& scene, const Contender& contender
   if (spec.timeout.count() > 0) spec.timeout *= 100;
   const ProcessResult result = executor.run(spec);
   if (!result.succeeded()) {
-    throw InfraError("--explain: " + contender.role() + " under cachegrind " + result.describe() +
+    throw InfraError("--explain: " + contender.name() + " under cachegrind " + result.describe() +
                      " (log: " + spec.stdout_path.string() + ")");
   }
   return read_function_profiles(cachegrind_dir(run_dir));
@@ -60,8 +60,8 @@ std::string profiler_name(const Cachegrind& cachegrind) {
 std::optional<Explanation> explain_simulated_runs(const SceneRuns& runs,
                                                   const Cachegrind& cachegrind) {
   for (const Round& round : runs.rounds) {
-    const RunRecord* base = round_run(round, "base");
-    const RunRecord* head = round_run(round, "head");
+    const RunRecord* base = round_run(round, Role::base);
+    const RunRecord* head = round_run(round, Role::head);
     if (base == nullptr || head == nullptr || !base->ok || !head->ok) continue;
     Explanation e = explain_change(read_function_profiles(profile_dir(*base)),
                                    read_function_profiles(profile_dir(*head)));
@@ -78,9 +78,9 @@ Explanation explain_by_profiling(const SceneInput& scene, const Contender& base,
                                  double native_seconds) {
   const auto started = std::chrono::steady_clock::now();
   const FunctionProfile base_profile =
-      profile_once(scene, base, cachegrind, dir / "base", executor);
+      profile_once(scene, base, cachegrind, dir / base.name(), executor);
   const FunctionProfile head_profile =
-      profile_once(scene, head, cachegrind, dir / "head", executor);
+      profile_once(scene, head, cachegrind, dir / head.name(), executor);
   Explanation e = explain_change(base_profile, head_profile);
   e.source = ExplainSource::explain_runs;
   e.profiler = profiler_name(cachegrind);
@@ -91,7 +91,7 @@ Explanation explain_by_profiling(const SceneInput& scene, const Contender& base,
 }
 
 double native_pair_seconds(const SceneRuns& runs) {
-  return median_wall(runs, "base") + median_wall(runs, "head");
+  return median_wall(runs, Role::base) + median_wall(runs, Role::head);
 }
 
 }  // namespace raygate

@@ -25,12 +25,13 @@ std::vector<SceneGate> judge_growth(const ResultsDocument& document, const GateP
     change.verdict = judge_exponent(change);
     SceneGate gate;
     gate.id = "scaling:" + family.family;
-    gate.speed = std::string(to_string(change.verdict));
+    gate.speed = speed_verdict(change.verdict);
     if (change.verdict == ChangeVerdict::regressed) {
       gate.outcome = GateOutcome::fail;
     } else if (change.verdict == ChangeVerdict::inconclusive) {
       gate.outcome = policy.fail_on_inconclusive ? GateOutcome::fail : GateOutcome::warn;
     }
+    gate.speed_outcome = gate.outcome;
     if (gate.outcome != GateOutcome::pass) {
       gate.reasons.push_back(fmt::format("{} growth: {}", family.family,
                                          describe_change(family.family, change)));

@@ -9,10 +9,10 @@
 
 namespace raygate {
 
-std::vector<long> own_peaks_kib(const SceneRuns& runs, const std::string& role) {
+std::vector<long> own_peaks_kib(const SceneRuns& runs, Role role) {
   std::vector<long> peaks;
   for (const Round& round : runs.rounds) {
-    const auto found = round.runs.find(role);
+    const auto found = round.runs.find(role_name(role));
     if (found == round.runs.end()) continue;
     const RunRecord& run = found->second;
     if (run.ok && run.max_rss_own && run.max_rss_kib > 0) peaks.push_back(run.max_rss_kib);
@@ -20,7 +20,7 @@ std::vector<long> own_peaks_kib(const SceneRuns& runs, const std::string& role) 
   return peaks;
 }
 
-std::optional<double> median_peak_kib(const SceneRuns& runs, const std::string& role) {
+std::optional<double> median_peak_kib(const SceneRuns& runs, Role role) {
   std::vector<long> peaks = own_peaks_kib(runs, role);
   if (peaks.empty()) return std::nullopt;
   // The same median as the summary's: a summary of the role against itself.
@@ -29,7 +29,8 @@ std::optional<double> median_peak_kib(const SceneRuns& runs, const std::string& 
 
 std::optional<MemorySummary> scene_memory(const SceneResult& scene) {
   if (!scene.change || scene.runs.failed()) return std::nullopt;
-  return summarize_memory(own_peaks_kib(scene.runs, "base"), own_peaks_kib(scene.runs, "head"));
+  return summarize_memory(own_peaks_kib(scene.runs, Role::base),
+                          own_peaks_kib(scene.runs, Role::head));
 }
 
 std::optional<MemoryJudgement> judge_scene_memory(const SceneResult& scene,

@@ -14,10 +14,10 @@
 namespace raygate {
 
 // The peaks (KiB) of `role`'s runs in the scene's complete rounds that are its own.
-std::vector<long> own_peaks_kib(const SceneRuns& runs, const std::string& role);
+std::vector<long> own_peaks_kib(const SceneRuns& runs, Role role);
 
 // The median own peak of `role`; nullopt when it has none.
-std::optional<double> median_peak_kib(const SceneRuns& runs, const std::string& role);
+std::optional<double> median_peak_kib(const SceneRuns& runs, Role role);
 
 // head against base; nullopt for a run, a failed scene, or a side without own peaks.
 std::optional<MemorySummary> scene_memory(const SceneResult& scene);

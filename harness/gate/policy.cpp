@@ -2,7 +2,7 @@
 
 #include <fmt/core.h>
 
-#include "adapter/json_field.h"
+#include "core/json_field.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/json_reader.h"

@@ -14,41 +14,54 @@ namespace raygate {
 
 namespace {
 
-void raise(SceneGate& gate, GateOutcome outcome, std::string reason) {
+// `part` is the scene's speed_outcome or image_outcome (or nullptr: memory, which has none of
+// its own); the scene's outcome is the worst of everything raised.
+void raise(SceneGate& gate, GateOutcome* part, GateOutcome outcome, std::string reason) {
   gate.outcome = std::max(gate.outcome, outcome);
+  if (part != nullptr) *part = std::max(*part, outcome);
   gate.reasons.push_back(std::move(reason));
+}
+
+void raise_speed(SceneGate& gate, GateOutcome outcome, std::string reason) {
+  raise(gate, &gate.speed_outcome, outcome, std::move(reason));
+}
+
+void raise_image(SceneGate& gate, GateOutcome outcome, std::string reason) {
+  raise(gate, &gate.image_outcome, outcome, std::move(reason));
 }
 
 // A crash of head where base ran is the change's doing; anything else failing is not.
 void judge_failure(const ResultsDocument& document, const SceneResult& scene, SceneGate& gate) {
   const RunRecord& run = *scene.runs.failed_run;
-  gate.speed = "FAILED";
-  const std::string what = fmt::format("{} {}: {} (log: {})", scene.runs.failed_role,
+  gate.speed = SpeedVerdict::failed;
+  const std::string what = fmt::format("{} {}: {} (log: {})", to_string(scene.runs.failed_role),
                                        run.outcome, run.failure, run.log.string());
-  const bool head_only = document.kind == "compare" && scene.runs.failed_role == "head" &&
-                         scene.runs.first_run("base") != nullptr;
-  raise(gate, head_only ? GateOutcome::fail : GateOutcome::unmeasured,
-        head_only ? "head failed where base ran: " + what : what);
+  const bool head_only = is_compare(document.kind) && scene.runs.failed_role == Role::head &&
+                         scene.runs.first_run(Role::base) != nullptr;
+  raise_speed(gate, head_only ? GateOutcome::fail : GateOutcome::unmeasured,
+              head_only ? "head failed where base ran: " + what : what);
 }
 
 void judge_speed(const SceneResult& scene, const ScenePolicy& policy, bool fail_on_inconclusive,
                  SceneGate& gate) {
   if (!scene.change) {
-    gate.speed = "MEASURED";
+    gate.speed = SpeedVerdict::measured;
     return;
   }
   const ChangeSummary& change = *scene.change;
   const ChangeVerdict verdict = classify_change(change, policy.max_slowdown);
-  gate.speed = std::string(to_string(verdict));
+  gate.speed = speed_verdict(verdict);
   // The same words as the reports' change column (measure/change.h change_with_interval).
   const std::string numbers = fmt::format(
       "head vs base {}, ratio {:.3f} -> {:.3f}, {} rounds, limit {}",
       change_with_interval(change, verdict), change.base.ratio, change.head.ratio, change.rounds,
       signed_percent(policy.max_slowdown));
-  if (verdict == ChangeVerdict::regressed) raise(gate, GateOutcome::fail, "slower: " + numbers);
+  if (verdict == ChangeVerdict::regressed) {
+    raise_speed(gate, GateOutcome::fail, "slower: " + numbers);
+  }
   if (verdict == ChangeVerdict::inconclusive) {
-    raise(gate, fail_on_inconclusive ? GateOutcome::fail : GateOutcome::warn,
-          "inconclusive: " + numbers);
+    raise_speed(gate, fail_on_inconclusive ? GateOutcome::fail : GateOutcome::warn,
+                "inconclusive: " + numbers);
   }
 }
 
@@ -59,9 +72,9 @@ void judge_memory(const SceneResult& scene, const ScenePolicy& policy, bool fail
   if (!judged) return;
   gate.memory = judged->verdict;
   if (judged->verdict == ChangeVerdict::regressed) {
-    raise(gate, GateOutcome::fail, "more memory: " + describe_memory(*judged));
+    raise(gate, nullptr, GateOutcome::fail, "more memory: " + describe_memory(*judged));
   } else if (judged->verdict == ChangeVerdict::inconclusive) {
-    raise(gate, fail_on_inconclusive ? GateOutcome::fail : GateOutcome::warn,
+    raise(gate, nullptr, fail_on_inconclusive ? GateOutcome::fail : GateOutcome::warn,
           "memory inconclusive: " + describe_memory(*judged));
   }
 }
@@ -83,23 +96,24 @@ void judge_images(const SceneResult& scene, SceneGate& gate, MissingGoldens& mis
   for (const ImageCheck& check : scene.images) {
     // The enum's order is the verdicts' rank (compare/image_verdict.h).
     gate.image = std::max(gate.image.value_or(check.verdict), check.verdict);
-    const std::string who = fmt::format("image {} vs {}", check.role, check.reference);
+    const std::string who =
+        fmt::format("image {} vs {}", to_string(check.role), to_string(check.reference));
     // A failed image without metrics could not be read, or is broken in a way its error says.
     const std::string what = check.metrics ? summarize(*check.metrics) : check.error;
-    if (check.failed() && check.role == "base") {
+    if (check.failed() && check.role == Role::base) {
       // The base revision is the reference a compare judges head against: a broken base image
       // means the change could not be checked (exit 3), not that the change broke it.
-      raise(gate, GateOutcome::unmeasured,
-            fmt::format("{}: {} (the base revision's image is broken, so the change could not be "
-                        "checked)",
-                        who, what));
+      raise_image(gate, GateOutcome::unmeasured,
+                  fmt::format("{}: {} (the base revision's image is broken, so the change could "
+                              "not be checked)",
+                              who, what));
     } else if (check.verdict == ImageVerdict::fail || check.verdict == ImageVerdict::warn) {
-      raise(gate, check.failed() ? GateOutcome::fail : GateOutcome::warn,
-            fmt::format("{}: {}", who, what));
+      raise_image(gate, check.failed() ? GateOutcome::fail : GateOutcome::warn,
+                  fmt::format("{}: {}", who, what));
     } else if (check.verdict == ImageVerdict::missing) {
       count_missing(missing, check.error);  // not the scene's fault: a note for the document
     } else if (check.verdict == ImageVerdict::error) {
-      raise(gate, GateOutcome::unmeasured, fmt::format("{}: {}", who, check.error));
+      raise_image(gate, GateOutcome::unmeasured, fmt::format("{}: {}", who, check.error));
     }
   }
 }
@@ -107,7 +121,7 @@ void judge_images(const SceneResult& scene, SceneGate& gate, MissingGoldens& mis
 // One note per distinct reason, with how to get goldens: look at the images first, then bless.
 std::vector<std::string> missing_golden_notes(const MissingGoldens& missing,
                                               const ResultsDocument& document) {
-  const std::string role = document.kind == "compare" ? " --role head" : "";
+  const std::string role = is_compare(document.kind) ? " --role head" : "";
   std::vector<std::string> notes;
   for (const auto& [why, checks] : missing) {
     notes.push_back(fmt::format(
@@ -166,6 +180,40 @@ GateResult evaluate_gate(const ResultsDocument& document, const GatePolicy& poli
     result.exit_code = to_int(ExitCode::pass);
   }
   return result;
+}
+
+std::string_view to_string(SpeedVerdict verdict) {
+  switch (verdict) {
+    case SpeedVerdict::measured: return "MEASURED";
+    case SpeedVerdict::failed: return "FAILED";
+    case SpeedVerdict::unchanged: return to_string(ChangeVerdict::unchanged);
+    case SpeedVerdict::improved: return to_string(ChangeVerdict::improved);
+    case SpeedVerdict::regressed: return to_string(ChangeVerdict::regressed);
+    case SpeedVerdict::inconclusive: return to_string(ChangeVerdict::inconclusive);
+  }
+  return "FAILED";
+}
+
+SpeedVerdict speed_verdict(ChangeVerdict verdict) {
+  switch (verdict) {
+    case ChangeVerdict::unchanged: return SpeedVerdict::unchanged;
+    case ChangeVerdict::improved: return SpeedVerdict::improved;
+    case ChangeVerdict::regressed: return SpeedVerdict::regressed;
+    case ChangeVerdict::inconclusive: return SpeedVerdict::inconclusive;
+  }
+  return SpeedVerdict::inconclusive;
+}
+
+std::optional<ChangeVerdict> change_verdict_of(SpeedVerdict verdict) {
+  switch (verdict) {
+    case SpeedVerdict::unchanged: return ChangeVerdict::unchanged;
+    case SpeedVerdict::improved: return ChangeVerdict::improved;
+    case SpeedVerdict::regressed: return ChangeVerdict::regressed;
+    case SpeedVerdict::inconclusive: return ChangeVerdict::inconclusive;
+    case SpeedVerdict::measured:
+    case SpeedVerdict::failed: break;
+  }
+  return std::nullopt;
 }
 
 std::string_view to_string(GateOutcome outcome) {

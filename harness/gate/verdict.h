@@ -21,10 +21,24 @@ enum class GateOutcome {
                  // where base ran: exit 1 (a found regression outranks what could not be measured)
 };
 
+// What the gate made of a scene's time: the change's verdict under the policy (compare), measured
+// (a run: nothing to judge against), or failed (a run crashed, so there is no time).
+enum class SpeedVerdict { measured, unchanged, improved, regressed, inconclusive, failed };
+
+// "MEASURED", "UNCHANGED", ..., as the reports and JSON print it (the change verdicts' words).
+std::string_view to_string(SpeedVerdict verdict);
+SpeedVerdict speed_verdict(ChangeVerdict verdict);
+// The change verdict the speed verdict is; nullopt for measured and failed.
+std::optional<ChangeVerdict> change_verdict_of(SpeedVerdict verdict);
+
 struct SceneGate {
   std::string id;
-  std::string speed;  // REGRESSED, IMPROVED, UNCHANGED, INCONCLUSIVE; MEASURED for a run; FAILED
+  SpeedVerdict speed = SpeedVerdict::measured;
+  // What the speed part (time, or a crash) and the image part say against the scene, apart, for
+  // the reports' columns and JUnit; `outcome` is the worst of them and memory's.
+  GateOutcome speed_outcome = GateOutcome::pass;
   std::optional<ImageVerdict> image;  // the worst image verdict; nullopt when none was checked
+  GateOutcome image_outcome = GateOutcome::pass;
   // Peak memory head vs base (gate/memory_gate.h); nullopt for a run, or without own peaks.
   std::optional<ChangeVerdict> memory;
   GateOutcome outcome = GateOutcome::pass;

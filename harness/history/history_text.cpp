@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "compare/image_verdict.h"
+#include "core/domain.h"
 #include "report/report_model.h"
 
 namespace raygate {
@@ -36,7 +37,9 @@ std::string date_of(const HistoryRow& row) {
 }
 
 std::string ratio_cell(const HistoryRow& row) {
-  if (!row.ratio) return row.status == "failed" ? "failed" : "-";
+  if (!row.ratio) {
+    return parse_scene_status(row.status) == SceneStatus::failed ? row.status : std::string("-");
+  }
   if (!row.ratio_lower || !row.ratio_upper) return fmt::format("{:.3f}", *row.ratio);
   const double half_width = (*row.ratio_upper - *row.ratio_lower) / 2.0 / *row.ratio;
   return fmt::format("{:.3f} ±{:.1f}%", *row.ratio, half_width * 100.0);

@@ -6,6 +6,9 @@
 
 #include <set>
 
+#include "compare/image_verdict.h"
+#include "core/domain.h"
+
 namespace raygate {
 
 HistoryView make_history_view(const std::vector<HistoryRow>& measurements,
@@ -52,7 +55,7 @@ TrendPoint trend_point(const HistoryRow& row) {
     point.note = fmt::format("image max error {:.4f} ({})", *row.image_max_error,
                              row.image_verdict);
   }
-  point.flagged = row.image_verdict == "fail";
+  point.flagged = parse_image_verdict(row.image_verdict) == ImageVerdict::fail;
   return point;
 }
 

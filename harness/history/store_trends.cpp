@@ -64,8 +64,8 @@ StoreTrends trends_from_store(const std::filesystem::path& store, const ResultsD
   if (store.empty() || (!team_store && !std::filesystem::exists(store))) return {};
   // The document's own series, scene by scene: another tracer's, adapter's or setting's history
   // is not this one's trend.
-  const RevisionRecord* measured = document.revision("tracer");
-  if (measured == nullptr) measured = document.revision("head");
+  const RevisionRecord* measured = document.revision(Role::tracer);
+  if (measured == nullptr) measured = document.revision(Role::head);
   if (measured == nullptr) return {};
   std::map<std::string, std::string> wanted_series;  // scene id -> series id
   for (const SceneResult& scene : document.scenes) {

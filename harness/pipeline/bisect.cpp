@@ -46,12 +46,12 @@ struct Bisector {
     }
     const std::string repository = request.repository.location();
     if (!good_built) {
-      good_built = prepare_revision("base", repository, good, context,
+      good_built = prepare_revision(Role::base, repository, good, context,
                                     request.baseline.source_hash(), context.jobs, io.progress);
     }
     const MeasuredDocument measured = measure_prepared_compare(
         {context, request.baseline, repository, good, tree, {}}, *good_built,
-        prepared_revision("head", repository, tree, context, build), io);
+        prepared_revision(Role::head, repository, tree, context, build), io);
     const SceneResult& scene = measured.document.scenes.front();
     if (scene.runs.failed()) {
       io.progress.line(fmt::format("  {} {}: could not be measured ({}), skipped",
@@ -59,7 +59,7 @@ struct Bisector {
                                    scene.runs.failed_run->failure));
       return {candidate, BisectStep::skipped,
               "could not be measured: " + scene.runs.failed_run->failure, scene.change,
-              scene.change_verdict, {}};
+              verdict_of(scene), {}};
     }
     const bool bad =
         request.metric == BisectMetric::image ? image_failed(scene) : speed_regressed(scene);
@@ -75,7 +75,7 @@ struct Bisector {
       }
     }
     return {candidate, bad ? BisectStep::bad : BisectStep::good, {}, scene.change,
-            scene.change_verdict, scene.explanation};
+            verdict_of(scene), scene.explanation};
   }
 
   bool speed_regressed(const SceneResult& scene) const {
@@ -88,9 +88,14 @@ struct Bisector {
            (verdict == ChangeVerdict::inconclusive && scene.change->change > limit);
   }
 
+  static std::optional<ChangeVerdict> verdict_of(const SceneResult& scene) {
+    if (!scene.change) return std::nullopt;
+    return scene.change_verdict;
+  }
+
   static bool image_failed(const SceneResult& scene) {
     for (const ImageCheck& check : scene.images) {
-      if (check.reference == "base" && check.failed()) return true;
+      if (check.reference == ImageReference::base && check.failed()) return true;
     }
     return false;
   }
@@ -99,7 +104,7 @@ struct Bisector {
     const ChangeSummary& c = *scene.change;
     return fmt::format("{:+.1f}% [{:+.1f}%, {:+.1f}%] {}", 100 * c.change,
                        100 * c.change_interval.lower, 100 * c.change_interval.upper,
-                       scene.change_verdict);
+                       to_string(scene.change_verdict));
   }
 };
 

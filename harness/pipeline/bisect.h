@@ -17,7 +17,7 @@
 #include "explain/explanation.h"
 #include "measure/change.h"
 #include "pipeline/measure_context.h"
-#include "pipeline/progress.h"
+#include "pipeline/pipeline_io.h"
 #include "runner/baseline_tool.h"
 
 namespace raygate {
@@ -43,7 +43,7 @@ struct BisectStepRecord {
   BisectStep step = BisectStep::skipped;
   std::string reason;                  // skipped: why
   std::optional<ChangeSummary> change;  // measured: head (the candidate) against the good end
-  std::string verdict;                 // of that change
+  std::optional<ChangeVerdict> verdict;  // of that change
   // Where that change's time went (sim mode, or --explain; explain/explanation.h), when the
   // step REGRESSED: the culprit's is what bisect ends with.
   std::optional<Explanation> explanation;

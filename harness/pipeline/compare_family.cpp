@@ -8,7 +8,7 @@
 #include "core/format.h"
 #include "measure/confidence_sequence.h"
 #include "measure/family.h"
-#include "pipeline/stopping.h"
+#include "pipeline/stop_rules.h"
 
 namespace raygate {
 
@@ -101,7 +101,7 @@ std::vector<std::string> apply_family_control(ResultsDocument& document, const G
     const ScenePolicy& p = policy.for_scene(scene.entry.id);
     scene.change = summarize_change(compare_samples(scene.runs.rounds), change_bootstrap(p),
                                     scene_levels(p, alphas[i]));
-    scene.change_verdict = std::string(to_string(classify_change(*scene.change, p.max_slowdown)));
+    scene.change_verdict = classify_change(*scene.change, p.max_slowdown);
     changed.push_back(scene.entry.id);
   }
   return changed;
@@ -110,7 +110,7 @@ std::vector<std::string> apply_family_control(ResultsDocument& document, const G
 std::string undecided_line(const ResultsDocument& document, const GatePolicy& policy) {
   std::string line;
   for (const SceneResult& scene : document.scenes) {
-    if (!scene.change || scene.change_verdict != to_string(ChangeVerdict::inconclusive)) continue;
+    if (!scene.change || scene.change_verdict != ChangeVerdict::inconclusive) continue;
     line += (line.empty() ? "" : "; ") +
             undecided_scene(scene, policy.for_scene(scene.entry.id).max_slowdown);
   }

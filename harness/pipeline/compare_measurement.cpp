@@ -13,7 +13,7 @@
 #include "pipeline/compare_family.h"
 #include "pipeline/run_images.h"
 #include "pipeline/explain_stage.h"
-#include "pipeline/stopping.h"
+#include "pipeline/stop_rules.h"
 #include "runner/baseline_contender.h"
 #include "runner/tracer_contender.h"
 
@@ -24,8 +24,8 @@ namespace {
 // A Monte Carlo tracer's images: every run of head against every run of base, within noise.
 ImageCheck check_noisy_change(const SceneResult& scene, std::size_t family_size,
                               const std::filesystem::path& evidence_dir) {
-  return check_noisy_images("head", "base", run_images(scene.runs, "head"),
-                            run_images(scene.runs, "base"), noisy_thresholds_for(family_size),
+  return check_noisy_images(Role::head, ImageReference::base, run_images(scene.runs, Role::head),
+                            run_images(scene.runs, Role::base), noisy_thresholds_for(family_size),
                             evidence_dir, scene.entry.id + ".head-vs-base");
 }
 
@@ -36,12 +36,11 @@ void judge_change(SceneResult& scene, const GatePolicy& gate_policy, double alph
   const ScenePolicy& policy = gate_policy.for_scene(scene.entry.id);
   scene.change = measured_change(compare_samples(scene.runs.rounds), change_bootstrap(policy),
                                  counted, scene_levels(policy, alpha));
-  scene.change_verdict =
-      std::string(to_string(classify_change(*scene.change, policy.max_slowdown)));
+  scene.change_verdict = classify_change(*scene.change, policy.max_slowdown);
   // The document's ratios are the change's: head's through the change (ratio_through_change).
   if (scene.change->base.rounds > 0) {
-    scene.ratios["base"] = scene.change->base;
-    scene.ratios["head"] = scene.change->head;
+    scene.ratios[role_name(Role::base)] = scene.change->base;
+    scene.ratios[role_name(Role::head)] = scene.change->head;
   }
 }
 
@@ -62,13 +61,14 @@ void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, dou
                           std::optional<std::size_t> noisy_family) {
   judge_change(scene, gate_policy, alpha, counted);
   const ScenePolicy& policy = gate_policy.for_scene(scene.entry.id);
-  const RunRecord* base = scene.runs.first_run("base");
-  const RunRecord* head = scene.runs.first_run("head");
+  const RunRecord* base = scene.runs.first_run(Role::base);
+  const RunRecord* head = scene.runs.first_run(Role::head);
   if (base != nullptr && head != nullptr && noisy_family) {
     scene.images.push_back(check_noisy_change(scene, *noisy_family, evidence_dir));
   } else if (base != nullptr && head != nullptr) {
-    scene.images.push_back(check_image("head", "base", head->image, base->image, policy.image,
-                                       evidence_dir, scene.entry.id + ".head-vs-base"));
+    scene.images.push_back(check_image(Role::head, ImageReference::base, head->image,
+                                       base->image, policy.image, evidence_dir,
+                                       scene.entry.id + ".head-vs-base"));
   }
 }
 
@@ -108,9 +108,9 @@ MeasuredDocument measure_compare(const CompareRequest& request, PipelineIo& io) 
   require_run_program(context.adapter, base_build, request.base.path, context.tools.data_root);
   require_run_program(context.adapter, head_build, request.head.path, context.tools.data_root);
   const PreparedRevision base =
-      prepared_revision("base", request.repository, request.base, context, base_build);
+      prepared_revision(Role::base, request.repository, request.base, context, base_build);
   const PreparedRevision head =
-      prepared_revision("head", request.repository, request.head, context, head_build);
+      prepared_revision(Role::head, request.repository, request.head, context, head_build);
   return measure_prepared_compare(request, base, head, io);
 }
 
@@ -123,7 +123,7 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
       compact_utc_timestamp() + "-" + request.base.short_sha + "-" + request.head.short_sha,
       request.out);
   const std::filesystem::path work_dir = m.work_dir;
-  m.tracer_roles = {"base", "head"};
+  m.tracer_roles = {Role::base, Role::head};
   // The family is the whole selection, so a shard's scenes get the share they would have had
   // in one job (docs/statistics.md §6c).
   const std::size_t family_size =
@@ -174,7 +174,7 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
   };
   m.contenders = {&baseline_runs, &base_runs, &head_runs};
 
-  ResultsDocument document = new_document("compare", context, request.baseline);
+  ResultsDocument document = new_document(DocumentKind::compare, context, request.baseline);
   document.revisions = {base.record, head.record};
   const std::string opening = fmt::format(
       "comparing {} {} (base) with {} (head) against {} on suite {}: {} scenes{}",

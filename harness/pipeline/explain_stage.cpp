@@ -14,7 +14,7 @@ namespace {
 
 bool regressed(const SceneResult& scene) {
   return scene.change && !scene.runs.failed() &&
-         change_verdict_named(scene.change_verdict) == ChangeVerdict::regressed;
+         scene.change_verdict == ChangeVerdict::regressed;
 }
 
 std::optional<Explanation> explain_one(const SceneResult& scene, const MeasureContext& context,

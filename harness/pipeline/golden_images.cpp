@@ -95,16 +95,16 @@ ChosenImages chosen_images(const ResultsDocument& document, const BlessFromRun& 
     if (scene == nullptr) throw UsageError("scene '" + id + "' is not in " + results);
     const RunRecord* run = scene->runs.first_run(request.role);
     if (run == nullptr) {
-      throw UsageError(results + ": no successful " + request.role + " run of '" + id +
-                       "', so no image to bless");
+      throw UsageError(results + ": no successful " + role_name(request.role) + " run of '" +
+                       id + "', so no image to bless");
     }
     if (!std::filesystem::is_regular_file(run->image)) {
-      throw UsageError(results + ": the " + request.role + " image of '" + id + "', " +
+      throw UsageError(results + ": the " + role_name(request.role) + " image of '" + id + "', " +
                        run->image.string() + ", is gone (was the run directory removed?)");
     }
     checked_component(id, results + ": scenes[].entry.id");
-    checked_image_extension(run->image,
-                            results + ": the " + request.role + " image of '" + id + "'");
+    checked_image_extension(
+        run->image, results + ": the " + role_name(request.role) + " image of '" + id + "'");
     chosen.emplace_back(scene, run->image);
   }
   return chosen;
@@ -178,7 +178,7 @@ ImageKind run_image_kind(const RevisionRecord& revision) {
 
 // A Monte Carlo tracer's goldens: per scene the mean and variance of every run's image (each
 // rendered with its own seed), written into `stats_dir` before any is blessed.
-std::vector<Blessing> monte_carlo_blessings(const ChosenImages& chosen, const std::string& role,
+std::vector<Blessing> monte_carlo_blessings(const ChosenImages& chosen, Role role,
                                             const std::string& sampling,
                                             const std::filesystem::path& stats_dir) {
   std::vector<Blessing> blessings;
@@ -186,7 +186,8 @@ std::vector<Blessing> monte_carlo_blessings(const ChosenImages& chosen, const st
     const SuiteScene& e = scene->entry;
     const std::vector<std::filesystem::path> images = run_images(scene->runs, role);
     if (images.size() < 2) {
-      throw UsageError("'" + e.id + "' has " + std::to_string(images.size()) + " " + role +
+      throw UsageError("'" + e.id + "' has " + std::to_string(images.size()) + " " +
+                       role_name(role) +
                        " image(s); a Monte Carlo golden needs at least 2 runs with their own "
                        "seeds (run with more rounds: --min-rounds)");
     }
@@ -284,11 +285,11 @@ void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress)
   const std::string results = request.results.string();
   const RevisionRecord* revision = document.revision(request.role);
   if (revision == nullptr) {
-    throw UsageError(results + " has no revision with role '" + request.role +
+    throw UsageError(results + " has no revision with role '" + role_name(request.role) +
                      "' (use --role tracer, base or head)");
   }
   checked_component(revision->adapter_name,
-                    results + ": revisions[" + request.role + "].adapter.name");
+                    results + ": revisions[" + role_name(request.role) + "].adapter.name");
   const std::filesystem::path golden_dir =
       request.golden_dir.empty()
           ? locate_tools(request.baseline).data_root / "golden" / revision->adapter_name
@@ -369,8 +370,8 @@ GoldenVerification verify_goldens_from_run(const BlessFromRun& request,
   const ResultsDocument document = read_results(request.results);
   const RevisionRecord* revision = document.revision(request.role);
   if (revision == nullptr) {
-    throw UsageError(request.results.string() + " has no revision with role '" + request.role +
-                     "' (use --role tracer, base or head)");
+    throw UsageError(request.results.string() + " has no revision with role '" +
+                     role_name(request.role) + "' (use --role tracer, base or head)");
   }
   const std::filesystem::path golden_dir =
       request.golden_dir.empty()
@@ -386,7 +387,8 @@ GoldenVerification verify_goldens_from_run(const BlessFromRun& request,
     if (!ids.empty() && std::find(ids.begin(), ids.end(), e.id) == ids.end()) continue;
     const RunRecord* run = scene.runs.first_run(request.role);
     if (run == nullptr) {
-      progress.line(fmt::format("MISSING   {:<12} no successful {} run", e.id, request.role));
+      progress.line(fmt::format("MISSING   {:<12} no successful {} run", e.id,
+                                to_string(request.role)));
       ++counts.missing;
       continue;
     }

@@ -8,7 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "pipeline/progress.h"
+#include "core/domain.h"
+#include "pipeline/pipeline_io.h"
 #include "runner/baseline_tool.h"
 #include "runner/suite.h"
 
@@ -50,7 +51,7 @@ void bless_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progre
 
 struct BlessFromRun {
   std::filesystem::path results;  // the run's document
-  std::string role = "tracer";     // whose images: tracer, head or base
+  Role role = Role::tracer;  // whose images: tracer, head or base
   std::vector<std::string> scene_ids;  // empty: every scene of the document
   std::filesystem::path golden_dir;    // empty: golden/<adapter>/ under the data root
   std::filesystem::path baseline;      // only to find the data root

@@ -13,7 +13,7 @@
 #include "adapter/adapter.h"
 #include "core/paths.h"
 #include "gate/policy.h"
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 #include "results/shard.h"
 #include "runner/baseline_contender.h"
 #include "runner/cachegrind.h"

@@ -7,7 +7,7 @@
 #include "builder/builder.h"
 #include "checkout/repository_identity.h"
 #include "core/error.h"
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 
 namespace raygate {
 
@@ -45,7 +45,7 @@ BuildRecord build_revision(const Worktree& worktree, const MeasureContext& conte
   return record;
 }
 
-PreparedRevision prepare_revision(const std::string& role, const std::string& repository,
+PreparedRevision prepare_revision(Role role, const std::string& repository,
                                   const Worktree& worktree, const MeasureContext& context,
                                   const std::string& baseline_source_hash, int jobs,
                                   ProgressSink& progress) {
@@ -91,14 +91,14 @@ void require_run_program(const Adapter& adapter, const BuildRecord& build,
 
 void require_both_built(const BuildRecord& base, const BuildRecord& head) {
   if (base.success && head.success) return;
-  const auto side = [](const char* role, const BuildRecord& r) {
-    return r.success ? fmt::format("{} ({}) built", role, r.sha.substr(0, 12))
-                     : fmt::format("{} did not build:\n{}", role, failure_message(r));
+  const auto side = [](Role role, const BuildRecord& r) {
+    return r.success ? fmt::format("{} ({}) built", to_string(role), r.sha.substr(0, 12))
+                     : fmt::format("{} did not build:\n{}", to_string(role), failure_message(r));
   };
-  throw InfraError(fmt::format("{}\n{}", side("base", base), side("head", head)));
+  throw InfraError(fmt::format("{}\n{}", side(Role::base, base), side(Role::head, head)));
 }
 
-PreparedRevision prepared_revision(const std::string& role, const std::string& repository,
+PreparedRevision prepared_revision(Role role, const std::string& repository,
                                    const Worktree& worktree, const MeasureContext& context,
                                    const BuildRecord& build_record) {
   PreparedRevision prepared;

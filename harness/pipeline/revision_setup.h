@@ -7,7 +7,7 @@
 
 #include "checkout/repository.h"
 #include "pipeline/measure_context.h"
-#include "pipeline/progress.h"
+#include "pipeline/pipeline_io.h"
 #include "results/results.h"
 #include "runner/tracer_contender.h"
 
@@ -19,13 +19,13 @@ struct PreparedRevision {
 };
 
 // Builds `worktree` for `role`; throws InfraError (exit 3) with the log tail if the build fails.
-PreparedRevision prepare_revision(const std::string& role, const std::string& repository,
+PreparedRevision prepare_revision(Role role, const std::string& repository,
                                   const Worktree& worktree, const MeasureContext& context,
                                   const std::string& baseline_source_hash, int jobs,
                                   ProgressSink& progress);
 
 // The contender for `worktree` built as `build_record` (a successful build).
-PreparedRevision prepared_revision(const std::string& role, const std::string& repository,
+PreparedRevision prepared_revision(Role role, const std::string& repository,
                                    const Worktree& worktree, const MeasureContext& context,
                                    const BuildRecord& build_record);
 

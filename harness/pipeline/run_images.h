@@ -12,6 +12,6 @@ namespace raygate {
 
 // The successful runs' images of `role`: warm-ups, rounds, then the round a failure cut short,
 // each image once, in that order (the first is the one the per-pixel check takes).
-std::vector<std::filesystem::path> run_images(const SceneRuns& runs, const std::string& role);
+std::vector<std::filesystem::path> run_images(const SceneRuns& runs, Role role);
 
 }  // namespace raygate

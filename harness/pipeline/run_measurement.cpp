@@ -3,7 +3,7 @@
 #include <fmt/core.h>
 
 #include "core/time_text.h"
-#include "pipeline/stopping.h"
+#include "pipeline/stop_rules.h"
 #include "runner/tracer_contender.h"
 
 namespace raygate {
@@ -11,7 +11,7 @@ namespace raygate {
 MeasuredDocument measure_run(const RunRequest& request, PipelineIo& io) {
   const MeasureContext& context = request.context;
   const PreparedRevision tracer =
-      prepare_revision("tracer", request.repository, request.worktree, context,
+      prepare_revision(Role::tracer, request.repository, request.worktree, context,
                        request.baseline.source_hash(), context.jobs, io.progress);
   return measure_prepared_run(request, tracer, io);
 }
@@ -23,14 +23,14 @@ MeasuredDocument measure_prepared_run(const RunRequest& request, const PreparedR
   SuiteMeasurement m = suite_measurement(
       context, compact_utc_timestamp() + "-" + worktree.short_sha, request.out);
   SuiteBudget budget(context.stopping, m.scenes.size(), io.clock);
-  m.stop = [&](const SuiteScene&) { return ratio_stop_rule(budget.next_scene(), "tracer"); };
-  m.tracer_roles = {"tracer"};
+  m.stop = [&](const SuiteScene&) { return ratio_stop_rule(budget.next_scene(), Role::tracer); };
+  m.tracer_roles = {Role::tracer};
   const BaselineContender baseline_runs =
       baseline_contender(context, request.baseline.source_hash());
   const TracerContender tracer_runs(tracer.setup);
   m.contenders = {&baseline_runs, &tracer_runs};
 
-  ResultsDocument document = new_document("run", context, request.baseline);
+  ResultsDocument document = new_document(DocumentKind::run, context, request.baseline);
   document.revisions.push_back(tracer.record);
   const std::string opening = fmt::format(
       "measuring {} {} ({}) against {} on suite {}: {} scenes{}", context.adapter.name,

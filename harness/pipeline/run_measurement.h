@@ -8,7 +8,7 @@
 
 #include "checkout/worktree.h"
 #include "pipeline/measure_context.h"
-#include "pipeline/progress.h"
+#include "pipeline/pipeline_io.h"
 #include "pipeline/revision_setup.h"
 #include "pipeline/suite_measurement.h"
 #include "runner/baseline_tool.h"

@@ -29,8 +29,8 @@ namespace {
 
 void summarize_ratios(SceneResult& result, const SuiteMeasurement& m) {
   if (result.runs.rounds.empty()) return;
-  for (const std::string& role : m.tracer_roles) {
-    result.ratios[role] = summarize_ratio(round_samples(result.runs.rounds, role));
+  for (const Role role : m.tracer_roles) {
+    result.ratios[role_name(role)] = summarize_ratio(round_samples(result.runs.rounds, role));
   }
 }
 
@@ -38,7 +38,7 @@ void check_images(SceneResult& result, const SuiteMeasurement& m, const GoldenMa
                   const std::string& sampling) {
   const SuiteScene& e = result.entry;
   const GoldenEntry rendered{e.id, e.scene, e.size, e.width, e.height, sampling, {}, {}, {}};
-  for (const std::string& role : m.tracer_roles) {
+  for (const Role role : m.tracer_roles) {
     const RunRecord* run = result.runs.first_run(role);
     if (run == nullptr) continue;  // failed before producing an image; the failure says why
     if (m.images == ImageKind::monte_carlo) {
@@ -55,7 +55,7 @@ void check_images(SceneResult& result, const SuiteMeasurement& m, const GoldenMa
 }
 
 // The same computation `raygate merge` makes over shards (results/scores.h).
-void update_scores(ResultsDocument& document, const std::vector<std::string>& roles) {
+void update_scores(ResultsDocument& document, const std::vector<Role>& roles) {
   document.scores = suite_scores(document.scenes, roles);
 }
 
@@ -93,7 +93,7 @@ SuiteMeasurement suite_measurement(const MeasureContext& context, const std::str
   return m;
 }
 
-ResultsDocument new_document(const std::string& kind, const MeasureContext& context,
+ResultsDocument new_document(DocumentKind kind, const MeasureContext& context,
                              const BaselineTool& baseline) {
   ResultsDocument document;
   document.kind = kind;
@@ -182,9 +182,9 @@ void revisit_scenes(ResultsDocument& document, const SuiteMeasurement& m, Execut
     if (scene.runs.failed()) {
       // As in the first pass, a scene whose run failed has no change to judge: the failure is
       // its result.
-      scene.status = "failed";
+      scene.status = SceneStatus::failed;
       scene.change.reset();
-      scene.change_verdict.clear();
+      scene.change_verdict = ChangeVerdict::inconclusive;
     } else {
       m.revisits->rejudge(scene);
     }
@@ -226,7 +226,7 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Pipeli
     };
     result.runs = measure_scene(input, m.contenders, m.schedule, m.stop(entry), executor,
                                 clock, scene_dir(m, entry), observe);
-    result.status = result.runs.failed() ? "failed" : "measured";
+    result.status = result.runs.failed() ? SceneStatus::failed : SceneStatus::measured;
     summarize_ratios(result, m);
     check_images(result, m, manifest, document.baseline.sampling);
     if (m.finish_scene && !result.runs.failed()) m.finish_scene(result);
@@ -300,11 +300,12 @@ BaselineContender baseline_contender(const MeasureContext& context,
   return baseline;
 }
 
-std::string scene_line(const SceneResult& scene, const std::vector<std::string>& tracer_roles) {
+std::string scene_line(const SceneResult& scene, const std::vector<Role>& tracer_roles) {
   std::string text = fmt::format("{:<10}", scene.entry.id);
-  for (const std::string& role : tracer_roles) {
+  for (const Role role : tracer_roles) {
     if (const RatioSummary* r = scene.ratio(role)) {
-      text += fmt::format("  {}{:.3f} [{:.3f}, {:.3f}]", tracer_roles.size() > 1 ? role + " " : "",
+      text += fmt::format("  {}{:.3f} [{:.3f}, {:.3f}]",
+                          tracer_roles.size() > 1 ? role_name(role) + " " : "",
                           r->ratio, r->ratio_interval.lower, r->ratio_interval.upper);
     }
   }
@@ -312,14 +313,13 @@ std::string scene_line(const SceneResult& scene, const std::vector<std::string>&
   if (const std::string note = determinism_note(scene.runs); !note.empty()) text += "  " + note;
   if (scene.runs.failed()) {
     const RunRecord& run = *scene.runs.failed_run;
-    text += fmt::format("  FAILED {}: {} (log: {})", scene.runs.failed_role, run.failure,
+    text += fmt::format("  FAILED {}: {} (log: {})", to_string(scene.runs.failed_role), run.failure,
                         run.log.string());
   }
   for (const ImageCheck& check : scene.images) {
     // No golden: one note at the end, not per scene.
     if (check.verdict == ImageVerdict::missing) continue;
-    const std::string what = check.reference == "golden" ? check.role
-                                                         : check.role + "-vs-" + check.reference;
+    const std::string what = check_label(check, "-vs-");
     std::string detail = check.error;
     if (check.metrics) {
       detail = check.metrics->identical() ? "identical" : summarize(*check.metrics);

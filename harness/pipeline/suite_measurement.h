@@ -20,7 +20,7 @@
 #include "runner/scheduler.h"
 #include "pipeline/document_output.h"
 #include "pipeline/measure_context.h"
-#include "pipeline/progress.h"
+#include "pipeline/pipeline_io.h"
 #include "results/results.h"
 #include "runner/suite.h"
 
@@ -43,7 +43,7 @@ struct SceneRevisits {
 struct SuiteMeasurement {
   std::vector<SuiteScene> scenes;
   std::vector<const Contender*> contenders;  // the baseline first
-  std::vector<std::string> tracer_roles;     // normalized against the baseline, image-checked
+  std::vector<Role> tracer_roles;     // normalized against the baseline, image-checked
   std::vector<SceneFormat> formats{SceneFormat::nff};  // scene files the contenders read
   ScheduleOptions schedule;
   std::function<StopRule(const SuiteScene&)> stop;  // the stopping rule of each scene
@@ -79,7 +79,7 @@ SuiteMeasurement suite_measurement(const MeasureContext& context, const std::str
                                    const std::filesystem::path& out);
 
 // A document's header: kind, versions, start time, machine, baseline, suite, settings.
-ResultsDocument new_document(const std::string& kind, const MeasureContext& context,
+ResultsDocument new_document(DocumentKind kind, const MeasureContext& context,
                              const BaselineTool& baseline);
 
 // Measures every scene into `document` (whose header the caller filled in), writing it to
@@ -110,6 +110,6 @@ BaselineContender baseline_contender(const MeasureContext& context,
                                      const std::string& baseline_source_sha256);
 
 // One line per scene for logs and the end-of-run table.
-std::string scene_line(const SceneResult& scene, const std::vector<std::string>& tracer_roles);
+std::string scene_line(const SceneResult& scene, const std::vector<Role>& tracer_roles);
 
 }  // namespace raygate

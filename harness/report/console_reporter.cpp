@@ -96,10 +96,11 @@ std::string padded(const Row& row, const std::vector<std::size_t>& widths, std::
 
 void add_header(const ReportInput& input, Spans& spans) {
   const ResultsDocument& d = input.document;
-  std::string line = fmt::format("raygate {} on suite {}", d.kind, d.suite);
-  if (d.kind == "compare") {
-    line += fmt::format(": base {} -> head {}", revision_line(d, "base"), revision_line(d, "head"));
-  } else if (const std::string tracer = revision_line(d, "tracer"); !tracer.empty()) {
+  std::string line = fmt::format("raygate {} on suite {}", to_string(d.kind), d.suite);
+  if (is_compare(d.kind)) {
+    line += fmt::format(": base {} -> head {}", revision_line(d, Role::base),
+                        revision_line(d, Role::head));
+  } else if (const std::string tracer = revision_line(d, Role::tracer); !tracer.empty()) {
     line += ": " + tracer;
   }
   spans.push_back(plain(line + "\n"));

@@ -20,7 +20,7 @@ std::string meta_row(const std::string& key, const std::string& value_html) {
   return fmt::format("<dt>{}</dt><dd>{}</dd>", escape(key), value_html);
 }
 
-std::string commit_html(const ResultsDocument& d, const std::string& role) {
+std::string commit_html(const ResultsDocument& d, Role role) {
   const RevisionRecord* revision = d.revision(role);
   if (revision == nullptr) return "";
   const Worktree& tree = revision->worktree;
@@ -60,8 +60,10 @@ std::string meta_list(const ReportInput& input) {
   if (const std::string repo = repository_of(d); !repo.empty()) {
     rows += meta_row("repository", "<code>" + escape(repo) + "</code>");
   }
-  for (const std::string& role : ratio_roles(d)) {
-    if (const std::string commit = commit_html(d, role); !commit.empty()) rows += meta_row(role, commit);
+  for (const Role role : ratio_roles(d)) {
+    if (const std::string commit = commit_html(d, role); !commit.empty()) {
+      rows += meta_row(role_name(role), commit);
+    }
   }
   if (const std::string machine = machine_line(d.machine); !machine.empty()) {
     rows += meta_row("machine", escape(machine));
@@ -129,14 +131,14 @@ std::string overview(const ReportInput& input, const std::vector<SceneView>& vie
 }
 
 std::string title_of(const ResultsDocument& d) {
-  if (d.kind == "compare") {
-    const RevisionRecord* base = d.revision("base");
-    const RevisionRecord* head = d.revision("head");
+  if (is_compare(d.kind)) {
+    const RevisionRecord* base = d.revision(Role::base);
+    const RevisionRecord* head = d.revision(Role::head);
     return fmt::format("raygate compare · {} → {} · suite {}",
                        base ? base->worktree.short_sha : "?", head ? head->worktree.short_sha : "?",
                        d.suite);
   }
-  const RevisionRecord* tracer = d.revision("tracer");
+  const RevisionRecord* tracer = d.revision(Role::tracer);
   return fmt::format("raygate run · {} · suite {}", tracer ? tracer->worktree.short_sha : "?", d.suite);
 }
 
@@ -150,7 +152,7 @@ class HtmlReporter final : public Reporter {
         << "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">"
         << "<title>" << escape(title) << "</title><style>" << page_style() << "</style></head>\n"
         << "<body data-js=\"off\"><div class=\"page\">"
-        << "<header class=\"top card\"><div class=\"brand\">raygate <span>" << escape(d.kind)
+        << "<header class=\"top card\"><div class=\"brand\">raygate <span>" << to_string(d.kind)
         << " report</span></div><h1>" << escape(title) << "</h1>" << banner(input, views)
         << meta_list(input) << "</header>\n"
         << overview(input, views) << '\n' << scaling_section(d) << '\n'

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <cmath>
+#include <optional>
 
 #include "report/html_parts.h"
 
@@ -17,15 +18,23 @@ struct Shot {
   std::string swap_id;  // hovering shows this shot's image instead
   std::string swap_label;
   bool evidence = false;
+  std::optional<Role> role;  // whose image; nullopt for the golden and the evidence
 };
+
+// Whether `shot` is the image `reference` names: the golden, or base's.
+bool shows(const Shot& shot, ImageReference reference) {
+  if (shot.evidence) return false;
+  if (reference == ImageReference::golden) return !shot.role;
+  return shot.role == Role::base;
+}
 
 std::string shot_id(const SceneView& view, const std::string& what) {
   return anchor(view.gate.id) + "-" + what;
 }
 
 // The reference a role's image is best compared with: that of its worst check.
-std::string reference_of(const SceneResult& scene, const std::string& role) {
-  std::string reference = "golden";
+ImageReference reference_of(const SceneResult& scene, Role role) {
+  ImageReference reference = ImageReference::golden;
   int worst = -1;
   for (const ImageCheck& check : scene.images) {
     if (check.role != role) continue;
@@ -51,18 +60,19 @@ std::vector<Shot> shots_of(const ReportInput& input, const SceneView& view) {
   const SceneResult& scene = *view.result;
   std::vector<Shot> shots;
   if (const auto golden = golden_image(scene); !golden.empty()) {
-    shots.push_back({shot_id(view, "golden"), "golden", golden, "", "", false});
+    const std::string golden_word(to_string(ImageReference::golden));
+    shots.push_back({shot_id(view, golden_word), golden_word, golden, "", "", false, {}});
   }
-  for (const std::string& role : ratio_roles(input.document)) {
+  for (const Role role : ratio_roles(input.document)) {
     const std::filesystem::path image = role_image(scene, role);
     if (image.empty()) continue;
-    shots.push_back({shot_id(view, role), role, image, "", "", false});
+    shots.push_back({shot_id(view, role_name(role)), role_name(role), image, "", "", false, role});
   }
   for (Shot& shot : shots) {
-    if (shot.label == "golden") continue;
-    const std::string reference = reference_of(scene, shot.label);
+    if (!shot.role) continue;  // the golden: what the others are compared with
+    const ImageReference reference = reference_of(scene, *shot.role);
     for (const Shot& other : shots) {
-      if (other.label == reference && other.id != shot.id) {
+      if (shows(other, reference) && other.id != shot.id) {
         shot.swap_id = other.id;
         shot.swap_label = other.label;
       }
@@ -70,9 +80,10 @@ std::vector<Shot> shots_of(const ReportInput& input, const SceneView& view) {
   }
   for (const ImageCheck& check : scene.images) {
     if (const auto diff = diff_of(check); !diff.empty()) {
-      shots.push_back({shot_id(view, "diff-" + check.role + "-" + check.reference),
-                       fmt::format("|Δ|×16 {} vs {}", check.role, check.reference), diff, "", "",
-                       true});
+      const std::string role = role_name(check.role);
+      const std::string reference(to_string(check.reference));
+      shots.push_back({shot_id(view, "diff-" + role + "-" + reference),
+                       fmt::format("|Δ|×16 {} vs {}", role, reference), diff, "", "", true, {}});
     }
   }
   return shots;
@@ -109,7 +120,8 @@ std::string gallery(const ReportInput& input, const SceneView& view) {
 }
 
 std::string metric_row(const ImageCheck& check) {
-  const std::string who = fmt::format("{} vs {}", escape(check.role), escape(check.reference));
+  const std::string who = fmt::format("{} vs {}", escape(role_name(check.role)),
+                                      escape(std::string(to_string(check.reference))));
   const std::string verdict = fmt::format(R"(<span class="verdict v-{}">{}</span>)",
                                           escape(std::string(to_string(check.verdict))),
                                           escape(image_verdict_text(check.verdict)));
@@ -144,18 +156,18 @@ std::string metrics_table(const SceneResult& scene) {
   return out + "</tbody></table>";
 }
 
-std::string mark_class(const std::string& role, const SceneView& view) {
-  if (role == "base") return "role-base";
-  if (role == "head") return outcome_class(view.speed_outcome);
+std::string mark_class(Role role, const SceneView& view) {
+  if (role == Role::base) return "role-base";
+  if (role == Role::head) return outcome_class(view.speed_outcome);
   return "role-tracer";
 }
 
 std::string speed_plots(const ReportInput& input, const SceneView& view) {
   const SceneResult& scene = *view.result;
   std::vector<IntervalRow> rows;
-  for (const std::string& role : ratio_roles(input.document)) {
+  for (const Role role : ratio_roles(input.document)) {
     if (const RatioSummary* r = scene.ratio(role)) {
-      rows.push_back({role, r->ratio, r->ratio_interval.lower, r->ratio_interval.upper,
+      rows.push_back({role_name(role), r->ratio, r->ratio_interval.lower, r->ratio_interval.upper,
                       mark_class(role, view)});
     }
   }
@@ -179,9 +191,9 @@ std::vector<std::string> round_facts(const ResultsDocument& d, const SceneResult
     facts.push_back(fmt::format("{} rounds", primary->rounds));
   }
   std::string medians = "medians: baseline " + cost_text(d, primary->baseline_median_seconds);
-  for (const std::string& role : ratio_roles(d)) {
+  for (const Role role : ratio_roles(d)) {
     if (const RatioSummary* r = scene.ratio(role)) {
-      medians += fmt::format(", {} {}", role, cost_text(d, r->tracer_median_seconds));
+      medians += fmt::format(", {} {}", to_string(role), cost_text(d, r->tracer_median_seconds));
     }
   }
   facts.push_back(medians);
@@ -195,7 +207,7 @@ std::string run_facts(const ReportInput& input, const SceneResult& scene) {
   // The pairing-free second opinion (docs/statistics.md §5) on the rounds the baseline joined;
   // the verdict does not use it. Not beside a counted change (no sampling error to test), nor
   // with fewer than 6 rounds a side, where no p can fall below 0.05 whatever the change.
-  const RatioSummary* base = scene.ratio("base");
+  const RatioSummary* base = scene.ratio(Role::base);
   if (scene.change && !scene.runs.failed() && !scene.change->exact && base != nullptr &&
       base->rounds >= 6) {
     facts.push_back(fmt::format("Mann–Whitney U {:.1f}, p {:.3g} over the {} rounds with the "
@@ -211,7 +223,8 @@ std::string run_facts(const ReportInput& input, const SceneResult& scene) {
 std::string failure_note(const SceneResult& scene) {
   if (!scene.runs.failed_run) return "";
   return fmt::format(R"(<div class="failure">No ratio: the {} run {}.</div>)",
-                     escape(scene.runs.failed_role), escape(scene.runs.failed_run->outcome));
+                     escape(role_name(scene.runs.failed_role)),
+                     escape(scene.runs.failed_run->outcome));
 }
 
 std::string head_line(const SceneView& view) {
@@ -219,7 +232,8 @@ std::string head_line(const SceneView& view) {
   std::string spec = entry.scene;
   if (entry.size > 0) spec += fmt::format(" · size {}", entry.size);
   if (entry.width > 0) spec += fmt::format(" · {}×{}", entry.width, entry.height);
-  std::string tags = fmt::format(R"(<span class="tag speed-{0}">{0}</span>)", escape(view.gate.speed));
+  std::string tags = fmt::format(R"(<span class="tag speed-{0}">{0}</span>)",
+                                 escape(std::string(to_string(view.gate.speed))));
   if (view.gate.image) {
     tags += fmt::format(R"(<span class="tag v-{}">image: {}</span>)",
                         escape(std::string(to_string(*view.gate.image))),
@@ -246,7 +260,8 @@ std::string scene_section(const ReportInput& input, const SceneView& view) {
   if (const TrendSeries* trend = input.trend(scene.entry.id)) {
     std::vector<TrendMark> marks;
     for (const RevisionRecord& revision : input.document.revisions) {
-      marks.push_back({revision.worktree.sha, revision.role == "tracer" ? "this run" : revision.role});
+      marks.push_back({revision.worktree.sha,
+                       revision.role == Role::tracer ? "this run" : role_name(revision.role)});
     }
     numbers += fmt::format("<h3>Trend over {} commits</h3>", trend->points.size()) +
                trend_svg(*trend, marks) +

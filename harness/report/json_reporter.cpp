@@ -21,7 +21,7 @@ json interval(const Interval& i) {
 json revisions(const ResultsDocument& d) {
   json out = json::object();
   for (const RevisionRecord& r : d.revisions) {
-    out[r.role] = {{"sha", r.worktree.sha},
+    out[role_name(r.role)] = {{"sha", r.worktree.sha},
                    {"short_sha", r.worktree.short_sha},
                    {"subject", r.worktree.subject},
                    {"revision", r.worktree.revision},
@@ -60,8 +60,8 @@ json change(const SceneView& view) {
 json images(const SceneResult& scene) {
   json out = json::array();
   for (const ImageCheck& check : scene.images) {
-    json item = {{"role", check.role},
-                 {"reference", check.reference},
+    json item = {{"role", to_string(check.role)},
+                 {"reference", to_string(check.reference)},
                  {"verdict", to_string(check.verdict)}};
     if (check.metrics) {
       const ImageMetrics& m = *check.metrics;
@@ -80,7 +80,7 @@ json images(const SceneResult& scene) {
 json scene_json(const SceneView& view) {
   return {{"id", view.gate.id},
           {"outcome", to_string(view.gate.outcome)},
-          {"speed", view.gate.speed},
+          {"speed", to_string(view.gate.speed)},
           {"speed_outcome", to_string(view.speed_outcome)},
           // Bots read the stable word ("missing"), not the reader's ("no golden yet").
           {"image", view.gate.image ? std::string(to_string(*view.gate.image)) : ""},
@@ -127,7 +127,7 @@ class JsonReporter final : public Reporter {
     }
     const auto suite = suite_change(d);
     json report = {{"raygate_report", 1},
-                   {"kind", d.kind},
+                   {"kind", to_string(d.kind)},
                    {"suite", d.suite},
                    {"verdict", verdict_word(input.gate.exit_code)},
                    {"exit_code", input.gate.exit_code},

@@ -27,14 +27,15 @@ void add_property(pugi::xml_node properties, const std::string& name, const std:
 void add_properties(pugi::xml_node suite, const ReportInput& input) {
   const ResultsDocument& d = input.document;
   pugi::xml_node properties = suite.append_child("properties");
-  add_property(properties, "kind", d.kind);
+  add_property(properties, "kind", std::string(to_string(d.kind)));
   add_property(properties, "suite", d.suite);
   add_property(properties, "exit_code", std::to_string(input.gate.exit_code));
   add_property(properties, "raygate_version", d.raygate_version);
   add_property(properties, "baseline", d.baseline.version);
   for (const RevisionRecord& revision : d.revisions) {
-    add_property(properties, "revision." + revision.role, revision_line(d, revision.role));
-    add_property(properties, "sha." + revision.role, revision.worktree.sha);
+    const std::string role = role_name(revision.role);
+    add_property(properties, "revision." + role, revision_line(d, revision.role));
+    add_property(properties, "sha." + role, revision.worktree.sha);
     if (!revision.repository.empty()) add_property(properties, "repository", revision.repository);
   }
   if (d.machine.is_object()) {
@@ -75,7 +76,7 @@ void add_case(pugi::xml_node suite, Tally& tally, const std::string& classname,
 }
 
 std::string speed_numbers(const ResultsDocument& d, const SceneView& view) {
-  std::string text = fmt::format("speed {}; normalized ratio {}", view.gate.speed,
+  std::string text = fmt::format("speed {}; normalized ratio {}", to_string(view.gate.speed),
                                  ratio_text(d, *view.result));
   if (const std::string change = change_text(view); !change.empty()) {
     text += "; change " + change;
@@ -86,8 +87,9 @@ std::string speed_numbers(const ResultsDocument& d, const SceneView& view) {
 std::string image_numbers(const SceneView& view) {
   std::vector<std::string> lines;
   for (const ImageCheck& check : view.result->images) {
-    std::string line = fmt::format("{} vs {}: {}", check.role, check.reference,
-                                   image_verdict_text(check.verdict));
+    std::string line =
+        fmt::format("{} vs {}: {}", to_string(check.role), to_string(check.reference),
+                    image_verdict_text(check.verdict));
     if (check.metrics) line += ": " + summarize(*check.metrics);
     if (!check.error.empty()) line += ": " + check.error;
     lines.push_back(line);
@@ -140,7 +142,8 @@ class JunitReporter final : public Reporter {
     pugi::xml_node suites = xml.append_child("testsuites");
     suites.append_attribute("name") = "raygate";
     pugi::xml_node suite = suites.append_child("testsuite");
-    suite.append_attribute("name") = fmt::format("raygate {} {}", d.kind, d.suite).c_str();
+    suite.append_attribute("name") =
+        fmt::format("raygate {} {}", to_string(d.kind), d.suite).c_str();
     if (!d.started_at.empty()) suite.append_attribute("timestamp") = d.started_at.c_str();
     add_properties(suite, input);
     Tally tally;

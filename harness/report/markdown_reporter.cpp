@@ -51,11 +51,11 @@ std::string upper(std::string_view text) {
 }
 
 std::string intro(const ResultsDocument& d) {
-  if (d.kind == "compare") {
+  if (is_compare(d.kind)) {
     return fmt::format("Compare on suite `{}`: base {} → head {}.\n", md(d.suite),
-                       md(revision_line(d, "base")), md(revision_line(d, "head")));
+                       md(revision_line(d, Role::base)), md(revision_line(d, Role::head)));
   }
-  return fmt::format("Run on suite `{}`: {}.\n", md(d.suite), md(revision_line(d, "tracer")));
+  return fmt::format("Run on suite `{}`: {}.\n", md(d.suite), md(revision_line(d, Role::tracer)));
 }
 
 std::string table_head(const ResultsDocument& d) {

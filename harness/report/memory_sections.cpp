@@ -32,14 +32,14 @@ std::vector<MemoryRow> memory_rows(const ReportInput& input) {
   std::vector<MemoryRow> rows;
   for (const SceneResult& scene : d.scenes) {
     const std::string& id = scene.entry.id;
-    if (d.kind == "compare") {
+    if (is_compare(d.kind)) {
       const auto judged = judge_scene_memory(scene, input.policy.for_scene(id));
       if (!judged) continue;
       rows.push_back(
           {id,
            memory_text(judged->summary.base_kib) + " -> " + memory_text(judged->summary.head_kib),
            delta_text(judged->summary), std::string(to_string(judged->verdict))});
-    } else if (const auto peak = median_peak_kib(scene.runs, "tracer")) {
+    } else if (const auto peak = median_peak_kib(scene.runs, Role::tracer)) {
       rows.push_back({id, memory_text(*peak), "", ""});
     }
   }
@@ -47,7 +47,7 @@ std::vector<MemoryRow> memory_rows(const ReportInput& input) {
 }
 
 std::string limit_note(const ReportInput& input) {
-  if (input.document.kind != "compare") return "median over the rounds";
+  if (!is_compare(input.document.kind)) return "median over the rounds";
   return fmt::format("median of each side; limit {} (changes under max(1 MiB, 2%) not judged)",
                      signed_percent(input.policy.defaults.max_memory_increase, 0));
 }
@@ -137,7 +137,7 @@ std::string memory_console(const ReportInput& input) {
   const std::vector<MemoryRow> rows = memory_rows(input);
   if (rows.empty()) return "";
   return fmt::format("\nmemory (peak resident, the tracer's own; {}):\n{}", limit_note(input),
-                     memory_table_text(rows, input.document.kind == "compare"));
+                     memory_table_text(rows, is_compare(input.document.kind)));
 }
 
 std::string explanation_console(const ReportInput& input) {
@@ -154,7 +154,7 @@ std::string memory_markdown(const ReportInput& input) {
   if (rows.empty()) return "";
   return fmt::format("\n**Memory** (peak resident, the tracer's own; {})\n\n```\n{}```\n",
                      limit_note(input),
-                     code_safe(memory_table_text(rows, input.document.kind == "compare")));
+                     code_safe(memory_table_text(rows, is_compare(input.document.kind))));
 }
 
 std::string explanation_markdown(const ReportInput& input) {
@@ -171,7 +171,7 @@ std::string memory_html(const ReportInput& input) {
   using html::escape;
   const std::vector<MemoryRow> rows = memory_rows(input);
   if (rows.empty()) return "";
-  const bool compare = input.document.kind == "compare";
+  const bool compare = is_compare(input.document.kind);
   std::string out = fmt::format(
       "<section class=\"card memory\"><h2>Memory</h2><p>Peak resident memory, the tracer's own; "
       "{}.</p><table><thead><tr><th>scene</th><th>{}</th>{}</tr></thead><tbody>",
@@ -220,8 +220,8 @@ std::string explanation_html(const ReportInput& input) {
 
 nlohmann::json memory_json(const ReportInput& input, const SceneResult& scene) {
   const ResultsDocument& d = input.document;
-  if (d.kind != "compare") {
-    const auto peak = median_peak_kib(scene.runs, "tracer");
+  if (!is_compare(d.kind)) {
+    const auto peak = median_peak_kib(scene.runs, Role::tracer);
     return peak ? nlohmann::json{{"peak_kib", *peak}} : nlohmann::json(nullptr);
   }
   const auto judged = judge_scene_memory(scene, input.policy.for_scene(scene.entry.id));

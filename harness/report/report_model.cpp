@@ -29,41 +29,14 @@ SceneGate gate_of(const GateResult& gate, const std::string& id) {
   return unjudged;
 }
 
-// The gate judges a scene as a whole; JUnit and the tables also need the two parts apart.
-// A crash of head where base ran is the change's fault (as in gate/verdict.cpp); other crashes
-// mean the scene could not be measured.
-GateOutcome speed_outcome_of(const ResultsDocument& document, const SceneResult& scene,
-                             const SceneGate& gate, const GatePolicy& policy) {
-  if (gate.speed == "REGRESSED") return GateOutcome::fail;
-  if (gate.speed == "INCONCLUSIVE") {
-    return policy.fail_on_inconclusive ? GateOutcome::fail : GateOutcome::warn;
-  }
-  if (gate.speed == "FAILED" || scene.runs.failed()) {
-    const bool head_only = document.kind == "compare" && scene.runs.failed_role == "head" &&
-                           scene.runs.first_run("base") != nullptr;
-    return head_only ? GateOutcome::fail : GateOutcome::unmeasured;
-  }
-  return GateOutcome::pass;
-}
-
-GateOutcome image_outcome_of(const SceneResult& scene) {
-  GateOutcome worst = GateOutcome::pass;
-  for (const ImageCheck& check : scene.images) {
-    GateOutcome outcome = GateOutcome::pass;
-    if (check.verdict == ImageVerdict::fail) outcome = GateOutcome::fail;
-    if (check.verdict == ImageVerdict::error) outcome = GateOutcome::unmeasured;
-    if (check.verdict == ImageVerdict::warn) outcome = GateOutcome::warn;  // missing: a note
-    worst = std::max(worst, outcome);
-  }
-  return worst;
-}
-
+// The gate judges the speed and image parts apart (gate/verdict.h); JUnit and the tables show
+// them apart, as the gate said them.
 SceneView make_view(const ReportInput& input, const SceneResult& scene) {
   SceneView view;
   view.result = &scene;
   view.gate = gate_of(input.gate, scene.entry.id);
-  view.speed_outcome = speed_outcome_of(input.document, scene, view.gate, input.policy);
-  view.image_outcome = image_outcome_of(scene);
+  view.speed_outcome = view.gate.speed_outcome;
+  view.image_outcome = view.gate.image_outcome;
   for (const std::string& reason : view.gate.reasons) {
     (reason.starts_with("image ") ? view.image_reasons : view.speed_reasons).push_back(reason);
   }
@@ -78,10 +51,11 @@ std::string plural(std::size_t n, const char* one, const char* many) {
 std::string failure_words(const SceneView& view) {
   std::vector<std::string> what;
   if (view.speed_outcome == GateOutcome::fail) {
-    if (view.result->change && view.gate.speed != "FAILED") {
+    if (view.result->change && view.gate.speed != SpeedVerdict::failed) {
       what.push_back(signed_percent(view.result->change->change));
     } else {
-      what.push_back(view.result->runs.failed() ? "crashed" : view.gate.speed);
+      what.push_back(view.result->runs.failed() ? "crashed"
+                                                : std::string(to_string(view.gate.speed)));
     }
   }
   if (view.image_outcome == GateOutcome::fail) what.push_back("image");
@@ -114,14 +88,11 @@ std::vector<SceneView> scene_views(const ReportInput& input) {
   return views;
 }
 
-std::vector<std::string> ratio_roles(const ResultsDocument& document) {
-  if (document.kind == "compare") return {"base", "head"};
-  return {"tracer"};
+std::vector<Role> ratio_roles(const ResultsDocument& document) {
+  return revision_roles(document.kind);
 }
 
-std::string primary_role(const ResultsDocument& document) {
-  return document.kind == "compare" ? "head" : "tracer";
-}
+Role primary_role(const ResultsDocument& document) { return primary_role(document.kind); }
 
 namespace {
 
@@ -163,7 +134,7 @@ Headline headline(const ReportInput& input, const std::vector<SceneView>& views)
   }
   if (const auto change = suite_change(input.document)) {
     line.detail += fmt::format("; suite {}", signed_percent(*change));
-  } else if (const auto score = input.document.scores.find("tracer");
+  } else if (const auto score = input.document.scores.find(role_name(Role::tracer));
              score != input.document.scores.end() && score->second.score > 0.0) {
     line.detail += fmt::format("; suite score {:.3f}", score->second.score);
   }
@@ -186,16 +157,15 @@ std::string image_text(const SceneGate& gate, const std::string& none) {
   return gate.image ? image_verdict_text(*gate.image) : none;
 }
 
-std::optional<ChangeCell> change_cell(const SceneResult& scene, std::string_view speed) {
+std::optional<ChangeCell> change_cell(const SceneResult& scene, SpeedVerdict speed) {
   if (!scene.change || scene.runs.failed()) return std::nullopt;
   const ChangeSummary& c = *scene.change;
   ChangeCell cell;
   cell.change = c.change;
   cell.rounds = c.rounds;
   cell.exact = c.exact;
-  // The gate's word, so a report judged under another policy prints that policy's interval.
-  cell.verdict = change_verdict_named(speed).value_or(
-      change_verdict_named(scene.change_verdict).value_or(ChangeVerdict::inconclusive));
+  // The gate's verdict, so a report judged under another policy prints that policy's interval.
+  cell.verdict = change_verdict_of(speed).value_or(scene.change_verdict);
   if (c.exact) {
     cell.interval_name = "exact";
     cell.text = change_with_interval(c, cell.verdict);
@@ -232,7 +202,7 @@ std::string cost_text(const ResultsDocument& document, double value) {
 }
 
 std::vector<TableColumn> table_columns(const ResultsDocument& document) {
-  if (document.kind == "compare") {
+  if (is_compare(document.kind)) {
     return {{ColumnKind::ratio, "ratio base->head"},
             {ColumnKind::change, kChangeHeading},
             {ColumnKind::speed, "speed"},
@@ -245,7 +215,7 @@ std::vector<TableColumn> table_columns(const ResultsDocument& document) {
 
 std::string columns_line(const ResultsDocument& document) {
   const std::string ratio = "ratio = time(tracer) / time(baseline), the median over rounds";
-  if (document.kind != "compare") return ratio + ", [its 95% bootstrap CI]";
+  if (!is_compare(document.kind)) return ratio + ", [its 95% bootstrap CI]";
   return ratio + " the baseline joined; head's = base's x (1 + change), so both move with the "
                  "change; change = median of per-round time(head) / time(base) - 1, [the "
                  "interval its verdict was drawn from]";
@@ -256,7 +226,7 @@ std::string cell_text(ColumnKind kind, const ResultsDocument& document, const Sc
   switch (kind) {
     case ColumnKind::ratio: return ratio_text(document, *view.result, arrow);
     case ColumnKind::change: return change_text(view);
-    case ColumnKind::speed: return view.gate.speed;
+    case ColumnKind::speed: return std::string(to_string(view.gate.speed));
     case ColumnKind::image: return image_text(view.gate, none);
   }
   return "";
@@ -284,13 +254,13 @@ std::string clock_line(const ResultsDocument& document) {
 
 std::string ratio_text(const ResultsDocument& document, const SceneResult& scene,
                        const std::string& arrow) {
-  if (document.kind == "compare") {
-    const RatioSummary* base = scene.ratio("base");
-    const RatioSummary* head = scene.ratio("head");
+  if (is_compare(document.kind)) {
+    const RatioSummary* base = scene.ratio(Role::base);
+    const RatioSummary* head = scene.ratio(Role::head);
     if (base == nullptr || head == nullptr) return "";
     return fmt::format("{:.3f} {} {:.3f}", base->ratio, arrow, head->ratio);
   }
-  const RatioSummary* tracer = scene.ratio("tracer");
+  const RatioSummary* tracer = scene.ratio(Role::tracer);
   if (tracer == nullptr) return "";
   return fmt::format("{:.3f} [{:.3f}, {:.3f}]", tracer->ratio, tracer->ratio_interval.lower,
                      tracer->ratio_interval.upper);
@@ -331,7 +301,7 @@ std::string machine_line(const nlohmann::json& machine) {
   return fmt::format("{}", fmt::join(parts, ", "));
 }
 
-std::string revision_line(const ResultsDocument& document, const std::string& role) {
+std::string revision_line(const ResultsDocument& document, Role role) {
   const RevisionRecord* revision = document.revision(role);
   if (revision == nullptr) return "";
   const Worktree& tree = revision->worktree;
@@ -364,7 +334,7 @@ std::string policy_line(const GatePolicy& policy) {
   return line;
 }
 
-std::filesystem::path role_image(const SceneResult& scene, const std::string& role) {
+std::filesystem::path role_image(const SceneResult& scene, Role role) {
   for (const ImageCheck& check : scene.images) {
     if (check.role == role && !check.actual.empty()) return check.actual;
   }
@@ -374,7 +344,7 @@ std::filesystem::path role_image(const SceneResult& scene, const std::string& ro
 
 std::filesystem::path golden_image(const SceneResult& scene) {
   for (const ImageCheck& check : scene.images) {
-    if (check.reference == "golden" && check.verdict != ImageVerdict::missing &&
+    if (check.reference == ImageReference::golden && check.verdict != ImageVerdict::missing &&
         !check.expected.empty()) {
       return check.expected;
     }

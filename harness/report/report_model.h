@@ -28,10 +28,10 @@ struct SceneView {
 // Scenes ordered fail, unmeasured, warn, pass; document order within each.
 std::vector<SceneView> scene_views(const ReportInput& input);
 
-// The revision roles measured against the baseline: {"tracer"} or {"base", "head"}.
-std::vector<std::string> ratio_roles(const ResultsDocument& document);
-// The role whose image and ratio a reader cares about: "head" for compare, else "tracer".
-std::string primary_role(const ResultsDocument& document);
+// The revision roles measured against the baseline: {tracer} or {base, head}.
+std::vector<Role> ratio_roles(const ResultsDocument& document);
+// The role whose image and ratio a reader cares about: head for compare, else tracer.
+Role primary_role(const ResultsDocument& document);
 
 struct Headline {
   std::string title;   // "raygate: 1 regression", "raygate: pass"
@@ -68,9 +68,9 @@ struct ChangeCell {
   ChangeVerdict verdict = ChangeVerdict::inconclusive;
   std::string text;  // change_text(): what the change column prints
 };
-// The scene's change judged as `speed` (the gate's word for it, which the policy decided);
+// The scene's change judged as `speed` (the gate's verdict on it, which the policy decided);
 // nullopt when the scene has no change (a run, or a failed scene).
-std::optional<ChangeCell> change_cell(const SceneResult& scene, std::string_view speed);
+std::optional<ChangeCell> change_cell(const SceneResult& scene, SpeedVerdict speed);
 // "+7.9% [+6.1%, +9.8%] 99.33% CS, 40 rounds" (CS: anytime-valid confidence sequence; CI: a
 // one-look interval in older documents); "+0.4%, no interval yet (needs 16 rounds), 9 rounds";
 // "+0.912% exact (simulated cycles)" when counted (--timing sim); "" without a change.
@@ -111,12 +111,12 @@ std::string value_text(const nlohmann::json& value);
 // "Intel Xeon (2 cores), Linux 6.1.0 x86_64, host ci-runner-3": whatever the machine JSON has.
 std::string machine_line(const nlohmann::json& machine);
 // "abc1234 Fix the BVH split (main)"; "" for a role not in the document.
-std::string revision_line(const ResultsDocument& document, const std::string& role);
+std::string revision_line(const ResultsDocument& document, Role role);
 // "max slowdown +3.0% at 95%; image fail 0.004 over 0.02% of pixels, warn 0.004".
 std::string policy_line(const GatePolicy& policy);
 
 // The image of `role` per the document's image checks, or its first successful run.
-std::filesystem::path role_image(const SceneResult& scene, const std::string& role);
+std::filesystem::path role_image(const SceneResult& scene, Role role);
 // The golden image the checks compared with, or "".
 std::filesystem::path golden_image(const SceneResult& scene);
 std::filesystem::path resolve(const ReportInput& input, const std::filesystem::path& path);

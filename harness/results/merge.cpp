@@ -91,7 +91,7 @@ void same(const Shard& a, const Shard& b, const std::string& field, const std::s
 void check_header(const Shard& a, const Shard& b) {
   same(a, b, "schema_version", std::to_string(doc(a).schema_version),
        std::to_string(doc(b).schema_version));
-  same(a, b, "kind", doc(a).kind, doc(b).kind);
+  same(a, b, "kind", std::string(to_string(doc(a).kind)), std::string(to_string(doc(b).kind)));
   same(a, b, "suite", doc(a).suite, doc(b).suite);
   const BaselineRecord& x = doc(a).baseline;
   const BaselineRecord& y = doc(b).baseline;
@@ -102,13 +102,19 @@ void check_header(const Shard& a, const Shard& b) {
   same(a, b, "baseline.timing", x.timing, y.timing);
 }
 
+// "base,head": a document's roles as the message names them.
+std::string role_list(const ResultsDocument& document) {
+  std::vector<std::string_view> words;
+  for (const Role role : scored_roles(document)) words.push_back(to_string(role));
+  return fmt::format("{}", fmt::join(words, ","));
+}
+
 void check_revisions(const Shard& a, const Shard& b) {
-  same(a, b, "revisions (roles)", fmt::format("{}", fmt::join(scored_roles(doc(a)), ",")),
-       fmt::format("{}", fmt::join(scored_roles(doc(b)), ",")));
+  same(a, b, "revisions (roles)", role_list(doc(a)), role_list(doc(b)));
   for (std::size_t i = 0; i < doc(a).revisions.size(); ++i) {
     const RevisionRecord& x = doc(a).revisions[i];
     const RevisionRecord& y = doc(b).revisions[i];
-    const std::string at = "revisions[" + x.role + "]";
+    const std::string at = "revisions[" + role_name(x.role) + "]";
     same(a, b, at + ".worktree.sha", x.worktree.sha, y.worktree.sha);
     same(a, b, at + ".worktree.dirty", x.worktree.dirty ? "true" : "false",
          y.worktree.dirty ? "true" : "false");

@@ -15,6 +15,7 @@
 #include "builder/build_record.h"
 #include "checkout/worktree.h"
 #include "compare/image_check.h"
+#include "core/domain.h"
 #include "explain/explanation.h"
 #include "measure/change.h"
 #include "measure/ratio.h"
@@ -27,7 +28,7 @@ inline constexpr int kResultsSchemaVersion = 1;
 
 // One measured revision of the tracer and how it was built.
 struct RevisionRecord {
-  std::string role;  // "tracer" for run; "base" and "head" for compare
+  Role role = Role::tracer;  // tracer for run; base and head for compare
   std::string repository;     // as the user named it: a path or a URL
   std::string repository_id;  // checkout/repository_identity.h; "" when not known
   Worktree worktree;
@@ -55,21 +56,22 @@ struct BaselineRecord {
 struct SceneResult {
   SuiteScene entry;
   std::string scene_sha256;  // of the NFF file measured
-  std::string status;        // "measured" or "failed"
+  SceneStatus status = SceneStatus::measured;
   SceneRuns runs;
-  std::map<std::string, RatioSummary> ratios;  // by role, each against the baseline
+  std::map<std::string, RatioSummary> ratios;  // by role_name(), each against the baseline
   std::optional<ChangeSummary> change;        // compare: head against base
-  std::string change_verdict;                 // compare: to_string(ChangeVerdict)
+  // compare: the change's verdict under the policy it was measured with (with `change` only).
+  ChangeVerdict change_verdict = ChangeVerdict::inconclusive;
   std::vector<ImageCheck> images;
   // compare: where a REGRESSED scene's time went, by function (explain/explanation.h).
   std::optional<Explanation> explanation;
 
-  const RatioSummary* ratio(const std::string& role) const;
+  const RatioSummary* ratio(Role role) const;
 };
 
 struct ResultsDocument {
   int schema_version = kResultsSchemaVersion;
-  std::string kind = "run";  // "run" or "compare"
+  DocumentKind kind = DocumentKind::run;
   std::string raygate_version;
   std::string started_at;   // ISO-8601 UTC
   std::string finished_at;  // empty while running
@@ -86,7 +88,7 @@ struct ResultsDocument {
   // at 3 sizes or more; null otherwise. Kept as JSON here: the store does not depend on scaling/.
   nlohmann::json scaling;
 
-  const RevisionRecord* revision(const std::string& role) const;
+  const RevisionRecord* revision(Role role) const;
 };
 
 nlohmann::json to_json(const ResultsDocument& document);

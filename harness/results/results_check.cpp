@@ -12,7 +12,7 @@
 
 #include "compare/image_check.h"
 #include "measure/change.h"
-#include "adapter/json_field.h"
+#include "core/json_field.h"
 
 namespace raygate {
 
@@ -29,7 +29,7 @@ constexpr std::int64_t kMaxCount = std::int64_t{1} << 40;
 constexpr std::int64_t kMaxSide = 1 << 20;  // pixels: past any image a tracer writes
 constexpr double kMaxLog = 50.0;             // |ln ratio|: a factor of 5e21
 
-// Typed access over adapter/json_field.h's path-carrying reader, with the ranges a measured
+// Typed access over core/json_field.h's path-carrying reader, with the ranges a measured
 // document's numbers must be in.
 const JsonField& object(const JsonField& field) {
   if (!field.value().is_object()) {

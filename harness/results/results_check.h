@@ -10,7 +10,7 @@
 
 namespace raygate {
 
-// Throws FieldError (adapter/json_field.h) naming the JSON path of the first problem.
+// Throws FieldError (core/json_field.h) naming the JSON path of the first problem.
 // Unknown members are allowed (a newer raygate of the same schema_version may add some); the
 // schema_version itself is checked by the caller, which words a newer one differently.
 void check_results_json(const nlohmann::json& document);

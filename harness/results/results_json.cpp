@@ -10,7 +10,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
-#include "adapter/json_field.h"
+#include "core/json_field.h"
 #include "core/json_reader.h"
 #include "results/json_number.h"
 #include "results/results_check.h"
@@ -28,6 +28,19 @@ double number_at(const json& object, const char* key, double if_null = 0.0) {
   const json& value = object.at(key);
   return value.is_null() ? if_null : value.get<double>();
 }
+
+// A word of the document's vocabulary read as its enum (core/domain.h): results_check.cpp has
+// already refused unknown words, so this names the field only for a document built in memory.
+template <typename Enum>
+Enum word_at(const json& object, const char* key,
+             std::optional<Enum> (*parse)(std::string_view), const char* field) {
+  const std::string word = object.at(key).get<std::string>();
+  const std::optional<Enum> value = parse(word);
+  if (!value) throw std::invalid_argument(fmt::format("{}: unknown word \"{}\"", field, word));
+  return *value;
+}
+
+std::string word(auto value) { return std::string(to_string(value)); }
 
 json path_list(const std::vector<std::filesystem::path>& paths) {
   json out = json::array();
@@ -217,15 +230,19 @@ void from_json(const json& j, Round& r) {
 }
 
 void to_json(json& j, const ImageCheck& c) {
-  j = json{{"role", c.role},         {"reference", c.reference}, {"actual", c.actual.string()},
-           {"expected", c.expected.string()}, {"verdict", std::string(to_string(c.verdict))},
-           {"metrics", nullptr},     {"evidence", path_list(c.evidence)}};
+  j = json{{"role", word(c.role)},
+           {"reference", word(c.reference)},
+           {"actual", c.actual.string()},
+           {"expected", c.expected.string()},
+           {"verdict", word(c.verdict)},
+           {"metrics", nullptr},
+           {"evidence", path_list(c.evidence)}};
   if (c.metrics) j["metrics"] = *c.metrics;
   if (!c.error.empty()) j["error"] = c.error;
 }
 void from_json(const json& j, ImageCheck& c) {
-  c.role = j.at("role").get<std::string>();
-  c.reference = j.at("reference").get<std::string>();
+  c.role = word_at(j, "role", parse_role, "images.role");
+  c.reference = word_at(j, "reference", parse_image_reference, "images.reference");
   c.actual = j.at("actual").get<std::string>();
   c.expected = j.at("expected").get<std::string>();
   const std::string verdict = j.at("verdict").get<std::string>();
@@ -243,7 +260,7 @@ void from_json(const json& j, ImageCheck& c) {
 void to_json(json& j, const SceneResult& s) {
   j = json{{"scene", s.entry},
            {"scene_sha256", s.scene_sha256},
-           {"status", s.status},
+           {"status", word(s.status)},
            {"stop_reason", s.runs.stop_reason},
            {"seconds_spent", finite_number(s.runs.seconds_spent)},
            {"failure", nullptr},
@@ -253,23 +270,23 @@ void to_json(json& j, const SceneResult& s) {
            {"change", nullptr},
            {"images", s.images}};
   if (s.runs.failed_run) {
-    j["failure"] = {{"role", s.runs.failed_role}, {"run", *s.runs.failed_run}};
+    j["failure"] = {{"role", word(s.runs.failed_role)}, {"run", *s.runs.failed_run}};
   }
   if (!s.runs.partial_round.empty()) j["partial_round"] = s.runs.partial_round;
   if (s.change) {
     j["change"] = *s.change;
-    j["change"]["verdict"] = s.change_verdict;
+    j["change"]["verdict"] = word(s.change_verdict);
   }
   if (s.explanation) j["explanation"] = *s.explanation;  // only when there is one (issue 27)
 }
 void from_json(const json& j, SceneResult& s) {
   s.entry = j.at("scene").get<SuiteScene>();
   s.scene_sha256 = j.at("scene_sha256").get<std::string>();
-  s.status = j.at("status").get<std::string>();
+  s.status = word_at(j, "status", parse_scene_status, "scenes.status");
   s.runs.stop_reason = j.at("stop_reason").get<std::string>();
   s.runs.seconds_spent = number_at(j, "seconds_spent");
   if (const json& failure = j.at("failure"); !failure.is_null()) {
-    s.runs.failed_role = failure.at("role").get<std::string>();
+    s.runs.failed_role = word_at(failure, "role", parse_role, "failure.role");
     s.runs.failed_run = failure.at("run").get<RunRecord>();
   }
   s.runs.warmup = j.at("warmup").get<std::map<std::string, std::vector<RunRecord>>>();
@@ -280,7 +297,7 @@ void from_json(const json& j, SceneResult& s) {
   s.ratios = j.at("ratios").get<std::map<std::string, RatioSummary>>();
   if (const json& change = j.at("change"); !change.is_null()) {
     s.change = change.get<ChangeSummary>();
-    s.change_verdict = change.at("verdict").get<std::string>();
+    s.change_verdict = word_at(change, "verdict", change_verdict_named, "change.verdict");
   }
   s.images = j.at("images").get<std::vector<ImageCheck>>();
   if (const auto found = j.find("explanation"); found != j.end()) {
@@ -289,7 +306,7 @@ void from_json(const json& j, SceneResult& s) {
 }
 
 void to_json(json& j, const RevisionRecord& r) {
-  j = json{{"role", r.role},
+  j = json{{"role", word(r.role)},
            {"repository", r.repository},
            {"worktree", r.worktree},
            {"adapter", {{"name", r.adapter_name}, {"hash", r.adapter_hash}, {"file", r.adapter_file}}},
@@ -300,7 +317,7 @@ void to_json(json& j, const RevisionRecord& r) {
   if (!r.adapter_measurement.empty()) j["adapter"]["measurement"] = r.adapter_measurement;
 }
 void from_json(const json& j, RevisionRecord& r) {
-  r.role = j.at("role").get<std::string>();
+  r.role = word_at(j, "role", parse_role, "revisions.role");
   r.repository = j.at("repository").get<std::string>();
   if (j.contains("repository_id")) r.repository_id = j.at("repository_id").get<std::string>();
   r.worktree = j.at("worktree").get<Worktree>();
@@ -326,12 +343,12 @@ void from_json(const json& j, BaselineRecord& b) {
   b.timing = j.at("timing").get<std::string>();
 }
 
-const RatioSummary* SceneResult::ratio(const std::string& role) const {
-  const auto found = ratios.find(role);
+const RatioSummary* SceneResult::ratio(Role role) const {
+  const auto found = ratios.find(role_name(role));
   return found == ratios.end() ? nullptr : &found->second;
 }
 
-const RevisionRecord* ResultsDocument::revision(const std::string& role) const {
+const RevisionRecord* ResultsDocument::revision(Role role) const {
   for (const RevisionRecord& r : revisions) {
     if (r.role == role) return &r;
   }
@@ -340,7 +357,7 @@ const RevisionRecord* ResultsDocument::revision(const std::string& role) const {
 
 nlohmann::json to_json(const ResultsDocument& d) {
   json j{{"schema_version", d.schema_version},
-              {"kind", d.kind},
+              {"kind", word(d.kind)},
               {"raygate_version", d.raygate_version},
               {"started_at", d.started_at},
               {"finished_at", d.finished_at},
@@ -387,7 +404,7 @@ ResultsDocument results_from_json(const nlohmann::json& j, const std::string& or
     check_results_json(j);
     ResultsDocument d;
     d.schema_version = version;
-    d.kind = j.at("kind").get<std::string>();
+    d.kind = word_at(j, "kind", parse_document_kind, "kind");
     d.raygate_version = j.at("raygate_version").get<std::string>();
     d.started_at = j.at("started_at").get<std::string>();
     d.finished_at = j.at("finished_at").get<std::string>();

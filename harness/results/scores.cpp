@@ -5,20 +5,22 @@
 namespace raygate {
 
 std::map<std::string, SuiteScore> suite_scores(const std::vector<SceneResult>& scenes,
-                                               const std::vector<std::string>& roles) {
+                                               const std::vector<Role>& roles) {
   std::map<std::string, SuiteScore> scores;
-  for (const std::string& role : roles) {
+  for (const Role role : roles) {
     std::vector<std::vector<RoundSample>> per_scene;
     for (const SceneResult& scene : scenes) {
-      if (scene.status == "measured") per_scene.push_back(round_samples(scene.runs.rounds, role));
+      if (scene.status == SceneStatus::measured) {
+        per_scene.push_back(round_samples(scene.runs.rounds, role));
+      }
     }
-    if (!per_scene.empty()) scores[role] = suite_score(per_scene);
+    if (!per_scene.empty()) scores[role_name(role)] = suite_score(per_scene);
   }
   return scores;
 }
 
-std::vector<std::string> scored_roles(const ResultsDocument& document) {
-  std::vector<std::string> roles;
+std::vector<Role> scored_roles(const ResultsDocument& document) {
+  std::vector<Role> roles;
   for (const RevisionRecord& revision : document.revisions) roles.push_back(revision.role);
   return roles;
 }

@@ -13,10 +13,11 @@
 namespace raygate {
 
 // By role (each of `roles` with at least one measured scene); scenes in the order given.
+// Keyed by the role's word, as the document's "scores" are.
 std::map<std::string, SuiteScore> suite_scores(const std::vector<SceneResult>& scenes,
-                                               const std::vector<std::string>& roles);
+                                               const std::vector<Role>& roles);
 
 // The roles a document's scores are over: its revisions' roles (tracer; base and head).
-std::vector<std::string> scored_roles(const ResultsDocument& document);
+std::vector<Role> scored_roles(const ResultsDocument& document);
 
 }  // namespace raygate

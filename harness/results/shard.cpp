@@ -133,7 +133,7 @@ std::vector<SuiteScene> shard_scenes(const std::vector<SuiteScene>& scenes, cons
 std::map<std::string, double> expected_seconds_from(const ResultsDocument& document) {
   std::map<std::string, double> seconds;
   for (const SceneResult& scene : document.scenes) {
-    if (scene.status == "measured" && std::isfinite(scene.runs.seconds_spent) &&
+    if (scene.status == SceneStatus::measured && std::isfinite(scene.runs.seconds_spent) &&
         scene.runs.seconds_spent > 0.0) {
       seconds[scene.entry.id] = scene.runs.seconds_spent;
     }

@@ -52,7 +52,7 @@ BaselineClock matching_baseline_clock(TimingSource source, TimingMetric metric) 
 BaselineContender::BaselineContender(std::filesystem::path executable, std::string sampling,
                                      std::chrono::milliseconds timeout, std::string accel,
                                      BaselineClock clock)
-    : Contender("baseline"),
+    : Contender(Role::baseline),
       executable_(std::move(executable)),
       sampling_(std::move(sampling)),
       timeout_(timeout),

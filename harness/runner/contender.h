@@ -11,6 +11,7 @@
 
 #include "adapter/adapter.h"
 #include "builder/build_record.h"
+#include "core/domain.h"
 #include "core/process.h"
 #include "runner/run_record.h"
 #include "runner/suite.h"
@@ -30,11 +31,13 @@ struct SceneInput {
 
 class Contender {
  public:
-  explicit Contender(std::string role) : role_(std::move(role)) {}
+  explicit Contender(Role role) : role_(role) {}
   virtual ~Contender() = default;
 
-  // "baseline", "tracer", "base", "head": names the contender in rounds and documents.
-  const std::string& role() const { return role_; }
+  Role role() const { return role_; }
+  // The role's word ("baseline", "tracer", "base", "head"): the contender's key in rounds and
+  // documents, and its run directory.
+  std::string name() const { return role_name(role_); }
 
   // The process of one run whose files go in `run_dir` (created by the caller, empty).
   virtual ProcessSpec command(const SceneInput& scene, const std::filesystem::path& run_dir) const = 0;
@@ -51,7 +54,7 @@ class Contender {
                               const std::filesystem::path& run_dir) const = 0;
 
  private:
-  std::string role_;
+  Role role_;
 };
 
 // The common part of interpret(): outcome, times, log; ok only if the process succeeded.

@@ -9,6 +9,10 @@
 
 namespace raygate {
 
+const RunRecord* SceneRuns::first_run(Role role) const {
+  return first_run(role_name(role));
+}
+
 const RunRecord* SceneRuns::first_run(const std::string& role) const {
   if (const auto found = warmup.find(role); found != warmup.end()) {
     for (const RunRecord& run : found->second) {
@@ -48,7 +52,7 @@ class RunLauncher {
       : scene_(scene), executor_(executor), scene_dir_(scene_dir) {}
 
   std::filesystem::path prepare(const Contender& contender, const std::string& label) const {
-    const std::filesystem::path dir = scene_dir_ / contender.role() / label;
+    const std::filesystem::path dir = scene_dir_ / contender.name() / label;
     std::filesystem::remove_all(dir);  // a re-run of an interrupted measurement starts clean
     std::filesystem::create_directories(dir);
     return dir;
@@ -62,7 +66,7 @@ class RunLauncher {
     spec.metered = true;  // the run's peak memory is the contender's own, not raygate's
     if (!cpus.empty()) spec.cpu_affinity = cpus;
     return require_positive_time(contender.interpret(scene_, executor_.run(spec), spec, dir),
-                                 contender.role());
+                                 contender.name());
   }
 
   // Starts all at once, contender i pinned to cpus[i].
@@ -80,7 +84,7 @@ class RunLauncher {
     std::vector<RunRecord> records;
     for (std::size_t i = 0; i < contenders.size(); ++i) {
       records.push_back(require_positive_time(
-          contenders[i]->interpret(scene_, results[i], specs[i], dirs[i]), contenders[i]->role()));
+          contenders[i]->interpret(scene_, results[i], specs[i], dirs[i]), contenders[i]->name()));
     }
     return records;
   }
@@ -153,7 +157,7 @@ SceneRuns run_scene(const SceneInput& scene, std::span<const Contender* const> c
   const double spent_before = out.seconds_spent;
   const bool first_visit = out.rounds.empty();
   out.stop_reason.clear();
-  auto fail = [&](const std::string& role, const RunRecord& run,
+  auto fail = [&](Role role, const RunRecord& run,
                   std::map<std::string, RunRecord> partial_round = {}) {
     out.failed_role = role;
     out.failed_run = run;
@@ -166,7 +170,7 @@ SceneRuns run_scene(const SceneInput& scene, std::span<const Contender* const> c
   for (int w = 1; first_visit && w <= options.warmup_runs; ++w) {
     for (const Contender* contender : contenders) {
       RunRecord run = launcher.run(*contender, fmt::format("warmup-{}", w), cpus_of_round(options, 0));
-      out.warmup[contender->role()].push_back(run);
+      out.warmup[contender->name()].push_back(run);
       if (!run.ok) return fail(contender->role(), run);
     }
   }
@@ -188,13 +192,13 @@ SceneRuns run_scene(const SceneInput& scene, std::span<const Contender* const> c
         const Contender& solo = *roster.front();
         RunRecord run = launcher.run(solo, label, {cpus.front()});
         if (!run.ok) return fail(solo.role(), run, round.runs);
-        round.order.push_back(solo.role());
-        round.runs[solo.role()] = std::move(run);
+        round.order.push_back(solo.name());
+        round.runs[solo.name()] = std::move(run);
         pair = pair.subspan(1);
       }
       const std::vector<RunRecord> runs = launcher.run_together(pair, label, cpus);
       for (std::size_t i = 0; i < pair.size(); ++i) {
-        if (runs[i].ok) round.runs[pair[i]->role()] = runs[i];
+        if (runs[i].ok) round.runs[pair[i]->name()] = runs[i];
       }
       for (std::size_t i = 0; i < pair.size(); ++i) {
         if (!runs[i].ok) return fail(pair[i]->role(), runs[i], round.runs);
@@ -202,7 +206,7 @@ SceneRuns run_scene(const SceneInput& scene, std::span<const Contender* const> c
       // Order by CPU, so the document says which contender had which CPU this round.
       for (std::size_t c = 0; c < cpus.size(); ++c) {
         const auto it = std::find(cpus.begin(), cpus.end(), options.duet_cpus[c]);
-        round.order.push_back(pair[static_cast<std::size_t>(it - cpus.begin())]->role());
+        round.order.push_back(pair[static_cast<std::size_t>(it - cpus.begin())]->name());
       }
     } else {
       const std::vector<const Contender*> present =
@@ -220,8 +224,8 @@ SceneRuns run_scene(const SceneInput& scene, std::span<const Contender* const> c
         RunRecord run = launcher.run(
             contender, earlier == 0 ? label : fmt::format("{}-{}", label, earlier + 1), cpus);
         if (!run.ok) return fail(contender.role(), run, round.runs);
-        round.order.push_back(contender.role());
-        keep_fastest(round.runs, contender.role(), std::move(run));
+        round.order.push_back(contender.name());
+        keep_fastest(round.runs, contender.name(), std::move(run));
       }
     }
     out.rounds.push_back(std::move(round));
@@ -267,15 +271,14 @@ bool normalizer_runs_in(const ScheduleOptions& options, std::size_t index) {
   return options.normalizer_rounds == 0 || index < options.normalizer_rounds;
 }
 
-std::vector<RoundSample> round_samples(const std::vector<Round>& rounds,
-                                       const std::string& tracer_role,
-                                       const std::string& baseline_role) {
+std::vector<RoundSample> round_samples(const std::vector<Round>& rounds, Role tracer_role,
+                                       Role baseline_role) {
   std::vector<RoundSample> samples;
   samples.reserve(rounds.size());
   for (const Round& round : rounds) {
-    const auto baseline = round.runs.find(baseline_role);
+    const auto baseline = round.runs.find(role_name(baseline_role));
     if (baseline == round.runs.end()) continue;  // a round the normalizer did not join
-    samples.push_back({round.runs.at(tracer_role).seconds, baseline->second.seconds});
+    samples.push_back({round.runs.at(role_name(tracer_role)).seconds, baseline->second.seconds});
   }
   return samples;
 }
@@ -284,8 +287,10 @@ std::vector<CompareRound> compare_samples(const std::vector<Round>& rounds) {
   std::vector<CompareRound> samples;
   samples.reserve(rounds.size());
   for (const Round& round : rounds) {
-    CompareRound sample{std::nullopt, round.runs.at("base").seconds, round.runs.at("head").seconds};
-    if (const auto baseline = round.runs.find("baseline"); baseline != round.runs.end()) {
+    CompareRound sample{std::nullopt, round.runs.at(role_name(Role::base)).seconds,
+                        round.runs.at(role_name(Role::head)).seconds};
+    if (const auto baseline = round.runs.find(role_name(Role::baseline));
+        baseline != round.runs.end()) {
       sample.baseline_seconds = baseline->second.seconds;
     }
     samples.push_back(sample);

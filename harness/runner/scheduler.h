@@ -5,7 +5,7 @@
 // round start together, each pinned to its own CPU, and the CPUs rotate too; with three
 // (compare), the first (the baseline) runs alone on the round's first CPU, then the other two
 // start together. Rounds continue
-// until a stop rule (pipeline/stopping.h: the one stopping policy) says enough.
+// until a stop rule (pipeline/stop_rules.h: the one stopping policy) says enough.
 //
 // Processes and time come through Executor and Clock, so the loop is tested with fakes.
 #pragma once
@@ -20,7 +20,7 @@
 
 #include "measure/change.h"
 #include "measure/ratio.h"
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 #include "runner/contender.h"
 #include "runner/executor.h"
 #include "runner/run_record.h"
@@ -73,7 +73,7 @@ struct SceneRuns {
   double seconds_spent = 0.0;
   // When a run failed: whose, and that run (its failure, outcome and log). Measuring the scene
   // stopped there; the rounds before it are kept.
-  std::string failed_role;
+  Role failed_role = Role::tracer;
   std::optional<RunRecord> failed_run;
   // The successful runs of the round that failure cut short, by role. So "base ran before head
   // crashed" reads the same whether the crash came in a warm-up or in the first round.
@@ -83,7 +83,8 @@ struct SceneRuns {
   // The first successful run of `role` (a warm-up if there was one, else a round's, else one of
   // the round a failure cut short): its image is the one compared with the golden. nullptr if
   // there is none.
-  const RunRecord* first_run(const std::string& role) const;
+  const RunRecord* first_run(Role role) const;
+  const RunRecord* first_run(const std::string& role) const;  // by the role's word
 };
 
 using StopRule = std::function<StopDecision(const std::vector<Round>& rounds, double seconds_spent)>;
@@ -111,9 +112,8 @@ SceneRuns continue_scene(const SceneInput& scene, std::span<const Contender* con
                          const RoundObserver& on_round = {});
 
 // The rounds as (tracer, baseline) pairs of their `seconds`, of the rounds both ran in.
-std::vector<RoundSample> round_samples(const std::vector<Round>& rounds,
-                                       const std::string& tracer_role,
-                                       const std::string& baseline_role = "baseline");
+std::vector<RoundSample> round_samples(const std::vector<Round>& rounds, Role tracer_role,
+                                       Role baseline_role = Role::baseline);
 
 // The rounds as (baseline, base, head) triples of their `seconds`, for compare; the baseline's
 // is empty in rounds it did not join.

@@ -17,7 +17,7 @@
 namespace raygate {
 
 struct TracerSetup {
-  std::string role = "tracer";
+  Role role = Role::tracer;
   Adapter adapter;
   BuildRecord build;                     // build_dir and src_dir come from here
   std::filesystem::path repo_root;       // the worktree
@@ -26,7 +26,7 @@ struct TracerSetup {
   std::optional<TimingMetric> metric;
   std::vector<int> cpus;  // pin runs to these CPUs; empty: no pinning
   // The longest one run may take: the adapter's run timeout bounded by the user's budget
-  // (budgeted_run_seconds, measure/stopping.h); 0: the adapter's alone.
+  // (budgeted_run_seconds, measure/stopping_policy.h); 0: the adapter's alone.
   double run_timeout_seconds = 0.0;
   // The simulator, for an adapter timed by "simulated" (--timing sim); required then.
   std::optional<Cachegrind> cachegrind;

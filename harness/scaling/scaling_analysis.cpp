@@ -44,8 +44,7 @@ PowerFit fit_points(const std::vector<ScalingPoint>& points,
 }
 
 std::string family_series(const ResultsDocument& document, const std::vector<const SceneResult*>& scenes) {
-  const std::string role = document.kind == "compare" ? "head" : "tracer";
-  const RevisionRecord* revision = document.revision(role);
+  const RevisionRecord* revision = document.revision(primary_role(document.kind));
   std::string settings;
   for (const SceneResult* scene : scenes) {
     settings += (settings.empty() ? "" : "; ") + scene_settings(scene->entry, document.baseline);
@@ -146,9 +145,9 @@ FamilyScaling analyse_family(const ResultsDocument& document,
   return family;
 }
 
-bool usable(const SceneResult& scene, const std::vector<std::string>& roles) {
-  if (scene.status != "measured" || scene.ratios.empty()) return false;
-  return std::all_of(roles.begin(), roles.end(), [&](const std::string& role) {
+bool usable(const SceneResult& scene, const std::vector<Role>& roles) {
+  if (scene.status != SceneStatus::measured || scene.ratios.empty()) return false;
+  return std::all_of(roles.begin(), roles.end(), [&](Role role) {
     const RatioSummary* ratio = scene.ratio(role);
     return ratio && ratio->tracer_median_seconds > 0 && ratio->baseline_median_seconds > 0 &&
            ratio->ratio > 0;
@@ -159,9 +158,7 @@ bool usable(const SceneResult& scene, const std::vector<std::string>& roles) {
 
 ScalingAnalysis analyse_scaling(const ResultsDocument& document, const ScalingLimits& limits,
                                 const PrimitiveCounter& count) {
-  const std::vector<std::string> roles = document.kind == "compare"
-                                             ? std::vector<std::string>{"base", "head"}
-                                             : std::vector<std::string>{"tracer"};
+  const std::vector<Role> roles = revision_roles(document.kind);
   std::vector<std::string> order;
   std::map<std::string, std::vector<const SceneResult*>> by_family;
   for (const SceneResult& scene : document.scenes) {

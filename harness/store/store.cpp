@@ -37,7 +37,7 @@ std::unique_ptr<ResultsStore> open_store(const std::string& location, StoreOpen 
 }
 
 std::string branch_of(const ResultsDocument& document, const std::string& fallback) {
-  for (const char* role : {"tracer", "head"}) {
+  for (const Role role : {Role::tracer, Role::head}) {
     const RevisionRecord* revision = document.revision(role);
     if (revision && !revision->worktree.ref_name.empty()) {
       return short_ref_name(revision->worktree.ref_name);

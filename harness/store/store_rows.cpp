@@ -27,7 +27,7 @@ std::string text_at(const nlohmann::json& object, const char* key) {
 
 RevisionRow revision_row(const RevisionRecord& r) {
   RevisionRow row;
-  row.role = r.role;
+  row.role = role_name(r.role);
   row.repository = r.repository;
   row.sha = r.worktree.sha;
   row.short_sha = r.worktree.short_sha;
@@ -43,9 +43,9 @@ RevisionRow revision_row(const RevisionRecord& r) {
   return row;
 }
 
-const ImageCheck* golden_check(const SceneResult& scene, const std::string& role) {
+const ImageCheck* golden_check(const SceneResult& scene, Role role) {
   for (const ImageCheck& check : scene.images) {
-    if (check.role == role && check.reference == "golden") return &check;
+    if (check.role == role && check.reference == ImageReference::golden) return &check;
   }
   return nullptr;
 }
@@ -66,26 +66,27 @@ void fill_image(SceneRow& row, const ImageCheck& check) {
   row.image_rms_error = finite(check.metrics->rms_error);
 }
 
-void fill_change(SceneRow& row, const SceneResult& scene) {
-  if (!scene.change || row.role != "head") return;
+// The change is head's against base: stored on head's row.
+void fill_change(SceneRow& row, const SceneResult& scene, Role role) {
+  if (!scene.change || role != Role::head) return;
   row.change = finite(scene.change->change);
   row.change_lower = finite(scene.change->change_interval.lower);
   row.change_upper = finite(scene.change->change_interval.upper);
-  row.change_verdict = scene.change_verdict;
+  row.change_verdict = to_string(scene.change_verdict);
 }
 
 SceneRow scene_row(const ResultsDocument& document, const SceneResult& scene,
                    const RevisionRecord& revision) {
-  const std::string& role = revision.role;
+  const Role role = revision.role;
   SceneRow row;
   row.scene_id = scene.entry.id;
-  row.role = role;
+  row.role = role_name(role);
   row.scene_settings = scene_settings(scene.entry, document.baseline);
   row.series_id = series_key(document, revision, scene).id();
-  row.status = scene.status;
+  row.status = to_string(scene.status);
   if (const RatioSummary* ratio = scene.ratio(role)) fill_ratio(row, *ratio);
   if (const ImageCheck* check = golden_check(scene, role)) fill_image(row, *check);
-  fill_change(row, scene);
+  fill_change(row, scene, role);
   return row;
 }
 
@@ -95,7 +96,7 @@ DocumentRow document_row(const ResultsDocument& d, const std::string& branch,
   row.document_json = canonical_json(d);
   row.content_sha256 = sha256_hex(row.document_json);
   row.schema_version = d.schema_version;
-  row.kind = d.kind;
+  row.kind = to_string(d.kind);
   row.branch = branch;
   row.suite = d.suite;
   row.shard = d.shard;

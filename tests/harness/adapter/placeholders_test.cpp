@@ -5,7 +5,6 @@
 #include <stdexcept>
 
 #include "adapter/placeholders.h"
-#include "adapter/suggest.h"
 #include "core/fs.h"
 #include "core/process.h"
 
@@ -117,14 +116,6 @@ TEST(Placeholders, BraceErrors) {
             "{height}, {seed})");
   EXPECT_EQ(template_error("{Scene}", TemplateField::run),
             "unknown placeholder '{Scene}' (did you mean '{scene}'?)");
-}
-
-TEST(Suggest, EditDistanceCountsATranspositionOnce) {
-  EXPECT_EQ(edit_distance("tiemout_s", "timeout_s"), 1);
-  EXPECT_EQ(edit_distance("", "abc"), 3);
-  EXPECT_EQ(edit_distance("kitten", "sitting"), 3);
-  EXPECT_EQ(closest_match("scen", {"src", "scene", "scene_stem"}), "scene");
-  EXPECT_EQ(closest_match("colour", {"name", "run"}), std::nullopt);
 }
 
 }  // namespace

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "checkout/git_fixture.h"
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 #include "cli_support.h"
 #include "results/results.h"
 #include "tracer_fixture.h"
@@ -55,12 +55,12 @@ TEST_F(CompareCli, SlowerHeadRegressesWithItsNumbersInEveryReport) {
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_TRUE(has(r.out, "slower: head vs base +")) << r.out;
   const ResultsDocument d = document();
-  EXPECT_EQ(d.kind, "compare");
+  EXPECT_EQ(d.kind, DocumentKind::compare);
   ASSERT_EQ(d.revisions.size(), 2u);
   EXPECT_EQ(d.revisions[0].worktree.sha, base);
   EXPECT_EQ(d.revisions[1].worktree.sha, head);
   ASSERT_EQ(d.scenes.size(), 1u);
-  EXPECT_EQ(d.scenes[0].change_verdict, "REGRESSED");
+  EXPECT_EQ(d.scenes[0].change_verdict, ChangeVerdict::regressed);
   ASSERT_TRUE(d.scenes[0].change);
   EXPECT_GT(d.scenes[0].change->change, 1.0);  // four passes: far more than +100%
   // The baseline joins the first rounds only (--baseline-rounds, default 3); base and head every
@@ -83,7 +83,7 @@ TEST_F(CompareCli, WrongShadingFailsOnTheImageAgainstBase) {
   // Named: a range-for over document().scenes.at(0) would outlive the document (C++20).
   const ResultsDocument d = document();
   for (const ImageCheck& check : d.scenes.at(0).images) {
-    if (check.reference == "base") base_check_failed = check.verdict == ImageVerdict::fail;
+    if (check.reference == ImageReference::base) base_check_failed = check.verdict == ImageVerdict::fail;
   }
   EXPECT_TRUE(base_check_failed);
 }
@@ -95,7 +95,7 @@ TEST_F(CompareCli, TheSameCommitTwiceDoesNotRegress) {
   write_file_atomically(policy, R"({"max_slowdown": 1.0})");
   const CliRun r = compare(sha, sha, {"tetra"}, {"--policy", policy.string()});
   EXPECT_EQ(r.exit_code, 0) << r.out;
-  EXPECT_EQ(document().scenes.at(0).change_verdict, "UNCHANGED") << r.out;
+  EXPECT_EQ(document().scenes.at(0).change_verdict, ChangeVerdict::unchanged) << r.out;
 }
 
 TEST_F(CompareCli, HeadCrashingWhereBaseRanFailsTheGate) {
@@ -104,7 +104,7 @@ TEST_F(CompareCli, HeadCrashingWhereBaseRanFailsTheGate) {
   const CliRun r = compare(base, head, {"balls"}, {"--warmup", "1"});
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_TRUE(has(r.out, "head failed where base ran")) << r.out;
-  EXPECT_EQ(document().scenes.at(0).status, "failed");
+  EXPECT_EQ(document().scenes.at(0).status, SceneStatus::failed);
 }
 
 // A tracer that hangs is ended at the user's budget (issue 25, class 10): --max-minutes 0.05

@@ -69,7 +69,9 @@ class GateScenario : public TracerRepoTest {
 
   std::vector<std::string> verdicts() const {
     std::vector<std::string> out;
-    for (const SceneResult& scene : document().scenes) out.push_back(scene.change_verdict);
+    for (const SceneResult& scene : document().scenes) {
+      out.emplace_back(to_string(scene.change_verdict));
+    }
     return out;
   }
 };
@@ -95,11 +97,12 @@ TEST_F(GateScenario, TwiceSlowerFailsOnSpeed) {
   int regressed = 0;
   for (const SceneResult& scene : document().scenes) {
     ASSERT_TRUE(scene.change) << scene.entry.id;
-    EXPECT_TRUE(scene.change_verdict == "REGRESSED" || scene.change_verdict == "INCONCLUSIVE")
-        << scene.entry.id << " " << scene.change_verdict << "\n" << r.out;
+    EXPECT_TRUE(scene.change_verdict == ChangeVerdict::regressed ||
+                scene.change_verdict == ChangeVerdict::inconclusive)
+        << scene.entry.id << " " << to_string(scene.change_verdict) << "\n" << r.out;
     EXPECT_GT(scene.change->change, 0.3) << scene.entry.id;
     EXPECT_LT(scene.change->change, 2.5) << scene.entry.id;
-    if (scene.change_verdict == "REGRESSED") ++regressed;
+    if (scene.change_verdict == ChangeVerdict::regressed) ++regressed;
   }
   EXPECT_GE(regressed, 1) << r.out;
 }
@@ -115,7 +118,7 @@ TEST_F(GateScenario, WrongShadingFailsOnTheImageNotOnSpeed) {
   for (const SceneResult& scene : document().scenes) {
     bool base_check_failed = false;
     for (const ImageCheck& check : scene.images) {
-      if (check.reference == "base") base_check_failed = check.verdict == ImageVerdict::fail;
+      if (check.reference == ImageReference::base) base_check_failed = check.verdict == ImageVerdict::fail;
     }
     EXPECT_TRUE(base_check_failed) << scene.entry.id;
   }

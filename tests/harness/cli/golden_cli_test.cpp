@@ -149,8 +149,8 @@ TEST_F(NewTracerCli, FirstCompareWithoutGoldensPassesAndSaysSoOnce) {
   ASSERT_EQ(d.scenes.size(), 1u);
   bool head_vs_base = false;
   for (const ImageCheck& check : d.scenes[0].images) {
-    if (check.reference == "base") head_vs_base = check.verdict == ImageVerdict::pass;
-    if (check.reference == "golden") {
+    if (check.reference == ImageReference::base) head_vs_base = check.verdict == ImageVerdict::pass;
+    if (check.reference == ImageReference::golden) {
       EXPECT_EQ(check.verdict, ImageVerdict::missing);
     }
   }
@@ -194,8 +194,8 @@ TEST_F(NewTracerCli, GarbageImageOfHeadFailsTheChange) {
   // and read freed strings (this test once failed on garbage where the path began).
   const ResultsDocument d = read_results(dir_.path() / "c.json");
   for (const ImageCheck& check : d.scenes.at(0).images) {
-    if (check.role != "head") continue;
-    EXPECT_EQ(check.verdict, ImageVerdict::fail) << check.reference;
+    if (check.role != Role::head) continue;
+    EXPECT_EQ(check.verdict, ImageVerdict::fail) << to_string(check.reference);
     EXPECT_EQ(check.error.find('\n'), std::string::npos) << check.error;
   }
 }

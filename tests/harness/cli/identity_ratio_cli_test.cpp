@@ -107,7 +107,7 @@ class IdentityRatio : public ::testing::Test {
     ASSERT_EQ(d.scenes.size(), 2u);
     for (const SceneResult& s : d.scenes) {
       SCOPED_TRACE("scene " + s.entry.id + ", baseline clock " + clock);
-      const RatioSummary* r = s.ratio("tracer");
+      const RatioSummary* r = s.ratio(Role::tracer);
       ASSERT_NE(r, nullptr);
       EXPECT_GE(r->ratio, kTimedLowest);
       EXPECT_LE(r->ratio, kTimedHighest);
@@ -172,7 +172,7 @@ TEST_F(IdentityRatio, SimulatedCyclesAgainstSimulatedCyclesIsOne) {
   ASSERT_EQ(d.scenes.size(), 2u);
   for (const SceneResult& s : d.scenes) {
     SCOPED_TRACE("scene " + s.entry.id);
-    const RatioSummary* r = s.ratio("tracer");
+    const RatioSummary* r = s.ratio(Role::tracer);
     ASSERT_NE(r, nullptr);
     EXPECT_NEAR(r->ratio, 1.0, kSimulatedTolerance);
   }

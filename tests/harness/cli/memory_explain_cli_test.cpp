@@ -141,7 +141,7 @@ TEST_F(MemoryExplainSimCli, ASlowerFunctionIsFirstInTheSimulatedExplanation) {
   EXPECT_EQ(r.exit_code, 1) << r.out;
   const ResultsDocument d = read_results(out_);
   ASSERT_EQ(d.scenes.size(), 1u);
-  EXPECT_EQ(d.scenes[0].change_verdict, "REGRESSED");
+  EXPECT_EQ(d.scenes[0].change_verdict, ChangeVerdict::regressed);
   ASSERT_TRUE(d.scenes[0].explanation.has_value()) << r.out;
   const Explanation& e = *d.scenes[0].explanation;
   EXPECT_EQ(e.source, ExplainSource::simulated_runs);

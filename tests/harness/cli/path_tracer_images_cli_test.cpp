@@ -134,7 +134,7 @@ std::vector<ImageCheck> head_checks(const fs::path& document) {
   std::vector<ImageCheck> checks;
   for (const SceneResult& scene : read_results(document).scenes) {
     for (const ImageCheck& check : scene.images) {
-      if (check.role == "head" && check.reference == "base") checks.push_back(check);
+      if (check.role == Role::head && check.reference == ImageReference::base) checks.push_back(check);
     }
   }
   return checks;

@@ -31,13 +31,13 @@ ResultsDocument run_document(const std::string& adapter, const std::string& id,
   ResultsDocument doc;
   doc.suite = "ci";
   RevisionRecord revision;
-  revision.role = "tracer";
+  revision.role = Role::tracer;
   revision.adapter_name = adapter;
   revision.worktree.sha = std::string(40, 'b');
   doc.revisions.push_back(revision);
   SceneResult scene;
   scene.entry = {id, "tetra", 1, 8, 8};
-  scene.status = "measured";
+  scene.status = SceneStatus::measured;
   RunRecord run;
   run.ok = true;
   run.image = image;

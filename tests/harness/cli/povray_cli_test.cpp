@@ -58,14 +58,14 @@ TEST(PovrayCli, RunMeasuresRatiosAndPassesItsGoldens) {
   for (const char* id : {"tetra", "balls"}) {
     const SceneResult* scene = scene_of(doc, id);
     ASSERT_NE(scene, nullptr) << id;
-    EXPECT_EQ(scene->status, "measured") << id;
+    EXPECT_EQ(scene->status, SceneStatus::measured) << id;
     EXPECT_EQ(scene->runs.rounds.size(), 3u) << id;
-    const RatioSummary* ratio = scene->ratio("tracer");
+    const RatioSummary* ratio = scene->ratio(Role::tracer);
     ASSERT_NE(ratio, nullptr) << id;
     EXPECT_GT(ratio->ratio, 0.0) << id;
     ASSERT_EQ(scene->images.size(), 1u) << id;
     const ImageCheck& image = scene->images.front();
-    EXPECT_EQ(image.reference, "golden") << id;
+    EXPECT_EQ(image.reference, ImageReference::golden) << id;
     EXPECT_EQ(image.verdict, ImageVerdict::pass) << id << ": " << image.error;
     EXPECT_EQ(image.expected.filename(), std::string(id) + ".png") << id;
     EXPECT_EQ(image.expected.parent_path().filename(), "povray") << id;
@@ -80,7 +80,7 @@ ResultsDocument document_with_image(const fs::path& image) {
   doc.baseline.version = "raygate-baseline 0.1.0 source-sha256:abc";
   doc.baseline.source_sha256 = "abc";
   RevisionRecord revision;
-  revision.role = "tracer";
+  revision.role = Role::tracer;
   revision.adapter_name = "my-tracer";
   revision.adapter_hash = std::string(64, 'a');
   revision.worktree.revision = "HEAD";
@@ -88,7 +88,7 @@ ResultsDocument document_with_image(const fs::path& image) {
   doc.revisions.push_back(revision);
   SceneResult scene;
   scene.entry = {"tetra", "tetra", 6, 160, 160};
-  scene.status = "measured";
+  scene.status = SceneStatus::measured;
   RunRecord warmup;
   warmup.ok = true;
   warmup.image = image;

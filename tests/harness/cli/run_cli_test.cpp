@@ -100,7 +100,7 @@ const SceneResult& scene(const ResultsDocument& document, const std::string& id)
 }
 
 double ratio(const ResultsDocument& document, const std::string& id) {
-  const RatioSummary* r = scene(document, id).ratio("tracer");
+  const RatioSummary* r = scene(document, id).ratio(Role::tracer);
   return r == nullptr ? 0.0 : r->ratio;
 }
 
@@ -111,7 +111,7 @@ bool has(const std::string& text, const std::string& part) {
 // Every run of a measured scene: successful, timed, with its log and image on disk.
 void expect_measured(const SceneResult& s) {
   SCOPED_TRACE("scene " + s.entry.id);
-  EXPECT_EQ(s.status, "measured");
+  EXPECT_EQ(s.status, SceneStatus::measured);
   EXPECT_FALSE(s.runs.failed());
   ASSERT_EQ(s.runs.rounds.size(), 3u);  // --max-rounds 3 (min_rounds shrinks to 3 as well)
   EXPECT_EQ(s.scene_sha256.size(), 64u);
@@ -127,7 +127,7 @@ void expect_measured(const SceneResult& s) {
     }
     EXPECT_TRUE(round.runs.at("baseline").reported_seconds);  // in-process time from --stats
   }
-  const RatioSummary* r = s.ratio("tracer");
+  const RatioSummary* r = s.ratio(Role::tracer);
   ASSERT_NE(r, nullptr);
   EXPECT_EQ(r->rounds, 3u);
   EXPECT_GT(r->ratio, 0.0);
@@ -145,7 +145,7 @@ TEST_F(RunCli, MeasuresARevisionIntoACompleteDocument) {
 
   const ResultsDocument d = read_results(dir_.path() / "r.json");
   EXPECT_TRUE(d.complete);
-  EXPECT_EQ(d.kind, "run");
+  EXPECT_EQ(d.kind, DocumentKind::run);
   EXPECT_EQ(d.suite, "tiny");
   EXPECT_FALSE(d.finished_at.empty());
   EXPECT_TRUE(has(d.baseline.version, "raygate-baseline")) << d.baseline.version;
@@ -241,7 +241,7 @@ TEST_F(RunCli, RunsStartedTogetherKeepTheirOwnRunDirectories) {
   EXPECT_NE(documents[0], documents[1]);
   EXPECT_NE(documents[0].parent_path(), documents[1].parent_path());
   for (const fs::path& document : documents) {
-    EXPECT_EQ(read_results(document).scenes.at(0).status, "measured") << document;
+    EXPECT_EQ(read_results(document).scenes.at(0).status, SceneStatus::measured) << document;
   }
 }
 
@@ -255,9 +255,9 @@ TEST_F(RunCli, CrashIsRecordedForItsSceneAndTheOtherSceneIsMeasured) {
   EXPECT_TRUE(d.complete);
   expect_measured(scene(d, "tetra"));
   const SceneResult& balls = scene(d, "balls");
-  EXPECT_EQ(balls.status, "failed");
+  EXPECT_EQ(balls.status, SceneStatus::failed);
   ASSERT_TRUE(balls.runs.failed());
-  EXPECT_EQ(balls.runs.failed_role, "tracer");
+  EXPECT_EQ(balls.runs.failed_role, Role::tracer);
   EXPECT_TRUE(has(balls.runs.failed_run->outcome, "killed by signal 6 (ABRT)"))
       << balls.runs.failed_run->outcome;
   EXPECT_TRUE(fs::exists(balls.runs.failed_run->log));
@@ -273,7 +273,7 @@ TEST_F(RunCli, TracerThatWritesNoImageFailsEveryScene) {
   const ResultsDocument d = read_results(dir_.path() / "r.json");
   ASSERT_EQ(d.scenes.size(), 2u);
   for (const SceneResult& s : d.scenes) {
-    EXPECT_EQ(s.status, "failed") << s.entry.id;
+    EXPECT_EQ(s.status, SceneStatus::failed) << s.entry.id;
     ASSERT_TRUE(s.runs.failed()) << s.entry.id;
     EXPECT_EQ(s.runs.failed_run->outcome, "exited with status 0");
     EXPECT_TRUE(has(s.runs.failed_run->failure, "wrote no image")) << s.runs.failed_run->failure;
@@ -304,7 +304,7 @@ TEST_F(RunCli, HangIsStoppedAtTheAdaptersRunTimeout) {
   ASSERT_EQ(d.scenes.size(), 1u);
   const SceneRuns& runs = d.scenes[0].runs;
   ASSERT_TRUE(runs.failed());
-  EXPECT_EQ(runs.failed_role, "tracer");
+  EXPECT_EQ(runs.failed_role, Role::tracer);
   EXPECT_TRUE(has(runs.failed_run->outcome, "timed out after 1")) << runs.failed_run->outcome;
   EXPECT_LT(runs.failed_run->wall_seconds, 5.0);  // SIGTERM at 1 s ended the sleep
   EXPECT_TRUE(has(r.out, "timed out")) << r.out;
@@ -326,7 +326,7 @@ TEST_F(RunCli, HangIsStoppedAtTheUsersBudget) {
   const ResultsDocument d = read_results(dir_.path() / "r.json");
   ASSERT_EQ(d.scenes.size(), 1u);
   ASSERT_TRUE(d.scenes[0].runs.failed());
-  EXPECT_EQ(d.scenes[0].runs.failed_role, "tracer");
+  EXPECT_EQ(d.scenes[0].runs.failed_role, Role::tracer);
   EXPECT_TRUE(has(d.scenes[0].runs.failed_run->outcome, "timed out after 2"))
       << d.scenes[0].runs.failed_run->outcome;
   EXPECT_TRUE(has(r.out, "timed out")) << r.out;

@@ -110,7 +110,7 @@ TEST_F(SimCli, AaCompareIsExactlyZeroAfterTwoRoundsAndTheBaselineIsThenCached) {
   EXPECT_EQ(c.change, 0.0);
   EXPECT_EQ(c.change_interval.lower, 0.0);
   EXPECT_EQ(c.change_interval.upper, 0.0);
-  EXPECT_EQ(document_.scenes[0].change_verdict, "UNCHANGED");
+  EXPECT_EQ(document_.scenes[0].change_verdict, ChangeVerdict::unchanged);
   ASSERT_EQ(document_.scenes[0].runs.rounds.size(), 2u);
   EXPECT_EQ(document_.settings.at("tracer_clock"), "simulated-cycles");
   EXPECT_EQ(document_.baseline.timing, "simulated-cycles");
@@ -149,7 +149,7 @@ TEST_F(SimCli, TwiceSlowerHeadExitsOneAtPlusHundredPercent) {
   const ChangeSummary& c = change();
   EXPECT_TRUE(c.exact);
   EXPECT_NEAR(c.change, 1.0, 0.05);
-  EXPECT_EQ(document_.scenes[0].change_verdict, "REGRESSED");
+  EXPECT_EQ(document_.scenes[0].change_verdict, ChangeVerdict::regressed);
 }
 
 TEST_F(SimCli, OnePercentSlowerHeadIsRegressedAtAHalfPercentLimit) {
@@ -165,7 +165,7 @@ TEST_F(SimCli, OnePercentSlowerHeadIsRegressedAtAHalfPercentLimit) {
   EXPECT_TRUE(c.exact);
   EXPECT_GT(c.change, 0.005);
   EXPECT_LT(c.change, 0.015);
-  EXPECT_EQ(document_.scenes[0].change_verdict, "REGRESSED");
+  EXPECT_EQ(document_.scenes[0].change_verdict, ChangeVerdict::regressed);
   EXPECT_EQ(document_.scenes[0].runs.rounds.size(), 2u);
 }
 

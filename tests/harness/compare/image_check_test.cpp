@@ -33,7 +33,7 @@ class ImageCheckTest : public ::testing::Test {
   }
 
   ImageCheck check(const fs::path& actual, const GoldenEntry& rendered) const {
-    return check_against_golden("tracer", actual, kGolden, manifest_, rendered, {},
+    return check_against_golden(Role::tracer, actual, kGolden, manifest_, rendered, {},
                                 dir_.path() / "evidence");
   }
 
@@ -46,7 +46,7 @@ TEST_F(ImageCheckTest, SameSettingsAndPixelsPass) {
   EXPECT_EQ(c.verdict, ImageVerdict::pass) << c.error;
   ASSERT_TRUE(c.metrics);
   EXPECT_TRUE(c.metrics->identical());
-  EXPECT_EQ(c.reference, "golden");
+  EXPECT_EQ(c.reference, ImageReference::golden);
   EXPECT_EQ(c.expected, kGolden / "tetra.png");
 }
 
@@ -110,7 +110,7 @@ TEST_F(ImageCheckTest, TruncatedPngFailsWithOneLine) {
     EXPECT_NE(c.error.find("cannot read image"), std::string::npos) << c.error;
     EXPECT_EQ(c.error.find('\n'), std::string::npos) << c.error;
   }
-  const ImageCheck against_base = check_image("head", "base", truncated, kGolden / "tetra.png", {},
+  const ImageCheck against_base = check_image(Role::head, ImageReference::base, truncated, kGolden / "tetra.png", {},
                                               dir_.path() / "evidence", "tetra.head-vs-base");
   EXPECT_EQ(against_base.verdict, ImageVerdict::fail) << against_base.error;
 }
@@ -147,7 +147,7 @@ fs::path grey_pfm(const TempDir& dir, const std::string& name, int nan_pixels) {
 }
 
 TEST_F(ImageCheckTest, NanPixelsOfAPfmAreCountedAndFail) {
-  const ImageCheck c = check_image("tracer", "golden", grey_pfm(dir_, "nan.pfm", 3),
+  const ImageCheck c = check_image(Role::tracer, ImageReference::golden, grey_pfm(dir_, "nan.pfm", 3),
                                    grey_pfm(dir_, "good.pfm", 0), {}, dir_.path() / "evidence",
                                    "grey");
   EXPECT_EQ(c.verdict, ImageVerdict::fail) << c.error;
@@ -168,7 +168,7 @@ TEST_F(ImageCheckTest, NanPixelsAreCountedAndFail) {
     EXPECT_EQ(text.find("max nan"), std::string::npos) << text;
   }
   // Without a golden too.
-  const ImageCheck alone = check_against_golden("tracer", with_nan(dir_, "n.exr", 2),
+  const ImageCheck alone = check_against_golden(Role::tracer, with_nan(dir_, "n.exr", 2),
                                                 dir_.path() / "none", GoldenManifest{},
                                                 ci_tetra(), {}, dir_.path() / "evidence");
   EXPECT_EQ(alone.verdict, ImageVerdict::fail);
@@ -177,7 +177,7 @@ TEST_F(ImageCheckTest, NanPixelsAreCountedAndFail) {
 
 // NaN in the reference (base's image) is no reference: the check could not be made.
 TEST_F(ImageCheckTest, NanInTheReferenceIsAnError) {
-  const ImageCheck c = check_image("head", "base", kGolden / "tetra.png",
+  const ImageCheck c = check_image(Role::head, ImageReference::base, kGolden / "tetra.png",
                                    with_nan(dir_, "base.exr", 3), {}, dir_.path() / "evidence",
                                    "tetra.head-vs-base");
   EXPECT_EQ(c.verdict, ImageVerdict::error);
@@ -190,9 +190,9 @@ TEST_F(ImageCheckTest, NoGoldensAtAllSaysTheSameForEveryScene) {
   const fs::path empty = dir_.path() / "golden" / "my-tracer";
   GoldenEntry balls = ci_tetra();
   balls.id = balls.scene = "balls";
-  const ImageCheck a = check_against_golden("tracer", kGolden / "tetra.png", empty,
+  const ImageCheck a = check_against_golden(Role::tracer, kGolden / "tetra.png", empty,
                                             GoldenManifest{}, ci_tetra(), {}, dir_.path());
-  const ImageCheck b = check_against_golden("tracer", kGolden / "balls.png", empty,
+  const ImageCheck b = check_against_golden(Role::tracer, kGolden / "balls.png", empty,
                                             GoldenManifest{}, balls, {}, dir_.path());
   EXPECT_EQ(a.verdict, ImageVerdict::missing);
   EXPECT_FALSE(a.failed());

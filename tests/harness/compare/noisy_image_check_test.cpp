@@ -43,7 +43,7 @@ TEST(NoisyImageCheck, ABiasedHeadFailsWithEvidence) {
   const TempDir dir;
   std::mt19937_64 rng(41);
   const ImageCheck check = check_noisy_images(
-      "head", "base", renders(dir.path(), "head", 6, 0.9, rng), renders(dir.path(), "base", 6, 1.0, rng),
+      Role::head, ImageReference::base, renders(dir.path(), "head", 6, 0.9, rng), renders(dir.path(), "base", 6, 1.0, rng),
       noisy_thresholds_for(1), dir.path() / "evidence", "s.head-vs-base");
   EXPECT_EQ(check.verdict, ImageVerdict::fail) << check.error;
   EXPECT_FALSE(check.metrics.has_value());
@@ -57,7 +57,7 @@ TEST(NoisyImageCheck, SameImageOtherSeedsPasses) {
   const TempDir dir;
   std::mt19937_64 rng(43);
   const ImageCheck check = check_noisy_images(
-      "head", "base", renders(dir.path(), "head", 6, 1.0, rng), renders(dir.path(), "base", 6, 1.0, rng),
+      Role::head, ImageReference::base, renders(dir.path(), "head", 6, 1.0, rng), renders(dir.path(), "base", 6, 1.0, rng),
       noisy_thresholds_for(1), dir.path() / "evidence", "s");
   EXPECT_EQ(check.verdict, ImageVerdict::pass) << check.error;
   EXPECT_TRUE(check.evidence.empty());
@@ -70,7 +70,7 @@ TEST(NoisyImageCheck, ANaNInOneOfTheTracersRunsFails) {
   RgbImage broken = read_rgb_image(head[1]);
   broken.rgb[(5 * 32 + 7) * 3 + 1] = std::numeric_limits<float>::quiet_NaN();
   write_rgb_image(broken, head[1]);
-  const ImageCheck check = check_noisy_images("head", "base", head,
+  const ImageCheck check = check_noisy_images(Role::head, ImageReference::base, head,
                                               renders(dir.path(), "base", 3, 1.0, rng),
                                               noisy_thresholds_for(1), dir.path(), "s");
   EXPECT_EQ(check.verdict, ImageVerdict::fail);
@@ -83,7 +83,7 @@ TEST(NoisyImageCheck, AnUnreadableReferenceIsAnError) {
   std::mt19937_64 rng(53);
   write_file_atomically(dir.path() / "base0.exr", "not an image");
   const ImageCheck check =
-      check_noisy_images("head", "base", renders(dir.path(), "head", 3, 1.0, rng),
+      check_noisy_images(Role::head, ImageReference::base, renders(dir.path(), "head", 3, 1.0, rng),
                          {dir.path() / "base0.exr"}, noisy_thresholds_for(1), dir.path(), "s");
   EXPECT_EQ(check.verdict, ImageVerdict::error);
   EXPECT_NE(check.error.find("base0.exr: cannot read image"), std::string::npos) << check.error;
@@ -93,7 +93,7 @@ TEST(NoisyImageCheck, RunsThatAreAllTheSameImageAreNoted) {
   const TempDir dir;
   std::mt19937_64 rng(59);
   const std::vector<fs::path> one = renders(dir.path(), "same", 1, 1.0, rng);
-  const ImageCheck check = check_noisy_images("head", "base", {one[0], one[0], one[0]},
+  const ImageCheck check = check_noisy_images(Role::head, ImageReference::base, {one[0], one[0], one[0]},
                                               renders(dir.path(), "base", 4, 1.0, rng),
                                               noisy_thresholds_for(1), dir.path(), "s");
   EXPECT_NE(check.error.find("runs' images are identical: is {seed} reaching"), std::string::npos)

@@ -132,7 +132,7 @@ TEST(Consistency, ThreeDocumentsGiveThreePairsAndOverall) {
 TEST(Consistency, MissingSceneIsReportedAndExcluded) {
   DocumentSpec b = machine("neolith", kB);
   b.scenes.erase(b.scenes.begin() + 1);  // no gears
-  b.scenes.back().status = "failed";     // teapot failed: not measured either
+  b.scenes.back().status = SceneStatus::failed;     // teapot failed: not measured either
   const ConsistencyResult r = analyse({machine("straylight", kA), b});
   ASSERT_EQ(r.missing.size(), 2u);
   EXPECT_EQ(r.missing[0].id, "gears");
@@ -145,12 +145,12 @@ TEST(Consistency, MissingSceneIsReportedAndExcluded) {
 
 TEST(Consistency, CompareDocumentsUseTheHeadRatio) {
   DocumentSpec spec = machine("neolith", kA);
-  spec.kind = "compare";
-  spec.roles = {"base", "head"};
+  spec.kind = DocumentKind::compare;
+  spec.roles = {Role::base, Role::head};
   ResultsDocument document = make_document(spec);
   for (SceneResult& scene : document.scenes) scene.ratios["base"].ratio = 9.0;
   const DocumentRatios d = document_ratios(document, "cmp.json", "A");
-  EXPECT_EQ(d.role, "head");
+  EXPECT_EQ(d.role, Role::head);
   EXPECT_DOUBLE_EQ(d.scenes.at("balls").ratio, 0.5);
   document.revisions.pop_back();  // no head revision
   EXPECT_THROW(document_ratios(document, "cmp.json", "A"), UsageError);

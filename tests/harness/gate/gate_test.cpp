@@ -73,7 +73,7 @@ SceneResult compared(const std::string& id, double change, double lower, double 
                      std::size_t rounds = 10) {
   SceneResult scene;
   scene.entry.id = id;
-  scene.status = "measured";
+  scene.status = SceneStatus::measured;
   scene.change = ChangeSummary{};
   scene.change->change = change;
   scene.change->change_interval = {lower, upper};
@@ -83,7 +83,7 @@ SceneResult compared(const std::string& id, double change, double lower, double 
 
 ResultsDocument compare_document(std::vector<SceneResult> scenes) {
   ResultsDocument document;
-  document.kind = "compare";
+  document.kind = DocumentKind::compare;
   document.complete = true;
   document.scenes = std::move(scenes);
   return document;
@@ -93,7 +93,7 @@ TEST(GateVerdict, TooFewRoundsDecideNothing) {
   // Five rounds cannot give a 95% interval for a median: whatever the numbers, INCONCLUSIVE.
   const GateResult gate = evaluate_gate(
       compare_document({compared("tetra", 0.40, 0.002, 0.45, 5)}), GatePolicy{});
-  EXPECT_EQ(gate.scenes[0].speed, "INCONCLUSIVE");
+  EXPECT_EQ(gate.scenes[0].speed, SpeedVerdict::inconclusive);
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::warn);
   EXPECT_EQ(gate.exit_code, 0);
 }
@@ -104,12 +104,12 @@ TEST(GateVerdict, RegressionFailsWithItsNumbers) {
       GatePolicy{});
   EXPECT_EQ(gate.exit_code, 1);
   ASSERT_EQ(gate.scenes.size(), 2u);
-  EXPECT_EQ(gate.scenes[0].speed, "REGRESSED");
+  EXPECT_EQ(gate.scenes[0].speed, SpeedVerdict::regressed);
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::fail);
   ASSERT_EQ(gate.scenes[0].reasons.size(), 1u);
   EXPECT_NE(gate.scenes[0].reasons[0].find("+7.9% [+6.1%, +9.8%] 95% CI"), std::string::npos)
       << gate.scenes[0].reasons[0];
-  EXPECT_EQ(gate.scenes[1].speed, "UNCHANGED");
+  EXPECT_EQ(gate.scenes[1].speed, SpeedVerdict::unchanged);
   EXPECT_EQ(gate.scenes[1].outcome, GateOutcome::pass);
 }
 
@@ -120,14 +120,14 @@ TEST(GateVerdict, APerSceneLimitDecides) {
   policy.scenes["mount"].reason = "noisy";
   const GateResult gate = evaluate_gate(compare_document({compared("mount", 0.079, 0.061, 0.098)}), policy);
   EXPECT_EQ(gate.exit_code, 0);
-  EXPECT_EQ(gate.scenes[0].speed, "UNCHANGED");
+  EXPECT_EQ(gate.scenes[0].speed, SpeedVerdict::unchanged);
 }
 
 TEST(GateVerdict, InconclusiveWarnsUnlessTheFlagSaysFail) {
   const ResultsDocument document = compare_document({compared("tetra", 0.02, -0.01, 0.05)});
   GatePolicy policy;
   GateResult gate = evaluate_gate(document, policy);
-  EXPECT_EQ(gate.scenes[0].speed, "INCONCLUSIVE");
+  EXPECT_EQ(gate.scenes[0].speed, SpeedVerdict::inconclusive);
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::warn);
   EXPECT_EQ(gate.exit_code, 0);
   policy.fail_on_inconclusive = true;
@@ -136,10 +136,10 @@ TEST(GateVerdict, InconclusiveWarnsUnlessTheFlagSaysFail) {
   EXPECT_EQ(gate.exit_code, 1);
 }
 
-SceneResult failed(const std::string& id, const std::string& role, bool base_ran) {
+SceneResult failed(const std::string& id, Role role, bool base_ran) {
   SceneResult scene;
   scene.entry.id = id;
-  scene.status = "failed";
+  scene.status = SceneStatus::failed;
   RunRecord crash;
   crash.outcome = "killed by signal 6 (ABRT)";
   crash.failure = "tracer killed by signal 6 (ABRT)";
@@ -154,23 +154,23 @@ SceneResult failed(const std::string& id, const std::string& role, bool base_ran
 }
 
 TEST(GateVerdict, HeadCrashingWhereBaseRanIsTheChangesFault) {
-  const GateResult gate = evaluate_gate(compare_document({failed("balls", "head", true)}), GatePolicy{});
+  const GateResult gate = evaluate_gate(compare_document({failed("balls", Role::head, true)}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::fail);
   EXPECT_NE(gate.scenes[0].reasons[0].find("head failed where base ran"), std::string::npos);
   EXPECT_EQ(gate.exit_code, 1);
 }
 
 TEST(GateVerdict, BaseOrBaselineFailingMeansNotMeasured) {
-  for (const std::string role : {"base", "baseline"}) {
+  for (const Role role : {Role::base, Role::baseline}) {
     const GateResult gate = evaluate_gate(compare_document({failed("balls", role, false)}), GatePolicy{});
-    EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::unmeasured) << role;
-    EXPECT_EQ(gate.exit_code, 3) << role;
+    EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::unmeasured) << to_string(role);
+    EXPECT_EQ(gate.exit_code, 3) << to_string(role);
   }
 }
 
 TEST(GateVerdict, ARegressionOutranksAnUnmeasuredScene) {
   const GateResult gate = evaluate_gate(
-      compare_document({failed("balls", "base", false), compared("mount", 0.2, 0.15, 0.25)}),
+      compare_document({failed("balls", Role::base, false), compared("mount", 0.2, 0.15, 0.25)}),
       GatePolicy{});
   EXPECT_EQ(gate.exit_code, 1);
   EXPECT_EQ(gate.count(GateOutcome::unmeasured), 1u);
@@ -181,21 +181,21 @@ TEST(GateVerdict, ImagesFailWarnOrCannotBeChecked) {
   SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
   ImageMetrics metrics;
   metrics.max_error = 0.6;
-  scene.images.push_back({"head", "golden", "a.png", "g.png", ImageVerdict::fail, "", metrics, {}});
+  scene.images.push_back({Role::head, ImageReference::golden, "a.png", "g.png", ImageVerdict::fail, "", metrics, {}});
   scene.images.push_back(
-      {"head", "base", "a.png", "b.png", ImageVerdict::pass, "", ImageMetrics{}, {}});
+      {Role::head, ImageReference::base, "a.png", "b.png", ImageVerdict::pass, "", ImageMetrics{}, {}});
   GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].image, ImageVerdict::fail);
   EXPECT_EQ(gate.exit_code, 1);
 
   scene.images = {
-      {"tracer", "golden", "a.png", "g.png", ImageVerdict::missing, "no golden image", {}, {}}};
+      {Role::tracer, ImageReference::golden, "a.png", "g.png", ImageVerdict::missing, "no golden image", {}, {}}};
   gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::pass);  // a note for the document, not a warning
   EXPECT_EQ(gate.exit_code, 0);
 
   scene.images = {
-      {"tracer", "golden", "a.png", "g.png", ImageVerdict::error, "cannot read a.png", {}, {}}};
+      {Role::tracer, ImageReference::golden, "a.png", "g.png", ImageVerdict::error, "cannot read a.png", {}, {}}};
   gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::unmeasured);
   EXPECT_EQ(gate.exit_code, 3);
@@ -225,17 +225,17 @@ TEST(GateVerdict, ADocumentWithNoScenesCannotPass) {
 // A tracer without goldens: every scene's "no goldens" check becomes one note with the count
 // and how to bless; no scene warns or fails for it. Different reasons stay apart.
 TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
-  const ImageCheck none{"head", "golden", "a.png", "g", ImageVerdict::missing,
+  const ImageCheck none{Role::head, ImageReference::golden, "a.png", "g", ImageVerdict::missing,
                         "no goldens in g (none blessed yet)", {}, {}};
   const ImageCheck same{
-      "head", "base", "a.png", "b.png", ImageVerdict::pass, "", ImageMetrics{}, {}};
+      Role::head, ImageReference::base, "a.png", "b.png", ImageVerdict::pass, "", ImageMetrics{}, {}};
   std::vector<SceneResult> scenes;
   for (const char* id : {"balls", "gears", "tetra"}) {
     scenes.push_back(compared(id, 0.0, -0.01, 0.01));
     scenes.back().images = {none, same};
   }
   scenes.back().images.push_back(
-      {"base", "golden", "b.png", "g", ImageVerdict::missing, "no golden image for 'tetra'", {},
+      {Role::base, ImageReference::golden, "b.png", "g", ImageVerdict::missing, "no golden image for 'tetra'", {},
        {}});
   const GateResult gate = evaluate_gate(compare_document(scenes), GatePolicy{});
   EXPECT_EQ(gate.exit_code, 0);
@@ -258,8 +258,8 @@ TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
 TEST(GateVerdict, ABrokenBaseImageCouldNotBeCheckedItIsNotTheChangesFault) {
   SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
   scene.images = {
-      {"base", "golden", "b.png", "g", ImageVerdict::fail, "b.png has 12 NaN pixels", {}, {}},
-      {"head", "base", "a.png", "b.png", ImageVerdict::error, "b.png: cannot compare", {}, {}}};
+      {Role::base, ImageReference::golden, "b.png", "g", ImageVerdict::fail, "b.png has 12 NaN pixels", {}, {}},
+      {Role::head, ImageReference::base, "a.png", "b.png", ImageVerdict::error, "b.png: cannot compare", {}, {}}};
   const GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.exit_code, 3);
   ASSERT_EQ(gate.scenes.size(), 1u);
@@ -274,7 +274,7 @@ TEST(GateVerdict, ABrokenBaseImageCouldNotBeCheckedItIsNotTheChangesFault) {
 TEST(GateVerdict, AnUnreadableImageFailsWithItsReason) {
   SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
   scene.images = {
-      {"head", "base", "a.ppm", "b.ppm", ImageVerdict::fail, "a.ppm: cannot read image: bad", {},
+      {Role::head, ImageReference::base, "a.ppm", "b.ppm", ImageVerdict::fail, "a.ppm: cannot read image: bad", {},
        {}}};
   const GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.exit_code, 1);
@@ -284,14 +284,14 @@ TEST(GateVerdict, AnUnreadableImageFailsWithItsReason) {
 
 TEST(GateVerdict, ARunIsJudgedOnFailuresAndImagesOnly) {
   ResultsDocument document;
-  document.kind = "run";
+  document.kind = DocumentKind::run;
   document.complete = true;
   SceneResult scene;
   scene.entry.id = "tetra";
-  scene.status = "measured";
+  scene.status = SceneStatus::measured;
   document.scenes.push_back(scene);
   const GateResult gate = evaluate_gate(document, GatePolicy{});
-  EXPECT_EQ(gate.scenes[0].speed, "MEASURED");
+  EXPECT_EQ(gate.scenes[0].speed, SpeedVerdict::measured);
   EXPECT_EQ(gate.exit_code, 0);
 }
 

@@ -78,7 +78,7 @@ RunRecord run_with_peak(long kib, bool own = true) {
 SceneResult compare_scene(const std::string& id, long base_kib, long head_kib, bool own = true) {
   SceneResult scene;
   scene.entry.id = id;
-  scene.status = "measured";
+  scene.status = SceneStatus::measured;
   for (int i = 0; i < 3; ++i) {
     Round round;
     round.order = {"base", "head"};
@@ -90,13 +90,13 @@ SceneResult compare_scene(const std::string& id, long base_kib, long head_kib, b
   change.rounds = 3;
   change.exact = true;  // judged by its change alone: 0, UNCHANGED
   scene.change = change;
-  scene.change_verdict = "UNCHANGED";
+  scene.change_verdict = ChangeVerdict::unchanged;
   return scene;
 }
 
 ResultsDocument compare_document(std::vector<SceneResult> scenes) {
   ResultsDocument d;
-  d.kind = "compare";
+  d.kind = DocumentKind::compare;
   d.complete = true;
   d.scenes = std::move(scenes);
   return d;

@@ -3,7 +3,7 @@
 // 13 scenes raise at most 1% false alarms (and one-look verdicts at every round raise far more),
 // +5% is detected in at least 95% of 6-scene compares, and the time budget's shares.
 #include "measure/family.h"
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 
 #include <gtest/gtest.h>
 

@@ -10,7 +10,7 @@
 
 #include "core/error.h"
 #include "measure/bootstrap.h"
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 #include "synthetic.h"
 
 namespace raygate {

@@ -25,24 +25,24 @@ TEST_F(ComparePipelineTest, ASlowerHeadIsRegressedOnEveryScene) {
   const std::string head = commit_tracer("2.4", "head: 20% slower");
   const auto [document, path, unwritten] = compare(base, head);
   EXPECT_TRUE(unwritten.empty());
-  EXPECT_EQ(document.kind, "compare");
+  EXPECT_EQ(document.kind, DocumentKind::compare);
   EXPECT_TRUE(document.complete);
   ASSERT_EQ(document.revisions.size(), 2u);
-  EXPECT_EQ(document.revisions[0].role, "base");
+  EXPECT_EQ(document.revisions[0].role, Role::base);
   EXPECT_EQ(document.revisions[0].worktree.sha, base);
-  EXPECT_EQ(document.revisions[1].role, "head");
+  EXPECT_EQ(document.revisions[1].role, Role::head);
   ASSERT_EQ(document.scenes.size(), 2u);
   for (const SceneResult& scene : document.scenes) {
     ASSERT_TRUE(scene.change.has_value()) << scene.entry.id;
     EXPECT_NEAR(scene.change->change, 0.2, 1e-9);
-    EXPECT_EQ(scene.change_verdict, "REGRESSED");
+    EXPECT_EQ(scene.change_verdict, ChangeVerdict::regressed);
     // Two scenes share the family's 1%: each decision sequence (0.5% each side) is bounded from
     // its 11th round, and with exact times the verdict is decided then.
     EXPECT_EQ(min_values_for_median_sequence(0.01 / 2), 11u);
     EXPECT_EQ(scene.runs.rounds.size(), 11u);
     EXPECT_EQ(scene.runs.stop_reason, "stop_converged");
-    EXPECT_DOUBLE_EQ(scene.ratio("base")->ratio, 2.0);
-    EXPECT_DOUBLE_EQ(scene.ratio("head")->ratio, 2.4);
+    EXPECT_DOUBLE_EQ(scene.ratio(Role::base)->ratio, 2.0);
+    EXPECT_DOUBLE_EQ(scene.ratio(Role::head)->ratio, 2.4);
   }
   EXPECT_TRUE(std::filesystem::exists(path));
 }
@@ -52,10 +52,10 @@ TEST_F(ComparePipelineTest, AnEqualHeadIsUnchangedAndItsImageMatchesBase) {
   const std::string head = commit_tracer("2.0", "head: a comment");
   const auto [document, path, unwritten] = compare(base, head);
   for (const SceneResult& scene : document.scenes) {
-    EXPECT_EQ(scene.change_verdict, "UNCHANGED") << scene.entry.id;
+    EXPECT_EQ(scene.change_verdict, ChangeVerdict::unchanged) << scene.entry.id;
     bool checked_against_base = false;
     for (const ImageCheck& check : scene.images) {
-      if (check.reference != "base") continue;
+      if (check.reference != ImageReference::base) continue;
       checked_against_base = true;
       EXPECT_EQ(check.verdict, ImageVerdict::pass);
     }
@@ -70,7 +70,7 @@ TEST_F(ComparePipelineTest, AnUndecidedChangeGetsRoundsUntilTheBudget) {
   context_.stopping.max_rounds = 10;
   const auto [document, path, unwritten] = compare(base, head);
   for (const SceneResult& scene : document.scenes) {
-    EXPECT_EQ(scene.change_verdict, "INCONCLUSIVE") << scene.entry.id;
+    EXPECT_EQ(scene.change_verdict, ChangeVerdict::inconclusive) << scene.entry.id;
     EXPECT_EQ(scene.runs.rounds.size(), 10u);
     EXPECT_EQ(scene.runs.stop_reason, "stop_budget_rounds");
   }
@@ -98,7 +98,7 @@ TEST_F(ComparePipelineTest, ScenesTheirShareLeftUndecidedGetASecondVisit) {
   ASSERT_EQ(document.scenes.size(), 2u);
   EXPECT_EQ(progress_.lines_with("[again ").size(), 2u);
   for (const SceneResult& scene : document.scenes) {
-    EXPECT_EQ(scene.change_verdict, "UNCHANGED") << scene.entry.id;
+    EXPECT_EQ(scene.change_verdict, ChangeVerdict::unchanged) << scene.entry.id;
     EXPECT_EQ(scene.runs.stop_reason, "stop_converged") << scene.entry.id;
     EXPECT_EQ(scene.runs.warmup.at("head").size(), 1u) << "warmed up once, on the first visit";
     EXPECT_EQ(progress_.lines_with("[again ").size(), 2u);

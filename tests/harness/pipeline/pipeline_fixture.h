@@ -19,7 +19,7 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "pipeline/measure_context.h"
-#include "pipeline/progress.h"
+#include "pipeline/pipeline_io.h"
 #include "runner/baseline_tool.h"
 #include "runner/fake_executor.h"
 #include "runner/suite.h"

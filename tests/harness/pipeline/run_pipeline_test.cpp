@@ -26,19 +26,19 @@ TEST_F(RunPipelineTest, MeasuresEverySceneToTheRatioOfTheCommittedCost) {
   EXPECT_EQ(path, dir_.path() / "out" / "results.json");
   EXPECT_TRUE(unwritten.empty());  // every write of the document succeeded
   EXPECT_TRUE(document.complete);
-  EXPECT_EQ(document.kind, "run");
+  EXPECT_EQ(document.kind, DocumentKind::run);
   ASSERT_EQ(document.scenes.size(), 2u);
   for (const SceneResult& scene : document.scenes) {
-    EXPECT_EQ(scene.status, "measured") << scene.entry.id;
-    ASSERT_NE(scene.ratio("tracer"), nullptr);
-    EXPECT_DOUBLE_EQ(scene.ratio("tracer")->ratio, 2.5);  // 2.5 s against the baseline's 1 s
+    EXPECT_EQ(scene.status, SceneStatus::measured) << scene.entry.id;
+    ASSERT_NE(scene.ratio(Role::tracer), nullptr);
+    EXPECT_DOUBLE_EQ(scene.ratio(Role::tracer)->ratio, 2.5);  // 2.5 s against the baseline's 1 s
     // Constant times: the CI is a point, so the rule stops as soon as it may (min_rounds).
     EXPECT_EQ(scene.runs.rounds.size(), context_.stopping.min_rounds);
     EXPECT_EQ(scene.runs.stop_reason, "stop_converged");
   }
   EXPECT_DOUBLE_EQ(document.scores.at("tracer").score, 2.5);
   ASSERT_EQ(document.revisions.size(), 1u);
-  EXPECT_EQ(document.revisions[0].role, "tracer");
+  EXPECT_EQ(document.revisions[0].role, Role::tracer);
   EXPECT_EQ(document.revisions[0].worktree.sha, sha);
   // Written as returned.
   EXPECT_EQ(to_json(read_results(path)), to_json(document));

@@ -58,30 +58,30 @@ std::vector<CompareRound> rounds(std::size_t n, double change, double noise, uns
 SceneResult scene(const std::string& id, const ChangeSummary& change) {
   SceneResult s;
   s.entry = {id, id, 1, 64, 64};
-  s.status = "measured";
+  s.status = SceneStatus::measured;
   s.runs.stop_reason = "decided";
   s.change = change;
   s.ratios["base"] = change.base;
   s.ratios["head"] = change.head;
-  s.change_verdict = std::string(to_string(classify_change(change)));
+  s.change_verdict = classify_change(change);
   return s;
 }
 
-RevisionRecord revision(const std::string& role, char digit) {
+RevisionRecord revision(Role role, char digit) {
   RevisionRecord r;
   r.role = role;
   r.worktree.sha = std::string(40, digit);
   r.worktree.short_sha = std::string(7, digit);
-  r.worktree.subject = role + " commit";
+  r.worktree.subject = role_name(role) + " commit";
   r.adapter_name = "cmake-nff";
   return r;
 }
 
 ResultsDocument compare_document(bool simulated) {
   ResultsDocument d;
-  d.kind = "compare";
+  d.kind = DocumentKind::compare;
   d.suite = "ci";
-  d.revisions = {revision("base", 'a'), revision("head", 'b')};
+  d.revisions = {revision(Role::base, 'a'), revision(Role::head, 'b')};
   if (simulated) {
     d.settings = {{"timing_source", "simulated"}, {"tracer_clock", "simulated-cycles"}};
     ChangeSummary counted = summarize_change(rounds(2, 0.00912, 0.0, 1));
@@ -101,12 +101,12 @@ ResultsDocument compare_document(bool simulated) {
 // UNCHANGED on the equivalence sequence, the others on the decision sequence) and its name.
 Expected expected_of(const SceneResult& s) {
   const ChangeSummary& c = *s.change;
-  Expected e{s.entry.id, c.change, std::nullopt, "", 0, s.change_verdict};
+  Expected e{s.entry.id, c.change, std::nullopt, "", 0, std::string(to_string(s.change_verdict))};
   if (c.exact) {
     e.name = "exact";
     return e;
   }
-  const bool unchanged = s.change_verdict == "UNCHANGED";
+  const bool unchanged = s.change_verdict == ChangeVerdict::unchanged;
   const double confidence = unchanged ? c.equivalence_confidence : c.confidence;
   const Interval interval = unchanged ? c.equivalence_interval : c.change_interval;
   const std::size_t needed = min_values_for_median_sequence((1.0 - confidence) / 2.0);
@@ -253,9 +253,9 @@ void check_every_format(const ResultsDocument& document) {
 TEST(ReportAgreement, EveryFormatPrintsTheSameChangeIntervalNameAndVerdict) {
   const ResultsDocument document = compare_document(false);
   // The three kinds of row this test is about really are there.
-  ASSERT_EQ(document.scenes[0].change_verdict, "REGRESSED");
-  ASSERT_EQ(document.scenes[1].change_verdict, "UNCHANGED");
-  ASSERT_EQ(document.scenes[2].change_verdict, "INCONCLUSIVE");
+  ASSERT_EQ(document.scenes[0].change_verdict, ChangeVerdict::regressed);
+  ASSERT_EQ(document.scenes[1].change_verdict, ChangeVerdict::unchanged);
+  ASSERT_EQ(document.scenes[2].change_verdict, ChangeVerdict::inconclusive);
   ASSERT_NE(document.scenes[1].change->equivalence_confidence, document.scenes[1].change->confidence);
   check_every_format(document);
 }

@@ -23,7 +23,7 @@ const std::string kHostileSubject =
 // The compare fixture with that subject on head and an ESC in the host name.
 void make_hostile(Fixture& f) {
   for (RevisionRecord& revision : f.document.revisions) {
-    if (revision.role == "head") revision.worktree.subject = kHostileSubject;
+    if (revision.role == Role::head) revision.worktree.subject = kHostileSubject;
   }
   f.document.machine["hostname"] = "ci\x1b[8mhidden";
 }

@@ -16,14 +16,14 @@ namespace OIIO = OIIO_NAMESPACE;
 const std::filesystem::path kGolden =
     std::filesystem::path(RAYGATE_SOURCE_DIR) / "golden" / "raygate-baseline";
 
-RevisionRecord revision(const std::string& role, const std::string& sha, const std::string& subject) {
+RevisionRecord revision(Role role, const std::string& sha, const std::string& subject) {
   RevisionRecord r;
   r.role = role;
   r.repository = "https://example.org/tracer.git";
   r.worktree.sha = sha + std::string(40 - sha.size(), '0');
   r.worktree.short_sha = sha.substr(0, 7);
   r.worktree.subject = subject;
-  r.worktree.revision = role == "base" ? "main" : "feature/bvh";
+  r.worktree.revision = role == Role::base ? "main" : "feature/bvh";
   r.worktree.author = "A. Tracer";
   r.worktree.commit_time = "2024-05-01T12:00:00+02:00";
   r.adapter_name = "cmake-nff";
@@ -44,14 +44,14 @@ RatioSummary ratio(double value, double half_width_fraction, std::size_t rounds 
 SceneResult scene(const std::string& id, double seconds_spent = 20.0) {
   SceneResult s;
   s.entry = {id, id, 1, 128, 128};
-  s.status = "measured";
+  s.status = SceneStatus::measured;
   s.runs.stop_reason = "stop_converged";
   s.runs.seconds_spent = seconds_spent;
   return s;
 }
 
 void set_change(SceneResult& s, double base, double head, double change, double lo, double hi,
-                const std::string& verdict) {
+                ChangeVerdict verdict) {
   s.ratios["base"] = ratio(base, 0.006);
   s.ratios["head"] = ratio(head, 0.006);
   ChangeSummary c;
@@ -64,7 +64,7 @@ void set_change(SceneResult& s, double base, double head, double change, double 
   s.change_verdict = verdict;
 }
 
-ImageCheck check(const std::string& role, const std::string& reference,
+ImageCheck check(Role role, ImageReference reference,
                  const std::filesystem::path& actual, const std::filesystem::path& expected,
                  const std::filesystem::path& dir, const std::string& stem) {
   return check_image(role, reference, actual, expected, ImageThresholds{}, dir / "evidence", stem);
@@ -84,37 +84,37 @@ std::filesystem::path wrong_gears(const std::filesystem::path& dir) {
 
 SceneResult passing(const std::filesystem::path& dir) {
   SceneResult s = scene("balls");
-  set_change(s, 0.512, 0.514, 0.004, -0.006, 0.013, "UNCHANGED");
+  set_change(s, 0.512, 0.514, 0.004, -0.006, 0.013, ChangeVerdict::unchanged);
   const auto golden = kGolden / "balls.png";
-  s.images.push_back(check("head", "golden", golden, golden, dir, "balls-head-golden"));
-  s.images.push_back(check("base", "golden", golden, golden, dir, "balls-base-golden"));
+  s.images.push_back(check(Role::head, ImageReference::golden, golden, golden, dir, "balls-head-golden"));
+  s.images.push_back(check(Role::base, ImageReference::golden, golden, golden, dir, "balls-base-golden"));
   return s;
 }
 
 SceneResult regression(const std::filesystem::path& dir) {
   SceneResult s = scene("mount", 41.5);
-  set_change(s, 0.731, 0.789, 0.079, 0.061, 0.098, "REGRESSED");
+  set_change(s, 0.731, 0.789, 0.079, 0.061, 0.098, ChangeVerdict::regressed);
   const auto golden = kGolden / "mount.png";
-  s.images.push_back(check("head", "golden", golden, golden, dir, "mount-head-golden"));
+  s.images.push_back(check(Role::head, ImageReference::golden, golden, golden, dir, "mount-head-golden"));
   return s;
 }
 
 SceneResult image_failure(const std::filesystem::path& dir) {
   SceneResult s = scene("gears");
-  set_change(s, 1.204, 1.207, 0.002, -0.008, 0.011, "UNCHANGED");
+  set_change(s, 1.204, 1.207, 0.002, -0.008, 0.011, ChangeVerdict::unchanged);
   const auto golden = kGolden / "gears.png";
   const auto head = wrong_gears(dir);
-  s.images.push_back(check("head", "golden", head, golden, dir, "gears-head-golden"));
-  s.images.push_back(check("base", "golden", golden, golden, dir, "gears-base-golden"));
-  s.images.push_back(check("head", "base", head, golden, dir, "gears-head-base"));
+  s.images.push_back(check(Role::head, ImageReference::golden, head, golden, dir, "gears-head-golden"));
+  s.images.push_back(check(Role::base, ImageReference::golden, golden, golden, dir, "gears-base-golden"));
+  s.images.push_back(check(Role::head, ImageReference::base, head, golden, dir, "gears-head-base"));
   return s;
 }
 
 SceneResult unmeasured() {
   SceneResult s = scene("tetra", 3.0);
-  s.status = "failed";
+  s.status = SceneStatus::failed;
   s.runs.stop_reason = "failed";
-  s.runs.failed_role = "baseline";
+  s.runs.failed_role = Role::baseline;
   RunRecord run;
   run.outcome = "killed by SIGSEGV";
   run.failure = "the baseline crashed";
@@ -123,7 +123,7 @@ SceneResult unmeasured() {
   return s;
 }
 
-ResultsDocument header(const std::string& kind) {
+ResultsDocument header(DocumentKind kind) {
   ResultsDocument d;
   d.kind = kind;
   d.raygate_version = "0.1.0";
@@ -141,13 +141,14 @@ ResultsDocument header(const std::string& kind) {
 }  // namespace
 
 ResultsDocument make_run_document(const std::filesystem::path& dir) {
-  ResultsDocument d = header("run");
-  d.revisions.push_back(revision("tracer", "1111111abcdef", "Tracer at main"));
+  ResultsDocument d = header(DocumentKind::run);
+  d.revisions.push_back(revision(Role::tracer, "1111111abcdef", "Tracer at main"));
   for (const std::string id : {"balls", "tetra"}) {
     SceneResult s = scene(id);
     s.ratios["tracer"] = ratio(id == "balls" ? 0.512 : 0.377, 0.008);
     const auto golden = kGolden / (id + ".png");
-    s.images.push_back(check("tracer", "golden", golden, golden, dir, id + "-tracer-golden"));
+    s.images.push_back(
+        check(Role::tracer, ImageReference::golden, golden, golden, dir, id + "-tracer-golden"));
     d.scenes.push_back(s);
   }
   d.scores["tracer"] = {2, 0.439, {0.435, 0.443}};
@@ -155,9 +156,9 @@ ResultsDocument make_run_document(const std::filesystem::path& dir) {
 }
 
 ResultsDocument make_compare_document(const std::filesystem::path& dir) {
-  ResultsDocument d = header("compare");
-  d.revisions.push_back(revision("base", "2222222abcdef", "Merge pull request #41"));
-  d.revisions.push_back(revision("head", "3333333abcdef", kNastySubject));
+  ResultsDocument d = header(DocumentKind::compare);
+  d.revisions.push_back(revision(Role::base, "2222222abcdef", "Merge pull request #41"));
+  d.revisions.push_back(revision(Role::head, "3333333abcdef", kNastySubject));
   d.scenes = {passing(dir), regression(dir), image_failure(dir), unmeasured()};
   d.scores["base"] = {3, 0.77, {0.76, 0.78}};
   d.scores["head"] = {3, 0.79, {0.78, 0.80}};

@@ -99,8 +99,8 @@ TEST(HtmlReport, DrawsIntervalsAndTrendAsSvg) {
 TEST(HtmlReport, TrendMarksBaseAndHeadNotTheNewestCommit) {
   Fixture f(true);
   TrendSeries trend = make_trend("mount", 12);
-  trend.points[4].sha = f.document.revision("base")->worktree.sha;
-  trend.points[7].sha = f.document.revision("head")->worktree.sha;
+  trend.points[4].sha = f.document.revision(Role::base)->worktree.sha;
+  trend.points[7].sha = f.document.revision(Role::head)->worktree.sha;
   f.input->trends.push_back(trend);
   const std::string html = f.render("html");
   EXPECT_EQ(count(html, R"(<circle class="trend-point marked)"), 2u);

@@ -154,14 +154,14 @@ struct Inconsistency {
 
 TEST(Merge, RefusesInconsistentShardsNamingBothFilesAndTheField) {
   const std::vector<Inconsistency> cases{
-      {"kind", "kind", [](ResultsDocument& d) { d.kind = "compare"; }},
+      {"kind", "kind", [](ResultsDocument& d) { d.kind = DocumentKind::compare; }},
       {"commit", "revisions[tracer].worktree.sha",
        [](ResultsDocument& d) { d.revisions[0].worktree.sha = test::fake_sha(8); }},
       {"dirty", "revisions[tracer].worktree.dirty",
        [](ResultsDocument& d) { d.revisions[0].worktree.dirty = true; }},
       {"adapter", "revisions[tracer].adapter.hash",
        [](ResultsDocument& d) { d.revisions[0].adapter_hash = std::string(64, 'c'); }},
-      {"roles", "revisions (roles)", [](ResultsDocument& d) { d.revisions[0].role = "head"; }},
+      {"roles", "revisions (roles)", [](ResultsDocument& d) { d.revisions[0].role = Role::head; }},
       {"baseline version", "baseline.version",
        [](ResultsDocument& d) { d.baseline.version = "raygate-baseline 0.2.0"; }},
       {"baseline sha", "baseline.source_sha256",

@@ -30,8 +30,8 @@ json run_document() {
 json compare_document() {
   test::DocumentSpec spec;
   spec.sha = test::fake_sha(2);
-  spec.kind = "compare";
-  spec.roles = {"base", "head"};
+  spec.kind = DocumentKind::compare;
+  spec.roles = {Role::base, Role::head};
   spec.with_change = true;
   spec.scenes = {{"balls", 1.5}, {"gears", 2.0}};
   return to_json(test::make_document(spec));
@@ -190,7 +190,7 @@ TEST(ResultsCheck, ValidRunAndCompareDocumentsAreRead) {
   EXPECT_EQ(results_from_json(sim, "sim.json").scenes.size(), 2u);
   const ResultsDocument compare = results_from_json(compare_document(), "compare.json");
   ASSERT_TRUE(compare.scenes[0].change.has_value());
-  EXPECT_EQ(compare.scenes[0].change_verdict, "UNCHANGED");
+  EXPECT_EQ(compare.scenes[0].change_verdict, ChangeVerdict::unchanged);
 }
 
 TEST(ResultsCheck, EveryBadDocumentIsAUsageErrorNamingTheFileAndPath) {

@@ -8,7 +8,7 @@ namespace raygate::test {
 
 namespace {
 
-RevisionRecord revision(const DocumentSpec& spec, const std::string& role) {
+RevisionRecord revision(const DocumentSpec& spec, Role role) {
   RevisionRecord r;
   r.role = role;
   r.repository = "/tmp/tracer-repo";
@@ -55,10 +55,10 @@ RunRecord run(double seconds) {
   return r;
 }
 
-ImageCheck image(const SceneSpec& s, const std::string& role) {
+ImageCheck image(const SceneSpec& s, Role role) {
   ImageCheck c;
   c.role = role;
-  c.reference = "golden";
+  c.reference = ImageReference::golden;
   c.actual = "/tmp/run/" + s.id + ".png";
   c.expected = "golden/" + s.id + ".png";
   c.verdict = s.verdict;
@@ -72,7 +72,7 @@ ImageCheck image(const SceneSpec& s, const std::string& role) {
   return c;
 }
 
-SceneResult scene(const SceneSpec& s, const std::vector<std::string>& roles) {
+SceneResult scene(const SceneSpec& s, const std::vector<Role>& roles) {
   SceneResult r;
   r.entry = {s.id, s.id, 1, 64, 64};
   r.scene_sha256 = sha256_hex(s.id);
@@ -82,10 +82,10 @@ SceneResult scene(const SceneSpec& s, const std::vector<std::string>& roles) {
   Round round;
   round.order = {"baseline"};
   round.runs["baseline"] = run(s.baseline_seconds);
-  for (const std::string& role : roles) {
-    round.order.push_back(role);
-    round.runs[role] = run(s.ratio * s.baseline_seconds);
-    r.ratios[role] = ratio_summary(s);
+  for (const Role role : roles) {
+    round.order.push_back(role_name(role));
+    round.runs[role_name(role)] = run(s.ratio * s.baseline_seconds);
+    r.ratios[role_name(role)] = ratio_summary(s);
     r.images.push_back(image(s, role));
   }
   r.runs.rounds = {round};
@@ -129,20 +129,20 @@ ResultsDocument make_document(const DocumentSpec& spec) {
   d.suite = spec.suite;
   d.shard = spec.shard;
   d.settings = {{"schedule", "alternate"}, {"target", 0.01}};
-  for (const std::string& role : spec.roles) d.revisions.push_back(revision(spec, role));
+  for (const Role role : spec.roles) d.revisions.push_back(revision(spec, role));
   double log_sum = 0.0;
   for (const SceneSpec& s : spec.scenes) {
     d.scenes.push_back(scene(s, spec.roles));
     if (spec.with_change) {
       d.scenes.back().change = change_summary(s);
-      d.scenes.back().change_verdict = "UNCHANGED";
+      d.scenes.back().change_verdict = ChangeVerdict::unchanged;
     }
     log_sum += std::log(s.ratio);
   }
-  for (const std::string& role : spec.roles) {
+  for (const Role role : spec.roles) {
     const double n = static_cast<double>(spec.scenes.size());
     const double score = spec.scenes.empty() ? 0.0 : std::exp(log_sum / n);
-    d.scores[role] = {spec.scenes.size(), score, {score * 0.99, score * 1.01}};
+    d.scores[role_name(role)] = {spec.scenes.size(), score, {score * 0.99, score * 1.01}};
   }
   return d;
 }

@@ -17,7 +17,7 @@ struct SceneSpec {
   double baseline_seconds = 1.0;
   double max_error = 0.0;
   ImageVerdict verdict = ImageVerdict::pass;
-  std::string status = "measured";
+  SceneStatus status = SceneStatus::measured;
 };
 
 struct DocumentSpec {
@@ -29,9 +29,9 @@ struct DocumentSpec {
   std::string hostname = "ci-runner-1";
   std::string cpu_model = "Test CPU 3000";
   std::string baseline_sha256 = std::string(64, 'b');
-  std::string kind = "run";
+  DocumentKind kind = DocumentKind::run;
   std::string shard;                         // "K/N"
-  std::vector<std::string> roles{"tracer"};  // compare: {"base", "head"}
+  std::vector<Role> roles{Role::tracer};  // compare: {base, head}
   bool dirty = false;
   bool complete = true;
   std::string repository_id;  // "" as in documents written before it was recorded

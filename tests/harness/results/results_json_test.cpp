@@ -73,7 +73,7 @@ SceneResult measured_scene() {
   SceneResult s;
   s.entry = SuiteScene{"balls", "balls", 2, 64, 48};
   s.scene_sha256 = std::string(64, 'a');
-  s.status = "measured";
+  s.status = SceneStatus::measured;
   s.runs.warmup["baseline"] = {make_run(1.5, "/w/b/warmup-1")};
   s.runs.warmup["tracer"] = {make_run(0.75, "/w/t/warmup-1")};
   for (int i = 0; i < 2; ++i) {
@@ -88,7 +88,7 @@ SceneResult measured_scene() {
   s.runs.stop_reason = "stop_converged";
   s.runs.seconds_spent = 9.5;
   s.ratios["tracer"] = make_ratio(0.5);
-  s.images.push_back(ImageCheck{"tracer", "golden", "/w/t/warmup-1/image.png", "/g/balls.png",
+  s.images.push_back(ImageCheck{Role::tracer, ImageReference::golden, "/w/t/warmup-1/image.png", "/g/balls.png",
                                 ImageVerdict::pass, "", make_metrics(true), {}});
   return s;
 }
@@ -98,10 +98,10 @@ SceneResult failed_scene() {
   SceneResult s = measured_scene();
   s.entry.id = "tetra-small";
   s.entry.scene = "tetra";
-  s.status = "failed";
+  s.status = SceneStatus::failed;
   s.runs.rounds.resize(1);
   s.runs.stop_reason = "failed";
-  s.runs.failed_role = "tracer";
+  s.runs.failed_role = Role::tracer;
   RunRecord crash = make_run(0.0, "/w/t/round-002");
   crash.ok = false;
   crash.outcome = "killed by signal 6 (ABRT)";
@@ -110,7 +110,7 @@ SceneResult failed_scene() {
   s.images[0].verdict = ImageVerdict::fail;
   s.images[0].metrics = make_metrics(false);
   s.images[0].evidence = {"/e/tetra.actual.png", "/e/tetra.expected.png", "/e/tetra.diff.png"};
-  s.images.push_back(ImageCheck{"head", "base", "/h.png", "/b.png", ImageVerdict::error,
+  s.images.push_back(ImageCheck{Role::head, ImageReference::base, "/h.png", "/b.png", ImageVerdict::error,
                                 "cannot read /h.png", std::nullopt, {}});
   return s;
 }
@@ -135,7 +135,7 @@ SceneResult compared_scene() {
   c.head = make_ratio(0.53125);
   c.mann_whitney = {3.0, 1.5, 0.125};
   s.change = c;
-  s.change_verdict = "REGRESSED";
+  s.change_verdict = ChangeVerdict::regressed;
   return s;
 }
 
@@ -156,7 +156,7 @@ BuildRecord make_build() {
 
 ResultsDocument full_document() {
   ResultsDocument d;
-  d.kind = "run";
+  d.kind = DocumentKind::run;
   d.raygate_version = "0.1.0";
   d.started_at = "2024-01-02T03:04:05Z";
   d.finished_at = "2024-01-02T03:14:05Z";
@@ -167,7 +167,7 @@ ResultsDocument full_document() {
   d.shard = "1/2";
   d.settings = {{"schedule", "alternate"}, {"min_rounds", 3}, {"pin_cpus", json::array()}};
   RevisionRecord r;
-  r.role = "tracer";
+  r.role = Role::tracer;
   r.repository = "/repos/tracer";
   r.worktree = {"/cache/worktrees/y", "v1", "refs/tags/v1", std::string(40, 'c'), "ccccccc",
                 "first", "Ada Tester", "2023-11-14T22:14:20+00:00", false};

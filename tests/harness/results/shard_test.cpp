@@ -156,7 +156,7 @@ TEST(ShardSplit, MoreShardsThanScenesIsAUsageError) {
 TEST(ShardSplit, ExpectedSecondsComeFromMeasuredScenes) {
   test::DocumentSpec spec;
   spec.sha = test::fake_sha(1);
-  spec.scenes = {{.id = "a"}, {.id = "b", .status = "failed"}};
+  spec.scenes = {{.id = "a"}, {.id = "b", .status = SceneStatus::failed}};
   const std::map<std::string, double> seconds = expected_seconds_from(test::make_document(spec));
   ASSERT_EQ(seconds.size(), 1u);
   EXPECT_DOUBLE_EQ(seconds.at("a"), 12.5);  // the fixture's seconds_spent

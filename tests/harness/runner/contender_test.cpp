@@ -264,7 +264,7 @@ TEST_F(BaselineContenderTest, CommandRendersPpmIntoTheRunDirectory) {
   EXPECT_EQ(spec.argv, expected);
   EXPECT_EQ(spec.working_directory, run_dir_);
   EXPECT_EQ(spec.timeout, std::chrono::milliseconds(9000));
-  EXPECT_EQ(baseline_.role(), "baseline");
+  EXPECT_EQ(baseline_.role(), Role::baseline);
 }
 
 // By default the baseline is timed like a process-timed tracer: by its process wall seconds.

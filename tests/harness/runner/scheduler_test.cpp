@@ -10,7 +10,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
-#include "pipeline/stopping.h"
+#include "pipeline/stop_rules.h"
 #include "fake_executor.h"
 
 namespace raygate {
@@ -30,7 +30,7 @@ class FakeContender final : public Contender {
 
   ProcessSpec command(const SceneInput& /*scene*/, const fs::path& run_dir) const override {
     ProcessSpec spec;
-    spec.argv = {role()};
+    spec.argv = {name()};
     spec.stdout_path = run_dir / "log.txt";
     return spec;
   }
@@ -66,10 +66,10 @@ class SchedulerTest : public ::testing::Test {
   FakeExecutor executor_{clock_};
   ScheduleOptions options_;
   SceneInput scene_{SuiteScene{"balls", "balls", 1, 32, 32}, "balls.nff", {}};
-  FakeContender baseline_{"baseline"};
-  FakeContender tracer_{"tracer"};
-  FakeContender base_{"base"};
-  FakeContender head_{"head"};
+  FakeContender baseline_{Role::baseline};
+  FakeContender tracer_{Role::tracer};
+  FakeContender base_{Role::base};
+  FakeContender head_{Role::head};
 };
 
 using Roles = std::vector<std::string>;
@@ -223,7 +223,7 @@ TEST_F(SchedulerTest, SamplesOfRoundsWithoutTheNormalizer) {
   executor_.set_seconds("head", {0.6});
   const SceneRuns runs = measure({&baseline_, &base_, &head_}, stop_after(3));
   // The ratios pair only the round with a baseline; the change sees every round.
-  EXPECT_EQ(round_samples(runs.rounds, "head").size(), 1u);
+  EXPECT_EQ(round_samples(runs.rounds, Role::head).size(), 1u);
   const std::vector<CompareRound> samples = compare_samples(runs.rounds);
   ASSERT_EQ(samples.size(), 3u);
   EXPECT_EQ(samples[0].baseline_seconds, std::optional<double>(2.0));
@@ -314,7 +314,7 @@ TEST_F(SchedulerTest, RatioStopRuleConvergesAtMinRoundsOnConstantTimes) {
   executor_.set_seconds("tracer", {1.0});
   StoppingPolicy policy;
   policy.min_rounds = 4;
-  const SceneRuns runs = measure_pair(ratio_stop_rule(policy, "tracer"));
+  const SceneRuns runs = measure_pair(ratio_stop_rule(policy, Role::tracer));
   EXPECT_EQ(runs.rounds.size(), 4u);
   EXPECT_EQ(runs.stop_reason, "stop_converged");
 }
@@ -325,7 +325,7 @@ TEST_F(SchedulerTest, RatioStopRuleStopsAtTheRoundBudgetOnNoisyTimes) {
   StoppingPolicy policy;
   policy.min_rounds = 3;
   policy.max_rounds = 7;
-  const SceneRuns runs = measure_pair(ratio_stop_rule(policy, "tracer"));
+  const SceneRuns runs = measure_pair(ratio_stop_rule(policy, Role::tracer));
   EXPECT_EQ(runs.rounds.size(), 7u);
   EXPECT_EQ(runs.stop_reason, "stop_budget_rounds");
 }
@@ -334,7 +334,7 @@ TEST_F(SchedulerTest, RatioStopRuleNeverCallsASingleRoundConverged) {
   StoppingPolicy policy;
   policy.min_rounds = 1;  // what --max-rounds 1 leaves
   policy.max_rounds = 1;
-  const SceneRuns runs = measure_pair(ratio_stop_rule(policy, "tracer"));
+  const SceneRuns runs = measure_pair(ratio_stop_rule(policy, Role::tracer));
   EXPECT_EQ(runs.rounds.size(), 1u);
   EXPECT_EQ(runs.stop_reason, "stop_budget_rounds");
 }
@@ -344,7 +344,7 @@ TEST_F(SchedulerTest, RatioStopRuleStopsAtTheTimeBudget) {
   executor_.set_seconds("tracer", {0.5, 0.9, 0.6, 0.4, 0.7, 0.8});
   StoppingPolicy policy;
   policy.max_seconds = 10.0;  // warm-ups ~1.5 s, rounds ~1.7 s each
-  const SceneRuns runs = measure_pair(ratio_stop_rule(policy, "tracer"));
+  const SceneRuns runs = measure_pair(ratio_stop_rule(policy, Role::tracer));
   EXPECT_EQ(runs.stop_reason, "stop_budget_time");
   EXPECT_GE(runs.seconds_spent, 10.0);
   EXPECT_LT(runs.seconds_spent - 10.0, 2.5);  // stopped in the round that crossed the budget
@@ -356,7 +356,7 @@ TEST(RoundSamples, PairTheTracerWithTheBaselineOfTheSameRound) {
   rounds[0].runs["tracer"].seconds = 1.0;
   rounds[1].runs["baseline"].seconds = 4.0;
   rounds[1].runs["tracer"].seconds = 3.0;
-  const std::vector<RoundSample> samples = round_samples(rounds, "tracer");
+  const std::vector<RoundSample> samples = round_samples(rounds, Role::tracer);
   ASSERT_EQ(samples.size(), 2u);
   EXPECT_DOUBLE_EQ(samples[1].tracer_seconds, 3.0);
   EXPECT_DOUBLE_EQ(samples[1].baseline_seconds, 4.0);
@@ -368,7 +368,7 @@ TEST_F(SchedulerTest, CrashStopsTheSceneAndKeepsTheRoundsBefore) {
   executor_.script("tracer", 4, killed_by(SIGSEGV));  // warm-up, rounds 1-2, then round 3
   const SceneRuns runs = measure_pair(stop_after(10));
   ASSERT_TRUE(runs.failed());
-  EXPECT_EQ(runs.failed_role, "tracer");
+  EXPECT_EQ(runs.failed_role, Role::tracer);
   EXPECT_EQ(runs.stop_reason, "failed");
   EXPECT_EQ(runs.rounds.size(), 2u);  // the incomplete third round is not kept
   EXPECT_FALSE(runs.failed_run->ok);
@@ -386,7 +386,7 @@ TEST_F(SchedulerTest, NonZeroExitIsAFailureOfThatRole) {
   executor_.script("baseline", 3, exited_with(2, 0.1));
   const SceneRuns runs = measure_pair(stop_after(10));
   ASSERT_TRUE(runs.failed());
-  EXPECT_EQ(runs.failed_role, "baseline");
+  EXPECT_EQ(runs.failed_role, Role::baseline);
   EXPECT_EQ(runs.failed_run->outcome, "exited with status 2");
   EXPECT_EQ(runs.rounds.size(), 1u);
   EXPECT_GT(runs.seconds_spent, 0.0);
@@ -396,12 +396,12 @@ TEST_F(SchedulerTest, FailureInWarmupLeavesNoRounds) {
   executor_.script("tracer", 1, killed_by(SIGABRT));
   const SceneRuns runs = measure_pair(stop_after(10));
   ASSERT_TRUE(runs.failed());
-  EXPECT_EQ(runs.failed_role, "tracer");
+  EXPECT_EQ(runs.failed_role, Role::tracer);
   EXPECT_TRUE(runs.rounds.empty());
   ASSERT_EQ(runs.warmup.at("tracer").size(), 1u);
   EXPECT_FALSE(runs.warmup.at("tracer")[0].ok);
   EXPECT_EQ(executor_.roles(), (Roles{"baseline", "tracer"}));
-  EXPECT_EQ(runs.first_run("tracer"), nullptr);
+  EXPECT_EQ(runs.first_run(Role::tracer), nullptr);
 }
 
 TEST_F(SchedulerTest, StopRuleIsNotAskedAfterAFailure) {
@@ -420,9 +420,9 @@ TEST_F(SchedulerTest, SuccessInNoMeasurableTimeIsAFailureOfThatSceneOnly) {
   StoppingPolicy policy;
   policy.min_rounds = 2;
   SceneRuns runs;
-  EXPECT_NO_THROW(runs = measure_pair(ratio_stop_rule(policy, "tracer")));
+  EXPECT_NO_THROW(runs = measure_pair(ratio_stop_rule(policy, Role::tracer)));
   ASSERT_TRUE(runs.failed());
-  EXPECT_EQ(runs.failed_role, "tracer");
+  EXPECT_EQ(runs.failed_role, Role::tracer);
   EXPECT_EQ(runs.failed_run->failure, "tracer run took 0 s by its timing metric; a ratio needs a "
                                       "positive time");
   EXPECT_EQ(runs.rounds.size(), 1u);
@@ -484,7 +484,7 @@ TEST_F(DuetTest, FailureOfEitherStopsTheSceneAndKeepsEarlierRounds) {
   executor_.script("tracer", 2, exited_with(1, 0.2));
   const SceneRuns runs = measure_pair(stop_after(5));
   ASSERT_TRUE(runs.failed());
-  EXPECT_EQ(runs.failed_role, "tracer");
+  EXPECT_EQ(runs.failed_role, Role::tracer);
   EXPECT_EQ(runs.rounds.size(), 1u);
 }
 
@@ -492,7 +492,7 @@ TEST_F(DuetTest, SuccessInNoMeasurableTimeFailsInADuetToo) {
   executor_.script("baseline", 2, exited_with(0, 0.0));
   const SceneRuns runs = measure_pair(stop_after(3));
   ASSERT_TRUE(runs.failed());
-  EXPECT_EQ(runs.failed_role, "baseline");
+  EXPECT_EQ(runs.failed_role, Role::baseline);
   EXPECT_EQ(runs.rounds.size(), 1u);
   EXPECT_EQ(executor_.calls()[2].batch, executor_.calls()[3].batch);  // it was a duet round
 }
@@ -533,7 +533,7 @@ TEST_F(DuetTest, ABaselineFailingAloneStopsTheSceneBeforeThePairStarts) {
   executor_.script("baseline", 1, killed_by(SIGSEGV));
   const SceneRuns runs = measure({&baseline_, &base_, &head_}, stop_after(3));
   ASSERT_TRUE(runs.failed());
-  EXPECT_EQ(runs.failed_role, "baseline");
+  EXPECT_EQ(runs.failed_role, Role::baseline);
   EXPECT_EQ(executor_.calls().size(), 1u);
 }
 
@@ -551,7 +551,7 @@ TEST_F(DuetTest, TheSameCpuTwiceIsAUsageError) {
 
 TEST_F(SchedulerTest, FirstRunIsTheWarmupWhoseImageIsChecked) {
   const SceneRuns runs = measure_pair(stop_after(2));
-  const RunRecord* first = runs.first_run("tracer");
+  const RunRecord* first = runs.first_run(Role::tracer);
   ASSERT_NE(first, nullptr);
   EXPECT_EQ(first->image, dir_.path() / "scene" / "tracer" / "warmup-1" / "image.png");
 }
@@ -559,10 +559,10 @@ TEST_F(SchedulerTest, FirstRunIsTheWarmupWhoseImageIsChecked) {
 TEST_F(SchedulerTest, FirstRunWithoutWarmupIsTheFirstRound) {
   options_.warmup_runs = 0;
   const SceneRuns runs = measure_pair(stop_after(2));
-  const RunRecord* first = runs.first_run("tracer");
+  const RunRecord* first = runs.first_run(Role::tracer);
   ASSERT_NE(first, nullptr);
   EXPECT_EQ(first->image, dir_.path() / "scene" / "tracer" / "round-001" / "image.png");
-  EXPECT_EQ(runs.first_run("head"), nullptr);
+  EXPECT_EQ(runs.first_run(Role::head), nullptr);
 }
 
 // Without a warm-up, head crashing in round 1 comes after base ran in that round: that run is
@@ -572,13 +572,13 @@ TEST_F(SchedulerTest, CrashWithoutWarmupKeepsTheRunsBeforeItInItsRound) {
   executor_.script("head", 1, killed_by(SIGSEGV));
   const SceneRuns runs = measure({&baseline_, &base_, &head_}, stop_after(10));
   ASSERT_TRUE(runs.failed());
-  EXPECT_EQ(runs.failed_role, "head");
+  EXPECT_EQ(runs.failed_role, Role::head);
   EXPECT_TRUE(runs.rounds.empty());
   EXPECT_EQ(runs.partial_round.size(), 2u);
-  const RunRecord* base = runs.first_run("base");
+  const RunRecord* base = runs.first_run(Role::base);
   ASSERT_NE(base, nullptr);
   EXPECT_EQ(base->image, dir_.path() / "scene" / "base" / "round-001" / "image.png");
-  EXPECT_EQ(runs.first_run("head"), nullptr);
+  EXPECT_EQ(runs.first_run(Role::head), nullptr);
 }
 
 TEST_F(DuetTest, CrashKeepsTheOtherRunOfItsRound) {
@@ -586,9 +586,9 @@ TEST_F(DuetTest, CrashKeepsTheOtherRunOfItsRound) {
   executor_.script("tracer", 1, killed_by(SIGSEGV));
   const SceneRuns runs = measure_pair(stop_after(10));
   ASSERT_TRUE(runs.failed());
-  EXPECT_EQ(runs.failed_role, "tracer");
+  EXPECT_EQ(runs.failed_role, Role::tracer);
   ASSERT_EQ(runs.partial_round.size(), 1u);
-  EXPECT_NE(runs.first_run("baseline"), nullptr);
+  EXPECT_NE(runs.first_run(Role::baseline), nullptr);
 }
 
 }  // namespace

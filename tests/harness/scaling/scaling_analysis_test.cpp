@@ -33,16 +33,16 @@ RatioSummary ratio(double tracer, double baseline) {
 // times `added(n)` when given (head = base · added(n)); each change measured to ±2%.
 ResultsDocument compare_document(double extra, int sizes = 4, double (*added)(double) = nullptr) {
   ResultsDocument d;
-  d.kind = "compare";
+  d.kind = DocumentKind::compare;
   d.suite = "scaling";
   d.revisions.resize(2);
-  d.revisions[0].role = "base";
-  d.revisions[1].role = "head";
+  d.revisions[0].role = Role::base;
+  d.revisions[1].role = Role::head;
   for (int size = 1; size <= sizes; ++size) {
     const double n = static_cast<double>(balls_count("balls", size));
     SceneResult s;
     s.entry = {"balls-s" + std::to_string(size), "balls", size, 64, 64};
-    s.status = "measured";
+    s.status = SceneStatus::measured;
     const double baseline = 1e-4 * n, base = 0.01 * std::pow(n, 0.2),
                  head = 0.01 * std::pow(n, 0.2 + extra) * (added ? added(n) : 1.0);
     s.ratios["base"] = ratio(base, baseline);
@@ -55,7 +55,7 @@ ResultsDocument compare_document(double extra, int sizes = 4, double (*added)(do
   // A family measured at one size only: not fitted.
   SceneResult lone;
   lone.entry = {"tetra", "tetra", 3, 64, 64};
-  lone.status = "measured";
+  lone.status = SceneStatus::measured;
   lone.ratios["base"] = ratio(0.1, 0.2);
   lone.ratios["head"] = ratio(0.1, 0.2);
   d.scenes.push_back(lone);
@@ -128,7 +128,7 @@ TEST(ScalingAnalysisTest, AddedLinearWorkBehindAFixedCostIsJudgedAtTheLargeEnd) 
 
 TEST(ScalingAnalysisTest, ARunHasNoChange) {
   ResultsDocument d = compare_document(0.0);
-  d.kind = "run";
+  d.kind = DocumentKind::run;
   for (SceneResult& s : d.scenes) {
     s.ratios = {{"tracer", s.ratios.at("base")}};
     s.change.reset();
@@ -141,7 +141,7 @@ TEST(ScalingAnalysisTest, ARunHasNoChange) {
 
 TEST(ScalingAnalysisTest, FailedScenesLeaveTheFamilyAndTooFewSizesDropIt) {
   ResultsDocument d = compare_document(0.0, 3);
-  d.scenes[1].status = "failed";
+  d.scenes[1].status = SceneStatus::failed;
   EXPECT_TRUE(analyse_scaling(d, {}, balls_count).families.empty());
 }
 
@@ -172,7 +172,7 @@ TEST(GrowthGateTest, ARegressedExponentFailsTheWholeGate) {
   ResultsDocument d = compare_document(0.3);
   d.complete = true;
   d.scaling = to_json(analyse_scaling(d, {}, balls_count));
-  for (SceneResult& s : d.scenes) s.change_verdict = "UNCHANGED";
+  for (SceneResult& s : d.scenes) s.change_verdict = ChangeVerdict::unchanged;
   const GateResult gate = evaluate_gate(d, GatePolicy{});
   EXPECT_EQ(gate.exit_code, 1);
   ASSERT_EQ(gate.families.size(), 1u);

@@ -90,8 +90,8 @@ TEST_F(StoreHistory, FiltersByBranchSceneRoleAndDirtiness) {
   add(commit(1, "10", 1.0), "main");
   add(commit(2, "11", 1.0), "feature");
   DocumentSpec compare = commit(3, "12", 0.9);
-  compare.kind = "compare";
-  compare.roles = {"base", "head"};
+  compare.kind = DocumentKind::compare;
+  compare.roles = {Role::base, Role::head};
   add(compare, "main");
   DocumentSpec dirty = commit(4, "13", 0.7);
   dirty.dirty = true;

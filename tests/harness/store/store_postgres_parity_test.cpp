@@ -25,7 +25,7 @@ DocumentSpec commit(int seed, int day, double ratio, const std::string& branch =
   spec.scenes = {{"balls", ratio},
                  {"Gears", ratio * 2, 0.02, 2.0, 0.004, ImageVerdict::warn},
                  {"gears", ratio * 3},
-                 {"tetra", ratio / 3, 0.01, 0.5, 0.0, ImageVerdict::pass, "failed"}};
+                 {"tetra", ratio / 3, 0.01, 0.5, 0.0, ImageVerdict::pass, SceneStatus::failed}};
   return spec;
 }
 
@@ -44,8 +44,8 @@ std::vector<DocumentSpec> documents() {
     specs.push_back(part);
   }
   DocumentSpec compare = commit(6, 17, 1.1);
-  compare.kind = "compare";
-  compare.roles = {"base", "head"};
+  compare.kind = DocumentKind::compare;
+  compare.roles = {Role::base, Role::head};
   specs.push_back(compare);
   DocumentSpec dirty = commit(3, 14, 0.5);
   dirty.dirty = true;

@@ -1,4 +1,4 @@
-// The stopping policy (measure/stopping.h) bound to a scene's rounds: the StopRule the
+// The stopping policy (measure/stopping_policy.h) bound to a scene's rounds: the StopRule the
 // scheduler asks after each round, one per measuring command. Both are should_stop() over the
 // same budget; they differ only in the verdict function, which is the seam for another way of
 // deciding: write a SceneVerdict and pass it to stop_rule(). Also the whole measurement's time
@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "gate/policy.h"
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 #include "runner/executor.h"
 #include "runner/scheduler.h"
 
@@ -24,8 +24,8 @@ using SceneVerdict = std::function<bool(const std::vector<Round>& rounds)>;
 StopRule stop_rule(const StoppingPolicy& policy, SceneVerdict verdict);
 
 // `run`: the normalized ratio of `tracer_role` is known to the target precision.
-SceneVerdict ratio_verdict(const StoppingPolicy& policy, const std::string& tracer_role,
-                           const std::string& baseline_role = "baseline");
+SceneVerdict ratio_verdict(const StoppingPolicy& policy, Role tracer_role,
+                           Role baseline_role = Role::baseline);
 
 // The levels of a compare scene's confidence sequences (docs/statistics.md §6b): the decision
 // sequence at `decision_alpha`, the scene's share of the family (measure/family.h); the
@@ -39,8 +39,8 @@ SceneVerdict change_verdict(const StoppingPolicy& policy, const ScenePolicy& sce
                             const SequenceLevels& levels, bool counted = false);
 
 // The rules of the commands: stop_rule() with the verdicts above.
-StopRule ratio_stop_rule(const StoppingPolicy& policy, const std::string& tracer_role,
-                         const std::string& baseline_role = "baseline");
+StopRule ratio_stop_rule(const StoppingPolicy& policy, Role tracer_role,
+                         Role baseline_role = Role::baseline);
 StopRule change_stop_rule(const StoppingPolicy& policy, const ScenePolicy& scene,
                           const SequenceLevels& levels, bool counted = false);
 

@@ -1,4 +1,4 @@
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 
 #include "measure/simulated_cost.h"
 

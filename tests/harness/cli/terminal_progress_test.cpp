@@ -1,6 +1,6 @@
-// cli/progress.cpp: durations as people read them, one rewritten line on a terminal, and only
+// cli/terminal_progress.cpp: durations as people read them, one rewritten line on a terminal, and only
 // plain per-scene lines in CI logs.
-#include "cli/progress.h"
+#include "cli/terminal_progress.h"
 
 #include <gtest/gtest.h>
 

@@ -9,7 +9,7 @@
 #include <cstdio>
 #include <string>
 
-#include "pipeline/progress.h"
+#include "pipeline/pipeline_io.h"
 
 namespace raygate::cli {
 

@@ -6,7 +6,7 @@
 //    that is decided after one round) is a new verdict function, nothing else.
 //  - should_stop() turns a verdict and the budget (rounds, seconds) into a StopDecision.
 // Pure functions of the rounds so far, so the runner's loop stays trivial and the rule is tested
-// without timing anything. pipeline/stopping.h binds them to a scene's rounds.
+// without timing anything. pipeline/stop_rules.h binds them to a scene's rounds.
 #pragma once
 
 #include <cstddef>

@@ -1,4 +1,4 @@
-#include "adapter/suggest.h"
+#include "core/suggest.h"
 
 #include <algorithm>
 

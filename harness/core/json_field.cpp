@@ -1,9 +1,9 @@
-#include "adapter/json_field.h"
+#include "core/json_field.h"
 
 #include <algorithm>
 #include <cctype>
 
-#include "adapter/suggest.h"
+#include "core/suggest.h"
 
 namespace raygate {
 namespace {

@@ -1,6 +1,7 @@
 // Typed reading of a JSON document that knows where it is: every accessor that finds the wrong
 // thing throws a FieldError naming the JSONPath ("$.build[1][2]") and what it found, so a
-// validation error points at the exact spot in the user's file.
+// validation error points at the exact spot in the user's file. It reads what core/json_reader.h
+// parsed; adapters, policies and results documents all check their fields with it.
 #pragma once
 
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
-// The stopping policy bound to a scene's rounds (pipeline/stopping.h): the rules of run and of
+// The stopping policy bound to a scene's rounds (pipeline/stop_rules.h): the rules of run and of
 // compare/bisect are one rule with different verdicts, and a verdict of one's own plugs in.
-#include "pipeline/stopping.h"
+#include "pipeline/stop_rules.h"
 
 #include <gtest/gtest.h>
 
@@ -87,10 +87,10 @@ TEST(PipelineStopping, RatioRuleIsTheSameRuleWithTheRatioVerdict) {
     round.runs["tracer"] = timed(i % 2 == 0 ? 1.0 : 3.0);  // far too noisy for a 1% target
     rounds.push_back(round);
     const std::vector<Round> so_far = rounds;
-    EXPECT_EQ(ratio_stop_rule(policy, "tracer")(so_far, 1.0),
-              stop_rule(policy, ratio_verdict(policy, "tracer"))(so_far, 1.0));
+    EXPECT_EQ(ratio_stop_rule(policy, Role::tracer)(so_far, 1.0),
+              stop_rule(policy, ratio_verdict(policy, Role::tracer))(so_far, 1.0));
   }
-  EXPECT_EQ(ratio_stop_rule(policy, "tracer")(rounds, 1.0), StopDecision::stop_budget_rounds);
+  EXPECT_EQ(ratio_stop_rule(policy, Role::tracer)(rounds, 1.0), StopDecision::stop_budget_rounds);
 }
 
 TEST(PipelineStopping, AVerdictOfOnesOwnDecidesOnItsOwnTerms) {

@@ -1,4 +1,4 @@
-#include "pipeline/stopping.h"
+#include "pipeline/stop_rules.h"
 
 #include <algorithm>
 #include <utility>
@@ -14,8 +14,8 @@ StopRule stop_rule(const StoppingPolicy& policy, SceneVerdict verdict) {
   };
 }
 
-SceneVerdict ratio_verdict(const StoppingPolicy& policy, const std::string& tracer_role,
-                           const std::string& baseline_role) {
+SceneVerdict ratio_verdict(const StoppingPolicy& policy, Role tracer_role,
+                           Role baseline_role) {
   return [=](const std::vector<Round>& rounds) {
     return ratio_decided(round_samples(rounds, tracer_role, baseline_role), policy);
   };
@@ -39,8 +39,8 @@ SceneVerdict change_verdict(const StoppingPolicy& policy, const ScenePolicy& sce
   };
 }
 
-StopRule ratio_stop_rule(const StoppingPolicy& policy, const std::string& tracer_role,
-                         const std::string& baseline_role) {
+StopRule ratio_stop_rule(const StoppingPolicy& policy, Role tracer_role,
+                         Role baseline_role) {
   return stop_rule(policy, ratio_verdict(policy, tracer_role, baseline_role));
 }
 

@@ -1,6 +1,6 @@
-// The one stopping policy (measure/stopping.h): the budget part of the rule, and the two verdict
+// The one stopping policy (measure/stopping_policy.h): the budget part of the rule, and the two verdict
 // functions run, compare and bisect decide with. Exact rounds from synthetic.h, no timing.
-#include "measure/stopping.h"
+#include "measure/stopping_policy.h"
 
 #include <gtest/gtest.h>
 

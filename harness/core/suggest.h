@@ -1,5 +1,6 @@
-// "Did you mean" for adapter files: the closest known word to a misspelt key or placeholder.
-// A typo in an adapter should cost the user one glance, not a trip to the README.
+// "Did you mean" for files people write (adapters, policies, suites, results documents read by
+// core/json_field.h): the closest known word to a misspelt key or placeholder. A typo should
+// cost the user one glance, not a trip to the README.
 #pragma once
 
 #include <optional>

@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
+#include "runner/timing/timing_modes.h"
 
 namespace raygate::cli {
 namespace {
@@ -35,23 +36,18 @@ std::string command_line(const std::vector<std::string>& argv) {
 }
 
 std::string timing_line(const Timing& timing) {
-  if (timing.source == TimingSource::simulated) {
-    return "simulated cycles under valgrind's cachegrind (docs/simulated-timing.md)";
+  const TimingMode& mode = adapter_timing_mode(timing);
+  if (!timing.regex.empty()) {
+    const char* unit = timing.unit == TimeUnit::seconds ? "seconds" : "milliseconds";
+    return fmt::format("{}: last line matching /{}/, group in {}", mode.description(),
+                       timing.regex, unit);
   }
-  if (timing.source == TimingSource::process) {
-    const char* clock = timing.metric == TimingMetric::wall
-                            ? "process wall-clock seconds (wait4)"
-                            : "process CPU seconds, user + system (wait4)";
-    if (!timing.metric_by_threads) return clock;
-    return fmt::format("{} (metric auto: {})", clock,
-                       timing.metric == TimingMetric::wall
-                           ? "threads > 1, so wall time, which shows the parallel speed-up"
-                           : "one thread, so CPU time, which a busy runner does not inflate by "
-                             "the time spent waiting for a CPU");
-  }
-  const char* unit = timing.unit == TimeUnit::seconds ? "seconds" : "milliseconds";
-  return fmt::format("reported by the tracer: last line matching /{}/, group in {}", timing.regex,
-                     unit);
+  if (!timing.metric_by_threads || mode.counted()) return std::string(mode.description());
+  return fmt::format("{} (metric auto: {})", mode.description(),
+                     timing.metric == TimingMetric::wall
+                         ? "threads > 1, so wall time, which shows the parallel speed-up"
+                         : "one thread, so CPU time, which a busy runner does not inflate by "
+                           "the time spent waiting for a CPU");
 }
 
 // What "images" means for how the pictures are judged.

@@ -2,13 +2,27 @@
 
 #include <fmt/core.h>
 
-#include "cli/simulated_mode.h"
 #include "compare/golden.h"
 #include "core/error.h"
 #include "core/process.h"
 #include "core/sha256.h"
+#include "runner/timing/timing_modes.h"
 
 namespace raygate::cli {
+
+namespace {
+
+// --timing's help: one clause per mode the registry offers (runner/timing/modes.def).
+std::string timing_help() {
+  std::string help = "how runs are timed, both sides by the same clock:";
+  for (const TimingMode* mode : timing_modes()) {
+    if (!mode->command_line_choice()) continue;
+    help += fmt::format(" {}: {};", mode->name(), mode->description());
+  }
+  return help + " (default: the adapter's)";
+}
+
+}  // namespace
 
 void add_measure_options(CLI::App& command, MeasureArgs& args) {
   command.add_option("--repo", args.repo, "the tracer's git repository: a path or a URL")
@@ -63,10 +77,8 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
                      "measure; 0 = none")
       ->check(CLI::Range(0.0, 1e6))
       ->capture_default_str();
-  command.add_option("--timing", args.metric,
-                     "time of a process-timed tracer: wall or cpu; sim: simulated cycles under "
-                     "cachegrind (default: the adapter's)")
-      ->check(CLI::IsMember({"wall", "cpu", "sim"}));
+  command.add_option("--timing", args.metric, timing_help())
+      ->check(CLI::IsMember(timing_mode_choices()));
   command.add_option("--jobs", args.jobs, "parallel build jobs (default: all allowed CPUs)");
   command.add_option("--policy", args.policy,
                      "gate policy file: slowdown limit, significance, image thresholds "
@@ -181,11 +193,11 @@ MeasureContext load_measure_context(const MeasureArgs& args) {
   c.stopping = args.stopping;
   c.stopping.max_rounds = std::max(c.stopping.max_rounds, std::size_t{1});
   if (c.stopping.max_rounds < c.stopping.min_rounds) c.stopping.min_rounds = c.stopping.max_rounds;
-  if (args.metric == "wall") c.metric = TimingMetric::wall;
-  if (args.metric == "cpu") c.metric = TimingMetric::cpu;
   if (!args.policy.empty()) c.policy = load_policy(args.policy);
   c.jobs = args.jobs;
-  apply_simulated_mode(args, c);
+  for (const std::string& warning : choose_timing(c, args.metric, !args.policy.empty())) {
+    fmt::print(stderr, "warning: {}\n", warning);
+  }
   return c;
 }
 

@@ -28,7 +28,7 @@ struct MeasureArgs {
   std::vector<int> duet_cpus{0, 1};
   int warmup = 1;
   StoppingPolicy stopping;  // --target, --min-rounds, ...; its defaults are the policy's own
-  std::string metric;  // "" (the adapter's), wall, cpu, sim
+  std::string metric;  // --timing: "" (the adapter's) or a mode's name (runner/timing/)
   int jobs = 0;
   std::string policy;  // gate policy file; "" = the defaults
   std::string shard;        // "K/N" (run and compare only); "" = every selected scene

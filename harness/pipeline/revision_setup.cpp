@@ -116,7 +116,7 @@ PreparedRevision prepared_revision(const std::string& role, const std::string& r
   prepared.setup.build = build_record;
   prepared.setup.repo_root = worktree.path;
   prepared.setup.raygate_source = context.tools.data_root;
-  prepared.setup.metric = context.metric;
+  prepared.setup.timing = &timing_mode(context);
   prepared.setup.cachegrind = context.cachegrind;
   // The adapter's own limit, and the user's budget too (issue 25, class 10), as the baseline's.
   prepared.setup.run_timeout_seconds =

@@ -8,9 +8,9 @@
 
 #include "cli/commands.h"
 #include "cli/console.h"
-#include "cli/gate_summary.h"
 #include "gate/policy.h"
 #include "gate/verdict.h"
+#include "report/gate_summary.h"
 #include "report/reporter.h"
 #include "results/results.h"
 

@@ -41,13 +41,12 @@ int report_command(const ReportArgs& args, const Console& console) {
 void add_report_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ReportArgs>();
   CLI::App* command = app.add_subcommand(
-      "report", "write the gate's verdict on a results document as console, markdown, junit, "
-                "json or html");
+      "report", "write the gate's verdict on a results document as " + report_format_list());
   command->add_option("results", args->results, "results document (raygate run/compare --out)")
       ->required()
       ->check(CLI::ExistingFile);
-  command->add_option("--format", args->format, "console, markdown, junit, json or html")
-      ->check(CLI::IsMember({"console", "markdown", "junit", "json", "html"}))
+  command->add_option("--format", args->format, report_format_list())
+      ->check(CLI::IsMember(report_format_names()))
       ->capture_default_str();
   command->add_option("-o,--output", args->output, "file to write; '-' for standard output")
       ->capture_default_str();

@@ -55,6 +55,15 @@ const TimingMode& timing_mode(std::string_view name) {
 
 std::vector<std::string> timing_mode_choices() { return names(true); }
 
+std::string timing_choices_help() {
+  std::string help = "how runs are timed, both sides by the same clock:";
+  for (const TimingMode* mode : timing_modes()) {
+    if (!mode->command_line_choice()) continue;
+    help += fmt::format(" {}: {};", mode->name(), mode->description());
+  }
+  return help + " (default: the adapter's)";
+}
+
 const TimingMode& adapter_timing_mode(const Timing& timing) {
   for (const TimingMode* mode : timing_modes()) {
     if (mode->source() != timing.source) continue;

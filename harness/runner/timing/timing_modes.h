@@ -17,8 +17,9 @@ const std::vector<const TimingMode*>& timing_modes();
 // The mode called `name`; UsageError listing the names (with "did you mean") otherwise.
 const TimingMode& timing_mode(std::string_view name);
 
-// The names --timing offers, in registry order.
+// The names --timing offers, in registry order, and its help: one clause per mode.
 std::vector<std::string> timing_mode_choices();
+std::string timing_choices_help();
 
 // The mode an adapter's timing section names: its process clock by the metric's word, or the
 // one mode of a reported or simulated source.

@@ -59,12 +59,9 @@ int bisect_command(const BisectArgs& args, const Console& console) {
 
 void add_bisect_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<BisectArgs>();
-  args->measure.stopping = change_stopping_policy();
-  args->measure.baseline_rounds = kChangeBaselineRounds;
   CLI::App* command = app.add_subcommand(
       "bisect", "find the first commit that made a scene slower (or its image wrong)");
-  add_measure_options(*command, args->measure);
-  add_baseline_rounds_option(*command, args->measure);
+  add_change_measure_options(*command, args->measure);
   command->add_option("--good", args->good, "a revision without the problem")->required();
   command->add_option("--bad", args->bad, "a later revision with it")->required();
   command->add_option("--metric", args->metric, "ratio: a slowdown beyond the policy; image: an "

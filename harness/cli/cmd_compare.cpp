@@ -58,12 +58,9 @@ int compare_command(const CompareArgs& args, const Console& console) {
 
 void add_compare_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CompareArgs>();
-  args->measure.stopping = change_stopping_policy();
-  args->measure.baseline_rounds = kChangeBaselineRounds;
   CLI::App* command = app.add_subcommand(
       "compare", "measure base and head in the same job and gate the change");
-  add_measure_options(*command, args->measure);
-  add_baseline_rounds_option(*command, args->measure);
+  add_change_measure_options(*command, args->measure);
   add_shard_options(*command, args->measure);
   command->add_option("--base", args->base, "base revision");
   command->add_option("--base-branch", args->base_branch,

@@ -70,9 +70,9 @@ int run_bless(const GoldenArgs& args) {
   Progress lines(stdout, false);
   if (args.from_run.empty()) {
     bless_baseline_goldens(open_goldens(args), lines);
-    return 0;
+  } else {
+    bless_goldens_from_run(from_run_request(args), lines);
   }
-  bless_goldens_from_run(from_run_request(args), lines);
   return 0;
 }
 

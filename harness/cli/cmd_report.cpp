@@ -6,11 +6,8 @@
 
 #include "cli/commands.h"
 #include "cli/console.h"
-#include "core/error.h"
-#include "gate/policy.h"
-#include "gate/verdict.h"
+#include "pipeline/document_commands.h"
 #include "report/reporter.h"
-#include "results/results.h"
 
 namespace raygate::cli {
 namespace {
@@ -25,15 +22,13 @@ struct ReportArgs {
 
 int report_command(const ReportArgs& args, const Console& console) {
   const ReportFormat format = parse_report_format(args.format);
-  const std::filesystem::path results = std::filesystem::absolute(args.results);
-  const ResultsDocument document = read_results(results);
-  const GatePolicy policy = args.policy.empty() ? GatePolicy{} : load_policy(args.policy);
-  const GateResult gate = evaluate_gate(document, policy);
-  ReportInput input{document, gate, policy, {}, results.parent_path()};
+  std::string note;
+  const JudgedDocument j = judge_document(args.results, args.policy, false, false, note);
   ReportOptions options;
   options.colour = console.colour(args.output.empty() || args.output == "-" ? stdout : nullptr);
-  write_reports(input, {{format, args.output}}, options);
-  return args.exit_code ? gate.exit_code : 0;
+  write_reports({j.document, j.gate, j.policy, {}, j.path.parent_path()},
+                {{format, args.output}}, options);
+  return args.exit_code ? j.gate.exit_code : 0;
 }
 
 }  // namespace

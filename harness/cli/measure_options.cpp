@@ -67,7 +67,10 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
                      "(docs/gate.md)");
 }
 
-void add_baseline_rounds_option(CLI::App& command, MeasureArgs& args) {
+void add_change_measure_options(CLI::App& command, MeasureArgs& args) {
+  args.stopping = change_stopping_policy();
+  args.baseline_rounds = kChangeBaselineRounds;
+  add_measure_options(command, args);
   command.add_option("--baseline-rounds", args.baseline_rounds,
                      "rounds per scene the baseline joins (the change of head against base "
                      "needs none; the normalized ratios need a few); 0 = every round")

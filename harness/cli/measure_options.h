@@ -17,9 +17,10 @@ using MeasureArgs = MeasureOptions;
 
 void add_measure_options(CLI::App& command, MeasureArgs& args);
 
-// --baseline-rounds: for compare and bisect, whose verdict needs no baseline (its default is
-// the value in `args` when called).
-void add_baseline_rounds_option(CLI::App& command, MeasureArgs& args);
+// compare's and bisect's: the measure options with the change's stopping policy and baseline
+// rounds as defaults (measure/stopping.h), and --baseline-rounds (the change of head against
+// base needs no baseline; the normalized ratios need a few).
+void add_change_measure_options(CLI::App& command, MeasureArgs& args);
 
 // --shard K/N and --shard-costs: for run and compare, whose documents `raygate merge` joins.
 void add_shard_options(CLI::App& command, MeasureArgs& args);

@@ -14,6 +14,21 @@
 
 namespace raygate {
 
+JudgedDocument judge_document(const std::string& results, const std::string& policy_file,
+                              bool recorded_limits, bool fail_on_inconclusive, std::string& note) {
+  JudgedDocument j;
+  j.path = std::filesystem::absolute(results);
+  j.document = read_results(j.path);
+  if (!policy_file.empty()) {
+    j.policy = load_policy(policy_file);
+  } else if (recorded_limits) {
+    j.policy = recorded_policy(j.document.settings, note);
+  }
+  j.policy.fail_on_inconclusive = j.policy.fail_on_inconclusive || fail_on_inconclusive;
+  j.gate = evaluate_gate(j.document, j.policy);
+  return j;
+}
+
 ScalingJudgement judge_scaling(const std::string& results, const std::string& policy_file,
                                bool no_write, OutputFailures& failures) {
   ScalingJudgement j;

@@ -4,6 +4,7 @@
 // parses options, calls these and prints what they return.
 #pragma once
 
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -16,6 +17,18 @@
 #include "scaling/scaling_analysis.h"
 
 namespace raygate {
+
+struct JudgedDocument {
+  std::filesystem::path path;  // absolute: reports link its run folder's files
+  ResultsDocument document;
+  GatePolicy policy;
+  GateResult gate;
+};
+
+// A results document read and gated (`raygate gate`, `raygate report`) by `policy_file`, else
+// by the limits it recorded when `recorded_limits` (`note` then says so), else the defaults.
+JudgedDocument judge_document(const std::string& results, const std::string& policy_file,
+                              bool recorded_limits, bool fail_on_inconclusive, std::string& note);
 
 struct ScalingJudgement {
   ResultsDocument document;  // with its fits attached

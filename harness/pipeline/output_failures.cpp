@@ -1,4 +1,4 @@
-#include "cli/output_failures.h"
+#include "pipeline/output_failures.h"
 
 #include <fmt/core.h>
 #include <unistd.h>

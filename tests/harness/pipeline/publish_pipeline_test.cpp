@@ -125,7 +125,7 @@ TEST_F(PublishPipelineTest, ABadReportSpecIsAUsageError) {
   EXPECT_THROW(parse_report_targets({"json:" + dir_.path().string()}), UsageError);
 }
 
-TEST_F(PublishPipelineTest, CompareWithoutACommonAncestorIsAUsageError) {
+TEST_F(PublishPipelineTest, ABaseBranchThatDoesNotExistIsRefused) {
   commit_tracer("2.0", "main");
   EXPECT_THROW(locate_compare_trees(repo_.path().string(), "", "no-such-branch", "HEAD",
                                     context_.cache_dir),

@@ -59,9 +59,9 @@ int bisect_command(const BisectArgs& args, const Console& console) {
 
 void add_bisect_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<BisectArgs>();
-  CLI::App* command = app.add_subcommand(
-      "bisect", "find the first commit that made a scene slower (or its image wrong)");
-  add_change_measure_options(*command, args->measure);
+  CLI::App* command = add_measuring_subcommand(
+      app, "bisect", "find the first commit that made a scene slower (or its image wrong)",
+      args->measure, true);
   command->add_option("--good", args->good, "a revision without the problem")->required();
   command->add_option("--bad", args->bad, "a later revision with it")->required();
   command->add_option("--metric", args->metric, "ratio: a slowdown beyond the policy; image: an "

@@ -47,20 +47,16 @@ int compare_command(const CompareArgs& args, const Console& console) {
       {context, baseline, trees.repository, trees.base, trees.head, args.out}, terminal.io);
   GatePolicy policy = context.policy;
   policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
-  OutputFailures failures;
-  for (const FailedWrite& failed : measured.unwritten) failures.add("the results document", failed);
-  return publish(measured.document, publish_request(measured.path, args.record, context.cache_dir,
-                                                    policy, args.reports, console),
-                 console, failures);
+  return publish_measured(measured, args.record, context.cache_dir, policy, args.reports, console);
 }
 
 }  // namespace
 
 void add_compare_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CompareArgs>();
-  CLI::App* command = app.add_subcommand(
-      "compare", "measure base and head in the same job and gate the change");
-  add_change_measure_options(*command, args->measure);
+  CLI::App* command = add_measuring_subcommand(
+      app, "compare", "measure base and head in the same job and gate the change", args->measure,
+      true);
   add_shard_options(*command, args->measure);
   command->add_option("--base", args->base, "base revision");
   command->add_option("--base-branch", args->base_branch,

@@ -45,20 +45,17 @@ int run_command(const RunArgs& args, const Console& console) {
                              score->second.score, score->second.interval.lower,
                              score->second.interval.upper, score->second.scenes));
   }
-  OutputFailures failures;
-  for (const FailedWrite& failed : measured.unwritten) failures.add("the results document", failed);
-  return publish(document, publish_request(measured.path, args.record, context.cache_dir,
-                                           context.policy, args.reports, console),
-                 console, failures);
+  return publish_measured(measured, args.record, context.cache_dir, context.policy, args.reports,
+                          console);
 }
 
 }  // namespace
 
 void add_run_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<RunArgs>();
-  CLI::App* command = app.add_subcommand(
-      "run", "measure one revision against the baseline on a suite; writes a results document");
-  add_measure_options(*command, args->measure);
+  CLI::App* command = add_measuring_subcommand(
+      app, "run", "measure one revision against the baseline on a suite; writes a results document",
+      args->measure, false);
   add_shard_options(*command, args->measure);
   command->add_option("--rev", args->rev, "revision to measure (branch, tag, sha, HEAD~3, ...)")
       ->capture_default_str();

@@ -31,9 +31,10 @@ int scaling_command(const ScalingArgs& args, const Console& console) {
   for (const std::string& line : scaling_lines(j.analysis)) fmt::print("{}\n", line);
   print_gate_summary(j.gate, stdout);
   if (!args.reports.empty()) {  // the scene table is run's and compare's; shown only on request
+    RecordArgs unrecorded;  // scaling writes the fits into the document, never to the store
+    unrecorded.no_store = true;
     publish_reports(j.document, evaluate_gate(j.document, j.policy),
-                    publish_request(args.results, {.no_store = true}, {}, j.policy, args.reports,
-                                    console),
+                    publish_request(args.results, unrecorded, {}, j.policy, args.reports, console),
                     console, failures);
   }
   failures.say_summary(failures.exit_code(j.gate.exit_code));

@@ -78,6 +78,17 @@ void add_change_measure_options(CLI::App& command, MeasureArgs& args) {
       ->capture_default_str();
 }
 
+CLI::App* add_measuring_subcommand(CLI::App& app, const std::string& name,
+                                   const std::string& help, MeasureArgs& args, bool change) {
+  CLI::App* command = app.add_subcommand(name, help);
+  if (change) {
+    add_change_measure_options(*command, args);
+  } else {
+    add_measure_options(*command, args);
+  }
+  return command;
+}
+
 void add_shard_options(CLI::App& command, MeasureArgs& args) {
   command.add_option("--shard", args.shard,
                      "measure only shard K of N of the selected scenes (1 <= K <= N), split by "

@@ -43,4 +43,14 @@ PublishRequest publish_request(const std::filesystem::path& document_path,
   return request;
 }
 
+int publish_measured(const MeasuredDocument& measured, const RecordArgs& record,
+                     const std::filesystem::path& cache_dir, const GatePolicy& policy,
+                     const std::vector<std::string>& reports, const Console& console) {
+  OutputFailures failures;
+  for (const FailedWrite& failed : measured.unwritten) failures.add("the results document", failed);
+  return publish(measured.document,
+                 publish_request(measured.path, record, cache_dir, policy, reports, console),
+                 console, failures);
+}
+
 }  // namespace raygate::cli

@@ -13,6 +13,7 @@
 #include "cli/store_options.h"
 #include "gate/policy.h"
 #include "pipeline/publish.h"
+#include "pipeline/suite_measurement.h"
 
 namespace raygate::cli {
 
@@ -31,5 +32,11 @@ PublishRequest publish_request(const std::filesystem::path& document_path,
                                const RecordArgs& record, const std::filesystem::path& cache_dir,
                                const GatePolicy& policy, const std::vector<std::string>& reports,
                                const Console& console);
+
+// The end of run and compare: the measured document's failed writes counted, then publish()
+// with the request above; returns the exit code.
+int publish_measured(const MeasuredDocument& measured, const RecordArgs& record,
+                     const std::filesystem::path& cache_dir, const GatePolicy& policy,
+                     const std::vector<std::string>& reports, const Console& console);
 
 }  // namespace raygate::cli

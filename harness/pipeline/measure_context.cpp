@@ -23,7 +23,7 @@ std::vector<std::string> choose_timing(MeasureContext& c, const std::string& cho
   // The source actually used, as the adapter's: the measurement hash (builder/build_cache.h)
   // and the document's timing_source name it.
   c.adapter.timing.source = mode.source();
-  TimingPlan plan{c.suite, c.adapter.threads, c.adapter.file, c.schedule, c.stopping};
+  TimingPlan plan{c.suite, c.adapter.threads, c.adapter.file, c.schedule, c.stopping, {}, {}, {}};
   mode.prepare(plan);
   c.cachegrind = std::move(plan.cachegrind);
   if (plan.default_max_slowdown && !policy_given) {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -73,5 +74,18 @@ class TimingMode {
   // The measurement's adjustments for this mode; none by default.
   virtual void prepare(TimingPlan& /*plan*/) const {}
 };
+
+// A mode that is only a clock: its names, its source, and which number of a run it reads. Most
+// modes are one (wall, cpu, user, reported); make_clock_mode() makes the TimingMode.
+struct ClockSpec {
+  std::string_view name;
+  std::string_view description;
+  std::string_view tracer_clock;
+  std::string_view baseline_clock;
+  std::optional<double> (*seconds)(const RunRecord& run);
+  TimingSource source = TimingSource::process;
+};
+
+std::unique_ptr<TimingMode> make_clock_mode(const ClockSpec& spec);
 
 }  // namespace raygate

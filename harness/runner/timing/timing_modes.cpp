@@ -16,6 +16,22 @@ namespace raygate {
 
 namespace {
 
+class Clock final : public TimingMode {
+ public:
+  explicit Clock(const ClockSpec& spec) : spec_(spec) {}
+  std::string_view name() const override { return spec_.name; }
+  std::string_view description() const override { return spec_.description; }
+  std::string_view tracer_clock() const override { return spec_.tracer_clock; }
+  std::string_view baseline_clock() const override { return spec_.baseline_clock; }
+  TimingSource source() const override { return spec_.source; }
+  // A time the tracer prints needs the adapter's regex: not a command-line choice.
+  bool command_line_choice() const override { return spec_.source == TimingSource::process; }
+  std::optional<double> seconds(const RunRecord& run) const override { return spec_.seconds(run); }
+
+ private:
+  ClockSpec spec_;
+};
+
 std::vector<std::unique_ptr<TimingMode>> make_modes() {
   std::vector<std::unique_ptr<TimingMode>> modes;
 #define RAYGATE_TIMING_MODE(factory) modes.push_back(factory());
@@ -33,6 +49,10 @@ std::vector<std::string> names(bool command_line_only) {
 }
 
 }  // namespace
+
+std::unique_ptr<TimingMode> make_clock_mode(const ClockSpec& spec) {
+  return std::make_unique<Clock>(spec);
+}
 
 const std::vector<const TimingMode*>& timing_modes() {
   // Built once, never changed: the modes are stateless, so this is a constant table.

@@ -107,7 +107,7 @@ TEST(TimingModes, ProcessClocksPrepareNothing) {
   schedule.round_cpus = {0, 1};
   StoppingPolicy stopping;
   const std::filesystem::path file = "a.json";
-  TimingPlan plan{suite, 1, file, schedule, stopping};
+  TimingPlan plan{suite, 1, file, schedule, stopping, {}, {}, {}};
   timing_mode("user").prepare(plan);
   EXPECT_EQ(schedule.warmup_runs, 3);
   EXPECT_EQ(schedule.round_cpus, (std::vector<int>{0, 1}));

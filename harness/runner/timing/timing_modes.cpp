@@ -16,9 +16,9 @@ namespace raygate {
 
 namespace {
 
-class Clock final : public TimingMode {
+class ClockMode final : public TimingMode {
  public:
-  explicit Clock(const ClockSpec& spec) : spec_(spec) {}
+  explicit ClockMode(const ClockSpec& spec) : spec_(spec) {}
   std::string_view name() const override { return spec_.name; }
   std::string_view description() const override { return spec_.description; }
   std::string_view tracer_clock() const override { return spec_.tracer_clock; }
@@ -51,7 +51,7 @@ std::vector<std::string> names(bool command_line_only) {
 }  // namespace
 
 std::unique_ptr<TimingMode> make_clock_mode(const ClockSpec& spec) {
-  return std::make_unique<Clock>(spec);
+  return std::make_unique<ClockMode>(spec);
 }
 
 const std::vector<const TimingMode*>& timing_modes() {

@@ -7,44 +7,30 @@
 
 #include <memory>
 
-#include "alert/history_alert.h"
 #include "cli/commands.h"
 #include "cli/console.h"
 #include "cli/store_options.h"
-#include "core/error.h"
+#include "pipeline/store_commands.h"
 
 namespace raygate::cli {
 namespace {
 
 struct AlertArgs {
-  std::string store = kDefaultStorePath;
-  HistoryQuery query = [] {
-    HistoryQuery q;
-    q.last_commits = 30;  // enough for a change point with history on both sides
-    return q;
+  AlertRequest request = [] {
+    AlertRequest r;
+    r.store = kDefaultStorePath;
+    r.query.last_commits = 30;  // enough for a change point with history on both sides
+    return r;
   }();
-  std::string policy;
   std::string on_regression = "fail";
   std::string format;
-  EDivisiveOptions detection;
 };
 
-int alert_command(const AlertArgs& args, const Console& console) {
-  const GatePolicy policy = args.policy.empty() ? GatePolicy{} : load_policy(args.policy);
-  const auto store = open_store(args.store, StoreOpen::must_exist);
-  const std::vector<HistoryRow> rows = store->history(args.query);
-  console.info(fmt::format("judging the last {} commits{} of {}: {} measurements",
-                           args.query.last_commits,
-                           args.query.branch.empty() ? "" : " of branch " + args.query.branch,
-                           store->location(), rows.size()));
-  const AlertJudgement judgement = judge_history(
-      rows, policy, args.detection, parse_alert_action(args.on_regression));
-  if (judgement.series.empty()) {
-    throw UsageError(fmt::format("no measured commits in {} match the filters; record some "
-                                 "with raygate run (or raygate import)",
-                                 store->location()));
-  }
-  print_result(args.format, [&] { return alert_json(judgement, args.detection); },
+int alert_command(AlertArgs args, const Console& console) {
+  args.request.action = parse_alert_action(args.on_regression);
+  const AlertJudgement judgement = judge_store_history(
+      args.request, [&console](const std::string& line) { console.info(line); });
+  print_result(args.format, [&] { return alert_json(judgement, args.request.detection); },
                [&] { return alert_text(judgement); });
   return judgement.exit_code();
 }
@@ -55,32 +41,32 @@ void add_alert_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<AlertArgs>();
   CLI::App* command = app.add_subcommand(
       "alert", "flag a slowdown that landed: change points in each series' history (docs/gate.md)");
-  add_store_option(*command, args->store, kDefaultStorePath);
-  add_history_filters(*command, args->query);
-  command->add_option("--last", args->query.last_commits,
+  add_store_option(*command, args->request.store, kDefaultStorePath);
+  add_history_filters(*command, args->request.query);
+  command->add_option("--last", args->request.query.last_commits,
                       "the newest N commits are the history judged")
       ->check(CLI::Range(2, 100000))
       ->capture_default_str();
-  command->add_option("--policy", args->policy,
+  command->add_option("--policy", args->request.policy,
                       "gate policy file: each scene's max_slowdown is its alert limit")
       ->check(CLI::ExistingFile);
   command->add_option("--on-regression", args->on_regression,
                       "fail: exit 1 when a series is in alert; annotate: report it, exit 0")
       ->check(CLI::IsMember({"fail", "annotate"}))
       ->capture_default_str();
-  command->add_option("--min-segment", args->detection.min_segment,
+  command->add_option("--min-segment", args->request.detection.min_segment,
                       "commits needed on each side of a change point")
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
-  command->add_option("--permutations", args->detection.permutations,
+  command->add_option("--permutations", args->request.detection.permutations,
                       "random orders of the series for the significance test")
       ->check(CLI::Range(9, 100000))
       ->capture_default_str();
-  command->add_option("--significance", args->detection.significance,
+  command->add_option("--significance", args->request.detection.significance,
                       "a change point needs a permutation p-value below this")
       ->check(CLI::Range(0.0001, 0.5))
       ->capture_default_str();
-  command->add_option("--seed", args->detection.seed, "seed of the permutations")
+  command->add_option("--seed", args->request.detection.seed, "seed of the permutations")
       ->capture_default_str();
   add_format_option(*command, args->format, {"text", "json"});
   command->callback([args, command, &exit_code] {

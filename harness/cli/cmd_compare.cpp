@@ -6,16 +6,15 @@
 
 #include <memory>
 
-#include "checkout/repository.h"
 #include "cli/commands.h"
 #include "cli/console.h"
 #include "cli/measure_options.h"
 #include "cli/report_options.h"
 #include "cli/store_options.h"
-#include "cli/terminal_io.h"
+#include "cli/terminal_progress.h"
 #include "core/error.h"
-#include "gate/verdict.h"
 #include "pipeline/compare_measurement.h"
+#include "pipeline/revision_setup.h"
 
 namespace raygate::cli {
 namespace {
@@ -32,69 +31,46 @@ struct CompareArgs {
   std::vector<std::string> reports;  // --report FORMAT:PATH
 };
 
-// --base REV, or the merge base of head and --base-branch (what a pull request changes).
-Worktree base_worktree(const CompareArgs& args, const Repository& repository) {
-  if (!args.base.empty()) return repository.checkout(args.base);
-  const std::optional<Revision> base = repository.merge_base(args.head, args.base_branch);
-  if (!base) {
-    throw UsageError(fmt::format("{} and {} have no common ancestor; pass --base REV",
-                                 args.head, args.base_branch));
-  }
-  Revision named = *base;
-  named.revision = "merge-base(" + args.head + ", " + args.base_branch + ")";
-  return repository.materialize(named);
-}
-
 int compare_command(const CompareArgs& args, const Console& console) {
   if (args.base.empty() == args.base_branch.empty()) {
     throw UsageError("name the base: --base REV or --base-branch BRANCH (exactly one)");
   }
   MeasureContext context = load_measure_context(args.measure);
   context.explain = args.explain;
-  check_report_specs(args.reports);
+  parse_report_targets(args.reports);
   check_output_path(args.out, "--output");
   const BaselineTool baseline(context.tools.baseline);
-  const Repository repository = Repository::open(args.measure.repo, context.cache_dir);
-  const Worktree head = repository.checkout(args.head);
-  const Worktree base = base_worktree(args, repository);
-  TerminalIo terminal(console);
+  const CompareTrees trees = locate_compare_trees(args.measure.repo, args.base, args.base_branch,
+                                                  args.head, context.cache_dir);
+  TerminalIo terminal(console.quiet(), is_terminal(stderr));
   const MeasuredDocument measured = measure_compare(
-      {context, baseline, repository.location(), base, head, args.out}, terminal.io);
+      {context, baseline, trees.repository, trees.base, trees.head, args.out}, terminal.io);
   GatePolicy policy = context.policy;
   policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
-  OutputFailures failures;
-  for (const FailedWrite& failed : measured.unwritten) failures.add("the results document", failed);
-  return record_gate_and_report(measured.document, measured.path, args.record, context.cache_dir,
-                                policy, args.reports, console, failures);
+  return publish_measured(measured, args.record, context.cache_dir, policy, args.reports, console);
 }
 
 }  // namespace
 
 void add_compare_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CompareArgs>();
-  args->measure.stopping = change_stopping_policy();
-  args->measure.baseline_rounds = kChangeBaselineRounds;
-  CLI::App* command = app.add_subcommand(
-      "compare", "measure base and head in the same job and gate the change");
-  add_measure_options(*command, args->measure);
-  add_baseline_rounds_option(*command, args->measure);
+  CLI::App* command = add_measuring_subcommand(
+      app, "compare", "measure base and head in the same job and gate the change", args->measure,
+      true);
   add_shard_options(*command, args->measure);
   command->add_option("--base", args->base, "base revision");
   command->add_option("--base-branch", args->base_branch,
                       "use the merge base of head and this branch as the base");
   command->add_option("--head", args->head, "head revision")->capture_default_str();
-  add_deprecated_alias(*command, "--out",
-                       command->add_option("-o,--output", args->out,
-                                           "results document (default: "
-                                           "<cache-dir>/runs/<time>-<base>-<head>/results.json)"),
-                       args->out);
   command->add_flag("--fail-on-inconclusive", args->fail_on_inconclusive,
                     "an INCONCLUSIVE change fails the gate instead of warning");
   command->add_flag("--explain", args->explain,
                     "run each REGRESSED scene's base and head once more under cachegrind and "
                     "show the functions whose cost grew most (sim mode explains without it)");
-  add_record_options(*command, args->record);
-  add_report_options(*command, args->reports);
+  add_publish_options(
+      *command, args->out,
+      "results document (default: <cache-dir>/runs/<time>-<base>-<head>/results.json)",
+      args->record, args->reports);
   command->callback([args, command, &exit_code] {
     exit_code = compare_command(*args, console_of(*command));
   });

@@ -12,9 +12,8 @@
 #include "cli/console.h"
 #include "consistency/consistency.h"
 #include "consistency/consistency_report.h"
-#include "core/error.h"
 #include "core/fs.h"
-#include "results/results.h"
+#include "pipeline/document_commands.h"
 
 namespace raygate::cli {
 namespace {
@@ -26,31 +25,8 @@ struct ConsistencyArgs {
   std::string markdown;
 };
 
-// Any document raygate cannot read is "could not check" (exit 3), not a usage error: the
-// command line was right, the file was not.
-ResultsDocument read_document(const std::string& path) {
-  try {
-    return read_results(path);
-  } catch (const UsageError& e) {
-    throw InfraError(std::string(e.what()) +
-                     " (consistency needs results documents written by "
-                     "raygate run or compare --out)");
-  }
-}
-
 int consistency_command(const ConsistencyArgs& args) {
-  if (args.documents.size() < 2) {
-    throw UsageError(
-        fmt::format("consistency needs at least 2 results documents (one per "
-                    "machine), got {}",
-                    args.documents.size()));
-  }
-  std::vector<DocumentRatios> documents;
-  for (std::size_t i = 0; i < args.documents.size(); ++i) {
-    documents.push_back(
-        document_ratios(read_document(args.documents[i]), args.documents[i], document_label(i)));
-  }
-  const ConsistencyResult result = analyse_consistency(std::move(documents), args.options);
+  const ConsistencyResult result = check_consistency(args.documents, args.options);
   if (!args.markdown.empty()) write_file_atomically(args.markdown, consistency_markdown(result));
   print_result(args.format, [&] { return consistency_json(result); },
                [&] { return consistency_table(result); });

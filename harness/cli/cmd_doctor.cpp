@@ -8,11 +8,9 @@
 
 #include "cli/commands.h"
 #include "cli/console.h"
-#include "core/error.h"
-#include "core/fs.h"
-#include "core/paths.h"
+#include "core/exit_codes.h"
 #include "doctor/doctor_report.h"
-#include "runner/baseline_tool.h"
+#include "pipeline/document_commands.h"
 
 namespace raygate::cli {
 namespace {
@@ -23,35 +21,12 @@ struct DoctorArgs {
   std::string baseline;
 };
 
-// Fills the noise score, or the reason it could not be measured.
-void measure(const DoctorArgs& args, DoctorReport& report) {
-  try {
-    const ToolPaths tools = locate_tools(args.baseline);
-    report.baseline_version = BaselineTool(tools.baseline).version_line();
-    TempDir work("raygate-doctor");
-    NoiseOptions options;
-    options.baseline = tools.baseline;
-    options.rounds = args.rounds;
-    options.work_dir = work.path();
-    if (args.format != "json") {
-      fmt::print(stderr, "measuring noise: {} rounds of two raygate-baseline runs...\n",
-                 args.rounds);
-    }
-    report.noise = measure_noise(options);
-  } catch (const InfraError& e) {
-    report.noise_error = e.what();
-  }
-}
-
 int doctor_command(const DoctorArgs& args) {
-  if (args.rounds < 2) {
-    throw UsageError(
-        fmt::format("--rounds {}: a noise score needs at least 2 rounds", args.rounds));
-  }
-  DoctorReport report;
-  report.facts = probe_system_facts();  // before measuring: the load must not be our own
-  report.findings = diagnose(report.facts);
-  measure(args, report);
+  const bool chatty = args.format != "json";
+  const DoctorReport report =
+      examine_machine(args.rounds, args.baseline, [chatty](const std::string& line) {
+        if (chatty) fmt::print(stderr, "{}\n", line);
+      });
   print_result(args.format, [&] { return doctor_json(report); },
                [&] { return doctor_text(report); });
   return report.noise ? to_int(ExitCode::pass) : to_int(ExitCode::infrastructure);

@@ -8,11 +8,9 @@
 
 #include "cli/commands.h"
 #include "cli/console.h"
-#include "cli/gate_summary.h"
-#include "gate/policy.h"
-#include "gate/verdict.h"
+#include "pipeline/document_commands.h"
+#include "report/gate_summary.h"
 #include "report/reporter.h"
-#include "results/results.h"
 
 namespace raygate::cli {
 namespace {
@@ -25,21 +23,17 @@ struct GateArgs {
 };
 
 int gate_command(const GateArgs& args, const Console& console) {
-  const std::filesystem::path results = std::filesystem::absolute(args.results);
-  const ResultsDocument document = read_results(results);
   std::string note;
-  GatePolicy policy =
-      args.policy.empty() ? recorded_policy(document.settings, note) : load_policy(args.policy);
+  const JudgedDocument j =
+      judge_document(args.results, args.policy, true, args.fail_on_inconclusive, note);
   if (!note.empty()) console.info(fmt::format("gate policy: {}", note));
-  policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
-  const GateResult gate = evaluate_gate(document, policy);
   if (args.format == "json") {
-    write_reports({document, gate, policy, {}, results.parent_path()},
+    write_reports({j.document, j.gate, j.policy, {}, j.path.parent_path()},
                   {{ReportFormat::json, "-"}}, {});
   } else {
-    print_gate_summary(gate, stdout);
+    print_gate_summary(j.gate, stdout);
   }
-  return gate.exit_code;
+  return j.gate.exit_code;
 }
 
 }  // namespace

@@ -76,19 +76,29 @@ int run_bless(const GoldenArgs& args) {
   Progress lines(stdout, false);
   if (args.from_run.empty()) {
     bless_baseline_goldens(open_goldens(args), lines);
-    return 0;
+  } else {
+    bless_goldens_from_run(from_run_request(args), lines);
   }
-  bless_goldens_from_run(from_run_request(args), lines);
   return 0;
 }
 
-void add_common_options(CLI::App* cmd, GoldenArgs& args) {
-  cmd->add_option("--suite", args.suite, "Suite name or file")->capture_default_str();
-  cmd->add_option("--golden-dir", args.golden_dir,
+// verify and bless take the same options; only what --from-run does differs.
+void add_golden_subcommand(CLI::App& golden, const std::string& name, const std::string& help,
+                           const std::string& from_run_help, int (*run)(const GoldenArgs&),
+                           int& exit_code) {
+  auto args = std::make_shared<GoldenArgs>();
+  CLI::App* cmd = golden.add_subcommand(name, help);
+  cmd->add_option("--suite", args->suite, "Suite name or file")->capture_default_str();
+  cmd->add_option("--golden-dir", args->golden_dir,
                   "Golden directory (default: golden/raygate-baseline/, the baseline's)");
-  cmd->add_option("--work-dir", args.work_dir, "Where scenes, renders and evidence go")
+  cmd->add_option("--work-dir", args->work_dir, "Where scenes, renders and evidence go")
       ->capture_default_str();
-  cmd->add_option("--baseline", args.baseline, "raygate-baseline to use (default: beside raygate)");
+  cmd->add_option("--baseline", args->baseline, "raygate-baseline to use (default: beside raygate)");
+  cmd->add_option("scenes", args->scenes, "Suite scene ids (default: all)");
+  cmd->add_option("--from-run", args->from_run, from_run_help);
+  cmd->add_option("--role", args->role, "With --from-run: whose images (tracer, head, base)")
+      ->capture_default_str();
+  cmd->callback([args, run, &exit_code] { exit_code = run(*args); });
 }
 
 }  // namespace
@@ -96,28 +106,15 @@ void add_common_options(CLI::App* cmd, GoldenArgs& args) {
 void add_golden_command(CLI::App& app, int& exit_code) {
   CLI::App* golden = app.add_subcommand("golden", "Verify or bless the baseline's golden images");
   golden->require_subcommand(1);
-
-  auto verify_args = std::make_shared<GoldenArgs>();
-  CLI::App* verify = golden->add_subcommand("verify", "Re-render and demand identical pixels");
-  add_common_options(verify, *verify_args);
-  verify->add_option("scenes", verify_args->scenes, "Suite scene ids (default: all)");
-  verify->add_option("--from-run", verify_args->from_run,
-                     "Check a tracer's images from this results document against its adapter's "
-                     "goldens (Monte Carlo adapters: within noise) instead of rendering the baseline");
-  verify->add_option("--role", verify_args->role, "With --from-run: whose images (tracer, head, base)")
-      ->capture_default_str();
-  verify->callback([verify_args, &exit_code] { exit_code = run_verify(*verify_args); });
-
-  auto bless_args = std::make_shared<GoldenArgs>();
-  CLI::App* bless = golden->add_subcommand("bless", "Re-render and overwrite goldens (on request only)");
-  add_common_options(bless, *bless_args);
-  bless->add_option("scenes", bless_args->scenes, "Suite scene ids (default: all)");
-  bless->add_option("--from-run", bless_args->from_run,
-                    "Bless a tracer's images from this results document instead of rendering "
-                    "the baseline (default golden dir: golden/<adapter>/)");
-  bless->add_option("--role", bless_args->role, "With --from-run: whose images (tracer, head, base)")
-      ->capture_default_str();
-  bless->callback([bless_args, &exit_code] { exit_code = run_bless(*bless_args); });
+  add_golden_subcommand(*golden, "verify", "Re-render and demand identical pixels",
+                        "Check a tracer's images from this results document against its "
+                        "adapter's goldens (Monte Carlo adapters: within noise) instead of "
+                        "rendering the baseline",
+                        run_verify, exit_code);
+  add_golden_subcommand(*golden, "bless", "Re-render and overwrite goldens (on request only)",
+                        "Bless a tracer's images from this results document instead of "
+                        "rendering the baseline (default golden dir: golden/<adapter>/)",
+                        run_bless, exit_code);
 }
 
 }  // namespace raygate::cli

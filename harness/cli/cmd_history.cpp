@@ -9,10 +9,9 @@
 #include "cli/commands.h"
 #include "cli/console.h"
 #include "history/history_view.h"
-#include "cli/store_commands.h"
 #include "cli/store_options.h"
 #include "core/fs.h"
-#include "store/store.h"
+#include "pipeline/store_commands.h"
 
 namespace raygate::cli {
 namespace {
@@ -28,19 +27,6 @@ struct HistoryArgs {
   std::string html_dir;
 };
 
-// The machine's own history for the drift rule: every document, any branch, any series (the
-// rule compares each series only with itself).
-HistoryQuery machine_query(const HistoryQuery& query) {
-  HistoryQuery machine = query;
-  machine.branch.clear();
-  machine.last_commits = 0;
-  machine.repository.clear();
-  machine.adapter.clear();
-  machine.suite.clear();
-  machine.series.clear();
-  return machine;
-}
-
 void write_html(const HistoryView& view, const std::string& dir) {
   const std::filesystem::path page = std::filesystem::path(dir) / "history.html";
   write_file_atomically(page, history_html(view));
@@ -48,13 +34,7 @@ void write_html(const HistoryView& view, const std::string& dir) {
 }
 
 int history_command(const HistoryArgs& args) {
-  const auto store = open_store(args.store, StoreOpen::must_exist);
-  const HistoryQuery& query = args.query;
-  HistoryView view = make_history_view(store->measurements(query), query.last_commits,
-                                       store->measurements(machine_query(query)));
-  view.store = store->location();
-  view.role = query.role;
-  view.branch = query.branch;
+  const HistoryView view = store_history_view(args.store, args.query);
   if (!args.html_dir.empty()) write_html(view, args.html_dir);
   print_result(args.format, [&] { return history_json(view); },
                [&] { return history_table(view); });

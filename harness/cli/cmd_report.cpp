@@ -6,11 +6,8 @@
 
 #include "cli/commands.h"
 #include "cli/console.h"
-#include "core/error.h"
-#include "gate/policy.h"
-#include "gate/verdict.h"
+#include "pipeline/document_commands.h"
 #include "report/reporter.h"
-#include "results/results.h"
 
 namespace raygate::cli {
 namespace {
@@ -25,15 +22,13 @@ struct ReportArgs {
 
 int report_command(const ReportArgs& args, const Console& console) {
   const ReportFormat format = parse_report_format(args.format);
-  const std::filesystem::path results = std::filesystem::absolute(args.results);
-  const ResultsDocument document = read_results(results);
-  const GatePolicy policy = args.policy.empty() ? GatePolicy{} : load_policy(args.policy);
-  const GateResult gate = evaluate_gate(document, policy);
-  ReportInput input{document, gate, policy, {}, results.parent_path()};
+  std::string note;
+  const JudgedDocument j = judge_document(args.results, args.policy, false, false, note);
   ReportOptions options;
   options.colour = console.colour(args.output.empty() || args.output == "-" ? stdout : nullptr);
-  write_reports(input, {{format, args.output}}, options);
-  return args.exit_code ? gate.exit_code : 0;
+  write_reports({j.document, j.gate, j.policy, {}, j.path.parent_path()},
+                {{format, args.output}}, options);
+  return args.exit_code ? j.gate.exit_code : 0;
 }
 
 }  // namespace
@@ -41,13 +36,12 @@ int report_command(const ReportArgs& args, const Console& console) {
 void add_report_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ReportArgs>();
   CLI::App* command = app.add_subcommand(
-      "report", "write the gate's verdict on a results document as console, markdown, junit, "
-                "json or html");
+      "report", "write the gate's verdict on a results document as " + report_format_list());
   command->add_option("results", args->results, "results document (raygate run/compare --out)")
       ->required()
       ->check(CLI::ExistingFile);
-  command->add_option("--format", args->format, "console, markdown, junit, json or html")
-      ->check(CLI::IsMember({"console", "markdown", "junit", "json", "html"}))
+  command->add_option("--format", args->format, report_format_list())
+      ->check(CLI::IsMember(report_format_names()))
       ->capture_default_str();
   command->add_option("-o,--output", args->output, "file to write; '-' for standard output")
       ->capture_default_str();

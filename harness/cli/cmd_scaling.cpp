@@ -5,16 +5,13 @@
 // family measured at 3 sizes or more.
 #include <fmt/core.h>
 
-#include <algorithm>
 #include <memory>
 
 #include "cli/commands.h"
 #include "cli/console.h"
-#include "cli/gate_summary.h"
 #include "cli/report_options.h"
-#include "core/error.h"
-#include "gate/growth_gate.h"
-#include "scaling/scaling_stage.h"
+#include "pipeline/document_commands.h"
+#include "report/gate_summary.h"
 #include "scaling/scaling_text.h"
 
 namespace raygate::cli {
@@ -28,34 +25,20 @@ struct ScalingArgs {
 };
 
 int scaling_command(const ScalingArgs& args, const Console& console) {
-  check_report_specs(args.reports);
-  ResultsDocument document = read_results(args.results);
-  std::string note;
-  const GatePolicy policy =
-      args.policy.empty() ? recorded_policy(document.settings, note) : load_policy(args.policy);
-  const ScalingAnalysis analysis = attach_scaling(document, scaling_limits(policy));
-  if (analysis.families.empty()) {
-    throw UsageError(fmt::format("{}: no scene family was measured at 3 sizes or more (suite {}); "
-                                 "measure the scaling suite: --suite scaling",
-                                 args.results, document.suite));
-  }
-  for (const std::string& line : scaling_lines(analysis)) fmt::print("{}\n", line);
-  OutputFailures failures;  // the fits not written back still judge, and reports still go out
-  if (!args.no_write) {
-    failures.attempt("the fits in " + args.results, [&] { write_results(document, args.results); });
-  }
-  GateResult gate;
-  gate.families = judge_growth(document, policy);
-  const bool failed = std::any_of(gate.families.begin(), gate.families.end(),
-                                  [](const SceneGate& g) { return g.outcome == GateOutcome::fail; });
-  gate.exit_code = failed ? 1 : 0;
-  print_gate_summary(gate, stdout);
+  parse_report_targets(args.reports);
+  OutputFailures failures;
+  const ScalingJudgement j = judge_scaling(args.results, args.policy, args.no_write, failures);
+  for (const std::string& line : scaling_lines(j.analysis)) fmt::print("{}\n", line);
+  print_gate_summary(j.gate, stdout);
   if (!args.reports.empty()) {  // the scene table is run's and compare's; shown only on request
-    emit_reports(document, evaluate_gate(document, policy), policy, args.reports, args.results,
-                 console, failures);
+    RecordArgs unrecorded;  // scaling writes the fits into the document, never to the store
+    unrecorded.no_store = true;
+    publish_reports(j.document, evaluate_gate(j.document, j.policy),
+                    publish_request(args.results, unrecorded, {}, j.policy, args.reports, console),
+                    console, failures);
   }
-  failures.say_summary(failures.exit_code(gate.exit_code));
-  return failures.exit_code(gate.exit_code);
+  failures.say_summary(failures.exit_code(j.gate.exit_code));
+  return failures.exit_code(j.gate.exit_code);
 }
 
 }  // namespace

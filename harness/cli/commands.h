@@ -12,6 +12,8 @@ void add_validate_command(CLI::App& app, int& exit_code);
 void add_adapter_command(CLI::App& app, int& exit_code);
 void add_run_command(CLI::App& app, int& exit_code);
 void add_history_commands(CLI::App& app, int& exit_code);  // history, import, export
+void add_import_command(CLI::App& app, int& exit_code);    // (through add_history_commands)
+void add_export_command(CLI::App& app, int& exit_code);
 void add_compare_command(CLI::App& app, int& exit_code);
 void add_gate_command(CLI::App& app, int& exit_code);
 void add_bisect_command(CLI::App& app, int& exit_code);

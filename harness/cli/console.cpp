@@ -4,7 +4,6 @@
 
 #include <cstdlib>
 
-#include "cli/terminal_progress.h"
 #include "core/error.h"
 
 namespace raygate::cli {
@@ -23,19 +22,6 @@ void deprecation_note(const std::string& old_name, const std::string& current) {
 
 }  // namespace
 
-ColourChoice parse_colour_choice(std::string_view text) {
-  if (text == "auto") return ColourChoice::automatic;
-  if (text == "always") return ColourChoice::always;
-  if (text == "never") return ColourChoice::never;
-  throw UsageError(fmt::format("--color {}: expected auto, always or never", text));
-}
-
-bool colour_wanted(ColourChoice choice, bool terminal, const char* no_color) {
-  if (choice == ColourChoice::always) return true;
-  if (choice == ColourChoice::never) return false;
-  return terminal && (no_color == nullptr || *no_color == '\0');
-}
-
 void add_global_options(CLI::App& app) {
   app.add_option("--color", "colour: auto (a terminal, unless NO_COLOR is set), always, never")
       ->check(CLI::IsMember({"auto", "always", "never"}))
@@ -46,21 +32,6 @@ void add_global_options(CLI::App& app) {
   app.add_option("--config",
                  "project config file (default: ./raygate.toml when it exists; docs/cli.md)");
   app.fallthrough();  // `raygate run --quiet ...` as well as `raygate --quiet run ...`
-}
-
-bool Console::colour(std::FILE* stream) const {
-  return colour_wanted(choice_, stream != nullptr && is_terminal(stream),
-                       no_color_ ? "1" : nullptr);
-}
-
-// fputs, not fmt::print: chatter to a terminal that was closed (EIO) is dropped, not thrown, so
-// a hang-up still ends with its own exit code and a kept document.
-void Console::info(const std::string& text) const {
-  if (!quiet_) std::fputs((terminal_text(text) + "\n").c_str(), stderr);
-}
-
-void Console::warning(const std::string& text) const {
-  std::fputs(("raygate: warning: " + terminal_text(text) + "\n").c_str(), stderr);
 }
 
 Console console_of(const CLI::App& command) {

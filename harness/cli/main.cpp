@@ -60,7 +60,7 @@ int main(int argc, char** argv) {
   try {
     // Before parsing: the command line overrides these (cli/project_config.h).
     raygate::cli::apply_project_defaults(
-        app, raygate::cli::load_project_defaults(raygate::cli::find_config_argument(argc, argv)));
+        app, raygate::load_project_defaults(raygate::find_config_argument(argc, argv)));
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
     return app.exit(e);  // --help, --version

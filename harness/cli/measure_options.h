@@ -8,44 +8,29 @@
 #include <string>
 #include <vector>
 
-#include "measure/stopping_policy.h"
-#include "pipeline/measure_context.h"
+#include "pipeline/measure_options.h"
 
 namespace raygate::cli {
 
-struct MeasureArgs {
-  std::string repo = ".";
-  std::string adapter;  // a file, or the name of a shipped adapter
-  std::string suite = "ci";
-  std::vector<std::string> scenes;
-  std::string cache_dir = ".raygate";
-  std::string golden_dir;  // default: the adapter's goldens (compare/golden.h)
-  std::string baseline;    // raygate-baseline override
-  std::string schedule = "alternate";
-  std::vector<int> pin_cpus;
-  bool no_pin = false;  // --no-pin: not even the default pinning of a round to one CPU
-  std::size_t baseline_rounds = 0;  // rounds per scene the baseline joins; 0 = every round
-  std::size_t repeats = 1;  // runs of each contender per round, the fastest kept
-  std::vector<int> duet_cpus{0, 1};
-  int warmup = 1;
-  StoppingPolicy stopping;  // --target, --min-rounds, ...; its defaults are the policy's own
-  std::string metric;  // "" (the adapter's), wall, cpu, sim
-  int jobs = 0;
-  std::string policy;  // gate policy file; "" = the defaults
-  std::string shard;        // "K/N" (run and compare only); "" = every selected scene
-  std::string shard_costs;  // results document whose scene times are the split's costs
-};
+// The options bind straight into the pipeline's record of them (pipeline/measure_options.h).
+using MeasureArgs = MeasureOptions;
 
 void add_measure_options(CLI::App& command, MeasureArgs& args);
 
-// --baseline-rounds: for compare and bisect, whose verdict needs no baseline (its default is
-// the value in `args` when called).
-void add_baseline_rounds_option(CLI::App& command, MeasureArgs& args);
+// run's, compare's or bisect's subcommand with the measure options bound to `args`: compare's
+// and bisect's (`change`) with add_change_measure_options, run's with add_measure_options.
+CLI::App* add_measuring_subcommand(CLI::App& app, const std::string& name,
+                                   const std::string& help, MeasureArgs& args, bool change);
+
+// compare's and bisect's: the measure options with the change's stopping policy and baseline
+// rounds as defaults (measure/stopping.h), and --baseline-rounds (the change of head against
+// base needs no baseline; the normalized ratios need a few).
+void add_change_measure_options(CLI::App& command, MeasureArgs& args);
 
 // --shard K/N and --shard-costs: for run and compare, whose documents `raygate merge` joins.
 void add_shard_options(CLI::App& command, MeasureArgs& args);
 
-// Everything the options name, loaded and checked; UsageError for anything wrong.
+// load_measure_context (pipeline/measure_options.h), its warnings said on standard error.
 MeasureContext load_measure_context(const MeasureArgs& args);
 
 }  // namespace raygate::cli

@@ -3,11 +3,8 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <fstream>
-#include <sstream>
 
 #include "core/error.h"
-#include "core/fs.h"
 
 namespace raygate::cli {
 
@@ -19,117 +16,6 @@ bool is_filter(const std::string& subcommand, const std::string& key) {
   return (subcommand == "history" || subcommand == "alert") && (key == "adapter" || key == "suite");
 }
 
-bool is_url(const std::string& value) {
-  return value.find("://") != std::string::npos || value.rfind("git@", 0) == 0;
-}
-
-// The line of `file` where `key` is set, for messages ("" when not found).
-std::string line_of(const std::string& text, const std::string& key) {
-  std::istringstream lines(text);
-  std::string line;
-  for (int number = 1; std::getline(lines, line); ++number) {
-    const auto start = line.find_first_not_of(" \t");
-    if (start != std::string::npos && line.compare(start, key.size(), key) == 0) {
-      return ":" + std::to_string(number);
-    }
-  }
-  return "";
-}
-
-std::string resolve(const std::string& key, const std::string& value,
-                    const std::filesystem::path& folder) {
-  if (value.empty() || is_url(value) || std::filesystem::path(value).is_absolute()) return value;
-  std::filesystem::path beside = (folder / value).lexically_normal();
-  if (!beside.has_filename()) beside = beside.parent_path();  // "dir/.." is "/tmp/", not "/tmp"
-  if (key == "adapter" || key == "suite") {  // the name of a shipped one, or a file (not a folder)
-    return std::filesystem::is_regular_file(beside) ? beside.string() : value;
-  }
-  return beside.string();
-}
-
-}  // namespace
-
-const std::vector<std::string>& project_keys() {
-  static const std::vector<std::string> keys{"repo", "adapter", "suite", "policy", "store"};
-  return keys;
-}
-
-std::string environment_name(const std::string& key) {
-  std::string name = "RAYGATE_" + key;
-  std::transform(name.begin(), name.end(), name.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
-  return name;
-}
-
-ProjectDefaults read_project_config(const std::filesystem::path& file) {
-  const std::filesystem::path absolute = std::filesystem::absolute(file);
-  const std::string text = read_file(absolute);
-  std::istringstream stream(text);
-  std::vector<CLI::ConfigItem> items;
-  try {
-    items = CLI::ConfigTOML().from_config(stream);
-  } catch (const CLI::Error& e) {
-    throw UsageError(fmt::format("{}: not a config file: {}", absolute.string(), e.what()));
-  }
-  ProjectDefaults defaults;
-  for (const CLI::ConfigItem& item : items) {
-    const std::string where = absolute.string() + line_of(text, item.name);
-    if (item.name == "++" || item.name == "--") continue;  // CLI11's section markers
-    if (!item.parents.empty()) {
-      throw UsageError(fmt::format("{}: [{}] {}: sections are not read; write the keys at the "
-                                   "top of the file",
-                                   where, item.parents.front(), item.name));
-    }
-    const auto& keys = project_keys();
-    if (std::find(keys.begin(), keys.end(), item.name) == keys.end()) {
-      throw UsageError(fmt::format("{}: unknown key '{}'; the keys are repo, adapter, suite, "
-                                   "policy and store",
-                                   where, item.name));
-    }
-    if (item.inputs.size() != 1) {
-      throw UsageError(fmt::format("{}: {}: expected one value", where, item.name));
-    }
-    defaults[item.name] = {resolve(item.name, item.inputs.front(), absolute.parent_path()), where};
-  }
-  return defaults;
-}
-
-ProjectDefaults load_project_defaults(const std::string& config_argument,
-                                      const std::function<const char*(const char*)>& getenv) {
-  ProjectDefaults defaults;
-  const char* from_env = getenv("RAYGATE_CONFIG");
-  if (!config_argument.empty()) {
-    if (!std::filesystem::is_regular_file(config_argument)) {
-      throw UsageError(fmt::format("--config {}: no such file", config_argument));
-    }
-    defaults = read_project_config(config_argument);
-  } else if (from_env != nullptr && *from_env != '\0') {
-    if (!std::filesystem::is_regular_file(from_env)) {
-      throw UsageError(fmt::format("RAYGATE_CONFIG={}: no such file", from_env));
-    }
-    defaults = read_project_config(from_env);
-  } else if (std::filesystem::is_regular_file(kProjectConfigFile)) {
-    defaults = read_project_config(kProjectConfigFile);
-  }
-  for (const std::string& key : project_keys()) {
-    const std::string name = environment_name(key);
-    const char* value = getenv(name.c_str());
-    if (value != nullptr && *value != '\0') defaults[key] = {value, name};
-  }
-  return defaults;
-}
-
-std::string find_config_argument(int argc, const char* const* argv) {
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg == "--") break;
-    if (arg == "--config" && i + 1 < argc) return argv[i + 1];
-    if (arg.rfind("--config=", 0) == 0) return arg.substr(9);
-  }
-  return "";
-}
-
-namespace {
 
 // A default an option's check refused (a policy file that does not exist): an error only for the
 // command that would use it, so `raygate --version` or `adapter check` still work.

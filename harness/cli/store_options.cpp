@@ -3,7 +3,6 @@
 #include <fmt/core.h>
 
 #include "store/postgres_url.h"
-#include "store/store.h"
 
 namespace raygate::cli {
 
@@ -50,40 +49,6 @@ void add_record_options(CLI::App& command, RecordArgs& args) {
       ->excludes(store);
   command.add_option("--branch", args.branch,
                      "branch to record the results under when the revision names none");
-}
-
-std::filesystem::path record_store_path(const RecordArgs& args,
-                                        const std::filesystem::path& cache_dir) {
-  if (args.no_store) return {};
-  return args.store.empty() ? cache_dir / "results.db" : std::filesystem::path(args.store);
-}
-
-void record_results(const ResultsDocument& document, const RecordArgs& args,
-                    const std::filesystem::path& cache_dir,
-                    const std::filesystem::path& document_path, const Console& console) {
-  if (args.no_store) return;
-  const std::string location = record_store_path(args, cache_dir).string();
-  const std::string printable = redact_postgresql_url(location);  // a URL's password stays out
-  try {
-    const auto store = open_store(location, StoreOpen::create_if_missing);
-    const std::string branch = branch_of(document, args.branch);
-    const AddOutcome outcome = store->add(document, branch);
-    console.info(fmt::format("{} {} as document {}{}",
-                             outcome.duplicate ? "already stored in" : "stored in",
-                             store->location(), outcome.document_id,
-                             branch.empty() ? "" : " (branch " + branch + ")"));
-  } catch (const std::exception& e) {  // raygate's errors and the file system's
-    std::error_code ignored;
-    if (!std::filesystem::is_regular_file(document_path, ignored)) {
-      fmt::print(stderr, "raygate: warning: results not stored: {}\n  and the document is in no "
-                         "file; only the reports keep it\n", e.what());
-      return;
-    }
-    fmt::print(stderr,
-               "raygate: warning: results not stored: {}\n  the document is kept at {}; store it "
-               "later with: raygate import {} --store {}\n",
-               e.what(), document_path.string(), document_path.string(), printable);
-  }
 }
 
 }  // namespace raygate::cli

@@ -1,6 +1,7 @@
-// Options and steps shared by the commands that use the results store: --store for all of them,
-// and for the measuring commands (run, compare) --no-store and --branch plus recording the
-// finished document. A bad --store is rejected while parsing, before any measuring starts.
+// Options shared by the commands that use the results store: --store for all of them, and for
+// the commands that publish a document (run, compare, merge) --no-store and --branch
+// (pipeline/publish.h records it). A bad --store is rejected while parsing, before any
+// measuring starts.
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -8,8 +9,6 @@
 #include <filesystem>
 #include <string>
 
-#include "cli/console.h"
-#include "results/results.h"
 #include "store/store.h"
 
 namespace raygate::cli {
@@ -30,16 +29,5 @@ struct RecordArgs {
 
 // --store, --no-store, --branch for run and compare.
 void add_record_options(CLI::App& command, RecordArgs& args);
-
-// Where run and compare record: --store, else <cache_dir>/results.db; "" with --no-store.
-std::filesystem::path record_store_path(const RecordArgs& args,
-                                        const std::filesystem::path& cache_dir);
-
-// Stores the finished document (complete or not: the store keeps the flag) and says where.
-// A store that cannot be written is a warning on stderr, not a failure of the measurement: the
-// document file stays, and the warning says how to import it later.
-void record_results(const ResultsDocument& document, const RecordArgs& args,
-                    const std::filesystem::path& cache_dir,
-                    const std::filesystem::path& document_path, const Console& console);
 
 }  // namespace raygate::cli

@@ -50,8 +50,6 @@ void Progress::line(const std::string& text) {
 
 void Progress::status(const std::string& text) { line(text); }
 
-bool is_terminal(std::FILE* stream) { return ::isatty(::fileno(stream)) == 1; }
-
 std::string format_duration(double seconds) {
   const long total = std::lround(std::max(0.0, seconds));
   if (total < 60) return fmt::format("{}s", total);

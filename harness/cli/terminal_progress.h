@@ -10,6 +10,7 @@
 #include <string>
 
 #include "pipeline/pipeline_io.h"
+#include "runner/executor.h"
 
 namespace raygate::cli {
 
@@ -33,8 +34,19 @@ class Progress final : public ProgressSink {
   bool dirty_ = false;  // a progress line is on screen
 };
 
-bool is_terminal(std::FILE* stream);
 // "1m40s", "12s", "2h03m".
 std::string format_duration(double seconds);
+
+// The world the measuring commands run the pipeline in: real child processes, the steady clock,
+// and progress on standard error, rewritten in place on a terminal, plain lines in a CI log, or
+// nothing with --quiet (docs/cli.md: standard output carries only results).
+struct TerminalIo {
+  TerminalIo(bool quiet, bool terminal) : progress(quiet ? nullptr : stderr, terminal) {}
+
+  SystemExecutor executor;
+  SteadyClock clock;
+  Progress progress;
+  PipelineIo io{executor, clock, progress};
+};
 
 }  // namespace raygate::cli

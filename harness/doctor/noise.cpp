@@ -14,6 +14,7 @@
 #include "measure/descriptive.h"
 #include "runner/baseline_contender.h"
 #include "runner/scene_files.h"
+#include "runner/timing/timing_modes.h"
 
 namespace raygate {
 namespace {
@@ -140,7 +141,7 @@ NoiseScore measure_noise(const NoiseOptions& options) {
   // In-process seconds: how the machine's speed wanders, without the process start-up that a
   // process-timed ratio divides out on both sides.
   const BaselineContender baseline(options.baseline, "center", std::chrono::minutes(2), "none",
-                                   BaselineClock::in_process);
+                                   &timing_mode("reported"));
   const std::filesystem::path runs = options.work_dir / "runs";
   run_once(baseline, scene, runs / "warm-up");  // page cache, CPU caches, frequency ramp
   const auto before = read_cpu_times(options.root);

@@ -5,20 +5,45 @@
 #include <algorithm>
 
 #include "core/process.h"
+#include "runner/timing/timing_modes.h"
 
 namespace raygate {
 
-bool simulated(const MeasureContext& context) {
-  return context.adapter.timing.source == TimingSource::simulated;
+const TimingMode& timing_mode(const MeasureContext& context) {
+  return context.timing != nullptr ? *context.timing : adapter_timing_mode(context.adapter.timing);
 }
 
-TimingMetric tracer_metric(const MeasureContext& context) {
-  return context.metric.value_or(context.adapter.timing.metric);
+bool simulated(const MeasureContext& context) { return timing_mode(context).counted(); }
+
+std::vector<std::string> choose_timing(MeasureContext& c, const std::string& choice,
+                                       bool policy_given) {
+  const TimingMode& mode = resolve_timing_mode(c.adapter.timing, choice);
+  c.timing = &mode;
+  c.timing_choice = choice;
+  // The source actually used, as the adapter's: the measurement hash (builder/build_cache.h)
+  // and the document's timing_source name it.
+  c.adapter.timing.source = mode.source();
+  TimingPlan plan{c.suite, c.adapter.threads, c.adapter.file, c.schedule, c.stopping, {}, {}, {}};
+  mode.prepare(plan);
+  c.cachegrind = std::move(plan.cachegrind);
+  if (plan.default_max_slowdown && !policy_given) {
+    c.policy.defaults.max_slowdown = *plan.default_max_slowdown;
+  }
+  return std::move(plan.warnings);
 }
 
-BaselineClock baseline_clock(const MeasureContext& context) {
-  return matching_baseline_clock(context.adapter.timing.source, tracer_metric(context));
+namespace {
+
+// settings.metric: the clock's word (--timing's, else the adapter's metric), or the counted
+// mode's clock name, as documents have always said.
+std::string settings_metric(const MeasureContext& c) {
+  const TimingMode& mode = timing_mode(c);
+  if (mode.counted()) return std::string(mode.tracer_clock());
+  if (!c.timing_choice.empty()) return c.timing_choice;
+  return std::string(to_string(c.adapter.timing.metric));
 }
+
+}  // namespace
 
 std::string shard_note(const MeasureContext& context) {
   if (!context.shard) return {};
@@ -54,14 +79,12 @@ nlohmann::json measure_settings(const MeasureContext& c) {
       {"max_rounds", c.stopping.max_rounds},
       {"max_seconds_per_scene", c.stopping.max_seconds},
       {"max_minutes", c.stopping.max_minutes},
-      {"metric", simulated(c)  ? std::string(tracer_clock_name(c.adapter.timing.source, {}))
-                 : c.metric ? std::string(to_string(*c.metric))
-                            : std::string(to_string(c.adapter.timing.metric))},
-      {"metric_by_threads", !simulated(c) && !c.metric && c.adapter.timing.metric_by_threads},
-      {"timing_source", std::string(to_string(c.adapter.timing.source))},
-      {"tracer_clock",
-       std::string(tracer_clock_name(c.adapter.timing.source, tracer_metric(c)))},
-      {"baseline_clock", std::string(to_string(baseline_clock(c)))},
+      {"metric", settings_metric(c)},
+      {"metric_by_threads",
+       !simulated(c) && c.timing_choice.empty() && c.adapter.timing.metric_by_threads},
+      {"timing_source", std::string(to_string(timing_mode(c).source()))},
+      {"tracer_clock", std::string(timing_mode(c).tracer_clock())},
+      {"baseline_clock", std::string(timing_mode(c).baseline_clock())},
       {"threads", c.adapter.threads},
       {"golden_dir", c.golden_dir.string()},
       {"policy_file", c.policy.file.string()},

@@ -19,6 +19,7 @@
 #include "runner/cachegrind.h"
 #include "runner/scheduler.h"
 #include "runner/suite.h"
+#include "runner/timing/timing_mode.h"
 
 namespace raygate {
 
@@ -32,7 +33,10 @@ struct MeasureContext {
   std::filesystem::path golden_dir;
   ScheduleOptions schedule;
   StoppingPolicy stopping;
-  std::optional<TimingMetric> metric;
+  // How runs are timed (runner/timing/): --timing's word ("" = the adapter's own) and the mode
+  // it resolved to (choose_timing); null: the adapter's.
+  std::string timing_choice;
+  const TimingMode* timing = nullptr;
   GatePolicy policy;
   int jobs = 0;  // parallel build jobs; 0 = every allowed CPU
   std::optional<Cachegrind> cachegrind;  // sim mode (docs/simulated-timing.md)
@@ -41,16 +45,20 @@ struct MeasureContext {
   bool explain = false;
 };
 
-// Sim mode: every run counted under cachegrind (--timing sim or an adapter timed "simulated").
+// The measurement's timing mode: the one choose_timing set, or the adapter's. Both sides of the
+// ratio are timed by it (DESIGN.md §11).
+const TimingMode& timing_mode(const MeasureContext& context);
+
+// Counted rather than timed: every run under cachegrind (--timing sim or an adapter timed
+// "simulated").
 bool simulated(const MeasureContext& context);
 
-// How the tracer is timed in this measurement: the adapter's timing, --timing overriding its
-// process metric.
-TimingMetric tracer_metric(const MeasureContext& context);
-
-// How the baseline is timed: by the tracer's clock (process wall or CPU), or by its in-process
-// seconds when the tracer reports its own time (DESIGN.md §11).
-BaselineClock baseline_clock(const MeasureContext& context);
+// Resolves --timing's `choice` ("" = the adapter's) against the adapter and lets the mode adjust
+// the measurement (timing_mode.h, prepare): schedule, stopping budget, the simulator, and the
+// gate's default limit unless `policy_given`. Returns the warnings the mode has for the user.
+// UsageError for an unknown choice; InfraError when the mode's tool is missing.
+std::vector<std::string> choose_timing(MeasureContext& context, const std::string& choice,
+                                       bool policy_given);
 
 // ", shard K/N of M selected scenes" with --shard, else "": for the line that opens a run.
 std::string shard_note(const MeasureContext& context);

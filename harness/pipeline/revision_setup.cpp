@@ -11,6 +11,40 @@
 
 namespace raygate {
 
+RunTree locate_run_tree(const std::string& repo, const std::string& rev,
+                        const std::string& worktree, const std::filesystem::path& cache_dir) {
+  if (!worktree.empty()) {
+    const std::filesystem::path path = std::filesystem::absolute(worktree);
+    Worktree tree = describe_uncommitted_worktree(path);
+    tree.revision = "--worktree " + path.string();
+    return {tree, path.string()};
+  }
+  const Repository repository = Repository::open(repo, cache_dir);
+  return {repository.checkout(rev), repository.location()};
+}
+
+CompareTrees locate_compare_trees(const std::string& repo, const std::string& base,
+                                  const std::string& base_branch, const std::string& head,
+                                  const std::filesystem::path& cache_dir) {
+  const Repository repository = Repository::open(repo, cache_dir);
+  CompareTrees trees;
+  trees.repository = repository.location();
+  trees.head = repository.checkout(head);
+  if (!base.empty()) {
+    trees.base = repository.checkout(base);
+    return trees;
+  }
+  const std::optional<Revision> merge_base = repository.merge_base(head, base_branch);
+  if (!merge_base) {
+    throw UsageError(fmt::format("{} and {} have no common ancestor; pass --base REV", head,
+                                 base_branch));
+  }
+  Revision named = *merge_base;
+  named.revision = "merge-base(" + head + ", " + base_branch + ")";
+  trees.base = repository.materialize(named);
+  return trees;
+}
+
 namespace {
 
 bool builds_raygate_source(const Adapter& adapter) {
@@ -116,7 +150,7 @@ PreparedRevision prepared_revision(Role role, const std::string& repository,
   prepared.setup.build = build_record;
   prepared.setup.repo_root = worktree.path;
   prepared.setup.raygate_source = context.tools.data_root;
-  prepared.setup.metric = context.metric;
+  prepared.setup.timing = &timing_mode(context);
   prepared.setup.cachegrind = context.cachegrind;
   // The adapter's own limit, and the user's budget too (issue 25, class 10), as the baseline's.
   prepared.setup.run_timeout_seconds =

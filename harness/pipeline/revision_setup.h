@@ -13,6 +13,30 @@
 
 namespace raygate {
 
+// What a measuring command names and where it is: the worktrees and the repository as the
+// document records it (its location as opened).
+struct RunTree {
+  Worktree worktree;
+  std::string repository;
+};
+struct CompareTrees {
+  Worktree base;
+  Worktree head;
+  std::string repository;
+};
+
+// The tree `raygate run` measures: `rev` of `repo` checked out into the worktree cache, or, when
+// `worktree` is not empty, that directory as it is (uncommitted changes included, recorded as
+// dirty).
+RunTree locate_run_tree(const std::string& repo, const std::string& rev,
+                        const std::string& worktree, const std::filesystem::path& cache_dir);
+
+// compare's two sides: `head`, and `base` or, when `base` is empty, the merge base of head and
+// `base_branch` (what a pull request changes); UsageError when they have none.
+CompareTrees locate_compare_trees(const std::string& repo, const std::string& base,
+                                  const std::string& base_branch, const std::string& head,
+                                  const std::filesystem::path& cache_dir);
+
 struct PreparedRevision {
   RevisionRecord record;
   TracerSetup setup;

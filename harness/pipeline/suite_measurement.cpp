@@ -103,7 +103,7 @@ ResultsDocument new_document(DocumentKind kind, const MeasureContext& context,
   document.baseline.version = baseline.version_line();
   document.baseline.source_sha256 = baseline.source_hash();
   document.baseline.sampling = context.suite.sampling;
-  document.baseline.timing = std::string(to_string(baseline_clock(context)));
+  document.baseline.timing = std::string(timing_mode(context).baseline_clock());
   document.suite = context.suite.name;
   document.settings = measure_settings(context);
   // Whose goldens judge this run's images ("none": the tracer has none yet), so a report can
@@ -291,7 +291,7 @@ BaselineContender baseline_contender(const MeasureContext& context,
   const double timeout_seconds = budgeted_run_seconds(context.stopping, 30.0 * 60.0);
   const std::chrono::milliseconds timeout(static_cast<long long>(1000.0 * timeout_seconds));
   BaselineContender baseline(context.tools.baseline, context.suite.sampling, timeout, "none",
-                             baseline_clock(context));
+                             &timing_mode(context));
   if (simulated(context)) {
     baseline.simulate({*context.cachegrind,
                        std::make_shared<BaselineCostCache>(context.cache_dir / "simulated-baseline"),

@@ -37,9 +37,23 @@ ReportFormat parse_report_format(std::string_view name) {
   for (const auto& [text, format] : kFormats) {
     if (text == name) return format;
   }
-  throw UsageError(fmt::format("unknown report format '{}'; use one of console, markdown, junit, "
-                               "json, html",
-                               name));
+  throw UsageError(fmt::format("unknown report format '{}'; use one of {}", name,
+                               fmt::join(report_format_names(), ", ")));
+}
+
+std::vector<std::string> report_format_names() {
+  std::vector<std::string> names;
+  for (const auto& entry : kFormats) names.emplace_back(entry.first);
+  return names;
+}
+
+std::string report_format_list() {
+  const std::vector<std::string> names = report_format_names();
+  std::string list;
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    list += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  }
+  return list;
 }
 
 std::string_view to_string(ReportFormat format) {

@@ -64,6 +64,10 @@ class Reporter {
 
 // Throws UsageError naming the known formats for an unknown name.
 ReportFormat parse_report_format(std::string_view name);
+// The formats' names in their order ("console", "markdown", ...), and as prose: "console,
+// markdown, junit, json or html" (for the command line's choices and help).
+std::vector<std::string> report_format_names();
+std::string report_format_list();
 std::string_view to_string(ReportFormat format);
 std::unique_ptr<Reporter> make_reporter(ReportFormat format, const ReportOptions& options = {});
 std::unique_ptr<Reporter> make_reporter(std::string_view format,

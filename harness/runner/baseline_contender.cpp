@@ -5,6 +5,7 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/sha256.h"
+#include "runner/timing/timing_modes.h"
 
 namespace raygate {
 
@@ -27,37 +28,15 @@ double in_process_seconds(const std::filesystem::path& stats_path) {
 
 }  // namespace
 
-std::string_view to_string(BaselineClock clock) {
-  switch (clock) {
-    case BaselineClock::process_wall: return "process-wall";
-    case BaselineClock::process_cpu: return "process-cpu";
-    case BaselineClock::in_process: return "in-process";
-    case BaselineClock::simulated: return "simulated-cycles";
-  }
-  return "unknown";
-}
-
-std::string_view tracer_clock_name(TimingSource source, TimingMetric metric) {
-  if (source == TimingSource::reported) return "reported";
-  if (source == TimingSource::simulated) return "simulated-cycles";
-  return metric == TimingMetric::cpu ? "process-cpu" : "process-wall";
-}
-
-BaselineClock matching_baseline_clock(TimingSource source, TimingMetric metric) {
-  if (source == TimingSource::reported) return BaselineClock::in_process;
-  if (source == TimingSource::simulated) return BaselineClock::simulated;
-  return metric == TimingMetric::cpu ? BaselineClock::process_cpu : BaselineClock::process_wall;
-}
-
 BaselineContender::BaselineContender(std::filesystem::path executable, std::string sampling,
                                      std::chrono::milliseconds timeout, std::string accel,
-                                     BaselineClock clock)
+                                     const TimingMode* clock)
     : Contender(Role::baseline),
       executable_(std::move(executable)),
       sampling_(std::move(sampling)),
       timeout_(timeout),
       accel_(std::move(accel)),
-      clock_(clock) {}
+      clock_(clock != nullptr ? clock : &timing_mode("wall")) {}
 
 ProcessSpec BaselineContender::command(const SceneInput& scene,
                                        const std::filesystem::path& run_dir) const {
@@ -69,14 +48,14 @@ ProcessSpec BaselineContender::command(const SceneInput& scene,
   spec.stdout_path = run_dir / "log.txt";
   spec.stderr_path = spec.stdout_path;
   spec.timeout = timeout_;
-  if (clock_ != BaselineClock::simulated) {
+  if (!clock_->counted()) {
     spec.argv.insert(spec.argv.end(), {"--stats", (run_dir / kStatsName).string()});
     return spec;
   }
   // No --stats: formatting its measured seconds costs a different number of instructions each
   // run (41 in 1.1e9 on tetra, measured), and would make the baseline's count unrepeatable.
-  if (!simulation_) throw std::logic_error("BaselineContender: simulated clock without simulate()");
-  return under_cachegrind(std::move(spec), simulation_->cachegrind, cachegrind_dir(run_dir));
+  if (!simulation_) throw std::logic_error("BaselineContender: counted clock without simulate()");
+  return clock_->wrap(std::move(spec), run_dir, simulation_->cachegrind);
 }
 
 BaselineCostKey BaselineContender::cost_key(const SceneInput& scene) const {
@@ -85,7 +64,7 @@ BaselineCostKey BaselineContender::cost_key(const SceneInput& scene) const {
 }
 
 std::optional<RunRecord> BaselineContender::known_run(const SceneInput& scene) const {
-  if (clock_ != BaselineClock::simulated || !simulation_ || !simulation_->cache) {
+  if (!clock_->counted() || !simulation_ || !simulation_->cache) {
     return std::nullopt;
   }
   const std::optional<SimulatedCounters> counters = simulation_->cache->find(cost_key(scene));
@@ -104,8 +83,8 @@ RunRecord BaselineContender::interpret(const SceneInput& scene, const ProcessRes
   RunRecord run = record_process(result, spec);
   run.image = run_dir / kImageName;
   if (!run.ok) return run;
-  if (clock_ == BaselineClock::simulated) {
-    record_simulated_cost(run, cachegrind_dir(run_dir));
+  if (clock_->counted()) {
+    clock_->collect(run, run_dir);
     if (run.ok && simulation_->cache) simulation_->cache->observe(cost_key(scene), *run.simulated);
     return run;
   }
@@ -117,15 +96,10 @@ RunRecord BaselineContender::interpret(const SceneInput& scene, const ProcessRes
                   (run_dir / kStatsName).string() + ": " + e.what();
     return run;
   }
-  switch (clock_) {
-    case BaselineClock::process_wall: run.seconds = run.wall_seconds; break;
-    case BaselineClock::process_cpu: run.seconds = run.cpu_seconds(); break;
-    case BaselineClock::in_process: run.seconds = *run.reported_seconds; break;
-    case BaselineClock::simulated: break;  // returned above
-  }
+  run.seconds = clock_->seconds(run).value_or(0.0);
   if (!(run.seconds > 0.0)) {  // the denominator of every ratio
     run.ok = false;
-    run.failure = "raygate-baseline took no measurable " + std::string(to_string(clock_)) +
+    run.failure = "raygate-baseline took no measurable " + std::string(clock_->baseline_clock()) +
                   " time";
   }
   return run;

@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "nff/parser.h"
+#include "runner/timing/timing_modes.h"
 
 namespace raygate {
 
@@ -40,6 +41,10 @@ std::string run_seed(const std::filesystem::path& run_dir) {
 
 TracerContender::TracerContender(TracerSetup setup)
     : Contender(setup.role), setup_(std::move(setup)) {}
+
+const TimingMode& TracerContender::timing() const {
+  return setup_.timing != nullptr ? *setup_.timing : adapter_timing_mode(setup_.adapter.timing);
+}
 
 Placeholders TracerContender::placeholders(const SceneInput& scene,
                                            const std::filesystem::path& run_dir) const {
@@ -78,9 +83,7 @@ ProcessSpec TracerContender::command(const SceneInput& scene,
       setup_.run_timeout_seconds > 0.0 ? setup_.run_timeout_seconds : adapter.timeouts.run_seconds;
   spec.timeout = std::chrono::milliseconds(static_cast<long long>(timeout_seconds * 1000));
   spec.cpu_affinity = setup_.cpus;
-  if (adapter.timing.source != TimingSource::simulated) return spec;
-  if (!setup_.cachegrind) throw std::logic_error("TracerContender: simulated timing, no cachegrind");
-  return under_cachegrind(std::move(spec), *setup_.cachegrind, cachegrind_dir(run_dir));
+  return timing().wrap(std::move(spec), run_dir, setup_.cachegrind);
 }
 
 namespace {
@@ -110,7 +113,7 @@ RunRecord TracerContender::interpret(const SceneInput& scene, const ProcessResul
     run.failure = adapter.name + " " + problem;
     return run;
   }
-  const TimingMetric metric = setup_.metric.value_or(adapter.timing.metric);
+  // The adapter's regex is read whenever it has one: the tracer's own account of its time.
   if (adapter.timing.source == TimingSource::reported) {
     const std::optional<double> reported =
         parse_reported_seconds(adapter, read_file(spec.stdout_path));
@@ -121,12 +124,10 @@ RunRecord TracerContender::interpret(const SceneInput& scene, const ProcessResul
       return run;
     }
     run.reported_seconds = reported;
-    run.seconds = *reported;
-  } else if (adapter.timing.source == TimingSource::simulated) {
-    record_simulated_cost(run, cachegrind_dir(run_dir));
-  } else {
-    run.seconds = metric == TimingMetric::cpu ? run.cpu_seconds() : run.wall_seconds;
   }
+  timing().collect(run, run_dir);
+  if (!run.ok) return run;
+  run.seconds = timing().seconds(run).value_or(0.0);
   return run;
 }
 

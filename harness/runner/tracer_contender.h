@@ -13,6 +13,7 @@
 #include "builder/build_record.h"
 #include "runner/cachegrind.h"
 #include "runner/contender.h"
+#include "runner/timing/timing_mode.h"
 
 namespace raygate {
 
@@ -22,8 +23,8 @@ struct TracerSetup {
   BuildRecord build;                     // build_dir and src_dir come from here
   std::filesystem::path repo_root;       // the worktree
   std::filesystem::path raygate_source;  // {raygate_source}
-  // Overrides the adapter's process metric (raygate run --metric); nullopt: the adapter's own.
-  std::optional<TimingMetric> metric;
+  // How runs are timed (runner/timing/): the measurement's mode (--timing); null: the adapter's.
+  const TimingMode* timing = nullptr;
   std::vector<int> cpus;  // pin runs to these CPUs; empty: no pinning
   // The longest one run may take: the adapter's run timeout bounded by the user's budget
   // (budgeted_run_seconds, measure/stopping_policy.h); 0: the adapter's alone.
@@ -42,6 +43,7 @@ class TracerContender final : public Contender {
                       const std::filesystem::path& run_dir) const override;
 
   const TracerSetup& setup() const { return setup_; }
+  const TimingMode& timing() const;
 
  private:
   Placeholders placeholders(const SceneInput& scene, const std::filesystem::path& run_dir) const;

@@ -8,6 +8,7 @@
 
 #include "core/fs.h"
 #include "runner/baseline_contender.h"
+#include "runner/timing/timing_modes.h"
 #include "runner/tracer_contender.h"
 
 namespace raygate {
@@ -74,14 +75,13 @@ class ContenderTest : public ::testing::Test {
     fs::create_directories(run_dir_);
   }
 
-  TracerContender tracer(const char* adapter_json,
-                         std::optional<TimingMetric> metric = std::nullopt) const {
+  TracerContender tracer(const char* adapter_json, const char* timing = nullptr) const {
     TracerSetup setup;
     setup.adapter = parse_adapter(adapter_json, "test-adapter.json");
     setup.build.build_dir = dir_.path() / "build";
     setup.build.src_dir = dir_.path() / "tree" / "src";
     setup.repo_root = dir_.path() / "tree";
-    setup.metric = metric;
+    if (timing != nullptr) setup.timing = &timing_mode(timing);
     return TracerContender(setup);
   }
 
@@ -210,8 +210,16 @@ TEST_F(ContenderTest, CpuMetricTimesByUserPlusSystemSeconds) {
 
 TEST_F(ContenderTest, MetricOverrideBeatsTheAdaptersMetric) {
   const ProcessResult result = exited_with(0, 3.0, 1.25, 0.5);
-  EXPECT_DOUBLE_EQ(run(tracer(kCpuTimed, TimingMetric::wall), result, "png").seconds, 3.0);
-  EXPECT_DOUBLE_EQ(run(tracer(kWorkdirImage, TimingMetric::cpu), result, "ppm").seconds, 1.75);
+  EXPECT_DOUBLE_EQ(run(tracer(kCpuTimed, "wall"), result, "png").seconds, 3.0);
+  EXPECT_DOUBLE_EQ(run(tracer(kWorkdirImage, "cpu"), result, "ppm").seconds, 1.75);
+}
+
+// --timing user (runner/timing/process_user.cpp): user CPU seconds, system time left out.
+TEST_F(ContenderTest, UserModeTimesByUserSecondsOnly) {
+  const RunRecord r = run(tracer(kCpuTimed, "user"), exited_with(0, 3.0, 1.25, 0.5), "png");
+  ASSERT_TRUE(r.ok) << r.failure;
+  EXPECT_DOUBLE_EQ(r.seconds, 1.25);
+  EXPECT_DOUBLE_EQ(r.cpu_seconds(), 1.75);
 }
 
 TEST_F(ContenderTest, ReportedTimeIsTheLastMatchOfTheRegex) {
@@ -272,7 +280,7 @@ TEST_F(BaselineContenderTest, CommandRendersPpmIntoTheRunDirectory) {
 TEST_F(BaselineContenderTest, TimedByProcessWallByDefaultKeepingInProcessSeconds) {
   const std::string stats =
       R"({"parse_seconds": 0.25, "prepare_seconds": 0.125, "render_seconds": 1.5, "rays": 7})";
-  EXPECT_EQ(baseline_.clock(), BaselineClock::process_wall);
+  EXPECT_EQ(baseline_.clock().name(), "wall");
   const RunRecord r = interpret(exited_with(0, 2.0, 1.9, 0.05), &stats);
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_DOUBLE_EQ(r.seconds, 2.0);
@@ -286,7 +294,7 @@ TEST_F(BaselineContenderTest, ProcessCpuClockTimesByUserPlusSystemSeconds) {
   const std::string stats = R"({"parse_seconds": 0.25, "prepare_seconds": 0.125,
                                 "render_seconds": 1.5, "cpu_seconds": 1.25})";
   baseline_ = BaselineContender{"/opt/raygate-baseline", "center", std::chrono::seconds(9), "none",
-                                BaselineClock::process_cpu};
+                                &timing_mode("cpu")};
   const RunRecord r = interpret(exited_with(0, 2.0, 1.5, 0.25), &stats);
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_DOUBLE_EQ(r.seconds, 1.75);
@@ -297,7 +305,7 @@ TEST_F(BaselineContenderTest, InProcessClockTimesByParsePreparePlusRenderSeconds
   const std::string stats =
       R"({"parse_seconds": 0.25, "prepare_seconds": 0.125, "render_seconds": 1.5})";
   baseline_ = BaselineContender{"/opt/raygate-baseline", "center", std::chrono::seconds(9), "none",
-                                BaselineClock::in_process};
+                                &timing_mode("reported")};
   const RunRecord r = interpret(exited_with(0, 2.0, 1.9, 0.05), &stats);
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_DOUBLE_EQ(r.seconds, 1.875);
@@ -308,7 +316,7 @@ TEST_F(BaselineContenderTest, ZeroProcessTimeIsAFailedRun) {
   const std::string stats =
       R"({"parse_seconds": 0.25, "prepare_seconds": 0.125, "render_seconds": 1.5})";
   baseline_ = BaselineContender{"/opt/raygate-baseline", "center", std::chrono::seconds(9), "none",
-                                BaselineClock::process_cpu};
+                                &timing_mode("cpu")};
   const RunRecord r = interpret(exited_with(0, 2.0, 0.0, 0.0), &stats);
   EXPECT_FALSE(r.ok);
   EXPECT_EQ(contains(r.failure, "no measurable process-cpu time"), "");
@@ -317,20 +325,30 @@ TEST_F(BaselineContenderTest, ZeroProcessTimeIsAFailedRun) {
 // Each side of the ratio on the same clock as the other (DESIGN.md §11), and the names the
 // results document records.
 TEST(BaselineClock, MatchesTheTracersClock) {
-  EXPECT_EQ(matching_baseline_clock(TimingSource::process, TimingMetric::wall),
-            BaselineClock::process_wall);
-  EXPECT_EQ(matching_baseline_clock(TimingSource::process, TimingMetric::cpu),
-            BaselineClock::process_cpu);
-  EXPECT_EQ(matching_baseline_clock(TimingSource::reported, TimingMetric::wall),
-            BaselineClock::in_process);
-  EXPECT_EQ(matching_baseline_clock(TimingSource::reported, TimingMetric::cpu),
-            BaselineClock::in_process);
-  EXPECT_EQ(to_string(BaselineClock::process_wall), "process-wall");
-  EXPECT_EQ(to_string(BaselineClock::process_cpu), "process-cpu");
-  EXPECT_EQ(to_string(BaselineClock::in_process), "in-process");
-  EXPECT_EQ(tracer_clock_name(TimingSource::process, TimingMetric::wall), "process-wall");
-  EXPECT_EQ(tracer_clock_name(TimingSource::process, TimingMetric::cpu), "process-cpu");
-  EXPECT_EQ(tracer_clock_name(TimingSource::reported, TimingMetric::cpu), "reported");
+  const auto process = [](TimingMetric metric) {
+    Timing timing;
+    timing.metric = metric;
+    return &adapter_timing_mode(timing);
+  };
+  Timing reported;
+  reported.source = TimingSource::reported;
+  EXPECT_EQ(process(TimingMetric::wall)->baseline_clock(), "process-wall");
+  EXPECT_EQ(process(TimingMetric::cpu)->baseline_clock(), "process-cpu");
+  EXPECT_EQ(adapter_timing_mode(reported).baseline_clock(), "in-process");
+  EXPECT_EQ(process(TimingMetric::wall)->tracer_clock(), "process-wall");
+  EXPECT_EQ(process(TimingMetric::cpu)->tracer_clock(), "process-cpu");
+  EXPECT_EQ(adapter_timing_mode(reported).tracer_clock(), "reported");
+}
+
+// The baseline on the user clock: its user seconds, not user + system.
+TEST_F(BaselineContenderTest, UserClockTimesByUserSecondsOnly) {
+  const std::string stats =
+      R"({"parse_seconds": 0.25, "prepare_seconds": 0.125, "render_seconds": 1.5})";
+  baseline_ = BaselineContender{"/opt/raygate-baseline", "center", std::chrono::seconds(9), "none",
+                                &timing_mode("user")};
+  const RunRecord r = interpret(exited_with(0, 2.0, 1.5, 0.25), &stats);
+  ASSERT_TRUE(r.ok) << r.failure;
+  EXPECT_DOUBLE_EQ(r.seconds, 1.5);
 }
 
 TEST_F(BaselineContenderTest, MissingStatsIsAFailedRunNotAnException) {

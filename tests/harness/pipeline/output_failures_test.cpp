@@ -1,4 +1,4 @@
-// cli/output_failures: an output that cannot be written is said at once with its path and the
+// pipeline/output_failures: an output that cannot be written is said at once with its path and the
 // system's reason, the command goes on, and the exit code becomes 3 unless the gate found a
 // regression (1), which outranks it.
 #include <gtest/gtest.h>
@@ -6,11 +6,11 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "cli/output_failures.h"
+#include "pipeline/output_failures.h"
 #include "core/exit_codes.h"
 #include "core/fs.h"
 
-namespace raygate::cli {
+namespace raygate {
 namespace {
 
 // What the failures said, through a temporary file standing in for standard error.
@@ -75,4 +75,4 @@ TEST(OutputFailures, OnlyWriteErrorsAreKeptOthersTravelUp) {
 }
 
 }  // namespace
-}  // namespace raygate::cli
+}  // namespace raygate

@@ -1,9 +1,9 @@
-// The outputs a command was asked for that could not be written: the results document (-o), a
-// --report file, standard output. A measurement is worth more than any one of its files, so a
-// failed output is said at once (which output, its path, the system's reason), the command goes
-// on writing the others, and only its exit code changes at the end: 3, "raygate could not
-// finish", unless the gate found a regression, which outranks it as it outranks an unmeasured
-// scene (DESIGN.md §11).
+// The outputs a command was asked for (the results document -o, --report files, standard
+// output): checked before anything is measured, and those that could not be written at the end.
+// A measurement is worth more than any one of its files, so a failed output is said at once
+// (which output, its path, the system's reason), the command goes on writing the others, and
+// only its exit code changes at the end: 3, "raygate could not finish", unless the gate found a
+// regression, which outranks it as it outranks an unmeasured scene (DESIGN.md §11).
 #pragma once
 
 #include <cstdio>
@@ -14,7 +14,7 @@
 
 #include "core/fs.h"
 
-namespace raygate::cli {
+namespace raygate {
 
 class OutputFailures {
  public:
@@ -52,10 +52,17 @@ class OutputFailures {
   std::FILE* say_;
 };
 
+// Throws UsageError, naming `option`, when a file could not be written at `path` the way
+// documents and reports are (a temporary file beside it renamed over it, missing folders
+// created): it is a directory or something else that is not a regular file (/dev/full), or the
+// nearest existing folder above it is not a folder or is not writable. An empty path (the
+// default place) passes. Called before measuring, so a typo does not cost a whole run.
+void check_output_path(const std::filesystem::path& path, const std::string& option);
+
 // Flushes standard output after a report went there; a failed write or flush (a full disk
 // behind `> file`, /dev/full) is a failure of `output`. `error_number` is errno as the writing
 // left it (the stream keeps only that it failed, not why); 0 says "write failed".
 void check_standard_output(OutputFailures& failures, const std::string& output,
                            int error_number);
 
-}  // namespace raygate::cli
+}  // namespace raygate

@@ -1,4 +1,4 @@
-#include "cli/gate_summary.h"
+#include "report/gate_summary.h"
 
 #include <fmt/core.h>
 #include <fmt/format.h>
@@ -6,7 +6,7 @@
 #include <map>
 #include <vector>
 
-namespace raygate::cli {
+namespace raygate {
 
 namespace {
 
@@ -65,4 +65,4 @@ void print_gate_summary(const GateResult& gate, std::FILE* stream) {
   fmt::print(stream, "gate: {}: {}{}\n", verdict, counts(gate), why);
 }
 
-}  // namespace raygate::cli
+}  // namespace raygate

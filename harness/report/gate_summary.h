@@ -7,8 +7,8 @@
 
 #include "gate/verdict.h"
 
-namespace raygate::cli {
+namespace raygate {
 
 void print_gate_summary(const GateResult& gate, std::FILE* stream);
 
-}  // namespace raygate::cli
+}  // namespace raygate

@@ -1,14 +1,16 @@
-#include "cli/output_failures.h"
+#include "pipeline/output_failures.h"
 
 #include <fmt/core.h>
+#include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
 #include <iostream>
 
+#include "core/error.h"
 #include "core/exit_codes.h"
 
-namespace raygate::cli {
+namespace raygate {
 
 void OutputFailures::add(const std::string& output, const FailedWrite& failure) {
   failures_.push_back({output, failure});
@@ -67,4 +69,32 @@ void check_standard_output(OutputFailures& failures, const std::string& output,
   std::cout.clear();  // the outputs after this one still get their try
 }
 
-}  // namespace raygate::cli
+void check_output_path(const std::filesystem::path& path, const std::string& option) {
+  if (path.empty()) return;
+  std::error_code error;
+  const std::filesystem::path target = std::filesystem::absolute(path, error);
+  if (std::filesystem::is_directory(target, error)) {
+    throw UsageError(fmt::format("{}: {} is a directory; name a file in it", option,
+                                 target.string()));
+  }
+  if (std::filesystem::exists(target, error) && !std::filesystem::is_regular_file(target, error)) {
+    // Files are replaced whole (a temporary renamed over them): that would replace the node.
+    throw UsageError(fmt::format("{}: {} is not a regular file (a device, FIFO or socket); name "
+                                 "a file, or - for standard output",
+                                 option, target.string()));
+  }
+  std::filesystem::path folder = target.parent_path();
+  while (!std::filesystem::exists(folder, error) && folder.has_relative_path()) {
+    folder = folder.parent_path();  // created when the file is written
+  }
+  if (!std::filesystem::is_directory(folder, error)) {
+    throw UsageError(fmt::format("{}: cannot write {}: {} is not a directory", option,
+                                 target.string(), folder.string()));
+  }
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+    throw UsageError(fmt::format("{}: cannot write {}: {}: {}", option, target.string(),
+                                 folder.string(), std::strerror(errno)));
+  }
+}
+
+}  // namespace raygate

@@ -1,0 +1,110 @@
+#include "pipeline/document_commands.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+
+#include "consistency/consistency_report.h"
+#include "core/error.h"
+#include "core/fs.h"
+#include "core/paths.h"
+#include "gate/growth_gate.h"
+#include "runner/baseline_tool.h"
+#include "scaling/scaling_stage.h"
+
+namespace raygate {
+
+JudgedDocument judge_document(const std::string& results, const std::string& policy_file,
+                              bool recorded_limits, bool fail_on_inconclusive, std::string& note) {
+  JudgedDocument j;
+  j.path = std::filesystem::absolute(results);
+  j.document = read_results(j.path);
+  if (!policy_file.empty()) {
+    j.policy = load_policy(policy_file);
+  } else if (recorded_limits) {
+    j.policy = recorded_policy(j.document.settings, note);
+  }
+  j.policy.fail_on_inconclusive = j.policy.fail_on_inconclusive || fail_on_inconclusive;
+  j.gate = evaluate_gate(j.document, j.policy);
+  return j;
+}
+
+ScalingJudgement judge_scaling(const std::string& results, const std::string& policy_file,
+                               bool no_write, OutputFailures& failures) {
+  ScalingJudgement j;
+  j.document = read_results(results);
+  std::string note;
+  j.policy = policy_file.empty() ? recorded_policy(j.document.settings, note)
+                                 : load_policy(policy_file);
+  j.analysis = attach_scaling(j.document, scaling_limits(j.policy));
+  if (j.analysis.families.empty()) {
+    throw UsageError(fmt::format("{}: no scene family was measured at 3 sizes or more (suite {}); "
+                                 "measure the scaling suite: --suite scaling",
+                                 results, j.document.suite));
+  }
+  // The fits not written back still judge, and the reports still go out.
+  if (!no_write) {
+    failures.attempt("the fits in " + results, [&] { write_results(j.document, results); });
+  }
+  j.gate.families = judge_growth(j.document, j.policy);
+  const bool failed =
+      std::any_of(j.gate.families.begin(), j.gate.families.end(),
+                  [](const SceneGate& g) { return g.outcome == GateOutcome::fail; });
+  j.gate.exit_code = failed ? 1 : 0;
+  return j;
+}
+
+namespace {
+
+ResultsDocument read_document(const std::string& path) {
+  try {
+    return read_results(path);
+  } catch (const UsageError& e) {
+    throw InfraError(std::string(e.what()) +
+                     " (consistency needs results documents written by "
+                     "raygate run or compare --out)");
+  }
+}
+
+}  // namespace
+
+ConsistencyResult check_consistency(const std::vector<std::string>& paths,
+                                    const ConsistencyOptions& options) {
+  if (paths.size() < 2) {
+    throw UsageError(
+        fmt::format("consistency needs at least 2 results documents (one per "
+                    "machine), got {}",
+                    paths.size()));
+  }
+  std::vector<DocumentRatios> documents;
+  for (std::size_t i = 0; i < paths.size(); ++i) {
+    documents.push_back(document_ratios(read_document(paths[i]), paths[i], document_label(i)));
+  }
+  return analyse_consistency(std::move(documents), options);
+}
+
+DoctorReport examine_machine(int rounds, const std::string& baseline,
+                             const std::function<void(const std::string&)>& status) {
+  if (rounds < 2) {
+    throw UsageError(fmt::format("--rounds {}: a noise score needs at least 2 rounds", rounds));
+  }
+  DoctorReport report;
+  report.facts = probe_system_facts();  // before measuring: the load must not be our own
+  report.findings = diagnose(report.facts);
+  try {
+    const ToolPaths tools = locate_tools(baseline);
+    report.baseline_version = BaselineTool(tools.baseline).version_line();
+    TempDir work("raygate-doctor");
+    NoiseOptions options;
+    options.baseline = tools.baseline;
+    options.rounds = rounds;
+    options.work_dir = work.path();
+    status(fmt::format("measuring noise: {} rounds of two raygate-baseline runs...", rounds));
+    report.noise = measure_noise(options);
+  } catch (const InfraError& e) {
+    report.noise_error = e.what();
+  }
+  return report;
+}
+
+}  // namespace raygate

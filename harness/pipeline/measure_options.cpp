@@ -1,0 +1,117 @@
+#include "pipeline/measure_options.h"
+
+#include <fmt/core.h>
+
+#include <map>
+
+#include "compare/golden.h"
+#include "core/error.h"
+#include "core/process.h"
+#include "core/sha256.h"
+
+namespace raygate {
+
+namespace {
+
+std::filesystem::path find_adapter(const std::string& name, const std::filesystem::path& data_root) {
+  const std::filesystem::path direct(name);
+  if (std::filesystem::exists(direct)) return direct;
+  const std::filesystem::path shipped = data_root / "adapters" / (name + ".json");
+  if (name.find('/') == std::string::npos && std::filesystem::exists(shipped)) return shipped;
+  throw UsageError(fmt::format("adapter '{}' not found: not a file, and not a shipped adapter "
+                               "(see {}/adapters/)",
+                               name, data_root.string()));
+}
+
+std::filesystem::path pick_golden_dir(const MeasureOptions& args, const ToolPaths& tools,
+                                      const Adapter& adapter) {
+  if (!args.golden_dir.empty()) return args.golden_dir;
+  // Never the baseline's for another tracer: its shading differs by design (compare/golden.h).
+  return adapter_golden_dir(tools.data_root / "golden", adapter.name);
+}
+
+// The selection's shard named by --shard, and its record for the document.
+void apply_shard(const MeasureOptions& args, MeasureContext& c) {
+  if (args.shard.empty()) {
+    if (!args.shard_costs.empty()) throw UsageError("--shard-costs needs --shard K/N");
+    return;
+  }
+  ShardRecord record;
+  record.spec = parse_shard(args.shard);
+  for (const SuiteScene& scene : c.scenes) record.suite_scenes.push_back(scene.id);
+  std::map<std::string, double> expected_seconds;
+  if (!args.shard_costs.empty()) {
+    const ResultsDocument costs = read_results(args.shard_costs);
+    if (costs.suite != c.suite.name) {
+      throw UsageError(fmt::format("--shard-costs {}: a document of suite '{}', not '{}'; give "
+                                   "one measured on the suite being split",
+                                   args.shard_costs, costs.suite, c.suite.name));
+    }
+    expected_seconds = expected_seconds_from(costs);
+    // By content, not path: every job of the matrix must name the same costs to split alike.
+    record.cost_basis = "seconds_spent of results document sha256:" +
+                        sha256_file_hex(args.shard_costs);
+  }
+  c.scenes = shard_scenes(c.scenes, record.spec, expected_seconds);
+  c.shard = std::move(record);
+}
+
+// The default pinning (ScheduleOptions::round_cpus): a one-thread tracer on the alternate
+// schedule, unless --pin names CPUs or --no-pin asks for none. A tracer with more threads needs
+// more CPUs than one, and one that pins itself (adapter pin_cpus) has chosen.
+std::vector<int> default_round_cpus(const MeasureOptions& args, const MeasureContext& c) {
+  if (args.no_pin && !args.pin_cpus.empty()) {
+    throw UsageError("--no-pin and --pin exclude each other");
+  }
+  if (args.no_pin || c.schedule.kind != ScheduleKind::alternate || !args.pin_cpus.empty()) {
+    return {};
+  }
+  if (c.adapter.threads > 1 || c.adapter.pin_cpus) return {};
+  return allowed_cpu_list();
+}
+
+}  // namespace
+
+MeasureContext load_measure_context(const MeasureOptions& args,
+                                    std::vector<std::string>& warnings) {
+  if (args.repo.empty()) {
+    throw UsageError("--repo is empty: give the tracer's repository, a path or a URL (default: .)");
+  }
+  MeasureContext c;
+  c.tools = locate_tools(args.baseline);
+  c.adapter = load_adapter(find_adapter(args.adapter, c.tools.data_root));
+  c.suite = load_suite(args.suite, c.tools.data_root);
+  c.scenes = select_scenes(c.suite, args.scenes);
+  apply_shard(args, c);
+  if (args.cache_dir.empty()) throw UsageError("--cache-dir is empty: give a directory");
+  if (std::error_code error; std::filesystem::exists(args.cache_dir, error) &&
+                             !std::filesystem::is_directory(args.cache_dir, error)) {
+    throw UsageError(fmt::format("--cache-dir {}: exists and is not a directory", args.cache_dir));
+  }
+  c.cache_dir = std::filesystem::absolute(args.cache_dir);
+  c.golden_dir = pick_golden_dir(args, c.tools, c.adapter);
+  c.schedule.kind = args.schedule == "duet" ? ScheduleKind::duet : ScheduleKind::alternate;
+  c.schedule.warmup_runs = args.warmup;
+  c.schedule.pin_cpus = args.pin_cpus;
+  c.schedule.duet_cpus = args.duet_cpus;
+  c.schedule.round_cpus = default_round_cpus(args, c);
+  c.schedule.normalizer_rounds = args.baseline_rounds;
+  c.schedule.repeats = args.repeats;
+  if (c.schedule.kind == ScheduleKind::duet && args.repeats != 1) {
+    throw UsageError("--repeats applies to the alternate schedule (a duet round runs each "
+                     "program once)");
+  }
+  if (c.schedule.kind == ScheduleKind::duet &&
+      (args.duet_cpus.size() != 2 || args.duet_cpus[0] == args.duet_cpus[1])) {
+    throw UsageError("--duet-cpus needs two different CPUs, e.g. --duet-cpus 0,1");
+  }
+  c.stopping = args.stopping;
+  c.stopping.max_rounds = std::max(c.stopping.max_rounds, std::size_t{1});
+  if (c.stopping.max_rounds < c.stopping.min_rounds) c.stopping.min_rounds = c.stopping.max_rounds;
+  if (!args.policy.empty()) c.policy = load_policy(args.policy);
+  c.jobs = args.jobs;
+  warnings = choose_timing(c, args.metric, !args.policy.empty());
+  return c;
+}
+
+}  // namespace raygate

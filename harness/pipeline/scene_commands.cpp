@@ -1,0 +1,86 @@
+#include "pipeline/scene_commands.h"
+
+#include <fmt/core.h>
+
+#include <sstream>
+#include <stdexcept>
+
+#include "core/error.h"
+#include "nff/parser.h"
+#include "spd.h"
+#include "writers/scene_writers.h"
+
+namespace raygate {
+namespace {
+
+void parse_resolution(const std::string& text, scenes::GenerateOptions& options) {
+  if (text.empty()) return;
+  int w = 0;
+  int h = 0;
+  char x = 0;
+  std::istringstream in(text);
+  if (!(in >> w >> x >> h) || x != 'x' || !in.eof()) {
+    throw UsageError("--resolution: expected WIDTHxHEIGHT (e.g. 128x128), found '" + text + "'");
+  }
+  options.width = w;
+  options.height = h;
+}
+
+}  // namespace
+
+nlohmann::json scene_list_json() {
+  nlohmann::json scenes = nlohmann::json::array();
+  for (const scenes::SceneGenerator& g : scenes::all_generators()) {
+    nlohmann::json scene = {{"name", g.name}, {"description", g.description}};
+    scene["default_size"] = g.uses_size ? nlohmann::json(g.default_size) : nlohmann::json(nullptr);
+    scene["max_size"] = g.uses_size ? nlohmann::json(scenes::max_size(g)) : nlohmann::json(nullptr);
+    scenes.push_back(scene);
+  }
+  return {{"scenes", scenes}};
+}
+
+std::string scene_list_text() {
+  std::string out = fmt::format("{:<10} {:>7} {:>5}  {}\n", "scene", "default", "max",
+                                "description");
+  for (const scenes::SceneGenerator& g : scenes::all_generators()) {
+    out += fmt::format("{:<10} {:>7} {:>5}  {}\n", g.name,
+                       g.uses_size ? std::to_string(g.default_size) : "-",
+                       g.uses_size ? std::to_string(scenes::max_size(g)) : "-", g.description);
+  }
+  return out;
+}
+
+std::string generate_scene(const SceneRequest& request) {
+  scenes::GenerateOptions options;
+  options.size = request.size;
+  if (request.tessellate > 0) {
+    options.mode = scenes::OutputMode::tessellated;
+    options.tessellation_resolution = request.tessellate;
+  }
+  parse_resolution(request.resolution, options);
+  std::ostringstream text;
+  try {
+    scenes::generate(request.name, options, text);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+  return text.str();
+}
+
+std::vector<std::filesystem::path> convert_scene(const ConvertRequest& request) {
+  const std::optional<writers::OutputFormat> format = writers::parse_output_format(request.format);
+  if (!format) {
+    throw UsageError("--to: unknown format '" + request.format + "' (expected pov, obj or pbrt)");
+  }
+  try {
+    const nff::Scene scene = nff::read_nff_file(request.input);
+    const writers::WriteOptions options{request.segments};
+    return writers::write_scene_files(scene, *format, request.output, options);
+  } catch (const nff::ParseError& e) {
+    throw UsageError(e.what());  // "path:line:col: expected ..., found ..."
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(request.input + ": " + e.what());
+  }
+}
+
+}  // namespace raygate

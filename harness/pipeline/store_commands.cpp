@@ -1,0 +1,94 @@
+#include "pipeline/store_commands.h"
+
+#include <fmt/core.h>
+
+#include "core/error.h"
+#include "store/document_files.h"
+
+namespace raygate {
+namespace {
+
+// The machine's own history for the drift rule: every document, any branch, any series (the
+// rule compares each series only with itself).
+HistoryQuery machine_query(const HistoryQuery& query) {
+  HistoryQuery machine = query;
+  machine.branch.clear();
+  machine.last_commits = 0;
+  machine.repository.clear();
+  machine.adapter.clear();
+  machine.suite.clear();
+  machine.series.clear();
+  return machine;
+}
+
+}  // namespace
+
+HistoryView store_history_view(const std::string& location, const HistoryQuery& query) {
+  const auto store = open_store(location, StoreOpen::must_exist);
+  HistoryView view = make_history_view(store->measurements(query), query.last_commits,
+                                       store->measurements(machine_query(query)));
+  view.store = store->location();
+  view.role = query.role;
+  view.branch = query.branch;
+  return view;
+}
+
+AlertJudgement judge_store_history(const AlertRequest& request,
+                                   const std::function<void(const std::string&)>& say) {
+  const GatePolicy policy = request.policy.empty() ? GatePolicy{} : load_policy(request.policy);
+  const auto store = open_store(request.store, StoreOpen::must_exist);
+  const std::vector<HistoryRow> rows = store->history(request.query);
+  say(fmt::format("judging the last {} commits{} of {}: {} measurements",
+                  request.query.last_commits,
+                  request.query.branch.empty() ? "" : " of branch " + request.query.branch,
+                  store->location(), rows.size()));
+  AlertJudgement judgement = judge_history(rows, policy, request.detection, request.action);
+  if (judgement.series.empty()) {
+    throw UsageError(fmt::format("no measured commits in {} match the filters; record some "
+                                 "with raygate run (or raygate import)",
+                                 store->location()));
+  }
+  return judgement;
+}
+
+std::string import_documents(const std::vector<std::string>& files, const std::string& location,
+                             const std::string& branch) {
+  std::vector<ResultsDocument> documents;  // all checked before any is stored
+  for (const std::string& file : files) documents.push_back(load_results_file(file));
+  const auto store = open_store(location, StoreOpen::create_if_missing);
+  std::size_t fresh = 0;
+  std::string lines;
+  for (std::size_t i = 0; i < documents.size(); ++i) {
+    const std::string recorded = branch_of(documents[i], branch);
+    const AddOutcome outcome = store->add(documents[i], recorded);
+    fresh += outcome.duplicate ? 0 : 1;
+    lines += fmt::format("{}: {} document {}{}\n", files[i],
+                         outcome.duplicate ? "already stored as" : "stored as",
+                         outcome.document_id, recorded.empty() ? "" : " (branch " + recorded + ")");
+  }
+  return lines + fmt::format("imported {} of {} documents into {}\n", fresh, documents.size(),
+                             store->location());
+}
+
+std::string export_stored_documents(const ExportRequest& request) {
+  if (request.out.empty()) {
+    throw UsageError("export: --output is required (a directory or FILE.json)");
+  }
+  const auto store = open_store(request.store, StoreOpen::must_exist);
+  DocumentQuery query;
+  query.sha_prefix = checked_sha_prefix(request.sha);
+  query.last = request.last;
+  query.branch = request.branch;
+  const std::vector<StoredDocument> documents = store->documents(query);
+  if (documents.empty()) {
+    throw UsageError(fmt::format("no document in {} matches{}{}", store->location(),
+                                 request.sha.empty() ? "" : " --sha " + request.sha,
+                                 request.branch.empty() ? "" : " --branch " + request.branch));
+  }
+  if (export_documents(documents, request.out).single_file) {
+    return fmt::format("wrote document {} to {}\n", documents.front().id, request.out);
+  }
+  return fmt::format("wrote {} documents to {}\n", documents.size(), request.out);
+}
+
+}  // namespace raygate

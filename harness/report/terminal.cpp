@@ -1,0 +1,42 @@
+#include "report/terminal.h"
+
+#include <fmt/core.h>
+#include <unistd.h>
+
+#include "core/error.h"
+
+namespace raygate {
+
+ColourChoice parse_colour_choice(std::string_view text) {
+  if (text == "auto") return ColourChoice::automatic;
+  if (text == "always") return ColourChoice::always;
+  if (text == "never") return ColourChoice::never;
+  throw UsageError(fmt::format("--color {}: expected auto, always or never", text));
+}
+
+bool colour_wanted(ColourChoice choice, bool terminal, const char* no_color) {
+  if (choice == ColourChoice::always) return true;
+  if (choice == ColourChoice::never) return false;
+  return terminal && (no_color == nullptr || *no_color == '\0');
+}
+
+bool is_terminal(std::FILE* stream) { return ::isatty(::fileno(stream)) == 1; }
+
+bool Console::colour(std::FILE* stream) const {
+  return colour_wanted(choice_, stream != nullptr && is_terminal(stream),
+                       no_color_ ? "1" : nullptr);
+}
+
+// fputs, not fmt::print: chatter to a terminal that was closed (EIO) is dropped, not thrown, so
+// a hang-up still ends with its own exit code and a kept document.
+void Console::info(const std::string& text) const {
+  if (!quiet_) std::fputs((terminal_text(text) + "\n").c_str(), stderr);
+}
+
+void Console::warning(const std::string& text) const {
+  std::fputs(("raygate: warning: " + terminal_text(text) + "\n").c_str(), stderr);
+}
+
+void Console::problem(const std::string& text) const { std::fputs(text.c_str(), stderr); }
+
+}  // namespace raygate

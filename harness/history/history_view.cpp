@@ -56,4 +56,20 @@ TrendPoint trend_point(const HistoryRow& row) {
   return point;
 }
 
+TrendPoint memory_trend_point(const HistoryRow& row) {
+  TrendPoint point;
+  point.sha = row.sha;
+  point.short_sha = row.short_sha;
+  point.subject = row.subject;
+  point.commit_time = row.commit_time;
+  const double mib = row.peak_memory_kib.value_or(0.0) / 1024.0;
+  point.ratio = point.lower = point.upper = mib;
+  if (!row.memory_verdict.empty() && row.memory_change) {
+    point.note = fmt::format("memory {} ({:+.1f}% against base)", row.memory_verdict,
+                             *row.memory_change * 100.0);
+  }
+  point.flagged = row.memory_verdict == "REGRESSED";
+  return point;
+}
+
 }  // namespace raygate

@@ -66,6 +66,9 @@ constexpr Column kColumns[] = {
     {1, "change_verdict", &S::change_verdict},
     {2, "scene_settings", &S::scene_settings, &H::scene_settings},
     {2, "series_id", &S::series_id, &H::series_id},
+    {3, "peak_memory_kib", &S::peak_memory_kib, &H::peak_memory_kib},
+    {3, "memory_change", &S::memory_change, &H::memory_change},
+    {3, "memory_verdict", &S::memory_verdict, &H::memory_verdict},
 };
 
 // Migration 1's indexes, for history's filters and joins.
@@ -90,6 +93,9 @@ const Migration kMigrations[] = {
      "series columns: documents.timing, baseline_accel; revisions.repository_key; "
      "scene_results.scene_settings, series_id",
      kSeriesIndexes, true},
+    // Migration 3 (issue 27): peak memory per scene and revision, for history, alert and the
+    // trend; rows stored before get it from their documents' runs (none before raygate-meter).
+    {3, "peak memory: scene_results.peak_memory_kib, memory_change, memory_verdict", "", true},
 };
 
 const TableShape kTables[] = {

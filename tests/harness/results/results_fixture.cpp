@@ -85,6 +85,11 @@ SceneResult scene(const SceneSpec& s, const std::vector<std::string>& roles) {
   for (const std::string& role : roles) {
     round.order.push_back(role);
     round.runs[role] = run(s.ratio * s.baseline_seconds);
+    if (s.peak_kib > 0) {
+      round.runs[role].max_rss_own = true;
+      round.runs[role].max_rss_kib =
+          role == "head" && s.head_peak_kib > 0 ? s.head_peak_kib : s.peak_kib;
+    }
     r.ratios[role] = ratio_summary(s);
     r.images.push_back(image(s, role));
   }

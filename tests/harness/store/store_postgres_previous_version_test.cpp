@@ -69,7 +69,7 @@ class StorePostgresPreviousVersion : public ::testing::Test {
 
 TEST_F(StorePostgresPreviousVersion, ADatabaseMainWroteReadsBackAsItsSqliteStoreDoes) {
   const auto store = open_store(url, StoreOpen::must_exist);
-  EXPECT_EQ(RawConnection(url).text("SELECT max(version) FROM schema_migrations"), "2");
+  EXPECT_EQ(RawConnection(url).text("SELECT max(version) FROM schema_migrations"), "3");
   TempDir dir;
   const std::vector<StoredDocument> stored = store->documents({});
   ASSERT_EQ(stored.size(), 2u);

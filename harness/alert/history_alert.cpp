@@ -6,6 +6,7 @@
 #include <map>
 
 #include "core/error.h"
+#include "gate/memory_gate.h"
 
 namespace raygate {
 
@@ -15,15 +16,52 @@ CommitRef commit_of(const HistoryRow& row) {
   return {row.sha, row.short_sha, row.subject, row.commit_time};
 }
 
-// The series' measured rows, oldest first.
+// The series' rows that have `value`, oldest first.
 std::vector<HistoryRow> oldest_first(const std::vector<HistoryRow>& rows,
-                                     const std::string& series_id) {
+                                     const std::string& series_id,
+                                     std::optional<double> HistoryRow::*value) {
   std::vector<HistoryRow> points;
   for (const HistoryRow& row : rows) {
-    if (row.series_id == series_id && row.ratio) points.push_back(row);
+    if (row.series_id == series_id && row.*value) points.push_back(row);
   }
   std::reverse(points.begin(), points.end());  // history() gives them newest first
   return points;
+}
+
+// The change points of `value` over `points` (oldest first), placed between their commits.
+std::vector<SeriesChange> changes_of(const std::vector<HistoryRow>& points,
+                                     std::optional<double> HistoryRow::*value,
+                                     const EDivisiveOptions& detection) {
+  std::vector<double> values;
+  for (const HistoryRow& row : points) values.push_back(*(row.*value));
+  std::vector<SeriesChange> changes;
+  for (const ChangePoint& change : e_divisive(values, detection)) {
+    changes.push_back({commit_of(points[change.index - 1]), commit_of(points[change.index]),
+                       points.size() - change.index, change});
+  }
+  return changes;
+}
+
+// Peak memory: a step counts when it is over the limit and over the floor that page-level
+// jitter never reaches (measure/memory_change.h), as a compare's memory verdict needs.
+std::optional<MemoryTrack> judge_memory(const SeriesColumn& column,
+                                        const std::vector<HistoryRow>& rows,
+                                        const GatePolicy& policy,
+                                        const EDivisiveOptions& detection) {
+  const std::vector<HistoryRow> points =
+      oldest_first(rows, column.series_id, &HistoryRow::peak_memory_kib);
+  if (points.empty()) return std::nullopt;
+  MemoryTrack track;
+  track.points = points.size();
+  track.limit = policy.for_scene(column.scene_id).max_memory_increase;
+  track.changes = changes_of(points, &HistoryRow::peak_memory_kib, detection);
+  if (track.changes.empty()) return track;
+  const ChangePoint& newest = track.changes.back().change;
+  if (newest.relative_change() > track.limit &&
+      newest.mean_after - newest.mean_before > kMemoryNoiseFloorKib) {
+    track.alert = track.changes.back();
+  }
+  return track;
 }
 
 SeriesJudgement judge_series(const SeriesColumn& column, const std::vector<HistoryRow>& rows,
@@ -31,19 +69,14 @@ SeriesJudgement judge_series(const SeriesColumn& column, const std::vector<Histo
   SeriesJudgement judgement;
   judgement.column = column;
   judgement.limit = policy.for_scene(column.scene_id).max_slowdown;
-  const std::vector<HistoryRow> points = oldest_first(rows, column.series_id);
+  const std::vector<HistoryRow> points = oldest_first(rows, column.series_id, &HistoryRow::ratio);
   judgement.points = points.size();
-  std::vector<double> ratios;
-  for (const HistoryRow& row : points) ratios.push_back(*row.ratio);
-  for (const ChangePoint& change : e_divisive(ratios, detection)) {
-    judgement.changes.push_back({commit_of(points[change.index - 1]),
-                                 commit_of(points[change.index]), points.size() - change.index,
-                                 change});
-  }
+  judgement.changes = changes_of(points, &HistoryRow::ratio, detection);
   if (!judgement.changes.empty() &&
       judgement.changes.back().change.relative_change() > judgement.limit) {
     judgement.alert = judgement.changes.back();
   }
+  judgement.memory = judge_memory(column, rows, policy, detection);
   return judgement;
 }
 
@@ -65,9 +98,22 @@ nlohmann::json change_json(const SeriesChange& change) {
           {"p_value", change.change.p_value}};
 }
 
+nlohmann::json changes_json(const std::vector<SeriesChange>& changes) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const SeriesChange& change : changes) out.push_back(change_json(change));
+  return out;
+}
+
+nlohmann::json memory_json(const std::optional<MemoryTrack>& memory) {
+  if (!memory) return nullptr;
+  return {{"points", memory->points},
+          {"max_memory_increase", memory->limit},
+          {"change_points", changes_json(memory->changes)},
+          {"alert", memory->alert ? change_json(*memory->alert) : nlohmann::json(nullptr)}};
+}
+
 nlohmann::json series_json(const SeriesJudgement& s) {
-  nlohmann::json changes = nlohmann::json::array();
-  for (const SeriesChange& change : s.changes) changes.push_back(change_json(change));
+  const nlohmann::json changes = changes_json(s.changes);
   const HistoryRow& parts = s.column.sample;
   return {{"series_id", s.column.series_id},
           {"scene", s.column.scene_id},
@@ -79,7 +125,8 @@ nlohmann::json series_json(const SeriesJudgement& s) {
           {"points", s.points},
           {"max_slowdown", s.limit},
           {"change_points", changes},
-          {"alert", s.alert ? change_json(*s.alert) : nlohmann::json(nullptr)}};
+          {"alert", s.alert ? change_json(*s.alert) : nlohmann::json(nullptr)},
+          {"memory", memory_json(s.memory)}};
 }
 
 std::string range_text(const SeriesChange& c) {
@@ -88,11 +135,28 @@ std::string range_text(const SeriesChange& c) {
                      c.first_after.short_sha, c.first_after.subject);
 }
 
+std::string time_alert_line(const SeriesJudgement& s, const SeriesChange& c) {
+  return fmt::format(
+      "REGRESSED  {:<10} {:+.1f}% ({:.3f} -> {:.3f}, limit {:+.1f}%, p = {:.3f}) between {}; "
+      "{} commits since\n",
+      s.column.label, 100 * c.change.relative_change(), c.change.mean_before, c.change.mean_after,
+      100 * s.limit, c.change.p_value, range_text(c), c.commits_after);
+}
+
+std::string memory_alert_line(const SeriesJudgement& s, const SeriesChange& c) {
+  return fmt::format(
+      "REGRESSED  {:<10} memory {:+.1f}% ({} -> {}, limit {:+.0f}%, p = {:.3f}) between {}; "
+      "{} commits since\n",
+      s.column.label, 100 * c.change.relative_change(), memory_text(c.change.mean_before),
+      memory_text(c.change.mean_after), 100 * s.memory->limit, c.change.p_value, range_text(c),
+      c.commits_after);
+}
+
 }  // namespace
 
 std::size_t AlertJudgement::alerts() const {
   return static_cast<std::size_t>(std::count_if(
-      series.begin(), series.end(), [](const SeriesJudgement& s) { return s.alert.has_value(); }));
+      series.begin(), series.end(), [](const SeriesJudgement& s) { return s.in_alert(); }));
 }
 
 int AlertJudgement::exit_code() const {
@@ -137,17 +201,14 @@ nlohmann::json alert_json(const AlertJudgement& judgement, const EDivisiveOption
 std::string alert_text(const AlertJudgement& judgement) {
   std::string out;
   for (const SeriesJudgement& s : judgement.series) {
-    if (!s.alert) continue;
-    const SeriesChange& c = *s.alert;
-    out += fmt::format(
-        "REGRESSED  {:<10} {:+.1f}% ({:.3f} -> {:.3f}, limit {:+.1f}%, p = {:.3f}) between {}; "
-        "{} commits since\n",
-        s.column.label, 100 * c.change.relative_change(), c.change.mean_before,
-        c.change.mean_after, 100 * s.limit, c.change.p_value, range_text(c), c.commits_after);
+    if (s.alert) out += time_alert_line(s, *s.alert);
+    if (s.memory && s.memory->alert) out += memory_alert_line(s, *s.memory->alert);
   }
   const std::size_t alerts = judgement.alerts();
   std::size_t changes = 0;
-  for (const SeriesJudgement& s : judgement.series) changes += s.changes.size();
+  for (const SeriesJudgement& s : judgement.series) {
+    changes += s.changes.size() + (s.memory ? s.memory->changes.size() : 0);
+  }
   out += fmt::format("alert: {}: {} series, {} in alert, {} change points{}\n",
                      alerts == 0 ? "OK" : judgement.action == AlertAction::fail ? "FAIL"
                                                                                 : "ANNOTATE",

@@ -2,7 +2,9 @@
 // one series per repository, adapter, suite, scene settings, timing and baseline) searched for
 // change points (alert/e_divisive.h). A series is in alert when its newest change point made it
 // slower by more than the policy allows for its scene: the commit range is named (the last
-// commit before the change and the first after it), to be bisected or reverted.
+// commit before the change and the first after it), to be bisected or reverted. The series'
+// peak memory (issue 27) is searched the same way: a step up by more than the scene's
+// max_memory_increase (and more than 1 MiB, page-level jitter) puts the series in alert too.
 #pragma once
 
 #include <optional>
@@ -34,12 +36,24 @@ struct SeriesChange {
   ChangePoint change;
 };
 
+// The change points of the series' peak memory (its own peaks, KiB, median per commit).
+struct MemoryTrack {
+  std::size_t points = 0;
+  double limit = 0.0;                 // the scene's max_memory_increase
+  std::vector<SeriesChange> changes;  // oldest first; means in KiB
+  // The newest change, when it is an increase over the limit and over the noise floor.
+  std::optional<SeriesChange> alert;
+};
+
 struct SeriesJudgement {
   SeriesColumn column;  // the series: id, scene, label and a row with its parts
   std::size_t points = 0;
   double limit = 0.0;  // the scene's max_slowdown
   std::vector<SeriesChange> changes;  // oldest first
   std::optional<SeriesChange> alert;  // the newest change, when it is a slowdown over the limit
+  std::optional<MemoryTrack> memory;  // nullopt when no commit of the series has a peak
+
+  bool in_alert() const { return alert.has_value() || (memory && memory->alert); }
 };
 
 enum class AlertAction { fail, annotate };
@@ -53,6 +67,7 @@ struct AlertJudgement {
 
 // `rows` as ResultsStore::history gives them (one per commit and series, newest first). Series
 // with fewer than two segments' worth of points are judged too (no change can be found in them).
+// A series is in alert for its time, its memory, or both; alerts() counts series.
 AlertJudgement judge_history(const std::vector<HistoryRow>& rows, const GatePolicy& policy,
                              const EDivisiveOptions& detection, AlertAction action);
 

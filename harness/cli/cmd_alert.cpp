@@ -40,7 +40,9 @@ int alert_command(AlertArgs args, const Console& console) {
 void add_alert_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<AlertArgs>();
   CLI::App* command = app.add_subcommand(
-      "alert", "flag a slowdown that landed: change points in each series' history (docs/gate.md)");
+      "alert",
+      "flag a slowdown or a memory step that landed: change points in each series' history "
+      "(docs/gate.md)");
   add_store_option(*command, args->request.store, kDefaultStorePath);
   add_history_filters(*command, args->request.query);
   command->add_option("--last", args->request.query.last_commits,

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "explain/callgrind_profile.h"
 
 namespace raygate {
 namespace {
@@ -32,22 +33,22 @@ double median_wall(const SceneRuns& runs, Role role) {
   return n % 2 == 1 ? walls[n / 2] : 0.5 * (walls[n / 2 - 1] + walls[n / 2]);
 }
 
-// One run of `contender` under cachegrind, its profile read back.
+// One run of `contender` under callgrind, its profile (self and inclusive) read back.
 FunctionProfile profile_once(const SceneInput& scene, const Contender& contender,
-                             const Cachegrind& cachegrind, const std::filesystem::path& run_dir,
+                             const Cachegrind& valgrind, const std::filesystem::path& run_dir,
                              Executor& executor) {
   std::filesystem::remove_all(run_dir);
   std::filesystem::create_directories(run_dir);
-  ProcessSpec spec =
-      under_cachegrind(contender.command(scene, run_dir), cachegrind, cachegrind_dir(run_dir));
+  const std::filesystem::path out_dir = run_dir / "callgrind";
+  ProcessSpec spec = under_callgrind(contender.command(scene, run_dir), valgrind, out_dir);
   // Valgrind runs a program some 30-100x slower than natively.
   if (spec.timeout.count() > 0) spec.timeout *= 100;
   const ProcessResult result = executor.run(spec);
   if (!result.succeeded()) {
-    throw InfraError("--explain: " + contender.name() + " under cachegrind " + result.describe() +
+    throw InfraError("--explain: " + contender.name() + " under callgrind " + result.describe() +
                      " (log: " + spec.stdout_path.string() + ")");
   }
-  return read_function_profiles(cachegrind_dir(run_dir));
+  return read_callgrind_profiles(out_dir);
 }
 
 }  // namespace
@@ -55,6 +56,11 @@ FunctionProfile profile_once(const SceneInput& scene, const Contender& contender
 std::string profiler_name(const Cachegrind& cachegrind) {
   return (cachegrind.version.empty() ? std::string("valgrind") : cachegrind.version) +
          " cachegrind, self cost";
+}
+
+std::string callgrind_profiler_name(const Cachegrind& valgrind) {
+  return (valgrind.version.empty() ? std::string("valgrind") : valgrind.version) +
+         " callgrind, self and inclusive instructions";
 }
 
 std::optional<Explanation> explain_simulated_runs(const SceneRuns& runs,
@@ -73,17 +79,16 @@ std::optional<Explanation> explain_simulated_runs(const SceneRuns& runs,
 }
 
 Explanation explain_by_profiling(const SceneInput& scene, const Contender& base,
-                                 const Contender& head, const Cachegrind& cachegrind,
+                                 const Contender& head, const Cachegrind& valgrind,
                                  const std::filesystem::path& dir, Executor& executor,
                                  double native_seconds) {
   const auto started = std::chrono::steady_clock::now();
-  const FunctionProfile base_profile =
-      profile_once(scene, base, cachegrind, dir / base.name(), executor);
-  const FunctionProfile head_profile =
-      profile_once(scene, head, cachegrind, dir / head.name(), executor);
-  Explanation e = explain_change(base_profile, head_profile);
+  const FunctionProfile base_profile = profile_once(scene, base, valgrind, dir / base.name(), executor);
+  const FunctionProfile head_profile = profile_once(scene, head, valgrind, dir / head.name(), executor);
+  Explanation e =
+      explain_change(base_profile, head_profile, kExplainedFunctions, ExplainCost::instructions);
   e.source = ExplainSource::explain_runs;
-  e.profiler = profiler_name(cachegrind);
+  e.profiler = callgrind_profiler_name(valgrind);
   e.profile_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
   e.native_seconds = native_seconds;

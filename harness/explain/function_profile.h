@@ -18,6 +18,9 @@ struct FunctionCost {
   std::string name;  // demangled
   std::string file;  // the source file cachegrind attributed it to ("???" without debug info)
   SimulatedCounters self;
+  // With its callees (callgrind only, explain/callgrind_profile.h; cachegrind records no calls).
+  SimulatedCounters inclusive;
+  bool inclusive_known = false;
 };
 
 // By demangled name: a function inlined or duplicated across files is one entry, so a change

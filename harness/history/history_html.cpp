@@ -3,6 +3,7 @@
 // report's own (report/html_parts.h), so a trend reads the same on both pages.
 #include <fmt/core.h>
 
+#include <optional>
 #include <vector>
 
 #include "history/history_view.h"
@@ -14,23 +15,43 @@ namespace {
 
 using report::html::escape;  // one HTML escaping for every page raygate writes
 
-// The series' measured commits, oldest first.
-TrendSeries trend_series(const HistoryTable& table, const SeriesColumn& column) {
+// The series' commits that have `value`, oldest first, as points of a trend plot.
+TrendSeries trend_series(const HistoryTable& table, const SeriesColumn& column,
+                         std::optional<double> HistoryRow::*value,
+                         TrendPoint (*point_of)(const HistoryRow&)) {
   TrendSeries series{column.label, {}};
   for (auto line = table.lines.rbegin(); line != table.lines.rend(); ++line) {
     const auto found = line->scenes.find(column.series_id);
-    if (found != line->scenes.end() && found->second.ratio) {
-      series.points.push_back(trend_point(found->second));
+    if (found != line->scenes.end() && found->second.*value) {
+      series.points.push_back(point_of(found->second));
     }
   }
   return series;
 }
 
+// One plot with its caption, or what is missing.
+std::string figure(const TrendSeries& series, report::html::TrendQuantity quantity,
+                   const char* caption, const char* missing) {
+  if (series.points.empty()) return fmt::format("<p>{}</p>\n", missing);
+  return fmt::format("<figure><figcaption>{}</figcaption>{}</figure>\n", caption,
+                     report::html::trend_svg(series, {}, quantity));
+}
+
+// The ratio's trend and, beside it, the peak memory's (issue 27) when the series has peaks.
 std::string series_section(const HistoryTable& table, const SeriesColumn& column) {
-  const TrendSeries series = trend_series(table, column);
+  using report::html::TrendQuantity;
+  const TrendSeries ratios = trend_series(table, column, &HistoryRow::ratio, trend_point);
+  const TrendSeries peaks =
+      trend_series(table, column, &HistoryRow::peak_memory_kib, memory_trend_point);
   std::string out = "<section class=\"card\">\n<h3>" + escape(column.label) + "</h3>\n";
-  if (series.points.empty()) return out + "<p>no normalized ratio measured</p>\n</section>\n";
-  return out + report::html::trend_svg(series) + "\n</section>\n";
+  out += "<div class=\"trend-pair\">\n";
+  out += figure(ratios, TrendQuantity::normalized_ratio, "normalized ratio (lower is faster)",
+                "no normalized ratio measured");
+  if (!peaks.points.empty()) {
+    out += figure(peaks, TrendQuantity::peak_memory_mib,
+                  "peak memory, MiB (the tracer's own; red: memory REGRESSED)", "");
+  }
+  return out + "</div>\n</section>\n";
 }
 
 std::string commit_table(const HistoryTable& table) {
@@ -60,7 +81,8 @@ std::string history_html(const HistoryView& view) {
       "<h1>raygate history</h1>\n<p>From <code>{}</code> (role {}{}), one part per repository "
       "and adapter, one plot per series. The normalized ratio is time(tracer) / time(baseline); "
       "lower is faster. The band is its 95% CI; hover a point for the commit; a red point's "
-      "image failed its check.</p>\n",
+      "image failed its check. Beside it, where measured, the tracer's own peak resident memory "
+      "(the median over the commit's rounds).</p>\n",
       escape(view.store), escape(view.role),
       view.branch.empty() ? "" : ", branch " + escape(view.branch));
   if (view.drift) {

@@ -1,6 +1,4 @@
 // The history table for the terminal and its JSON form.
-#include "history/history_view.h"
-
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -8,6 +6,8 @@
 
 #include "compare/image_verdict.h"
 #include "core/domain.h"
+#include "gate/memory_gate.h"
+#include "history/history_view.h"
 #include "report/report_model.h"
 
 namespace raygate {
@@ -17,6 +17,7 @@ namespace {
 constexpr std::size_t kSubjectWidth = 32;
 constexpr std::size_t kRatioWidth = 12;
 constexpr std::size_t kImageWidth = 13;  // "no golden yet"
+constexpr std::size_t kPeakWidth = 9;    // "123.4 MiB"
 
 // Table rows are padded column by column; the last column's padding is not wanted.
 std::string trimmed_line(std::string line) {
@@ -56,6 +57,17 @@ std::string image_cell(const HistoryRow& row) {
   return verdict == ImageVerdict::pass ? error : error + " " + words;
 }
 
+// The tracer's own peak memory; a compare's head row adds a verdict that is not UNCHANGED.
+std::string peak_cell(const HistoryRow& row) {
+  if (!row.peak_memory_kib) return "-";
+  std::string cell = memory_text(*row.peak_memory_kib);
+  const std::optional<ChangeVerdict> verdict = change_verdict_named(row.memory_verdict);
+  if (verdict && *verdict != ChangeVerdict::unchanged) {
+    cell += " " + row.memory_verdict;
+  }
+  return cell;
+}
+
 bool any_incomplete(const CommitLine& line) {
   return std::any_of(line.scenes.begin(), line.scenes.end(),
                      [](const auto& scene) { return !scene.second.complete; });
@@ -74,8 +86,9 @@ std::string header_lines(const HistoryTable& table, std::size_t sha_w) {
                       pad_right("subject", kSubjectWidth);
   std::string second(first.size(), ' ');
   for (const SeriesColumn& column : table.columns) {
-    first += "  " + pad_right(column.label, kRatioWidth + 2 + kImageWidth);
-    second += "  " + pad_right("ratio", kRatioWidth) + "  " + pad_right("image", kImageWidth);
+    first += "  " + pad_right(column.label, kRatioWidth + 2 + kImageWidth + 2 + kPeakWidth);
+    second += "  " + pad_right("ratio", kRatioWidth) + "  " + pad_right("image", kImageWidth) +
+              "  " + pad_right("peak", kPeakWidth);
   }
   return trimmed_line(first) + trimmed_line(second);
 }
@@ -89,7 +102,8 @@ std::string commit_row(const HistoryTable& table, const CommitLine& line, std::s
     const auto found = line.scenes.find(column.series_id);
     const bool has = found != line.scenes.end();
     out += "  " + pad_right(has ? ratio_cell(found->second) : "", kRatioWidth) + "  " +
-           pad_right(has ? image_cell(found->second) : "", kImageWidth);
+           pad_right(has ? image_cell(found->second) : "", kImageWidth) + "  " +
+           pad_right(has ? peak_cell(found->second) : "", kPeakWidth);
   }
   return trimmed_line(out);
 }
@@ -102,6 +116,32 @@ std::string trend_line(const SceneTrend& trend, std::size_t scene_w, std::size_t
   if (!trend.change) return out + "  first measurement\n";
   return out + fmt::format("  {:+.1f}% {} vs {}\n", *trend.change * 100.0, trend.arrow,
                            trend.previous_short_sha);
+}
+
+std::string memory_trend_line(const SceneTrend& trend, std::size_t scene_w, std::size_t spark_w) {
+  std::string out = "  " + pad_right(trend.label, scene_w) + "  " +
+                    pad_right(trend.memory_sparkline, spark_w) + "  ";
+  if (!trend.latest_peak_kib) return out + "no peak measured\n";
+  out += memory_text(*trend.latest_peak_kib);
+  if (!trend.peak_change) return out + "  first measurement\n";
+  return out + fmt::format("  {:+.1f}% {} vs {}\n", *trend.peak_change * 100.0, trend.memory_arrow,
+                           trend.previous_peak_short_sha);
+}
+
+// Only when some series has peaks: stores from before raygate-meter have none.
+std::string memory_trend_section(const HistoryTable& table) {
+  std::size_t scene_w = 5;
+  std::size_t spark_w = 1;
+  bool any = false;
+  for (const SceneTrend& t : table.trends) {
+    scene_w = std::max(scene_w, code_points(t.label));
+    spark_w = std::max(spark_w, code_points(t.memory_sparkline));
+    any = any || t.latest_peak_kib.has_value();
+  }
+  if (!any) return "";
+  std::string out = "memory (peak resident, the tracer's own; oldest -> newest):\n";
+  for (const SceneTrend& t : table.trends) out += memory_trend_line(t, scene_w, spark_w);
+  return out;
 }
 
 std::string trend_section(const HistoryTable& table) {
@@ -128,6 +168,7 @@ std::string table_text(const HistoryTable& table) {
   }
   out += "\n";
   out += trend_section(table);
+  out += memory_trend_section(table);
   if (table.baseline_versions > 1) {
     out += fmt::format(
         "\nnote: these commits were measured with {} different baseline sources; each is its own "
@@ -150,6 +191,10 @@ nlohmann::json scene_json(const HistoryRow& row) {
            {{"verdict", row.image_verdict},
             {"max_error", optional_number(row.image_max_error)},
             {"rms_error", optional_number(row.image_rms_error)}}},
+          {"memory",
+           {{"peak_kib", optional_number(row.peak_memory_kib)},
+            {"change", optional_number(row.memory_change)},
+            {"verdict", row.memory_verdict}}},
           {"machine", {{"hostname", row.machine_hostname}, {"cpu_model", row.machine_cpu_model}}},
           {"baseline_sha256", row.baseline_sha256},
           {"document_id", row.document_id},
@@ -176,7 +221,12 @@ nlohmann::json trend_json(const SceneTrend& t) {
           {"latest", optional_number(t.latest)},
           {"change_vs_previous", optional_number(t.change)},
           {"previous_short_sha", t.previous_short_sha},
-          {"sparkline", t.sparkline}};
+          {"sparkline", t.sparkline},
+          {"peaks_kib", t.peaks_kib},
+          {"latest_peak_kib", optional_number(t.latest_peak_kib)},
+          {"peak_change_vs_previous", optional_number(t.peak_change)},
+          {"previous_peak_short_sha", t.previous_peak_short_sha},
+          {"memory_sparkline", t.memory_sparkline}};
 }
 
 nlohmann::json series_json(const SeriesColumn& column) {
@@ -223,7 +273,7 @@ std::string history_table(const HistoryView& view) {
   std::string out = fmt::format(
       "history from {} ({}), one table per repository and adapter\n"
       "ratio = time(tracer) / time(baseline) with its 95% CI half-width; image = max error "
-      "against the golden\n",
+      "against the golden; peak = peak resident memory, the tracer's own\n",
       view.store, scope);
   for (const HistoryTable& table : view.tables) {
     out += "\n";

@@ -2,6 +2,8 @@
 // row as a point of the report's trend plot.
 #include "history/history_view.h"
 
+#include "measure/change.h"
+
 #include <fmt/core.h>
 
 #include <set>
@@ -56,6 +58,23 @@ TrendPoint trend_point(const HistoryRow& row) {
                              row.image_verdict);
   }
   point.flagged = parse_image_verdict(row.image_verdict) == ImageVerdict::fail;
+  return point;
+}
+
+TrendPoint memory_trend_point(const HistoryRow& row) {
+  TrendPoint point;
+  point.sha = row.sha;
+  point.short_sha = row.short_sha;
+  point.subject = row.subject;
+  point.commit_time = row.commit_time;
+  const double mib = row.peak_memory_kib.value_or(0.0) / 1024.0;
+  point.ratio = point.lower = point.upper = mib;
+  if (!row.memory_verdict.empty() && row.memory_change) {
+    point.note = fmt::format("memory {} ({:+.1f}% against base)", row.memory_verdict,
+                             *row.memory_change * 100.0);
+  }
+  // The store keeps the verdict as its word (the SQL boundary); read it back as the type.
+  point.flagged = change_verdict_named(row.memory_verdict) == ChangeVerdict::regressed;
   return point;
 }
 

@@ -47,6 +47,9 @@ std::string history_html(const HistoryView& view);
 
 // A measured row (ratio set) as a point of the report's trend plot (report/reporter.h).
 TrendPoint trend_point(const HistoryRow& row);
+// A row with a peak as a point of the memory trend: `ratio` holds the peak in MiB (issue 27);
+// flagged when its memory verdict is REGRESSED.
+TrendPoint memory_trend_point(const HistoryRow& row);
 
 // Text helpers, public for tests: width in code points, not bytes.
 std::string pad_right(const std::string& text, std::size_t width);

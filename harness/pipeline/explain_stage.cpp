@@ -55,11 +55,12 @@ std::vector<std::string> explain_regressed_scenes(ResultsDocument& document,
   }
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
-  lines.push_back(fmt::format("explained {} regressed {} with {} in {:.1f} s{}", explained,
-                              explained == 1 ? "scene" : "scenes", profiler_name(cachegrind),
-                              seconds,
-                              simulated(context) ? " (from the sim runs' own files)"
-                                                 : " (one profiled run each of base and head)"));
+  lines.push_back(fmt::format(
+      "explained {} regressed {} with {} in {:.1f} s{}", explained,
+      explained == 1 ? "scene" : "scenes",
+      simulated(context) ? profiler_name(cachegrind) : callgrind_profiler_name(cachegrind), seconds,
+      simulated(context) ? " (from the sim runs' own files)"
+                         : " (one profiled run each of base and head)"));
   return lines;
 }
 

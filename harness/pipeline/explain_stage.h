@@ -1,7 +1,7 @@
 // The explanation step of a compare (issue 27): after the verdicts (and the family's Holm
 // control), each scene whose speed REGRESSED gets the functions whose cost grew most. Sim mode
 // reads the cachegrind files its runs already wrote; timed mode profiles base and head once
-// each under cachegrind, and only with --explain. Scenes that did not regress cost nothing.
+// each under callgrind, and only with --explain. Scenes that did not regress cost nothing.
 #pragma once
 
 #include <string>

@@ -48,9 +48,13 @@ struct TrendMark {
   std::string sha;    // full id, or a prefix of one (a short sha)
   std::string label;  // "base", "head", "this run"
 };
+// What a trend plots in its points' `ratio` (and band, lower..upper): the normalized ratio, or
+// the peak resident memory in MiB (issue 27; no band: a peak is one median per commit).
+enum class TrendQuantity { normalized_ratio, peak_memory_mib };
 // The normalized ratio over commits: CI band, line, points with tooltips. The points of `marks`
 // are drawn large and labelled; without marks, the newest point is (a history page).
-std::string trend_svg(const TrendSeries& series, const std::vector<TrendMark>& marks = {});
+std::string trend_svg(const TrendSeries& series, const std::vector<TrendMark>& marks = {},
+                      TrendQuantity quantity = TrendQuantity::normalized_ratio);
 
 // <section> of the scaling analysis (html_scaling.cpp): a log-log plot per scene family with
 // the fitted growth; "" when the document has none.

@@ -125,6 +125,15 @@ ul.scaling-fits{font-size:13px;margin:4px 0 14px;padding-left:18px}
 .trend-point{fill:var(--accent);stroke:#fff;stroke-width:1.5}
 .trend-point.marked{fill:#0550ae;stroke-width:2}
 .trend-point.flagged{fill:var(--fail)}
+.memory-plot .trend-line{stroke:#8250df}
+.memory-plot .trend-point{fill:#8250df}
+.memory-plot .trend-point.marked{fill:#6639ba}
+.memory-plot .trend-mark{fill:#6639ba}
+.memory-plot .trend-point.flagged{fill:var(--fail)}
+.trend-pair{display:flex;flex-wrap:wrap;gap:12px}
+.trend-pair figure{margin:0;flex:1 1 0;min-width:320px}
+.trend-pair svg{width:100%;height:auto}
+.trend-pair figcaption{font-size:12px;color:var(--muted)}
 .note{background:#fff8c5;padding:.6em;border-left:4px solid #d4a72c}
 .trend-mark{font-size:11px;fill:#0550ae;font-weight:700;font-family:var(--mono)}
 .sha{fill:var(--muted)}

@@ -173,12 +173,48 @@ std::string mark_of(const TrendPoint& point, const std::vector<TrendMark>& marks
   return label;
 }
 
+// How a trend names and prints its values.
+struct TrendWords {
+  const char* css_class;
+  const char* quantity;  // for the plot's label
+  const char* unit;      // after a value; "" for the ratio
+  int decimals;          // of a value in a tooltip or mark
+};
+
+TrendWords trend_words(TrendQuantity quantity) {
+  if (quantity == TrendQuantity::peak_memory_mib) {
+    return {"plot trend-plot memory-plot", "peak memory (MiB)", " MiB", 1};
+  }
+  return {"plot trend-plot", "normalized ratio", "", 3};
+}
+
+// The y range: the values with a margin. A peak's axis spans at least 2 MiB or 20% of the peak,
+// so a few KiB of page-level jitter stay flat, as a compare would judge them (never a verdict).
+std::pair<double, double> trend_range(const std::vector<TrendPoint>& points,
+                                      TrendQuantity quantity) {
+  auto [lo, hi] = padded_range(interval_span(points, &TrendPoint::ratio), 0.1);
+  if (quantity != TrendQuantity::peak_memory_mib) return {lo, hi};
+  const double span = std::max(2.0, 0.2 * hi);
+  if (hi - lo >= span) return {lo, hi};
+  const double middle = (lo + hi) / 2.0;
+  return {std::max(0.0, middle - span / 2.0), middle + span / 2.0};
+}
+
+std::string point_numbers(const TrendPoint& point, const TrendWords& words) {
+  if (words.unit[0] != '\0') {
+    return fmt::format("peak {:.{}f}{}", point.ratio, words.decimals, words.unit);
+  }
+  return fmt::format("ratio {:.3f} [{:.3f}, {:.3f}]", point.ratio, point.lower, point.upper);
+}
+
 }  // namespace
 
-std::string trend_svg(const TrendSeries& series, const std::vector<TrendMark>& marks) {
+std::string trend_svg(const TrendSeries& series, const std::vector<TrendMark>& marks,
+                      TrendQuantity quantity) {
+  const TrendWords words = trend_words(quantity);
   const std::vector<TrendPoint>& p = series.points;
   if (p.empty()) return "";
-  const auto [dlo, dhi] = padded_range(interval_span(p, &TrendPoint::ratio), 0.1);
+  const auto [dlo, dhi] = trend_range(p, quantity);
   const int width = 560, height = 210;
   const double left = 52, right = width - 14, top = 18, bottom = height - 50;
   const std::size_t n = p.size();
@@ -187,8 +223,9 @@ std::string trend_svg(const TrendSeries& series, const std::vector<TrendMark>& m
                                          static_cast<double>(n - 1);
   };
   const Scale y{dlo, dhi, bottom, top};
-  std::string out = svg_open(width, height, "plot trend-plot",
-                             fmt::format("normalized ratio of {} over {} commits", series.scene, n));
+  std::string out =
+      svg_open(width, height, words.css_class,
+               fmt::format("{} of {} over {} commits", words.quantity, series.scene, n));
   const int decimals = decimals_for(dlo, dhi, 4);
   for (const double t : ticks(dlo, dhi, 4)) {
     out += fmt::format(R"(<line class="svg-grid" x1="{0}" x2="{1}" y1="{2:.1f}" y2="{2:.1f}"/>)",
@@ -208,8 +245,8 @@ std::string trend_svg(const TrendSeries& series, const std::vector<TrendMark>& m
     // The compare's own commits are marked; a history page (no marks) marks its newest.
     std::string mark = mark_of(point, marks);
     if (marks.empty() && i + 1 == n) mark = "newest";
-    std::string title = fmt::format("{} {}\nratio {:.3f} [{:.3f}, {:.3f}]", point.short_sha,
-                                    point.subject, point.ratio, point.lower, point.upper);
+    std::string title =
+        fmt::format("{} {}\n{}", point.short_sha, point.subject, point_numbers(point, words));
     if (!mark.empty()) title = mark + ": " + title;
     if (!point.note.empty()) title += "\n" + point.note;
     out += fmt::format(
@@ -219,8 +256,9 @@ std::string trend_svg(const TrendSeries& series, const std::vector<TrendMark>& m
     if (!mark.empty()) {
       const double my = y(point.ratio);
       const char* anchor = i + 1 == n ? "end" : i == 0 ? "start" : "middle";
-      labels += text(px(i), my < top + 16 ? my + 17 : my - 9, "trend-mark",
-                     fmt::format("{} {:.3f}", mark, point.ratio), anchor);
+      labels +=
+          text(px(i), my < top + 16 ? my + 17 : my - 9, "trend-mark",
+               fmt::format("{} {:.{}f}{}", mark, point.ratio, words.decimals, words.unit), anchor);
     }
     if ((n - 1 - i) % label_every != 0 && mark.empty()) continue;
     out += fmt::format(

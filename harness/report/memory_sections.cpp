@@ -91,17 +91,36 @@ std::string memory_table_text(const std::vector<MemoryRow>& rows, bool compare) 
   return aligned(cells, "  ");
 }
 
+std::string signed_count(double value) {
+  return fmt::format("{}{}", value >= 0.0 ? "+" : "", count_text(value));
+}
+
+std::string count_pair(std::uint64_t base, std::uint64_t head) {
+  return count_text(static_cast<double>(base)) + " -> " + count_text(static_cast<double>(head));
+}
+
+// By cycles (sim mode): the change, its share and the instructions. By instructions (callgrind):
+// the self change, its share, self and inclusive instructions, and the inclusive change.
 std::vector<std::vector<std::string>> function_cells(const Explanation& e, std::size_t top) {
-  std::vector<std::vector<std::string>> cells{
-      {"change (cycles)", "share", "instructions base -> head", "function"}};
+  const bool cycles = e.cost == ExplainCost::estimated_cycles;
+  std::vector<std::vector<std::string>> cells;
+  if (cycles) {
+    cells.push_back({"change (cycles)", "share", "instructions base -> head", "function"});
+  } else {
+    cells.push_back({"self change (instr.)", "share", "self base -> head", "inclusive base -> head",
+                     "inclusive change", "function"});
+  }
   for (std::size_t i = 0; i < e.functions.size() && i < top; ++i) {
     const FunctionChange& f = e.functions[i];
-    cells.push_back(
-        {fmt::format("{}{}", f.delta_cycles() >= 0.0 ? "+" : "", count_text(f.delta_cycles())),
-         signed_percent(share_of_change(e, f), 0),
-         count_text(static_cast<double>(f.base_instructions)) + " -> " +
-             count_text(static_cast<double>(f.head_instructions)),
-         f.name});
+    std::vector<std::string> row{signed_count(e.delta_of(f)),
+                                 signed_percent(share_of_change(e, f), 0),
+                                 count_pair(f.base_instructions, f.head_instructions)};
+    if (!cycles) {
+      row.push_back(count_pair(f.base_inclusive_instructions, f.head_inclusive_instructions));
+      row.push_back(signed_count(f.delta_inclusive_instructions()));
+    }
+    row.push_back(f.name);
+    cells.push_back(std::move(row));
   }
   return cells;
 }
@@ -118,11 +137,12 @@ std::string cost_note(const Explanation& e) {
 }
 
 std::string explanation_heading(const SceneResult& scene, const Explanation& e) {
+  const double base = e.base_cost();
+  const double head = e.head_cost();
   return fmt::format(
-      "{}: where the time went ({}; estimated cycles {} -> {}, {}; {})", scene.entry.id, e.profiler,
-      count_text(e.base_cycles), count_text(e.head_cycles),
-      signed_percent(e.base_cycles > 0.0 ? e.head_cycles / e.base_cycles - 1.0 : 0.0),
-      cost_note(e));
+      "{}: where the time went ({}; {} {} -> {}, {}; {})", scene.entry.id, e.profiler,
+      e.cost == ExplainCost::instructions ? "instructions" : "estimated cycles", count_text(base),
+      count_text(head), signed_percent(base > 0.0 ? head / base - 1.0 : 0.0), cost_note(e));
 }
 
 // Inside a Markdown code block only a backtick run could end it.
@@ -190,6 +210,47 @@ std::string memory_html(const ReportInput& input) {
   return out + "</tbody></table></section>";
 }
 
+namespace {
+
+// "<td class=num>a → b</td>"
+std::string pair_cell(const std::string& base, const std::string& head) {
+  return fmt::format("<td class=\"num\">{} → {}</td>", html::escape(base), html::escape(head));
+}
+
+std::string function_row_html(const Explanation& e, const FunctionChange& f) {
+  using html::escape;
+  const auto count = [](std::uint64_t n) { return count_text(static_cast<double>(n)); };
+  std::string row = fmt::format("<tr><td class=\"num\">{}</td><td class=\"num\">{}</td>",
+                                escape(signed_count(e.delta_of(f))),
+                                escape(signed_percent(share_of_change(e, f), 0)));
+  if (e.cost == ExplainCost::estimated_cycles) {
+    row += pair_cell(count_text(f.base_cycles), count_text(f.head_cycles));
+  }
+  row += pair_cell(count(f.base_instructions), count(f.head_instructions));
+  if (e.inclusive) {
+    row += pair_cell(count(f.base_inclusive_instructions), count(f.head_inclusive_instructions));
+    row += fmt::format("<td class=\"num\">{}</td>",
+                       escape(signed_count(f.delta_inclusive_instructions())));
+  }
+  // "???": the profiler knew no source file (no debug information).
+  return row + fmt::format("<td><code>{}</code>{}</td></tr>", escape(f.name),
+                           f.file.empty() || f.file == "???"
+                               ? ""
+                               : "<br><small>" + escape(f.file) + "</small>");
+}
+
+std::string function_head_html(const Explanation& e) {
+  std::string head = e.cost == ExplainCost::estimated_cycles
+                         ? "<th>change (cycles)</th><th>share</th><th>cycles base → head</th>"
+                           "<th>instructions base → head</th>"
+                         : "<th>self change (instructions)</th><th>share</th>"
+                           "<th>self instructions base → head</th>";
+  if (e.inclusive) head += "<th>inclusive base → head</th><th>inclusive change</th>";
+  return "<thead><tr>" + head + "<th>function</th></tr></thead>";
+}
+
+}  // namespace
+
 std::string explanation_html(const ReportInput& input) {
   using html::escape;
   std::string out;
@@ -197,22 +258,9 @@ std::string explanation_html(const ReportInput& input) {
     const Explanation& e = *scene->explanation;
     out += fmt::format(
         "<section class=\"card explain\"><h2>Where the time went: {}</h2><p>{}</p>"
-        "<table><thead><tr><th>change (cycles)</th><th>share</th><th>cycles base"
-        " → head</th><th>instructions base → head</th><th>function</th></tr>"
-        "</thead><tbody>",
-        escape(scene->entry.id), escape(explanation_heading(*scene, e)));
-    for (const FunctionChange& f : e.functions) {
-      out += fmt::format(
-          "<tr><td class=\"num\">{}{}</td><td class=\"num\">{}</td><td class=\"num\">{} → {}</td>"
-          "<td class=\"num\">{} → {}</td><td><code>{}</code>{}</td></tr>",
-          f.delta_cycles() >= 0.0 ? "+" : "", escape(count_text(f.delta_cycles())),
-          escape(signed_percent(share_of_change(e, f), 0)), escape(count_text(f.base_cycles)),
-          escape(count_text(f.head_cycles)),
-          escape(count_text(static_cast<double>(f.base_instructions))),
-          escape(count_text(static_cast<double>(f.head_instructions))), escape(f.name),
-          // "???": cachegrind knew no source file (no debug information).
-          f.file.empty() || f.file == "???" ? "" : "<br><small>" + escape(f.file) + "</small>");
-    }
+        "<table>{}<tbody>",
+        escape(scene->entry.id), escape(explanation_heading(*scene, e)), function_head_html(e));
+    for (const FunctionChange& f : e.functions) out += function_row_html(e, f);
     out += "</tbody></table></section>";
   }
   return out;

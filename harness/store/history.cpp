@@ -7,6 +7,7 @@
 #include <set>
 #include <tuple>
 
+#include "measure/memory_change.h"
 #include "store/store_rows.h"
 
 namespace raygate {
@@ -147,28 +148,70 @@ std::vector<SeriesColumn> series_columns(const std::vector<HistoryRow>& rows) {
   return columns;
 }
 
+namespace {
+
+// The values of a series, oldest first, with the commits they came from.
+struct SeriesValues {
+  std::vector<double> values;
+  std::vector<std::string> short_shas;
+};
+
+SeriesValues series_values(const std::vector<CommitLine>& lines, const SeriesColumn& column,
+                           std::optional<double> HistoryRow::*value) {
+  SeriesValues out;
+  for (auto line = lines.rbegin(); line != lines.rend(); ++line) {
+    const auto found = line->scenes.find(column.series_id);
+    if (found == line->scenes.end() || !(found->second.*value)) continue;
+    out.values.push_back(*(found->second.*value));
+    out.short_shas.push_back(found->second.short_sha);
+  }
+  return out;
+}
+
+std::string arrow_of(double change) {
+  return change > kTrendFlatFraction ? "↑" : change < -kTrendFlatFraction ? "↓" : "→";
+}
+
+// Peaks that differ by less than a compare's noise floor (max(1 MiB, 2%)) draw flat: a
+// sparkline scaled to a few KiB of page-level jitter would show a change that is none.
+std::string memory_sparkline(const std::vector<double>& peaks_kib) {
+  if (peaks_kib.empty()) return {};
+  const auto [low, high] = std::minmax_element(peaks_kib.begin(), peaks_kib.end());
+  if (*high - *low >= std::max(kMemoryNoiseFloorKib, kMemoryNoiseFraction * *high)) {
+    return sparkline(peaks_kib);
+  }
+  return sparkline(std::vector<double>(peaks_kib.size(), *high));
+}
+
+void fill_memory_trend(SceneTrend& trend, const SeriesValues& peaks) {
+  trend.peaks_kib = peaks.values;
+  trend.memory_sparkline = memory_sparkline(peaks.values);
+  if (peaks.values.empty()) return;
+  trend.latest_peak_kib = peaks.values.back();
+  if (peaks.values.size() < 2) return;
+  trend.peak_change = *trend.latest_peak_kib / peaks.values[peaks.values.size() - 2] - 1.0;
+  trend.previous_peak_short_sha = peaks.short_shas[peaks.short_shas.size() - 2];
+  trend.memory_arrow = arrow_of(*trend.peak_change);
+}
+
+}  // namespace
+
 SceneTrend scene_trend(const std::vector<CommitLine>& lines, const SeriesColumn& column) {
   SceneTrend trend;
   trend.series_id = column.series_id;
   trend.scene_id = column.scene_id;
   trend.label = column.label;
-  std::vector<std::string> shas;
-  for (auto line = lines.rbegin(); line != lines.rend(); ++line) {
-    const auto found = line->scenes.find(column.series_id);
-    if (found == line->scenes.end() || !found->second.ratio) continue;
-    trend.ratios.push_back(*found->second.ratio);
-    shas.push_back(found->second.short_sha);
-  }
+  fill_memory_trend(trend, series_values(lines, column, &HistoryRow::peak_memory_kib));
+  const SeriesValues ratios = series_values(lines, column, &HistoryRow::ratio);
+  trend.ratios = ratios.values;
   trend.sparkline = sparkline(trend.ratios);
   if (trend.ratios.empty()) return trend;
   trend.latest = trend.ratios.back();
   if (trend.ratios.size() < 2) return trend;
   const double previous = trend.ratios[trend.ratios.size() - 2];
   trend.change = *trend.latest / previous - 1.0;
-  trend.previous_short_sha = shas[shas.size() - 2];
-  trend.arrow = *trend.change > kTrendFlatFraction    ? "↑"
-                : *trend.change < -kTrendFlatFraction ? "↓"
-                                                      : "→";
+  trend.previous_short_sha = ratios.short_shas[ratios.short_shas.size() - 2];
+  trend.arrow = arrow_of(*trend.change);
   return trend;
 }
 

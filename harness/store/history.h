@@ -73,6 +73,13 @@ struct SceneTrend {
   std::string previous_short_sha;
   std::string sparkline;  // one block character per ratio, oldest first
   std::string arrow;      // "↑" slower, "↓" faster, "→" within ±1%, "" no previous
+  // Peak memory (issue 27), the same way: the commits that have the tracer's own peak.
+  std::vector<double> peaks_kib;  // oldest first
+  std::optional<double> latest_peak_kib;
+  std::optional<double> peak_change;  // latest / previous - 1: +0.10 is 10% more memory
+  std::string previous_peak_short_sha;
+  std::string memory_sparkline;
+  std::string memory_arrow;  // "↑" more, "↓" less, "→" within ±1%, "" no previous
 };
 
 inline constexpr double kTrendFlatFraction = 0.01;

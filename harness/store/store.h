@@ -65,6 +65,11 @@ struct HistoryRow {
   std::string image_verdict;  // against the golden: pass, warn, fail, missing, error; "" none
   std::optional<double> image_max_error;
   std::optional<double> image_rms_error;
+  // Peak resident memory, the median of this revision's own peaks (nullopt before raygate-meter);
+  // a compare's head row also has its change against base and the memory verdict.
+  std::optional<double> peak_memory_kib;
+  std::optional<double> memory_change;
+  std::string memory_verdict;  // UNCHANGED, REGRESSED, IMPROVED, INCONCLUSIVE; "" none
   std::string machine_hostname;
   std::string machine_cpu_model;
   std::string baseline_sha256;  // ratios compare only across the same baseline

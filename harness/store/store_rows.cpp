@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/sha256.h"
 #include "core/utf8.h"
+#include "gate/memory_gate.h"
 #include "results/series.h"
 
 namespace raygate {
@@ -75,6 +76,28 @@ void fill_change(SceneRow& row, const SceneResult& scene, Role role) {
   row.change_verdict = to_string(scene.change_verdict);
 }
 
+// The limit the document was measured with: its settings say the policy's default.
+double recorded_memory_limit(const ResultsDocument& document) {
+  const nlohmann::json& settings = document.settings;
+  if (!settings.is_object()) return kDefaultMaxMemoryIncrease;
+  const auto found = settings.find("max_memory_increase");
+  return found != settings.end() && found->is_number() ? found->get<double>()
+                                                       : kDefaultMaxMemoryIncrease;
+}
+
+void fill_memory(SceneRow& row, const ResultsDocument& document, const SceneResult& scene,
+                 Role role) {
+  if (const std::optional<double> peak = median_peak_kib(scene.runs, role)) {
+    row.peak_memory_kib = finite(*peak);
+  }
+  if (role != Role::head) return;
+  const std::optional<MemorySummary> memory = scene_memory(scene);
+  if (!memory) return;
+  row.memory_change = finite(memory->change);
+  row.memory_verdict =
+      std::string(to_string(classify_memory(*memory, recorded_memory_limit(document))));
+}
+
 SceneRow scene_row(const ResultsDocument& document, const SceneResult& scene,
                    const RevisionRecord& revision) {
   const Role role = revision.role;
@@ -87,6 +110,7 @@ SceneRow scene_row(const ResultsDocument& document, const SceneResult& scene,
   if (const RatioSummary* ratio = scene.ratio(role)) fill_ratio(row, *ratio);
   if (const ImageCheck* check = golden_check(scene, role)) fill_image(row, *check);
   fill_change(row, scene, role);
+  fill_memory(row, document, scene, role);
   return row;
 }
 

@@ -74,6 +74,13 @@ struct SceneRow {
   std::string change_verdict;
   std::string scene_settings;  // results/series.h
   std::string series_id;       // SeriesKey::id() of this scene as this revision measured it
+  // Peak resident memory (issue 27): the median of this revision's own peaks over the scene's
+  // rounds (runs started through raygate-meter; none in documents from before it).
+  std::optional<double> peak_memory_kib;
+  // compare, on the head row: head's peak against base's, and its verdict under the limit the
+  // document was measured with (settings.max_memory_increase; gate/memory_gate.h).
+  std::optional<double> memory_change;
+  std::string memory_verdict;
 };
 
 struct DocumentRows {

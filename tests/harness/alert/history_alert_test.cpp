@@ -113,6 +113,73 @@ TEST(HistoryAlert, UnmeasuredPointsAreLeftOut) {
   EXPECT_EQ(j.series[0].alert->first_after.short_sha, "c09");
 }
 
+// Peak memory (issue 27): the same rows with the tracer's own peak, KiB, per commit.
+std::vector<HistoryRow> with_peaks(std::vector<HistoryRow> rows, double (*peak_kib)(std::size_t)) {
+  for (std::size_t k = 0; k < rows.size(); ++k) rows[k].peak_memory_kib = peak_kib(rows.size() - k);
+  return rows;
+}
+
+double jitter_kib(std::size_t i) { return 100.0 * std::sin(1.7 * static_cast<double>(i)); }
+double eight_mib(std::size_t i) { return 8192.0 + jitter_kib(i); }
+double fifty_more_at_9(std::size_t i) { return (i >= 9 ? 58.0 : 8.0) * 1024 + jitter_kib(i); }
+double small_tracer_at_9(std::size_t i) { return (i >= 9 ? 4600.0 : 4000.0) + jitter_kib(i) / 10; }
+double five_percent_at_9(std::size_t i) { return (i >= 9 ? 105.0 : 100.0) * 1024 + jitter_kib(i); }
+
+TEST(HistoryAlert, AMemoryStepPutsTheSeriesInAlertWithItsRange) {
+  const AlertJudgement j =
+      judge_history(join(with_peaks(rows_of("balls", 15, flat), fifty_more_at_9),
+                         with_peaks(rows_of("gears", 15, flat), eight_mib)),
+                    GatePolicy{}, {}, AlertAction::fail);
+  ASSERT_EQ(j.series.size(), 2u);
+  EXPECT_EQ(j.alerts(), 1u);
+  EXPECT_EQ(j.exit_code(), 1);
+  const SeriesJudgement& balls = j.series[0];
+  EXPECT_FALSE(balls.alert);  // its time did not change
+  ASSERT_TRUE(balls.memory);
+  EXPECT_EQ(balls.memory->points, 15u);
+  EXPECT_DOUBLE_EQ(balls.memory->limit, 0.10);
+  ASSERT_TRUE(balls.memory->alert);
+  EXPECT_EQ(balls.memory->alert->last_before.short_sha, "c08");
+  EXPECT_EQ(balls.memory->alert->first_after.short_sha, "c09");
+  EXPECT_NEAR(balls.memory->alert->change.relative_change(), 50.0 / 8.0, 0.05);
+  ASSERT_TRUE(j.series[1].memory);
+  EXPECT_FALSE(j.series[1].memory->alert);
+
+  const std::string text = alert_text(j);
+  EXPECT_THAT(text, HasSubstr("REGRESSED  balls      memory +6"));
+  EXPECT_THAT(text, HasSubstr("(8.0 MiB -> 58.0 MiB, limit +10%"));
+  EXPECT_THAT(text, HasSubstr("c08..c09"));
+  EXPECT_THAT(text, HasSubstr("alert: FAIL: 2 series, 1 in alert"));
+  const nlohmann::json json = alert_json(j, {});
+  EXPECT_TRUE(json["series"][0]["alert"].is_null());
+  EXPECT_EQ(json["series"][0]["memory"]["alert"]["first_after"]["short_sha"], "c09");
+  EXPECT_EQ(json["series"][0]["memory"]["max_memory_increase"], 0.10);
+  EXPECT_TRUE(json["series"][1]["memory"]["alert"].is_null());
+}
+
+TEST(HistoryAlert, AMemoryStepUnderTheFloorOrTheLimitIsNoAlert) {
+  // +15%, but 600 KiB: page-level jitter of a small tracer, never a verdict.
+  const AlertJudgement small =
+      judge_history(with_peaks(rows_of("balls", 15, flat), small_tracer_at_9), GatePolicy{}, {},
+                    AlertAction::fail);
+  ASSERT_TRUE(small.series[0].memory);
+  EXPECT_EQ(small.series[0].memory->changes.size(), 1u);
+  EXPECT_EQ(small.alerts(), 0u);
+  // +5 MiB of 100 MiB: over the floor, under the default 10% limit; a stricter scene flags it.
+  const std::vector<HistoryRow> rows = with_peaks(rows_of("balls", 15, flat), five_percent_at_9);
+  EXPECT_EQ(judge_history(rows, GatePolicy{}, {}, AlertAction::fail).alerts(), 0u);
+  GatePolicy strict;
+  strict.scenes["balls"].max_memory_increase = 0.02;
+  EXPECT_EQ(judge_history(rows, strict, {}, AlertAction::fail).alerts(), 1u);
+}
+
+TEST(HistoryAlert, ASeriesWithoutPeaksHasNoMemoryTrack) {
+  const AlertJudgement j =
+      judge_history(rows_of("balls", 15, flat), GatePolicy{}, {}, AlertAction::fail);
+  EXPECT_FALSE(j.series[0].memory);
+  EXPECT_TRUE(alert_json(j, {})["series"][0]["memory"].is_null());
+}
+
 TEST(HistoryAlert, ActionNames) {
   EXPECT_EQ(parse_alert_action("annotate"), AlertAction::annotate);
   EXPECT_EQ(to_string(AlertAction::fail), "fail");

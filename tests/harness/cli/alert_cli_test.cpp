@@ -1,6 +1,7 @@
 // `raygate alert` on a store holding 15 commits of a tracer's main branch: when commit 9 made
-// balls 10% slower, the alert names the range 8..9 and fails (or only annotates); a flat
-// history raises nothing; the JSON on standard output is the whole of it.
+// balls 10% slower, the alert names the range 8..9 and fails (or only annotates); when commit 9
+// made it keep 50 MiB more (issue 27), the same range is flagged for memory; a flat history
+// raises nothing; the JSON on standard output is the whole of it.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
@@ -22,7 +23,8 @@ class AlertCli : public ::testing::Test {
  protected:
   // Commits 1..15 on consecutive days; balls' ratio `slower` times 0.8 from commit `from` on,
   // gears flat; ±1% of fixed noise on both, as a quiet runner gives.
-  void record_history(double slower, int from) {
+  // With `memory_from`, every run has its own peak: 8 MiB, and 58 MiB from that commit on.
+  void record_history(double slower, int from, int memory_from = 0) {
     std::vector<std::string> args{"import", "--store", "store.db"};
     for (int i = 1; i <= 15; ++i) {
       const double noise = 1.0 + 0.01 * std::sin(2.3 * i);
@@ -34,6 +36,11 @@ class AlertCli : public ::testing::Test {
       spec.repository_id = "root:0123456789abcdef0123456789abcdef01234567";
       spec.scenes = {{"balls", 0.8 * (i >= from ? slower : 1.0) * noise},
                      {"gears", 1.5 * (1.0 + 0.01 * std::cos(1.9 * i))}};
+      if (memory_from > 0) {
+        const long jitter_kib = std::lround(60 * std::sin(2.3 * i));
+        spec.scenes[0].peak_kib = (i >= memory_from ? 58 : 8) * 1024 + jitter_kib;
+        spec.scenes[1].peak_kib = 12 * 1024 + jitter_kib;
+      }
       const std::string name = fmt::format("docs/c{:02}.json", i);
       write_results(make_document(spec), dir.path() / name);
       args.push_back(name);
@@ -102,6 +109,24 @@ TEST_F(AlertCli, TextThatIsNotUtf8InTheStoreIsRepairedOnTheWayOut) {
   EXPECT_EQ(t.exit_code, 1) << t.err;
   EXPECT_THAT(t.out, HasSubstr("commit 9 caf\xEF\xBF\xBD\\x1b[2J"));
   EXPECT_THAT(t.out + t.err, Not(HasSubstr("\x1b[2J")));
+}
+
+TEST_F(AlertCli, FiftyMoreMebibytesAtCommitNineAreFlaggedForMemory) {
+  record_history(1.0, 9, 9);
+  const CliStreams r = run_raygate_streams({"alert", "--store", "store.db"}, dir);
+  EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
+  EXPECT_THAT(r.out, HasSubstr("REGRESSED  balls      memory +"));
+  EXPECT_THAT(r.out, HasSubstr("(8.0 MiB -> 58.0 MiB, limit +10%"));
+  EXPECT_THAT(r.out, HasSubstr(short_sha(8) + ".." + short_sha(9)));
+  EXPECT_THAT(r.out, Not(HasSubstr("REGRESSED  gears")));
+  EXPECT_THAT(r.out, HasSubstr("alert: FAIL: 2 series, 1 in alert"));
+  const CliStreams j =
+      run_raygate_streams({"alert", "--store", "store.db", "--format", "json"}, dir);
+  const nlohmann::json json = nlohmann::json::parse(j.out);
+  for (const nlohmann::json& s : json["series"]) {
+    EXPECT_EQ(s["memory"]["points"], 15);
+    EXPECT_EQ(s["memory"]["alert"].is_null(), s["scene"] != "balls") << s.dump();
+  }
 }
 
 TEST_F(AlertCli, FlatHistoryRaisesNothing) {

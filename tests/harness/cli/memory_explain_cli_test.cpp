@@ -3,7 +3,8 @@
 //   (exit 1) while an A/A compare passes memory on every scene; the peaks are the tracer's own;
 // - explanation: a head whose shade() does more work is REGRESSED in sim mode, and shade() is
 //   first among the functions whose cost grew, in the document and the console report; in timed
-//   mode `--explain` profiles the regressed scene once each under cachegrind and says so;
+//   mode `--explain` profiles the regressed scene once each under callgrind and says so, with
+//   self and inclusive instructions (main's inclusive change holds shade()'s);
 //   bisect in sim mode ends with the culprit's explanation.
 // The sim and --explain tests need valgrind and fail (not skip) without it (ci/install-deps).
 #include <gtest/gtest.h>
@@ -121,8 +122,15 @@ TEST_F(MemoryExplainCli, ExplainProfilesOnlyTheRegressedScenesInTimedMode) {
   ASSERT_TRUE(d.scenes[0].explanation.has_value()) << r.out;
   const Explanation& e = *d.scenes[0].explanation;
   EXPECT_EQ(e.source, ExplainSource::explain_runs);
+  EXPECT_EQ(e.cost, ExplainCost::instructions);
+  EXPECT_TRUE(e.inclusive);
+  EXPECT_TRUE(e.profiler.find("callgrind") != std::string::npos) << e.profiler;
   ASSERT_FALSE(e.functions.empty());
-  EXPECT_TRUE(e.functions[0].name.starts_with("shade(")) << e.functions[0].name;
+  const FunctionChange& shade = e.functions[0];
+  EXPECT_TRUE(shade.name.starts_with("shade(")) << shade.name;
+  EXPECT_GT(share_of_change(e, shade), 0.9);
+  EXPECT_GE(shade.head_inclusive_instructions, shade.head_instructions);
+  EXPECT_TRUE(has(r.out, "inclusive base -> head")) << r.out;
   EXPECT_GT(e.profile_seconds, 0.0);
   EXPECT_GT(e.native_seconds, 0.0);
   EXPECT_TRUE(has(r.out, "profiling took")) << r.out;

@@ -116,6 +116,56 @@ TEST_F(HistoryFromStore, AnotherBuildOfTheSameAdapterIsAnotherSeries) {
   EXPECT_EQ(old.trends[0].points.size(), 3u);  // commits 1 to 3, as before
 }
 
+// Peak memory (issue 27): stored with each run, shown beside the ratio in every form.
+TEST(HistoryMemory, PeaksAreShownInTheTableTheJsonTheTrendAndThePage) {
+  TempDir dir;
+  const auto path = dir.path() / "results.db";
+  const auto store = open_store(path.string());
+  const long peaks_kib[] = {8 * 1024, 8 * 1024 + 40, 58 * 1024};
+  for (int seed = 1; seed <= 3; ++seed) {
+    DocumentSpec spec = commit(seed, std::to_string(10 + 2 * seed), 1.0);
+    for (SceneSpec& scene : spec.scenes) scene.peak_kib = peaks_kib[seed - 1];
+    store->add(make_document(spec), "main");
+  }
+  store->add(make_document(commit(4, "20", 1.0)), "main");  // from before raygate-meter: no peak
+  HistoryView v = make_history_view(store->history({}), 0, {});
+  v.store = path.string();
+  v.role = "tracer";
+  const SceneTrend& balls = v.tables.at(0).trends.at(0);
+  EXPECT_EQ(balls.peaks_kib, (std::vector<double>{8192, 8232, 59392}));
+  ASSERT_TRUE(balls.peak_change);
+  EXPECT_NEAR(*balls.peak_change, 59392.0 / 8232.0 - 1.0, 1e-12);
+  EXPECT_EQ(balls.memory_arrow, "↑");
+
+  const std::string text = history_table(v);
+  EXPECT_TRUE(has(text, "peak")) << text;
+  EXPECT_TRUE(has(text, "58.0 MiB")) << text;
+  EXPECT_TRUE(has(text, "memory (peak resident, the tracer's own; oldest -> newest):")) << text;
+  EXPECT_TRUE(has(text, "58.0 MiB  +621.5% ↑ vs " + fake_sha(2).substr(0, 7))) << text;
+  const nlohmann::json json = history_json(v);
+  const nlohmann::json& newest = json["tables"][0]["commits"][0]["scenes"]["balls"];
+  EXPECT_TRUE(newest["memory"]["peak_kib"].is_null());  // commit 4
+  EXPECT_EQ(json["tables"][0]["commits"][1]["scenes"]["balls"]["memory"]["peak_kib"], 59392.0);
+  EXPECT_EQ(json["tables"][0]["trends"]["balls"]["latest_peak_kib"], 59392.0);
+
+  const std::string page = history_html(v);
+  EXPECT_TRUE(has(page, "class=\"plot trend-plot memory-plot\"")) << page;
+  EXPECT_TRUE(has(page, "peak memory (MiB) of balls over 3 commits")) << page;
+  EXPECT_TRUE(has(page, "peak 58.0 MiB")) << page;  // the newest point's tooltip
+}
+
+TEST(TrendPoint, AMemoryPointIsInMebibytesAndFlaggedWhenItsVerdictRegressed) {
+  HistoryRow row;
+  row.short_sha = "abc1234";
+  row.peak_memory_kib = 59392;
+  row.memory_change = 6.25;
+  row.memory_verdict = "REGRESSED";
+  const TrendPoint point = memory_trend_point(row);
+  EXPECT_DOUBLE_EQ(point.ratio, 58.0);
+  EXPECT_TRUE(point.flagged);
+  EXPECT_EQ(point.note, "memory REGRESSED (+625.0% against base)");
+}
+
 TEST(StoreTrends, NoStoreIsNoTrendAndAnUnreadableOneIsAWarning) {
   TempDir dir;
   const ResultsDocument document = make_document(commit(1, "10", 1.0));

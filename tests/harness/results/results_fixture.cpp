@@ -83,9 +83,15 @@ SceneResult scene(const SceneSpec& s, const std::vector<Role>& roles) {
   round.order = {"baseline"};
   round.runs["baseline"] = run(s.baseline_seconds);
   for (const Role role : roles) {
-    round.order.push_back(role_name(role));
-    round.runs[role_name(role)] = run(s.ratio * s.baseline_seconds);
-    r.ratios[role_name(role)] = ratio_summary(s);
+    const std::string word = role_name(role);
+    round.order.push_back(word);
+    round.runs[word] = run(s.ratio * s.baseline_seconds);
+    if (s.peak_kib > 0) {
+      round.runs[word].max_rss_own = true;
+      round.runs[word].max_rss_kib =
+          role == Role::head && s.head_peak_kib > 0 ? s.head_peak_kib : s.peak_kib;
+    }
+    r.ratios[word] = ratio_summary(s);
     r.images.push_back(image(s, role));
   }
   r.runs.rounds = {round};

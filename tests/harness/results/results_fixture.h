@@ -18,6 +18,9 @@ struct SceneSpec {
   double max_error = 0.0;
   ImageVerdict verdict = ImageVerdict::pass;
   SceneStatus status = SceneStatus::measured;
+  // The runs' own peak memory (raygate-meter's): 0 none, as in documents from before it.
+  long peak_kib = 0;
+  long head_peak_kib = 0;  // compare: head's, when not peak_kib
 };
 
 struct DocumentSpec {

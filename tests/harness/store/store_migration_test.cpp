@@ -89,7 +89,7 @@ TEST(StoreMigration, AVersionOneStoreGetsItsSeriesFromItsDocumentsAndStaysReadab
   const auto store = open_store(path.string(), StoreOpen::must_exist);
   {
     SqliteDb db = SqliteDb::open(path, false);
-    EXPECT_EQ(schema_version(db), 2);
+    EXPECT_EQ(schema_version(db), 3);
   }
   const std::vector<StoredDocument> stored = store->documents({});
   ASSERT_EQ(stored.size(), 3u);
@@ -124,6 +124,62 @@ TEST(StoreMigration, AVersionOneStoreGetsItsSeriesFromItsDocumentsAndStaysReadab
   ASSERT_EQ(columns.size(), 1u);
   EXPECT_EQ(scene_trend(group_by_commit(rows), columns[0]).ratios,
             (std::vector<double>{1.0, 1.1, 1.2}));
+}
+
+// Migration 3 (issue 27): the peak memory of rows stored before it comes from their documents'
+// runs: each role's median own peak, and on a compare's head row the change and the verdict
+// under the limit the document was measured with; a document from before raygate-meter has none.
+TEST(StoreMigration, RowsStoredBeforePeakMemoryGetItFromTheirDocuments) {
+  TempDir dir;
+  const auto path = dir.path() / "old.db";
+  DocumentSpec compare = balls(1, 1, 1.0);
+  compare.kind = DocumentKind::compare;
+  compare.roles = {Role::base, Role::head};
+  compare.with_change = true;
+  compare.scenes = {{"balls", 1.0}, {"gears", 2.0}};
+  compare.scenes[0].peak_kib = 8 * 1024;
+  compare.scenes[0].head_peak_kib = 58 * 1024;  // +50 MiB
+  compare.scenes[1].peak_kib = 4 * 1024;        // head the same
+  const ResultsDocument with_peaks = make_document(compare);
+  const ResultsDocument before_meter = make_document(balls(2, 2, 1.1));
+  {
+    SqliteDb db = SqliteDb::open(path, true);
+    ASSERT_EQ(migrate(db, store_migrations().first(1)), 1);
+    insert_v1(db, document_rows(with_peaks, "main", "2026-07-01T13:00:00Z"));
+    insert_v1(db, document_rows(before_meter, "main", "2026-07-02T13:00:00Z"));
+  }
+  const auto store = open_store(path.string(), StoreOpen::must_exist);
+  {
+    SqliteDb db = SqliteDb::open(path, false);
+    EXPECT_EQ(schema_version(db), 3);
+  }
+  HistoryQuery any;
+  any.role = "any";
+  std::size_t checked = 0;
+  for (const HistoryRow& row : store->measurements(any)) {
+    if (row.sha == fake_sha(2)) {
+      EXPECT_FALSE(row.peak_memory_kib) << "raygate's own peak is not the tracer's";
+      EXPECT_EQ(row.memory_verdict, "");
+      continue;
+    }
+    const bool balls_row = row.scene_id == "balls";
+    const double base_peak = balls_row ? 8 * 1024 : 4 * 1024;
+    ASSERT_TRUE(row.peak_memory_kib) << row.scene_id << " " << row.role;
+    if (row.role == "base") {
+      EXPECT_DOUBLE_EQ(*row.peak_memory_kib, base_peak);
+      EXPECT_EQ(row.memory_verdict, "");
+    } else {
+      EXPECT_DOUBLE_EQ(*row.peak_memory_kib, balls_row ? 58 * 1024 : base_peak);
+      EXPECT_EQ(row.memory_verdict, balls_row ? "REGRESSED" : "UNCHANGED");
+      ASSERT_TRUE(row.memory_change);
+      EXPECT_NEAR(*row.memory_change, balls_row ? 50.0 / 8.0 : 0.0, 1e-9);
+    }
+    ++checked;
+  }
+  EXPECT_EQ(checked, 4u);
+  // A fresh store gives the same rows.
+  const DocumentRows fresh = document_rows(with_peaks, "main", "t");
+  EXPECT_EQ(fresh.scenes.at(1).memory_verdict, "REGRESSED");  // balls, head
 }
 
 }  // namespace

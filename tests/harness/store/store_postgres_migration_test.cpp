@@ -85,7 +85,7 @@ TEST(StorePostgresMigration, AVersionOneStoreGetsItsSeriesFromItsDocumentsAndSta
   const auto store = open_store(url, StoreOpen::must_exist);
   {
     PgConnection db = PgConnection::connect(url);
-    EXPECT_EQ(schema_version(db), 2);
+    EXPECT_EQ(schema_version(db), 3);
   }
   const std::vector<StoredDocument> stored = store->documents({});
   ASSERT_EQ(stored.size(), 3u);

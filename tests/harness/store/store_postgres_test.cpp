@@ -83,12 +83,14 @@ TEST_F(StorePostgres, SchemaIsVersionedAndMigratedOnce) {
   open_store(url);
   open_store(url);  // reopening applies nothing again
   RawConnection raw(url);
-  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "2");
+  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "3");
   EXPECT_EQ(raw.text("SELECT description FROM schema_migrations WHERE version = 1"),
             "documents, revisions, scene_results");
   EXPECT_EQ(raw.text("SELECT description FROM schema_migrations WHERE version = 2"),
             "series columns: documents.timing, baseline_accel; revisions.repository_key; "
             "scene_results.scene_settings, series_id");
+  EXPECT_EQ(raw.text("SELECT description FROM schema_migrations WHERE version = 3"),
+            "peak memory: scene_results.peak_memory_kib, memory_change, memory_verdict");
   EXPECT_EQ(raw.text("SELECT data_type FROM information_schema.columns WHERE table_name = "
                      "'scene_results' AND column_name = 'normalized_ratio'"),
             "double precision");
@@ -101,12 +103,12 @@ TEST_F(StorePostgres, SchemaIsVersionedAndMigratedOnce) {
 TEST_F(StorePostgres, ASecondMigrationAppliesOnceOnTopOfTheFirst) {
   open_store(url);
   std::vector<Migration> migrations(store_migrations().begin(), store_migrations().end());
-  migrations.push_back({3, "documents.note", "ALTER TABLE documents ADD COLUMN note TEXT"});
+  migrations.push_back({4, "documents.note", "ALTER TABLE documents ADD COLUMN note TEXT"});
   PgConnection db = PgConnection::connect(url);
-  EXPECT_EQ(migrate(db, migrations), 3);
-  EXPECT_EQ(migrate(db, migrations), 3);
+  EXPECT_EQ(migrate(db, migrations), 4);
+  EXPECT_EQ(migrate(db, migrations), 4);
   RawConnection raw(url);
-  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "3");
+  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "4");
   EXPECT_TRUE(raw.exec("SELECT note FROM documents"));
 }
 
@@ -114,10 +116,10 @@ TEST_F(StorePostgres, AFailingMigrationLeavesTheVersionBefore) {
   open_store(url);
   std::vector<Migration> migrations(store_migrations().begin(), store_migrations().end());
   migrations.push_back(
-      {3, "broken", "CREATE TABLE extra (x INTEGER); INSERT INTO nope VALUES (1)"});
+      {4, "broken", "CREATE TABLE extra (x INTEGER); INSERT INTO nope VALUES (1)"});
   PgConnection db = PgConnection::connect(url);
   EXPECT_THROW(migrate(db, migrations), InfraError);
-  EXPECT_EQ(schema_version(db), 2);
+  EXPECT_EQ(schema_version(db), 3);
   RawConnection raw(url);
   EXPECT_EQ(raw.text("SELECT to_regclass('extra') IS NULL"), "t");
 }

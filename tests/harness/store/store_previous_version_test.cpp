@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -86,12 +87,13 @@ TEST(StorePreviousVersion, AStoreMainWroteOpensAtTheSameVersionAndExportsItsFile
   TempDir dir;
   const fs::path path = copy_of_fixture(dir);
   const auto store = open_store(path.string(), StoreOpen::must_exist);
-  EXPECT_EQ(rows_of(path, "PRAGMA user_version"), std::vector<std::string>{"2"});
+  EXPECT_EQ(rows_of(path, "PRAGMA user_version"), std::vector<std::string>{"3"});
   EXPECT_EQ(rows_of(path, "SELECT version, description FROM schema_migrations ORDER BY version"),
             (std::vector<std::string>{
                 "1|documents, revisions, scene_results",
                 "2|series columns: documents.timing, baseline_accel; revisions.repository_key; "
-                "scene_results.scene_settings, series_id"}));
+                "scene_results.scene_settings, series_id",
+                "3|peak memory: scene_results.peak_memory_kib, memory_change, memory_verdict"}));
 
   const std::vector<StoredDocument> stored = store->documents({});
   ASSERT_EQ(stored.size(), 2u);  // newest first
@@ -171,10 +173,52 @@ TEST(StorePreviousVersion, ANewStoreHasTheSchemaMainGaveItsStores) {
   TempDir dir;
   const fs::path fresh = dir.path() / "fresh.db";
   open_store(fresh.string());
-  // Read from a copy: even a read-only connection leaves WAL files beside the database.
-  const std::vector<std::string> expected = schema_of(copy_of_fixture(dir));
+  // Read from a copy: even a read-only connection leaves WAL files beside the database. Opened
+  // first: the migrations after main's (3, peak memory) bring it what a new store has.
+  const fs::path old = copy_of_fixture(dir);
+  open_store(old.string(), StoreOpen::must_exist);
+  const std::vector<std::string> expected = schema_of(old);
   ASSERT_GT(expected.size(), 50u);
   EXPECT_EQ(schema_of(fresh), expected);
+}
+
+// A store main wrote after raygate-meter (bc71eee, schema version 2): `raygate import` of
+// bench/report-pictures' run and its compare (examples/nff-tracer, four scenes, each run's own
+// peak). Opened here, migration 3 fills every row's peak memory from its document, as a fresh
+// store would, and the compare's head rows get their memory verdicts.
+TEST(StorePreviousVersion, AStoreMainWroteWithOwnPeaksGetsThemInHistory) {
+  TempDir dir;
+  const fs::path path = dir.path() / "results.db";
+  fs::copy_file(kFixtures / "main-bc71eee-memory.db", path);
+  EXPECT_EQ(rows_of(path, "PRAGMA user_version"), std::vector<std::string>{"2"});
+  const auto store = open_store(path.string(), StoreOpen::must_exist);
+  EXPECT_EQ(rows_of(path, "PRAGMA user_version"), std::vector<std::string>{"3"});
+  std::map<std::pair<std::string, std::string>, SceneRow> expected;  // by (sha, scene)
+  for (const StoredDocument& stored : store->documents({})) {
+    const ResultsDocument d = results_from_json(stored.document, "stored");
+    for (const SceneRow& row : document_rows(d, "", "").scenes) {
+      const std::string& sha = d.revision(*parse_role(row.role))->worktree.sha;
+      expected[{sha + row.role, row.scene_id}] = row;
+    }
+  }
+  HistoryQuery any;
+  any.role = "any";
+  const std::vector<HistoryRow> rows = store->measurements(any);
+  ASSERT_EQ(rows.size(), 12u);  // 4 scenes: the run's tracer, the compare's base and head
+  std::size_t verdicts = 0;
+  for (const HistoryRow& row : rows) {
+    const SceneRow& want = expected.at({row.sha + row.role, row.scene_id});
+    ASSERT_TRUE(row.peak_memory_kib) << row.scene_id << " " << row.role;
+    EXPECT_EQ(row.peak_memory_kib, want.peak_memory_kib);
+    EXPECT_GT(*row.peak_memory_kib, 1024.0);  // the tracer's few MiB, not raygate's ~130
+    EXPECT_LT(*row.peak_memory_kib, 30 * 1024.0);
+    EXPECT_EQ(row.memory_verdict, want.memory_verdict);
+    if (row.role == "head") {
+      EXPECT_EQ(row.memory_verdict, "UNCHANGED");
+      ++verdicts;
+    }
+  }
+  EXPECT_EQ(verdicts, 4u);
 }
 
 }  // namespace

@@ -85,9 +85,9 @@ TEST(StoreSqlite, SchemaIsVersionedInWalModeAndMigratedOnce) {
   open_store(path.string());
   open_store(path.string());  // reopening applies nothing again
   Raw raw(path);
-  EXPECT_EQ(raw.text("PRAGMA user_version"), "2");
+  EXPECT_EQ(raw.text("PRAGMA user_version"), "3");
   EXPECT_EQ(raw.text("PRAGMA journal_mode"), "wal");
-  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "2");
+  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "3");
   EXPECT_EQ(raw.text("SELECT description FROM schema_migrations WHERE version = 1"),
             "documents, revisions, scene_results");
 }
@@ -97,12 +97,12 @@ TEST(StoreSqlite, ASecondMigrationAppliesOnceOnTopOfTheFirst) {
   const auto path = dir.path() / "results.db";
   open_store(path.string());
   std::vector<Migration> migrations(store_migrations().begin(), store_migrations().end());
-  migrations.push_back({3, "documents.note", "ALTER TABLE documents ADD COLUMN note TEXT"});
+  migrations.push_back({4, "documents.note", "ALTER TABLE documents ADD COLUMN note TEXT"});
   SqliteDb db = SqliteDb::open(path, false);
-  EXPECT_EQ(migrate(db, migrations), 3);
-  EXPECT_EQ(migrate(db, migrations), 3);
+  EXPECT_EQ(migrate(db, migrations), 4);
+  EXPECT_EQ(migrate(db, migrations), 4);
   Raw raw(path);
-  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "3");
+  EXPECT_EQ(raw.text("SELECT count(*) FROM schema_migrations"), "4");
   EXPECT_EQ(raw.exec("SELECT note FROM documents"), SQLITE_OK);
 }
 
@@ -112,10 +112,10 @@ TEST(StoreSqlite, AFailingMigrationLeavesTheVersionBefore) {
   open_store(path.string());
   std::vector<Migration> migrations(store_migrations().begin(), store_migrations().end());
   migrations.push_back(
-      {3, "broken", "CREATE TABLE extra (x); INSERT INTO no_such_table VALUES (1)"});
+      {4, "broken", "CREATE TABLE extra (x); INSERT INTO no_such_table VALUES (1)"});
   SqliteDb db = SqliteDb::open(path, false);
   EXPECT_THROW(migrate(db, migrations), InfraError);
-  EXPECT_EQ(schema_version(db), 2);
+  EXPECT_EQ(schema_version(db), 3);
   Raw raw(path);
   EXPECT_EQ(raw.text("SELECT count(*) FROM sqlite_master WHERE name = 'extra'"), "0");
 }

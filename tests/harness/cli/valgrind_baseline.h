@@ -1,6 +1,7 @@
 // Skipping a test case that runs raygate-baseline under valgrind, in the builds where valgrind
 // cannot run it. Under the sanitizers (the asan preset) the baseline carries AddressSanitizer,
-// whose shadow memory sits at fixed addresses that valgrind's own mappings take; CMake then
+// whose runtime must be the first library loaded; valgrind preloads its own first, so the
+// baseline stops at once ("ASan runtime does not come first in initial library list"). CMake then
 // defines RAYGATE_NO_VALGRIND_BASELINE to the reason (tests/harness/CMakeLists.txt). The case is
 // reported skipped with that reason, never passed. Release and debug builds run every case.
 #pragma once

@@ -13,3 +13,21 @@ function(raygate_instrument_flags target)
   # Appended after CMAKE_CXX_FLAGS_<CONFIG>, so this -O2 wins over a Debug build's -O0.
   target_compile_options(${target} PRIVATE -O2 -ffp-contract=off -fno-fast-math)
 endfunction()
+
+# Sanitized builds (the asan and fuzz presets put -fsanitize=... in CMAKE_CXX_FLAGS).
+set(RAYGATE_SANITIZED FALSE)
+if(CMAKE_CXX_FLAGS MATCHES "-fsanitize=")
+  set(RAYGATE_SANITIZED TRUE)
+endif()
+
+# raygate_unsanitized(target): build a program without the sanitizers even in a sanitized build.
+# Only for programs whose own footprint is what a test measures (a sanitizer's shadow memory
+# would be measured with it) or that must link statically (the sanitizer runtimes are shared
+# libraries that must be loaded first, so a -static program cannot carry them). The options come
+# after CMAKE_CXX_FLAGS and CMAKE_EXE_LINKER_FLAGS on the command lines, so they win.
+function(raygate_unsanitized target)
+  if(RAYGATE_SANITIZED)
+    target_compile_options(${target} PRIVATE -fno-sanitize=all)
+    target_link_options(${target} PRIVATE -fno-sanitize=all)
+  endif()
+endfunction()

@@ -18,6 +18,7 @@
 #include "checkout/git_fixture.h"
 #include "cli_support.h"
 #include "results/results.h"
+#include "valgrind_baseline.h"
 
 namespace raygate::test {
 namespace {
@@ -164,6 +165,7 @@ TEST_F(IdentityRatio, ReportedAgainstInProcess) {
 // The same yardstick under cachegrind: both sides' runs are simulated whole processes, the
 // identity's being /bin/sh exec'ing the baseline, so its ratio is 1 to a tenth of a percent.
 TEST_F(IdentityRatio, SimulatedCyclesAgainstSimulatedCyclesIsOne) {
+  RAYGATE_SKIP_UNLESS_VALGRIND_RUNS_BASELINE();
   const ResultsDocument d =
       measure(adapter("identity", {{"source", "process"}, {"metric", "wall"}}, ""),
               {"--timing", "sim"}, simulated_suite_, "2");

@@ -16,6 +16,7 @@
 #include "cli_support.h"
 #include "results/results.h"
 #include "tracer_fixture.h"
+#include "valgrind_baseline.h"
 
 namespace raygate::test {
 namespace {
@@ -142,6 +143,7 @@ class MemoryExplainSimCli : public MemoryExplainCli {
 };
 
 TEST_F(MemoryExplainSimCli, ASlowerFunctionIsFirstInTheSimulatedExplanation) {
+  RAYGATE_SKIP_UNLESS_VALGRIND_RUNS_BASELINE();
   const std::string base = commit(outlined(sources_.fast), "tracer");
   const std::string head = commit(slower_shade(sources_.fast), "shade spins");
   const CliRun r = compare(
@@ -161,6 +163,7 @@ TEST_F(MemoryExplainSimCli, ASlowerFunctionIsFirstInTheSimulatedExplanation) {
 }
 
 TEST_F(MemoryExplainSimCli, BisectEndsWithTheCulpritsExplanation) {
+  RAYGATE_SKIP_UNLESS_VALGRIND_RUNS_BASELINE();
   const std::string good = commit(outlined(sources_.fast), "tracer");
   const std::string bad = commit(slower_shade(sources_.fast), "shade spins");
   const CliRun r =
@@ -178,6 +181,7 @@ TEST_F(MemoryExplainSimCli, BisectEndsWithTheCulpritsExplanation) {
 }
 
 TEST_F(MemoryExplainSimCli, AnUnchangedSceneIsNotExplained) {
+  RAYGATE_SKIP_UNLESS_VALGRIND_RUNS_BASELINE();
   const std::string sha = commit(outlined(sources_.fast), "tracer");
   const CliRun r = compare(sha, sha, {"--timing", "sim"});
   EXPECT_EQ(r.exit_code, 0) << r.out;

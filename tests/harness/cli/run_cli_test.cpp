@@ -287,7 +287,9 @@ TEST_F(RunCli, UnreadableImageFailsEvenWithoutGoldens) {
   commit(sources_.garbling, "write text, not an image");
   const CliRun r = run("HEAD", dir_.path() / "r.json", quick());
   EXPECT_EQ(r.exit_code, 1) << r.out;
-  const ImageCheck& check = read_results(dir_.path() / "r.json").scenes.at(0).images.at(0);
+  // Named: a reference through .at() into read_results(...)'s temporary would dangle (ASan).
+  const ResultsDocument d = read_results(dir_.path() / "r.json");
+  const ImageCheck& check = d.scenes.at(0).images.at(0);
   EXPECT_EQ(check.verdict, ImageVerdict::fail);
   EXPECT_TRUE(has(check.error, "cannot read image")) << check.error;
   EXPECT_TRUE(has(r.out, "cannot read image")) << r.out;

@@ -15,6 +15,7 @@
 #include "cli_support.h"
 #include "results/results.h"
 #include "tracer_fixture.h"
+#include "valgrind_baseline.h"
 
 namespace raygate::test {
 namespace {
@@ -100,6 +101,7 @@ class SimCli : public TracerRepoTest {
 };
 
 TEST_F(SimCli, AaCompareIsExactlyZeroAfterTwoRoundsAndTheBaselineIsThenCached) {
+  RAYGATE_SKIP_UNLESS_VALGRIND_RUNS_BASELINE();
   const std::string sha = commit(sources_.fast, "tracer");
   const fs::path bin = counting_valgrind();
   const CliRun r = compare(sha, sha, {}, bin);
@@ -135,6 +137,7 @@ TEST_F(SimCli, AaCompareIsExactlyZeroAfterTwoRoundsAndTheBaselineIsThenCached) {
 }
 
 TEST_F(SimCli, TwiceSlowerHeadExitsOneAtPlusHundredPercent) {
+  RAYGATE_SKIP_UNLESS_VALGRIND_RUNS_BASELINE();
   const std::string base = commit(sources_.fast, "tracer");
   // Parses and renders the scene twice (the second image checked, so it is not optimized
   // away): twice the work but the process's start-up and the image's writing, about 1%.
@@ -153,6 +156,7 @@ TEST_F(SimCli, TwiceSlowerHeadExitsOneAtPlusHundredPercent) {
 }
 
 TEST_F(SimCli, OnePercentSlowerHeadIsRegressedAtAHalfPercentLimit) {
+  RAYGATE_SKIP_UNLESS_VALGRIND_RUNS_BASELINE();
   const std::string base = commit(sources_.fast, "tracer");
   const std::string head = commit(patched(sources_.fast, "constexpr int kRetraceEvery = 0;",
                                           "constexpr int kRetraceEvery = 100;"),
@@ -170,6 +174,7 @@ TEST_F(SimCli, OnePercentSlowerHeadIsRegressedAtAHalfPercentLimit) {
 }
 
 TEST_F(SimCli, BisectFindsTheTenPercentCommitAmongEight) {
+  RAYGATE_SKIP_UNLESS_VALGRIND_RUNS_BASELINE();
   const auto retracing = [this](int every) {
     return patched(sources_.fast, "constexpr int kRetraceEvery = 0;",
                    "constexpr int kRetraceEvery = " + std::to_string(every) + ";");

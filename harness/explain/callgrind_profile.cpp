@@ -9,36 +9,10 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "explain/profile_fields.h"
 
 namespace raygate {
 namespace {
-
-std::vector<std::string_view> fields_of(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t at = 0;
-  while (at < line.size()) {
-    const std::size_t start = line.find_first_not_of(" \t\r", at);
-    if (start == std::string_view::npos) break;
-    const std::size_t end = line.find_first_of(" \t\r", start);
-    out.push_back(line.substr(start, end == std::string_view::npos ? end : end - start));
-    at = end == std::string_view::npos ? line.size() : end;
-  }
-  return out;
-}
-
-// The counter an event name is; nullptr for events the explanation does not keep.
-std::uint64_t* counter_named(SimulatedCounters& c, std::string_view event) {
-  if (event == "Ir") return &c.ir;
-  if (event == "I1mr") return &c.i1mr;
-  if (event == "ILmr") return &c.ilmr;
-  if (event == "Dr") return &c.dr;
-  if (event == "D1mr") return &c.d1mr;
-  if (event == "DLmr") return &c.dlmr;
-  if (event == "Dw") return &c.dw;
-  if (event == "D1mw") return &c.d1mw;
-  if (event == "DLmw") return &c.dlmw;
-  return nullptr;
-}
 
 // The kinds of names, each with its own compression ids.
 enum class NameKind { file, function, object };
@@ -82,9 +56,9 @@ class CallgrindReader {
   void header(std::string_view key, std::string_view value) {
     if (key == "events") {
       events_.clear();
-      for (const std::string_view e : fields_of(value)) events_.emplace_back(e);
+      for (const std::string_view e : profile_fields(value)) events_.emplace_back(e);
     } else if (key == "positions") {
-      positions_ = fields_of(value).size();
+      positions_ = profile_fields(value).size();
     }
   }
 
@@ -131,7 +105,7 @@ class CallgrindReader {
 
   void cost_line(std::string_view text) {
     if (function_.empty()) fail("a cost line before any 'fn=' line");
-    const std::vector<std::string_view> fields = fields_of(text);
+    const std::vector<std::string_view> fields = profile_fields(text);
     if (fields.size() < positions_) fail("a cost line without its position");
     if (fields.size() - positions_ > events_.size()) {
       fail(fmt::format("{} counts for the {} events named", fields.size() - positions_,

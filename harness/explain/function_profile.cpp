@@ -11,35 +11,10 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "explain/profile_fields.h"
 
 namespace raygate {
 namespace {
-
-std::vector<std::string_view> fields_of(std::string_view line) {
-  std::vector<std::string_view> out;
-  std::size_t at = 0;
-  while (at < line.size()) {
-    const std::size_t start = line.find_first_not_of(" \t\r", at);
-    if (start == std::string_view::npos) break;
-    const std::size_t end = line.find_first_of(" \t\r", start);
-    out.push_back(line.substr(start, end == std::string_view::npos ? end : end - start));
-    at = end == std::string_view::npos ? line.size() : end;
-  }
-  return out;
-}
-
-std::uint64_t* counter_named(SimulatedCounters& c, std::string_view event) {
-  if (event == "Ir") return &c.ir;
-  if (event == "I1mr") return &c.i1mr;
-  if (event == "ILmr") return &c.ilmr;
-  if (event == "Dr") return &c.dr;
-  if (event == "D1mr") return &c.d1mr;
-  if (event == "DLmr") return &c.dlmr;
-  if (event == "Dw") return &c.dw;
-  if (event == "D1mw") return &c.d1mw;
-  if (event == "DLmw") return &c.dlmw;
-  return nullptr;  // an event the cost model does not use (branch simulation): not kept
-}
 
 // One file's parse: the events' order, the current file and function, the costs so far.
 class ProfileReader {
@@ -50,7 +25,7 @@ class ProfileReader {
     number_ = number;
     if (text.starts_with("events:")) {
       events_.clear();
-      for (const std::string_view e : fields_of(text.substr(7))) events_.emplace_back(e);
+      for (const std::string_view e : profile_fields(text.substr(7))) events_.emplace_back(e);
     } else if (text.starts_with("fl=") || text.starts_with("fi=") || text.starts_with("fe=")) {
       file_ = std::string(text.substr(3));
     } else if (text.starts_with("fn=")) {
@@ -72,7 +47,7 @@ class ProfileReader {
 
   void add_costs(std::string_view text) {
     if (function_.empty()) fail("a cost line before any 'fn=' line");
-    const std::vector<std::string_view> fields = fields_of(text);
+    const std::vector<std::string_view> fields = profile_fields(text);
     if (fields.size() - 1 > events_.size()) {
       fail(fmt::format("{} counts for the {} events named", fields.size() - 1, events_.size()));
     }

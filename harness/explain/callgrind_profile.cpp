@@ -143,19 +143,6 @@ class CallgrindReader {
   FunctionProfile profile_;
 };
 
-void add_into(FunctionProfile& sum, const FunctionProfile& part) {
-  for (const auto& [name, cost] : part) {
-    FunctionCost& into = sum[name];
-    if (into.name.empty()) {
-      into.name = cost.name;
-      into.file = cost.file;
-    }
-    into.self += cost.self;
-    into.inclusive += cost.inclusive;
-    into.inclusive_known = true;
-  }
-}
-
 }  // namespace
 
 FunctionProfile parse_callgrind_profile(std::string_view text, const std::string& origin) {
@@ -167,16 +154,7 @@ FunctionProfile parse_callgrind_profile(std::string_view text, const std::string
 }
 
 FunctionProfile read_callgrind_profiles(const std::filesystem::path& dir) {
-  FunctionProfile sum;
-  bool any = false;
-  std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-    if (!entry.path().filename().string().starts_with("callgrind.out.")) continue;
-    add_into(sum, parse_callgrind_profile(read_file(entry.path()), entry.path().string()));
-    any = true;
-  }
-  if (!any) throw InfraError("no callgrind output in " + dir.string());
-  return sum;
+  return sum_profile_files(dir, "callgrind.out.", "callgrind", &parse_callgrind_profile);
 }
 
 ProcessSpec under_callgrind(ProcessSpec spec, const Cachegrind& valgrind,

@@ -83,6 +83,8 @@ void add_into(FunctionProfile& sum, const FunctionProfile& part) {
       into.file = cost.file;
     }
     into.self += cost.self;
+    into.inclusive += cost.inclusive;
+    into.inclusive_known = into.inclusive_known || cost.inclusive_known;
   }
 }
 
@@ -105,17 +107,22 @@ FunctionProfile parse_function_profile(std::string_view text, const std::string&
   return reader.finish();
 }
 
-FunctionProfile read_function_profiles(const std::filesystem::path& dir) {
+FunctionProfile sum_profile_files(const std::filesystem::path& dir, std::string_view prefix,
+                                  std::string_view tool, ProfileParser parse) {
   FunctionProfile sum;
   bool any = false;
   std::error_code ec;
   for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-    if (!entry.path().filename().string().starts_with("cg.")) continue;
-    add_into(sum, parse_function_profile(read_file(entry.path()), entry.path().string()));
+    if (!entry.path().filename().string().starts_with(prefix)) continue;
+    add_into(sum, parse(read_file(entry.path()), entry.path().string()));
     any = true;
   }
-  if (!any) throw InfraError("no cachegrind output in " + dir.string());
+  if (!any) throw InfraError(fmt::format("no {} output in {}", tool, dir.string()));
   return sum;
+}
+
+FunctionProfile read_function_profiles(const std::filesystem::path& dir) {
+  return sum_profile_files(dir, "cg.", "cachegrind", &parse_function_profile);
 }
 
 }  // namespace raygate

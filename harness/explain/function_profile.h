@@ -35,6 +35,13 @@ std::string demangled(std::string_view symbol);
 // number, more counts than events, or no "events:" line.
 FunctionProfile parse_function_profile(std::string_view text, const std::string& origin);
 
+// One profile file's text parsed (`origin` names it in errors).
+using ProfileParser = FunctionProfile (*)(std::string_view text, const std::string& origin);
+// The sum by function of every file in `dir` whose name starts with `prefix`, each read by
+// `parse`; InfraError naming `tool` when there is none.
+FunctionProfile sum_profile_files(const std::filesystem::path& dir, std::string_view prefix,
+                                  std::string_view tool, ProfileParser parse);
+
 // The sum of every cachegrind output file in `dir` (cg.*); InfraError when there is none.
 FunctionProfile read_function_profiles(const std::filesystem::path& dir);
 

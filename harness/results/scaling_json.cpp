@@ -21,6 +21,14 @@ constexpr std::array<std::pair<FitQuality, std::string_view>, 5> kQualityNames{{
     {FitQuality::scattered, "scattered"},
     {FitQuality::too_few_points, "too-few-points"}}};
 
+// An optional part: read when the key is there (absent rather than null, as written).
+template <typename Read>
+auto if_present(const JsonField& j, const char* key, Read read)
+    -> std::optional<decltype(read(j))> {
+  if (!j.has(key)) return std::nullopt;
+  return read(j.member(key));
+}
+
 json fit_json(const PowerFit& f) {
   return json{{"points", f.points},
               {"exponent", f.exponent},
@@ -81,8 +89,8 @@ ScalingPoint point_from(const JsonField& j) {
   p.baseline_seconds = number_or_nan(j.member("baseline_seconds"));
   p.seconds = number_map(j.member("seconds"));
   p.ratios = number_map(j.member("ratios"));
-  if (j.has("change")) p.change = number_or_nan(j.member("change"));
-  if (j.has("change_interval")) p.change_interval = interval_from(j.member("change_interval"));
+  p.change = if_present(j, "change", number_or_nan);
+  p.change_interval = if_present(j, "change_interval", interval_from);
   return p;
 }
 
@@ -119,15 +127,13 @@ json change_json(const ExponentChange& c) {
 
 // "judged" is not read: it says which fit judged(), which large_end_fit's presence decides.
 ExponentChange change_from(const JsonField& j) {
-  ExponentChange c;
-  c.fit = fit_from(j.member("fit"));
-  if (j.has("large_end_fit")) c.large_end = fit_from(j.member("large_end_fit"));
-  c.verdict = verdict_from(j.member("verdict"));
-  c.limit = number_or_nan(j.member("limit"));
-  c.slowdown = number_or_nan(j.member("max_slowdown"));
-  if (j.has("crossing")) c.crossing = projection_from(j.member("crossing"));
-  if (j.has("largest")) c.largest = projection_from(j.member("largest"));
-  return c;
+  return {.fit = fit_from(j.member("fit")),
+          .large_end = if_present(j, "large_end_fit", fit_from),
+          .verdict = verdict_from(j.member("verdict")),
+          .limit = number_or_nan(j.member("limit")),
+          .slowdown = number_or_nan(j.member("max_slowdown")),
+          .crossing = if_present(j, "crossing", projection_from),
+          .largest = if_present(j, "largest", projection_from)};
 }
 
 json family_json(const FamilyScaling& f) {
@@ -154,7 +160,7 @@ FamilyScaling family_from(const JsonField& j) {
     const JsonField fits = roles.member(role);
     f.roles[role] = RoleScaling{fit_from(fits.member("time")), fit_from(fits.member("ratio"))};
   }
-  if (j.has("change")) f.change = change_from(j.member("change"));
+  f.change = if_present(j, "change", change_from);
   return f;
 }
 

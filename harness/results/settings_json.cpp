@@ -2,9 +2,11 @@
 // kept as it came, so a newer raygate's settings survive a read and write by this one.
 #include "results/settings_json.h"
 
-#include <algorithm>
 #include <array>
+#include <set>
+#include <string>
 #include <string_view>
+#include <vector>
 
 #include "results/typed_fields.h"
 
@@ -14,17 +16,39 @@ namespace {
 using json = nlohmann::json;
 using namespace typed_fields;
 
-// Every key MeasurementSettings has a field for; the rest go to `unknown`.
-constexpr auto kKnownKeys = std::to_array<std::string_view>(
-    {"schedule", "warmup_runs", "pin_cpus", "pinned_by", "duet_cpus", "round_cpus",
-     "baseline_rounds", "repeats", "target_relative_half_width", "min_rounds", "max_rounds",
-     "max_seconds_per_scene", "max_minutes", "metric", "metric_by_threads", "timing_source",
-     "tracer_clock", "baseline_clock", "threads", "golden_dir", "goldens", "policy_file",
-     "max_slowdown", "significance", "family_significance", "max_exponent_increase",
-     "max_memory_increase", "shard", "merged_shards"});
-
-bool known_key(std::string_view key) {
-  return std::find(kKnownKeys.begin(), kKnownKeys.end(), key) != kKnownKeys.end();
+// Every field with its key, once: the writer, the reader and the list of known keys all walk
+// it, so a new setting is a field in measurement_settings.h and a line here.
+template <typename Settings, typename Visit>
+void each_field(Settings& s, Visit&& visit) {
+  visit("schedule", s.schedule);
+  visit("warmup_runs", s.warmup_runs);
+  visit("pin_cpus", s.pin_cpus);
+  visit("pinned_by", s.pinned_by);
+  visit("duet_cpus", s.duet_cpus);
+  visit("round_cpus", s.round_cpus);
+  visit("baseline_rounds", s.baseline_rounds);
+  visit("repeats", s.repeats);
+  visit("target_relative_half_width", s.target_relative_half_width);
+  visit("min_rounds", s.min_rounds);
+  visit("max_rounds", s.max_rounds);
+  visit("max_seconds_per_scene", s.max_seconds_per_scene);
+  visit("max_minutes", s.max_minutes);
+  visit("metric", s.metric);
+  visit("metric_by_threads", s.metric_by_threads);
+  visit("timing_source", s.timing_source);
+  visit("tracer_clock", s.tracer_clock);
+  visit("baseline_clock", s.baseline_clock);
+  visit("threads", s.threads);
+  visit("golden_dir", s.golden_dir);
+  visit("goldens", s.goldens);
+  visit("policy_file", s.policy_file);
+  visit("max_slowdown", s.max_slowdown);
+  visit("significance", s.significance);
+  visit("family_significance", s.family_significance);
+  visit("max_exponent_increase", s.max_exponent_increase);
+  visit("max_memory_increase", s.max_memory_increase);
+  visit("shard", s.shard);
+  visit("merged_shards", s.merged_shards);
 }
 
 // An enum read by its word: the words are the enum's own to_string, so one table spells them.
@@ -85,123 +109,58 @@ MergedShard merged_from(const JsonField& j) {
   return m;
 }
 
-template <typename T, typename Write>
-void put(json& j, const char* key, const std::optional<T>& value, Write write) {
-  if (value) j[key] = write(*value);
+// A value as the document writes it: numbers, flags, strings and lists as they are, enums as
+// their words, the shard records as objects.
+template <typename T>
+json value_json(const T& value) {
+  return json(value);
 }
-
-template <typename T, typename Read>
-void take(const JsonField& settings, const char* key, std::optional<T>& out, Read read) {
-  if (settings.has(key)) out = read(settings.member(key));
-}
-
-const auto as_is = [](const auto& value) { return json(value); };
-const auto as_word = [](auto value) { return json(std::string(to_string(value))); };
-const auto a_string = [](const JsonField& f) { return f.as_string(); };
-const auto a_flag = [](const JsonField& f) { return f.as_bool(); };
-const auto a_number = [](const JsonField& f) { return number_or_nan(f); };
-const auto an_int = [](const JsonField& f) { return int_of(f); };
-const auto a_count = [](const JsonField& f) { return count_of(f); };
-const auto cpus = [](const JsonField& f) { return int_list(f); };
-
-void put_schedule(json& j, const MeasurementSettings& s) {
-  put(j, "schedule", s.schedule, as_word);
-  put(j, "warmup_runs", s.warmup_runs, as_is);
-  put(j, "pin_cpus", s.pin_cpus, as_is);
-  put(j, "pinned_by", s.pinned_by, as_word);
-  put(j, "duet_cpus", s.duet_cpus, as_is);
-  put(j, "round_cpus", s.round_cpus, as_is);
-  put(j, "baseline_rounds", s.baseline_rounds, as_is);
-  put(j, "repeats", s.repeats, as_is);
-  put(j, "target_relative_half_width", s.target_relative_half_width, as_is);
-  put(j, "min_rounds", s.min_rounds, as_is);
-  put(j, "max_rounds", s.max_rounds, as_is);
-  put(j, "max_seconds_per_scene", s.max_seconds_per_scene, as_is);
-  put(j, "max_minutes", s.max_minutes, as_is);
-}
-
-void take_schedule(const JsonField& f, MeasurementSettings& s) {
-  take(f, "schedule", s.schedule,
-       [](const JsonField& w) { return word_from(w, kSchedules, "schedule"); });
-  take(f, "warmup_runs", s.warmup_runs, an_int);
-  take(f, "pin_cpus", s.pin_cpus, cpus);
-  take(f, "pinned_by", s.pinned_by,
-       [](const JsonField& w) { return word_from(w, kPinners, "pinner"); });
-  take(f, "duet_cpus", s.duet_cpus, cpus);
-  take(f, "round_cpus", s.round_cpus, cpus);
-  take(f, "baseline_rounds", s.baseline_rounds, a_count);
-  take(f, "repeats", s.repeats, a_count);
-  take(f, "target_relative_half_width", s.target_relative_half_width, a_number);
-  take(f, "min_rounds", s.min_rounds, a_count);
-  take(f, "max_rounds", s.max_rounds, a_count);
-  take(f, "max_seconds_per_scene", s.max_seconds_per_scene, a_number);
-  take(f, "max_minutes", s.max_minutes, a_number);
-}
-
-void put_clocks_and_policy(json& j, const MeasurementSettings& s) {
-  put(j, "metric", s.metric, as_is);
-  put(j, "metric_by_threads", s.metric_by_threads, as_is);
-  put(j, "timing_source", s.timing_source, as_word);
-  put(j, "tracer_clock", s.tracer_clock, as_is);
-  put(j, "baseline_clock", s.baseline_clock, as_is);
-  put(j, "threads", s.threads, as_is);
-  put(j, "golden_dir", s.golden_dir, as_is);
-  put(j, "goldens", s.goldens, as_is);
-  put(j, "policy_file", s.policy_file, as_is);
-  put(j, "max_slowdown", s.max_slowdown, as_is);
-  put(j, "significance", s.significance, as_is);
-  put(j, "family_significance", s.family_significance, as_is);
-  put(j, "max_exponent_increase", s.max_exponent_increase, as_is);
-  put(j, "max_memory_increase", s.max_memory_increase, as_is);
-}
-
-void take_clocks_and_policy(const JsonField& f, MeasurementSettings& s) {
-  take(f, "metric", s.metric, a_string);
-  take(f, "metric_by_threads", s.metric_by_threads, a_flag);
-  take(f, "timing_source", s.timing_source,
-       [](const JsonField& w) { return word_from(w, kSources, "timing source"); });
-  take(f, "tracer_clock", s.tracer_clock, a_string);
-  take(f, "baseline_clock", s.baseline_clock, a_string);
-  take(f, "threads", s.threads, an_int);
-  take(f, "golden_dir", s.golden_dir, a_string);
-  take(f, "goldens", s.goldens, a_string);
-  take(f, "policy_file", s.policy_file, a_string);
-  take(f, "max_slowdown", s.max_slowdown, a_number);
-  take(f, "significance", s.significance, a_number);
-  take(f, "family_significance", s.family_significance, a_number);
-  take(f, "max_exponent_increase", s.max_exponent_increase, a_number);
-  take(f, "max_memory_increase", s.max_memory_increase, a_number);
-}
-
-json merged_list(const std::vector<MergedShard>& shards) {
+json value_json(ScheduleKind kind) { return std::string(to_string(kind)); }
+json value_json(TimingSource source) { return std::string(to_string(source)); }
+json value_json(PinnedBy pinned_by) { return std::string(to_string(pinned_by)); }
+json value_json(const ShardRecord& record) { return shard_json(record); }
+json value_json(const std::vector<MergedShard>& shards) {
   json list = json::array();
   for (const MergedShard& shard : shards) list.push_back(merged_json(shard));
   return list;
 }
 
-std::vector<MergedShard> merged_list_from(const JsonField& field) {
-  std::vector<MergedShard> shards;
-  for (const JsonField& shard : field.elements()) shards.push_back(merged_from(shard));
-  return shards;
+// A value read into its field, checked on the way (typed_fields.h); a double written null (not
+// finite) reads back as NaN.
+void read_value(const JsonField& f, std::optional<int>& out) { out = int_of(f); }
+void read_value(const JsonField& f, std::optional<std::size_t>& out) { out = count_of(f); }
+void read_value(const JsonField& f, std::optional<double>& out) { out = number_or_nan(f); }
+void read_value(const JsonField& f, std::optional<bool>& out) { out = f.as_bool(); }
+void read_value(const JsonField& f, std::optional<std::string>& out) { out = f.as_string(); }
+void read_value(const JsonField& f, std::optional<std::vector<int>>& out) { out = int_list(f); }
+void read_value(const JsonField& f, std::optional<ScheduleKind>& out) {
+  out = word_from(f, kSchedules, "schedule");
+}
+void read_value(const JsonField& f, std::optional<TimingSource>& out) {
+  out = word_from(f, kSources, "timing source");
+}
+void read_value(const JsonField& f, std::optional<PinnedBy>& out) {
+  out = word_from(f, kPinners, "pinner");
+}
+void read_value(const JsonField& f, std::optional<ShardRecord>& out) { out = shard_from(f); }
+void read_value(const JsonField& f, std::optional<std::vector<MergedShard>>& out) {
+  out.emplace();
+  for (const JsonField& shard : f.elements()) out->push_back(merged_from(shard));
 }
 
 }  // namespace
 
 std::string_view to_string(PinnedBy pinned_by) {
-  switch (pinned_by) {
-    case PinnedBy::none: return "";
-    case PinnedBy::adapter: return "adapter";
-    case PinnedBy::option: return "--pin";
-  }
-  return "";
+  // The words as documents have always written them: the option's own name for --pin.
+  constexpr std::array<std::string_view, 3> kWords{"", "adapter", "--pin"};
+  return kWords.at(static_cast<std::size_t>(pinned_by));
 }
 
 json to_json(const MeasurementSettings& s) {
   json j = json::object();
-  put_schedule(j, s);
-  put_clocks_and_policy(j, s);
-  put(j, "shard", s.shard, shard_json);
-  put(j, "merged_shards", s.merged_shards, merged_list);
+  each_field(s, [&](const char* key, const auto& field) {
+    if (field) j[key] = value_json(*field);
+  });
   if (s.unknown.is_object()) {
     for (const auto& [key, value] : s.unknown.items()) j[key] = value;
   }
@@ -211,13 +170,15 @@ json to_json(const MeasurementSettings& s) {
 MeasurementSettings settings_from_json(const JsonField& field) {
   MeasurementSettings s;
   if (field.value().is_null()) return s;
-  for (const std::string& key : field.keys()) {  // fails unless an object
-    if (!known_key(key)) s.unknown[key] = field.member(key).value();
+  const std::vector<std::string> keys = field.keys();  // fails unless an object
+  std::set<std::string> known;
+  each_field(s, [&](const char* key, auto& out) {
+    known.insert(key);
+    if (field.has(key)) read_value(field.member(key), out);
+  });
+  for (const std::string& key : keys) {
+    if (!known.contains(key)) s.unknown[key] = field.member(key).value();
   }
-  take_schedule(field, s);
-  take_clocks_and_policy(field, s);
-  take(field, "shard", s.shard, shard_from);
-  take(field, "merged_shards", s.merged_shards, merged_list_from);
   return s;
 }
 

@@ -196,9 +196,9 @@ TEST(GrowthPolicyTest, MaxExponentIncreaseIsReadAndChecked) {
                    0.25);
   EXPECT_THROW(parse_policy(R"({"max_exponent_increase": -1})", "p.json"), UsageError);
   std::string note;
-  EXPECT_DOUBLE_EQ(
-      recorded_policy(nlohmann::json{{"max_exponent_increase", 0.4}}, note).max_exponent_increase,
-      0.4);
+  MeasurementSettings settings;
+  settings.max_exponent_increase = 0.4;
+  EXPECT_DOUBLE_EQ(recorded_policy(settings, note).max_exponent_increase, 0.4);
 }
 
 }  // namespace

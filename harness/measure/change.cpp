@@ -219,9 +219,8 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
   // Below the rounds the interval that decides needs to be bounded at all, those rounds are the
   // estimate: a point estimate from a handful of rounds says too little to call a scene
   // hopeless or cheap.
-  const std::size_t to_bound = rounds_to_bound(
-      summary, deciding_interval(summary, towards_unchanged ? ChangeVerdict::unchanged
-                                                            : ChangeVerdict::regressed));
+  const std::size_t to_bound =
+      rounds_to_bound(summary, deciding_interval(summary, ChangeVerdict::inconclusive, threshold));
   if (summary.rounds < to_bound) return to_bound;
   // Within a tenth of the limit the point estimate itself may fall on either side of it
   // whatever the rounds: no estimate.
@@ -246,9 +245,13 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
   return std::max(summary.rounds + 1, static_cast<std::size_t>(std::ceil(rounds - 1e-6)));
 }
 
-DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict) {
+DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict,
+                                   double threshold) {
+  const bool towards_unchanged =
+      verdict == ChangeVerdict::unchanged ||
+      (verdict == ChangeVerdict::inconclusive && std::abs(summary.change) < threshold);
   if (summary.interval_kind == ChangeIntervalKind::confidence_sequence && !summary.exact &&
-      verdict == ChangeVerdict::unchanged) {
+      towards_unchanged) {
     return {summary.equivalence_interval, summary.equivalence_confidence, summary.interval_kind};
   }
   return {summary.change_interval, summary.confidence, summary.interval_kind};
@@ -264,10 +267,11 @@ std::size_t rounds_to_bound(const ChangeSummary& summary, const DecidingInterval
   return min_values_for_median_sequence((1.0 - interval.confidence) / 2.0);
 }
 
-std::string change_with_interval(const ChangeSummary& summary, ChangeVerdict verdict) {
+std::string change_with_interval(const ChangeSummary& summary, ChangeVerdict verdict,
+                                 double threshold) {
   // Counted in simulated cycles, every count repeated: the change is a fact, not an estimate.
   if (summary.exact) return signed_percent(summary.change, 3) + " exact (simulated cycles)";
-  const DecidingInterval decided = deciding_interval(summary, verdict);
+  const DecidingInterval decided = deciding_interval(summary, verdict, threshold);
   if (const std::size_t needed = rounds_to_bound(summary, decided); summary.rounds < needed) {
     return fmt::format("{}, no interval yet (needs {} rounds)", signed_percent(summary.change),
                        needed);

@@ -219,7 +219,8 @@ std::string columns_line(const ResultsDocument& document) {
   if (!is_compare(document.kind)) return ratio + ", [its 95% bootstrap CI]";
   return ratio + " the baseline joined; head's = base's x (1 + change), so both move with the "
                  "change; change = median of per-round time(head) / time(base) - 1, [the "
-                 "interval its verdict was drawn from]";
+                 "interval its verdict was drawn from; INCONCLUSIVE: the one that would decide "
+                 "it]";
 }
 
 std::string cell_text(ColumnKind kind, const ResultsDocument& document, const SceneView& view,

@@ -8,6 +8,7 @@
 
 #include <fmt/core.h>
 
+#include "core/enum_words.h"
 #include "core/error.h"
 #include "core/format.h"
 #include "measure/confidence_sequence.h"
@@ -106,22 +107,20 @@ std::vector<double> compare_log_changes(std::span<const CompareRound> rounds) {
   return log_changes;
 }
 
+// The verdicts' words, each spelt once: documents, store rows and the console print them.
+constexpr EnumWords<ChangeVerdict, 4> kVerdictWords{{
+    {ChangeVerdict::unchanged, "UNCHANGED"}, {ChangeVerdict::improved, "IMPROVED"},
+    {ChangeVerdict::regressed, "REGRESSED"}, {ChangeVerdict::inconclusive, "INCONCLUSIVE"}}};
+constexpr EnumWords<ChangeIntervalKind, 2> kIntervalKindWords{{
+    {ChangeIntervalKind::order_statistic, "order-statistic"},
+    {ChangeIntervalKind::confidence_sequence, "confidence-sequence"}}};
+
 std::string_view to_string(ChangeVerdict verdict) {
-  switch (verdict) {
-    case ChangeVerdict::unchanged: return "UNCHANGED";
-    case ChangeVerdict::improved: return "IMPROVED";
-    case ChangeVerdict::regressed: return "REGRESSED";
-    case ChangeVerdict::inconclusive: return "INCONCLUSIVE";
-  }
-  return "UNKNOWN";
+  return word_of(kVerdictWords, verdict, "UNKNOWN");
 }
 
 std::optional<ChangeVerdict> change_verdict_named(std::string_view word) {
-  for (const ChangeVerdict verdict : {ChangeVerdict::unchanged, ChangeVerdict::improved,
-                                      ChangeVerdict::regressed, ChangeVerdict::inconclusive}) {
-    if (to_string(verdict) == word) return verdict;
-  }
-  return std::nullopt;
+  return value_of(kVerdictWords, word);
 }
 
 ChangeVerdict classify_change(double change, const Interval& change_interval, double threshold) {
@@ -144,13 +143,11 @@ ChangeVerdict classify_change(double change, const Interval& change_interval, do
 }
 
 std::string_view to_string(ChangeIntervalKind kind) {
-  return kind == ChangeIntervalKind::confidence_sequence ? "confidence-sequence" : "order-statistic";
+  return word_of(kIntervalKindWords, kind, "order-statistic");
 }
 
 std::optional<ChangeIntervalKind> change_interval_kind(std::string_view text) {
-  if (text == "confidence-sequence") return ChangeIntervalKind::confidence_sequence;
-  if (text == "order-statistic") return ChangeIntervalKind::order_statistic;
-  return std::nullopt;
+  return value_of(kIntervalKindWords, text);
 }
 
 SequentialIntervals sequential_intervals(std::span<const double> log_changes,

@@ -173,6 +173,20 @@ TEST(MeasureDecidingInterval, UnchangedPrintsTheEquivalenceSequenceAndTheRestThe
   EXPECT_FALSE(change_verdict_named("unchanged").has_value());
 }
 
+TEST(MeasureChangeWords, EveryVerdictAndIntervalKindReadsBackFromItsWord) {
+  for (const ChangeVerdict v : {ChangeVerdict::unchanged, ChangeVerdict::improved,
+                                ChangeVerdict::regressed, ChangeVerdict::inconclusive}) {
+    EXPECT_EQ(change_verdict_named(to_string(v)), v);
+  }
+  EXPECT_EQ(to_string(ChangeVerdict::inconclusive), "INCONCLUSIVE");
+  for (const ChangeIntervalKind kind :
+       {ChangeIntervalKind::order_statistic, ChangeIntervalKind::confidence_sequence}) {
+    EXPECT_EQ(change_interval_kind(to_string(kind)), kind);
+  }
+  EXPECT_EQ(to_string(ChangeIntervalKind::confidence_sequence), "confidence-sequence");
+  EXPECT_FALSE(change_interval_kind("order_statistic").has_value());
+}
+
 TEST(MeasureRoundsToDecide, ScaleWithTheSquareOfHowMuchTheIntervalMustNarrow) {
   // Towards UNCHANGED: half-width 4 points, room 3 - 1 = 2 points: four times the rounds.
   EXPECT_EQ(estimated_rounds_to_decide(sequence_summary(0.01, {-0.1, 0.1}, {-0.03, 0.05}, 20),

@@ -12,6 +12,7 @@
 #include "adapter/placeholders.h"
 #include "adapter/reported_time.h"
 #include "core/suggest.h"
+#include "core/enum_words.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/json_reader.h"
@@ -19,6 +20,18 @@
 
 namespace raygate {
 namespace {
+
+// The file's words for its enums, spelt once: read_enum offers them, to_string writes them.
+constexpr EnumWords<SceneFormat, 4> kSceneFormatWords{{
+    {SceneFormat::nff, "nff"}, {SceneFormat::pov, "pov"}, {SceneFormat::obj, "obj"},
+    {SceneFormat::pbrt, "pbrt"}}};
+constexpr EnumWords<TimingSource, 3> kTimingSourceWords{{
+    {TimingSource::process, "process"}, {TimingSource::reported, "reported"},
+    {TimingSource::simulated, "simulated"}}};
+constexpr EnumWords<TimeUnit, 2> kTimeUnitWords{{
+    {TimeUnit::seconds, "s"}, {TimeUnit::milliseconds, "ms"}}};
+constexpr EnumWords<ImageKind, 2> kImageKindWords{{
+    {ImageKind::deterministic, "deterministic"}, {ImageKind::monte_carlo, "monte-carlo"}}};
 
 using nlohmann::json;
 
@@ -51,6 +64,14 @@ std::size_t read_choice(const JsonField& field, const std::vector<std::string>& 
     message += " (did you mean '" + *guess + "'?)";
   }
   field.fail(message);
+}
+
+// One of an enum's words, offered in the table's order.
+template <typename Enum, std::size_t N>
+Enum read_enum(const JsonField& field, const EnumWords<Enum, N>& words) {
+  std::vector<std::string> choices;
+  for (const auto& [value, word] : words) choices.emplace_back(word);
+  return words[read_choice(field, choices)].first;
 }
 
 // A string that reaches a process (argument, environment value, path): C strings end at the
@@ -165,8 +186,7 @@ Timing read_timing(const JsonField& field) {
   field.expect_object({"source", "metric", "regex", "unit"});
   Timing timing;
   if (field.has("source")) {
-    timing.source = static_cast<TimingSource>(read_choice(field.member("source"),
-                                                          {"process", "reported", "simulated"}));
+    timing.source = read_enum(field.member("source"), kTimingSourceWords);
   }
   const bool reported = timing.source == TimingSource::reported;
   if (!reported) {
@@ -193,7 +213,7 @@ Timing read_timing(const JsonField& field) {
   timing.regex = regex.as_string();
   if (const auto error = reported_regex_error(timing.regex)) regex.fail(*error);
   if (field.has("unit")) {
-    timing.unit = static_cast<TimeUnit>(read_choice(field.member("unit"), {"s", "ms"}));
+    timing.unit = read_enum(field.member("unit"), kTimeUnitWords);
   }
   return timing;
 }
@@ -281,7 +301,7 @@ void check_image(const JsonField& root, const Adapter& adapter) {
 }
 
 ImageKind read_image_kind(const JsonField& field) {
-  return static_cast<ImageKind>(read_choice(field, {"deterministic", "monte-carlo"}));
+  return read_enum(field, kImageKindWords);
 }
 
 // A Monte Carlo tracer must get a different seed for every run, or its runs are one sample
@@ -304,8 +324,7 @@ Adapter read_fields(const JsonField& root) {
   Adapter a;
   a.name = read_name(root.member("name"));
   if (root.has("description")) a.description = root.member("description").as_string();
-  a.scene_format = static_cast<SceneFormat>(
-      read_choice(root.member("scene_format"), {"nff", "pov", "obj", "pbrt"}));
+  a.scene_format = read_enum(root.member("scene_format"), kSceneFormatWords);
   if (root.has("source_dir")) a.source_dir = read_source_dir(root.member("source_dir"));
   if (root.has("requires")) a.packages = read_packages(root.member("requires"));
   if (root.has("build")) a.build = read_build(root.member("build"));
@@ -358,33 +377,18 @@ std::filesystem::path source_directory(const Adapter& adapter,
   return adapter.source_dir.empty() ? repo_root : repo_root / adapter.source_dir;
 }
 
-std::string_view to_string(SceneFormat format) {
-  switch (format) {
-    case SceneFormat::nff: return "nff";
-    case SceneFormat::pov: return "pov";
-    case SceneFormat::obj: return "obj";
-    case SceneFormat::pbrt: return "pbrt";
-  }
-  return "?";
-}
+std::string_view to_string(SceneFormat format) { return word_of(kSceneFormatWords, format, "?"); }
 
-std::string_view to_string(TimingSource source) {
-  switch (source) {
-    case TimingSource::process: return "process";
-    case TimingSource::reported: return "reported";
-    case TimingSource::simulated: return "simulated";
-  }
-  return "?";
-}
+std::string_view to_string(TimingSource source) { return word_of(kTimingSourceWords, source, "?"); }
 
 std::string_view to_string(TimingMetric metric) {
   return metric == TimingMetric::wall ? "wall" : "cpu";
 }
 
-std::string_view to_string(TimeUnit unit) { return unit == TimeUnit::seconds ? "s" : "ms"; }
+std::string_view to_string(TimeUnit unit) { return word_of(kTimeUnitWords, unit, "ms"); }
 
 std::string_view to_string(ImageKind kind) {
-  return kind == ImageKind::monte_carlo ? "monte-carlo" : "deterministic";
+  return word_of(kImageKindWords, kind, "deterministic");
 }
 
 }  // namespace raygate

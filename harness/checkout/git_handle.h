@@ -5,6 +5,7 @@
 
 #include <git2.h>
 
+#include <cstddef>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -74,34 +75,36 @@ using StatusListPtr = Handle<git_status_list, &git_status_list_free>;
 using SignaturePtr = Handle<git_signature, &git_signature_free>;
 using TreeBuilderPtr = Handle<git_treebuilder, &git_treebuilder_free>;
 
-// git_buf and git_strarray are structs the caller owns, not pointers: these dispose of them.
-class Buf {
+// Owns a struct the caller provides and libgit2 fills in place (git_buf, git_strarray), and
+// disposes of what libgit2 put in it with Dispose. Neither copied nor moved: libgit2 writes
+// through the address out() hands it.
+template <typename T, void (*Dispose)(T*)>
+class Disposed {
  public:
-  Buf() = default;
-  ~Buf() { git_buf_dispose(&buf_); }
-  Buf(const Buf&) = delete;
-  Buf& operator=(const Buf&) = delete;
-  git_buf* out() { return &buf_; }
-  std::string str() const {
-    return buf_.ptr == nullptr ? std::string() : std::string(buf_.ptr, buf_.size);
-  }
+  Disposed() = default;
+  ~Disposed() { Dispose(&value_); }
+  Disposed(const Disposed&) = delete;
+  Disposed& operator=(const Disposed&) = delete;
+  T* out() { return &value_; }
+
+ protected:
+  const T& value() const { return value_; }
 
  private:
-  git_buf buf_ = GIT_BUF_INIT;
+  T value_{};  // all zero, as GIT_BUF_INIT and an empty git_strarray are
 };
 
-class StrArray {
+class Buf : public Disposed<git_buf, &git_buf_dispose> {
  public:
-  StrArray() = default;
-  ~StrArray() { git_strarray_dispose(&array_); }
-  StrArray(const StrArray&) = delete;
-  StrArray& operator=(const StrArray&) = delete;
-  git_strarray* out() { return &array_; }
-  std::size_t size() const { return array_.count; }
-  std::string_view operator[](std::size_t i) const { return array_.strings[i]; }
+  std::string str() const {
+    return value().ptr == nullptr ? std::string() : std::string(value().ptr, value().size);
+  }
+};
 
- private:
-  git_strarray array_{nullptr, 0};
+class StrArray : public Disposed<git_strarray, &git_strarray_dispose> {
+ public:
+  std::size_t size() const { return value().count; }
+  std::string_view operator[](std::size_t i) const { return value().strings[i]; }
 };
 
 // libgit2's message for the last failure on this thread; git_error_last() may be NULL.

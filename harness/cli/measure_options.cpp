@@ -62,7 +62,7 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
   command.add_option("--timing", args.metric, timing_choices_help())
       ->check(CLI::IsMember(timing_mode_choices()));
   command.add_option("--repeats", args.repeats,
-                     "runs of each program per round, in mirrored order; the round keeps each "
+                     "runs of each program per round, interleaved; the round keeps each "
                      "one's fastest (steadier on a busy machine, at that many times the runs)")
       ->check(CLI::Range(1, 10))
       ->capture_default_str();

@@ -130,6 +130,24 @@ std::optional<std::string> no_golden(const std::filesystem::path& golden_dir,
   return std::nullopt;
 }
 
+// A scene's golden as either check (one image, or the statistics of several runs) needs it.
+struct GoldenLookup {
+  std::filesystem::path expected;      // the manifest's file, or where one would be
+  std::optional<std::string> missing;  // why no golden judges the image; nullopt when one does
+  std::string stem;                    // of the evidence files: <scene>.<role>-vs-golden
+};
+
+// `extension` names the file a scene without an entry would have, so that a report of a missing
+// golden still shows a path.
+GoldenLookup look_up_golden(Role role, const std::filesystem::path& golden_dir,
+                            const GoldenManifest& manifest, const GoldenEntry& rendered,
+                            std::string_view extension) {
+  const std::string& id = rendered.id;
+  const GoldenEntry* entry = manifest.find(id);
+  return {golden_dir / (entry != nullptr ? entry->file : id + std::string(extension)),
+          no_golden(golden_dir, manifest, rendered), id + "." + role_name(role) + "-vs-golden"};
+}
+
 }  // namespace
 
 ImageCheck check_runs_against_golden(Role role,
@@ -138,23 +156,19 @@ ImageCheck check_runs_against_golden(Role role,
                                      const GoldenManifest& manifest, const GoldenEntry& rendered,
                                      const NoisyThresholds& thresholds,
                                      const std::filesystem::path& evidence_dir) {
-  const std::string& id = rendered.id;
-  const GoldenEntry* entry = manifest.find(id);
-  const std::filesystem::path expected = golden_dir / (entry != nullptr ? entry->file : id + ".exr");
+  const GoldenLookup golden = look_up_golden(role, golden_dir, manifest, rendered, ".exr");
   const std::filesystem::path first = actual.empty() ? std::filesystem::path() : actual.front();
-  if (auto why = no_golden(golden_dir, manifest, rendered)) {
-    return without_golden(role, first, expected, *why);
-  }
-  const auto noise = manifest.noise.find(id);
+  if (golden.missing) return without_golden(role, first, golden.expected, *golden.missing);
+  const auto noise = manifest.noise.find(rendered.id);
   if (noise == manifest.noise.end()) {
-    return without_golden(role, first, expected,
-                          "the golden of '" + id + "' in " + golden_dir.string() +
+    return without_golden(role, first, golden.expected,
+                          "the golden of '" + rendered.id + "' in " + golden_dir.string() +
                               " is one image, not the statistics of several runs a Monte Carlo "
                               "tracer is judged by; bless it from a run of this adapter (raygate "
                               "golden bless --from-run RESULTS.json)");
   }
-  return check_noisy_against_stats(role, actual, expected, golden_dir, noise->second, thresholds,
-                                   evidence_dir, id + "." + role_name(role) + "-vs-golden");
+  return check_noisy_against_stats(role, actual, golden.expected, golden_dir, noise->second,
+                                   thresholds, evidence_dir, golden.stem);
 }
 
 ImageCheck check_against_golden(Role role, const std::filesystem::path& actual,
@@ -162,29 +176,10 @@ ImageCheck check_against_golden(Role role, const std::filesystem::path& actual,
                                 const GoldenManifest& manifest, const GoldenEntry& rendered,
                                 const ImageThresholds& thresholds,
                                 const std::filesystem::path& evidence_dir) {
-  const std::string& id = rendered.id;
-  const GoldenEntry* entry = manifest.find(id);
-  const std::filesystem::path expected =
-      golden_dir / (entry != nullptr ? entry->file : id + ".png");
-  if (manifest.entries.empty()) {
-    // The same words for every scene, so reports say it once (a tracer's first runs).
-    return without_golden(role, actual, expected,
-                          "no goldens in " + golden_dir.string() + " (none blessed yet)");
-  }
-  if (entry == nullptr || !std::filesystem::exists(expected)) {
-    return without_golden(role, actual, expected,
-                          "no golden image for '" + id + "' in " + golden_dir.string());
-  }
-  if (!same_settings(*entry, rendered)) {
-    return without_golden(
-        role, actual, expected,
-        "the golden of '" + id + "' in " + golden_dir.string() + " is " +
-            describe_settings(*entry) + ", but this suite renders " + describe_settings(rendered) +
-            "; bless goldens for this suite in a directory of their own (raygate golden bless "
-            "--suite SUITE --golden-dir DIR)");
-  }
-  return check_image(role, ImageReference::golden, actual, expected, thresholds, evidence_dir,
-                     id + "." + role_name(role) + "-vs-golden");
+  const GoldenLookup golden = look_up_golden(role, golden_dir, manifest, rendered, ".png");
+  if (golden.missing) return without_golden(role, actual, golden.expected, *golden.missing);
+  return check_image(role, ImageReference::golden, actual, golden.expected, thresholds,
+                     evidence_dir, golden.stem);
 }
 
 }  // namespace raygate

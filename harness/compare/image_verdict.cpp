@@ -1,24 +1,23 @@
 #include "compare/image_verdict.h"
 
+#include "core/enum_words.h"
+
 namespace raygate {
+namespace {
+
+// Each verdict's word, spelt once for documents, database rows and printed text.
+constexpr EnumWords<ImageVerdict, 5> kVerdictWords{{
+    {ImageVerdict::missing, "missing"}, {ImageVerdict::pass, "pass"}, {ImageVerdict::warn, "warn"},
+    {ImageVerdict::error, "error"}, {ImageVerdict::fail, "fail"}}};
+
+}  // namespace
 
 std::string_view to_string(ImageVerdict verdict) {
-  switch (verdict) {
-    case ImageVerdict::missing: return "missing";
-    case ImageVerdict::pass: return "pass";
-    case ImageVerdict::warn: return "warn";
-    case ImageVerdict::error: return "error";
-    case ImageVerdict::fail: return "fail";
-  }
-  return "error";
+  return word_of(kVerdictWords, verdict, "error");
 }
 
 std::optional<ImageVerdict> parse_image_verdict(std::string_view text) {
-  for (const ImageVerdict v : {ImageVerdict::missing, ImageVerdict::pass, ImageVerdict::warn,
-                               ImageVerdict::error, ImageVerdict::fail}) {
-    if (to_string(v) == text) return v;
-  }
-  return std::nullopt;
+  return value_of(kVerdictWords, text);
 }
 
 }  // namespace raygate

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 
+#include "core/enum_words.h"
+
 namespace raygate {
 
 namespace {
@@ -153,15 +155,15 @@ std::string tile_name(int tile_px) {
 
 std::string percent(double relative) { return fmt::format("{:+.2f}%", 100 * relative); }
 
+// The verdicts' words, as documents and reports write them.
+constexpr EnumWords<NoisyVerdict, 3> kVerdictWords{{
+    {NoisyVerdict::pass, "pass"}, {NoisyVerdict::fail, "fail"},
+    {NoisyVerdict::inconclusive, "inconclusive"}}};
+
 }  // namespace
 
 std::string_view to_string(NoisyVerdict verdict) {
-  switch (verdict) {
-    case NoisyVerdict::pass: return "pass";
-    case NoisyVerdict::fail: return "fail";
-    case NoisyVerdict::inconclusive: return "inconclusive";
-  }
-  return "inconclusive";
+  return word_of(kVerdictWords, verdict, "inconclusive");
 }
 
 double two_sided_p(double z) { return std::erfc(std::abs(z) / std::sqrt(2.0)); }

@@ -1,36 +1,18 @@
 #include "core/domain.h"
 
-#include <array>
-#include <utility>
+#include "core/enum_words.h"
 
 namespace raygate {
 
 namespace {
 
 // One table per enum: its values and their words, the only place each word is spelt.
-constexpr std::array<std::pair<Role, std::string_view>, 4> kRoleWords{{
+constexpr EnumWords<Role, 4> kRoleWords{{
     {Role::baseline, "baseline"}, {Role::tracer, "tracer"}, {Role::base, "base"}, {Role::head, "head"}}};
-constexpr std::array<std::pair<DocumentKind, std::string_view>, 2> kKindWords{{
+constexpr EnumWords<DocumentKind, 2> kKindWords{{
     {DocumentKind::run, "run"}, {DocumentKind::compare, "compare"}}};
-constexpr std::array<std::pair<SceneStatus, std::string_view>, 2> kStatusWords{{
+constexpr EnumWords<SceneStatus, 2> kStatusWords{{
     {SceneStatus::measured, "measured"}, {SceneStatus::failed, "failed"}}};
-
-template <typename Enum, std::size_t N>
-std::string_view word_of(const std::array<std::pair<Enum, std::string_view>, N>& table, Enum value) {
-  for (const auto& [known, word] : table) {
-    if (known == value) return word;
-  }
-  return "unknown";
-}
-
-template <typename Enum, std::size_t N>
-std::optional<Enum> value_of(const std::array<std::pair<Enum, std::string_view>, N>& table,
-                             std::string_view word) {
-  for (const auto& [value, known] : table) {
-    if (known == word) return value;
-  }
-  return std::nullopt;
-}
 
 }  // namespace
 

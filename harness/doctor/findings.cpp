@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <map>
 
+#include "core/enum_words.h"
+
 namespace raygate {
 namespace {
 
@@ -197,19 +199,13 @@ Finding virtualization(const SystemFacts& facts) {
                          "dedicated or bare-metal runner"};
 }
 
+// The levels' words, as the report prints them and its JSON writes them.
+constexpr EnumWords<FindingLevel, 3> kLevelWords{{
+    {FindingLevel::ok, "ok"}, {FindingLevel::info, "info"}, {FindingLevel::warn, "warn"}}};
+
 }  // namespace
 
-std::string to_string(FindingLevel level) {
-  switch (level) {
-    case FindingLevel::ok:
-      return "ok";
-    case FindingLevel::info:
-      return "info";
-    case FindingLevel::warn:
-      return "warn";
-  }
-  return "?";
-}
+std::string to_string(FindingLevel level) { return std::string(word_of(kLevelWords, level, "?")); }
 
 std::vector<Finding> diagnose(const SystemFacts& facts) {
   return {governor(facts), turbo(facts), load(facts), cpus(facts),          smt(facts),

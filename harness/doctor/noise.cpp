@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "core/enum_words.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "doctor/system_facts.h"
@@ -55,19 +56,13 @@ std::optional<double> steal_between(const std::optional<CpuTimes>& before,
          static_cast<double>(after->total - before->total);
 }
 
+// The grades' words, as the report prints them and its JSON writes them.
+constexpr EnumWords<NoiseGrade, 3> kGradeWords{{
+    {NoiseGrade::good, "good"}, {NoiseGrade::fair, "fair"}, {NoiseGrade::noisy, "noisy"}}};
+
 }  // namespace
 
-std::string to_string(NoiseGrade grade) {
-  switch (grade) {
-    case NoiseGrade::good:
-      return "good";
-    case NoiseGrade::fair:
-      return "fair";
-    case NoiseGrade::noisy:
-      return "noisy";
-  }
-  return "?";
-}
+std::string to_string(NoiseGrade grade) { return std::string(word_of(kGradeWords, grade, "?")); }
 
 NoiseGrade grade_noise(double ratio_cv) {
   if (ratio_cv < kNoiseGoodCv) return NoiseGrade::good;

@@ -4,7 +4,6 @@
 
 #include <charconv>
 #include <map>
-#include <sstream>
 #include <vector>
 
 #include "core/error.h"
@@ -146,11 +145,7 @@ class CallgrindReader {
 }  // namespace
 
 FunctionProfile parse_callgrind_profile(std::string_view text, const std::string& origin) {
-  CallgrindReader reader(origin);
-  std::istringstream in{std::string(text)};
-  int number = 0;
-  for (std::string line; std::getline(in, line);) reader.line(line, ++number);
-  return reader.finish();
+  return read_profile_lines<CallgrindReader>(text, origin);
 }
 
 FunctionProfile read_callgrind_profiles(const std::filesystem::path& dir) {

@@ -6,28 +6,37 @@
 #include <cmath>
 #include <set>
 
+#include "core/enum_words.h"
 #include "core/format.h"
 
 namespace raygate {
 
+namespace {
+
+// The words of the document's "explain" section, each spelt once.
+constexpr EnumWords<ExplainSource, 2> kSourceWords{{
+    {ExplainSource::explain_runs, "explain-runs"},
+    {ExplainSource::simulated_runs, "simulated-runs"}}};
+constexpr EnumWords<ExplainCost, 2> kCostWords{{
+    {ExplainCost::instructions, "instructions"},
+    {ExplainCost::estimated_cycles, "estimated-cycles"}}};
+
+}  // namespace
+
 std::string_view to_string(ExplainSource source) {
-  return source == ExplainSource::explain_runs ? "explain-runs" : "simulated-runs";
+  return word_of(kSourceWords, source, "simulated-runs");
 }
 
 std::optional<ExplainSource> explain_source_named(std::string_view text) {
-  if (text == "explain-runs") return ExplainSource::explain_runs;
-  if (text == "simulated-runs") return ExplainSource::simulated_runs;
-  return std::nullopt;
+  return value_of(kSourceWords, text);
 }
 
 std::string_view to_string(ExplainCost cost) {
-  return cost == ExplainCost::instructions ? "instructions" : "estimated-cycles";
+  return word_of(kCostWords, cost, "estimated-cycles");
 }
 
 std::optional<ExplainCost> explain_cost_named(std::string_view text) {
-  if (text == "instructions") return ExplainCost::instructions;
-  if (text == "estimated-cycles") return ExplainCost::estimated_cycles;
-  return std::nullopt;
+  return value_of(kCostWords, text);
 }
 
 namespace {

@@ -6,7 +6,6 @@
 #include <charconv>
 #include <cstdlib>
 #include <memory>
-#include <sstream>
 #include <vector>
 
 #include "core/error.h"
@@ -100,11 +99,7 @@ std::string demangled(std::string_view symbol) {
 }
 
 FunctionProfile parse_function_profile(std::string_view text, const std::string& origin) {
-  ProfileReader reader(origin);
-  std::istringstream in{std::string(text)};
-  int number = 0;
-  for (std::string line; std::getline(in, line);) reader.line(line, ++number);
-  return reader.finish();
+  return read_profile_lines<ProfileReader>(text, origin);
 }
 
 FunctionProfile sum_profile_files(const std::filesystem::path& dir, std::string_view prefix,

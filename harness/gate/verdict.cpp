@@ -51,10 +51,11 @@ void judge_speed(const SceneResult& scene, const ScenePolicy& policy, bool fail_
   const ChangeSummary& change = *scene.change;
   const ChangeVerdict verdict = classify_change(change, policy.max_slowdown);
   gate.speed = speed_verdict(verdict);
+  gate.speed_limit = policy.max_slowdown;
   // The same words as the reports' change column (measure/change.h change_with_interval).
   const std::string numbers = fmt::format(
       "head vs base {}, ratio {:.3f} -> {:.3f}, {} rounds, limit {}",
-      change_with_interval(change, verdict), change.base.ratio, change.head.ratio, change.rounds,
+      change_with_interval(change, verdict, policy.max_slowdown), change.base.ratio, change.head.ratio, change.rounds,
       signed_percent(policy.max_slowdown));
   if (verdict == ChangeVerdict::regressed) {
     raise_speed(gate, GateOutcome::fail, "slower: " + numbers);

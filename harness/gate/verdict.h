@@ -34,6 +34,9 @@ std::optional<ChangeVerdict> change_verdict_of(SpeedVerdict verdict);
 struct SceneGate {
   std::string id;
   SpeedVerdict speed = SpeedVerdict::measured;
+  // The max slowdown the speed verdict was judged at (0 when no change was judged): an
+  // INCONCLUSIVE scene's report names the interval that would decide it at this limit.
+  double speed_limit = 0.0;
   // What the speed part (time, or a crash) and the image part say against the scene, apart, for
   // the reports' columns and JUnit; `outcome` is the worst of them and memory's.
   GateOutcome speed_outcome = GateOutcome::pass;

@@ -44,12 +44,22 @@ std::string short_repository(const std::string& repository_key) {
   return repository_key;
 }
 
-TrendPoint trend_point(const HistoryRow& row) {
+namespace {
+
+// The commit a point stands for, as every trend of it (ratio, memory) labels it.
+TrendPoint commit_point(const HistoryRow& row) {
   TrendPoint point;
   point.sha = row.sha;
   point.short_sha = row.short_sha;
   point.subject = row.subject;
   point.commit_time = row.commit_time;
+  return point;
+}
+
+}  // namespace
+
+TrendPoint trend_point(const HistoryRow& row) {
+  TrendPoint point = commit_point(row);
   point.ratio = *row.ratio;
   point.lower = row.ratio_lower.value_or(*row.ratio);
   point.upper = row.ratio_upper.value_or(*row.ratio);
@@ -62,11 +72,7 @@ TrendPoint trend_point(const HistoryRow& row) {
 }
 
 TrendPoint memory_trend_point(const HistoryRow& row) {
-  TrendPoint point;
-  point.sha = row.sha;
-  point.short_sha = row.short_sha;
-  point.subject = row.subject;
-  point.commit_time = row.commit_time;
+  TrendPoint point = commit_point(row);
   const double mib = row.peak_memory_kib.value_or(0.0) / 1024.0;
   point.ratio = point.lower = point.upper = mib;
   if (!row.memory_verdict.empty() && row.memory_change) {

@@ -4,15 +4,14 @@
 #include <stdexcept>
 
 #include "measure/descriptive.h"
+#include "measure/probability.h"
 
 namespace raygate {
 namespace {
 
 void validate(const BootstrapOptions& options) {
   if (options.resamples < 1) throw std::invalid_argument("bootstrap: resamples must be >= 1");
-  if (!(options.confidence > 0.0 && options.confidence < 1.0)) {
-    throw std::invalid_argument("bootstrap: confidence must lie in (0, 1)");
-  }
+  require_open_interval(options.confidence, 0.0, 1.0, "bootstrap: confidence");
 }
 
 // The value at 0-based rank `rank` of the resample described by counts over `sorted`.
@@ -53,9 +52,7 @@ std::vector<double> bootstrap_median_replicates(std::span<const double> values, 
 }
 
 Interval percentile_interval(std::vector<double> replicates, double confidence) {
-  if (!(confidence > 0.0 && confidence < 1.0)) {
-    throw std::invalid_argument("bootstrap: confidence must lie in (0, 1)");
-  }
+  require_open_interval(confidence, 0.0, 1.0, "bootstrap: confidence");
   std::sort(replicates.begin(), replicates.end());
   const double tail = (1.0 - confidence) / 2.0;
   return {quantile_of_sorted(replicates, tail), quantile_of_sorted(replicates, 1.0 - tail)};

@@ -8,6 +8,7 @@
 
 #include <fmt/core.h>
 
+#include "core/enum_words.h"
 #include "core/error.h"
 #include "core/format.h"
 #include "measure/confidence_sequence.h"
@@ -106,22 +107,20 @@ std::vector<double> compare_log_changes(std::span<const CompareRound> rounds) {
   return log_changes;
 }
 
+// The verdicts' words, each spelt once: documents, store rows and the console print them.
+constexpr EnumWords<ChangeVerdict, 4> kVerdictWords{{
+    {ChangeVerdict::unchanged, "UNCHANGED"}, {ChangeVerdict::improved, "IMPROVED"},
+    {ChangeVerdict::regressed, "REGRESSED"}, {ChangeVerdict::inconclusive, "INCONCLUSIVE"}}};
+constexpr EnumWords<ChangeIntervalKind, 2> kIntervalKindWords{{
+    {ChangeIntervalKind::order_statistic, "order-statistic"},
+    {ChangeIntervalKind::confidence_sequence, "confidence-sequence"}}};
+
 std::string_view to_string(ChangeVerdict verdict) {
-  switch (verdict) {
-    case ChangeVerdict::unchanged: return "UNCHANGED";
-    case ChangeVerdict::improved: return "IMPROVED";
-    case ChangeVerdict::regressed: return "REGRESSED";
-    case ChangeVerdict::inconclusive: return "INCONCLUSIVE";
-  }
-  return "UNKNOWN";
+  return word_of(kVerdictWords, verdict, "UNKNOWN");
 }
 
 std::optional<ChangeVerdict> change_verdict_named(std::string_view word) {
-  for (const ChangeVerdict verdict : {ChangeVerdict::unchanged, ChangeVerdict::improved,
-                                      ChangeVerdict::regressed, ChangeVerdict::inconclusive}) {
-    if (to_string(verdict) == word) return verdict;
-  }
-  return std::nullopt;
+  return value_of(kVerdictWords, word);
 }
 
 ChangeVerdict classify_change(double change, const Interval& change_interval, double threshold) {
@@ -144,13 +143,11 @@ ChangeVerdict classify_change(double change, const Interval& change_interval, do
 }
 
 std::string_view to_string(ChangeIntervalKind kind) {
-  return kind == ChangeIntervalKind::confidence_sequence ? "confidence-sequence" : "order-statistic";
+  return word_of(kIntervalKindWords, kind, "order-statistic");
 }
 
 std::optional<ChangeIntervalKind> change_interval_kind(std::string_view text) {
-  if (text == "confidence-sequence") return ChangeIntervalKind::confidence_sequence;
-  if (text == "order-statistic") return ChangeIntervalKind::order_statistic;
-  return std::nullopt;
+  return value_of(kIntervalKindWords, text);
 }
 
 SequentialIntervals sequential_intervals(std::span<const double> log_changes,
@@ -219,9 +216,8 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
   // Below the rounds the interval that decides needs to be bounded at all, those rounds are the
   // estimate: a point estimate from a handful of rounds says too little to call a scene
   // hopeless or cheap.
-  const std::size_t to_bound = rounds_to_bound(
-      summary, deciding_interval(summary, towards_unchanged ? ChangeVerdict::unchanged
-                                                            : ChangeVerdict::regressed));
+  const std::size_t to_bound =
+      rounds_to_bound(summary, deciding_interval(summary, ChangeVerdict::inconclusive, threshold));
   if (summary.rounds < to_bound) return to_bound;
   // Within a tenth of the limit the point estimate itself may fall on either side of it
   // whatever the rounds: no estimate.
@@ -246,9 +242,13 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
   return std::max(summary.rounds + 1, static_cast<std::size_t>(std::ceil(rounds - 1e-6)));
 }
 
-DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict) {
+DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict,
+                                   double threshold) {
+  const bool towards_unchanged =
+      verdict == ChangeVerdict::unchanged ||
+      (verdict == ChangeVerdict::inconclusive && std::abs(summary.change) < threshold);
   if (summary.interval_kind == ChangeIntervalKind::confidence_sequence && !summary.exact &&
-      verdict == ChangeVerdict::unchanged) {
+      towards_unchanged) {
     return {summary.equivalence_interval, summary.equivalence_confidence, summary.interval_kind};
   }
   return {summary.change_interval, summary.confidence, summary.interval_kind};
@@ -264,10 +264,11 @@ std::size_t rounds_to_bound(const ChangeSummary& summary, const DecidingInterval
   return min_values_for_median_sequence((1.0 - interval.confidence) / 2.0);
 }
 
-std::string change_with_interval(const ChangeSummary& summary, ChangeVerdict verdict) {
+std::string change_with_interval(const ChangeSummary& summary, ChangeVerdict verdict,
+                                 double threshold) {
   // Counted in simulated cycles, every count repeated: the change is a fact, not an estimate.
   if (summary.exact) return signed_percent(summary.change, 3) + " exact (simulated cycles)";
-  const DecidingInterval decided = deciding_interval(summary, verdict);
+  const DecidingInterval decided = deciding_interval(summary, verdict, threshold);
   if (const std::size_t needed = rounds_to_bound(summary, decided); summary.rounds < needed) {
     return fmt::format("{}, no interval yet (needs {} rounds)", signed_percent(summary.change),
                        needed);

@@ -145,14 +145,18 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
 
 // The interval a verdict was drawn from, and its confidence, so a report prints the one that
 // decided: on confidence sequences, the equivalence sequence for UNCHANGED (it must lie within
-// the limit) and the decision sequence for REGRESSED, IMPROVED and INCONCLUSIVE (what a
-// regression must clear); otherwise the change interval.
+// the limit) and the decision sequence for REGRESSED and IMPROVED (what a regression must
+// clear); for INCONCLUSIVE the one that would decide it at the limit `threshold`: the
+// equivalence sequence for a change inside the limit, else the decision sequence. Every output
+// (report tables, gate reasons, the undecided line) names the same interval for a scene.
+// Otherwise (one-look summaries) the change interval.
 struct DecidingInterval {
   Interval interval;
   double confidence = 0.0;
   ChangeIntervalKind kind = ChangeIntervalKind::order_statistic;
 };
-DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict);
+DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict,
+                                   double threshold);
 
 // The one name every output gives an interval (reports, gate reasons, progress lines, docs):
 // "99.33% CS" for an anytime-valid confidence sequence, "95% CI" for a one-look interval.
@@ -165,9 +169,11 @@ inline constexpr const char* kIntervalLegend =
 // and no verdict but INCONCLUSIVE is drawn from it); 0 for a one-look interval or an exact change.
 std::size_t rounds_to_bound(const ChangeSummary& summary, const DecidingInterval& interval);
 
-// The change as every output prints it, with the interval `verdict` was drawn from:
+// The change as every output prints it, with the interval `verdict` was drawn from at the limit
+// `threshold` (deciding_interval):
 // "+7.9% [+6.1%, +9.8%] 99.33% CS"; "+0.4%, no interval yet (needs 16 rounds)" while that
 // interval is unbounded; "+0.912% exact (simulated cycles)" for a counted change.
-std::string change_with_interval(const ChangeSummary& summary, ChangeVerdict verdict);
+std::string change_with_interval(const ChangeSummary& summary, ChangeVerdict verdict,
+                                 double threshold);
 
 }  // namespace raygate

@@ -5,19 +5,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "measure/probability.h"
+
 namespace raygate {
 namespace {
 
 void validate(double alpha_each_side) {
-  if (!(alpha_each_side > 0.0 && alpha_each_side < 0.5)) {
-    throw std::invalid_argument("confidence sequence: alpha per side must lie in (0, 0.5)");
-  }
-}
-
-double log_choose(std::size_t n, std::size_t j) {
-  const auto x = static_cast<double>(n);
-  const auto y = static_cast<double>(j);
-  return std::lgamma(x + 1.0) - std::lgamma(y + 1.0) - std::lgamma(x - y + 1.0);
+  require_open_interval(alpha_each_side, 0.0, 0.5, "confidence sequence: alpha per side");
 }
 
 // ln(e^a + e^b) without overflow.

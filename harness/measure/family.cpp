@@ -3,14 +3,13 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "measure/probability.h"
 
 namespace raygate {
 
 double scene_sequence_alpha(double family_significance, std::size_t scenes) {
   if (scenes == 0) throw std::invalid_argument("family: no scenes");
-  if (!(family_significance > 0.0 && family_significance < 1.0)) {
-    throw std::invalid_argument("family: significance must lie in (0, 1)");
-  }
+  require_open_interval(family_significance, 0.0, 1.0, "family: significance");
   // Each side gets the whole share: only the lower side can raise a false alarm (REGRESSED),
   // so the family's error is the sum of the lower sides' errors.
   return std::min(family_significance / static_cast<double>(scenes), 0.49);

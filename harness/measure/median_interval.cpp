@@ -5,13 +5,13 @@
 #include <stdexcept>
 #include <vector>
 
+#include "measure/probability.h"
+
 namespace raygate {
 namespace {
 
 void validate(double confidence) {
-  if (!(confidence > 0.0 && confidence < 1.0)) {
-    throw std::invalid_argument("median interval: confidence must lie in (0, 1)");
-  }
+  require_open_interval(confidence, 0.0, 1.0, "median interval: confidence");
 }
 
 // P(Binomial(n, 1/2) <= m), summed in logs so large n does not overflow.
@@ -19,10 +19,7 @@ double binomial_half_cdf(std::size_t n, std::size_t m) {
   double sum = 0.0;
   const double log_half_n = static_cast<double>(n) * std::log(0.5);
   for (std::size_t i = 0; i <= m && i <= n; ++i) {
-    const double log_choose = std::lgamma(static_cast<double>(n) + 1) -
-                              std::lgamma(static_cast<double>(i) + 1) -
-                              std::lgamma(static_cast<double>(n - i) + 1);
-    sum += std::exp(log_choose + log_half_n);
+    sum += std::exp(log_choose(n, i) + log_half_n);
   }
   return sum;
 }

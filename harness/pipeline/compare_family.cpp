@@ -40,13 +40,11 @@ std::string what_would_decide(const SceneResult& scene, double threshold) {
                      *rounds, duration_text(seconds_per_round(scene) * static_cast<double>(more)));
 }
 
-// The interval that would decide the scene: for an estimate inside the limit the equivalence
-// sequence UNCHANGED must fit in, else the decision sequence REGRESSED or IMPROVED must clear
-// the limit with (the reports' tables print the latter for every INCONCLUSIVE scene: what a
-// regression must clear).
+// The interval that would decide the scene (measure/change.h deciding_interval): for an estimate
+// inside the limit the equivalence sequence UNCHANGED must fit in, else the decision sequence
+// REGRESSED or IMPROVED must clear; the reports' tables print the same one.
 DecidingInterval deciding_sequence(const ChangeSummary& c, double threshold) {
-  return deciding_interval(
-      c, std::abs(c.change) < threshold ? ChangeVerdict::unchanged : ChangeVerdict::regressed);
+  return deciding_interval(c, ChangeVerdict::inconclusive, threshold);
 }
 
 // "balls +0.4% [-3.9%, +4.8%] 90% CS (width 8.7 points) after 38 rounds (about ...)", with the

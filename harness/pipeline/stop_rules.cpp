@@ -1,6 +1,7 @@
 #include "pipeline/stop_rules.h"
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "measure/compare_budget.h"
@@ -73,11 +74,16 @@ StoppingPolicy SuiteBudget::next_scene() {
   return scene;
 }
 
-StoppingPolicy SuiteBudget::again(double seconds_spent, std::size_t scenes_left) const {
+StoppingPolicy SuiteBudget::again(double seconds_spent, std::size_t scenes_left,
+                                  double seconds_to_decide) const {
   StoppingPolicy scene = policy_;
-  const double share = scene_time_share(60.0 * policy_.max_minutes,
-                                        clock_.now_seconds() - started_,
-                                        std::max<std::size_t>(scenes_left, 1));
+  const double budget = 60.0 * policy_.max_minutes;
+  const double elapsed = clock_.now_seconds() - started_;
+  const double left = scene_time_share(budget, elapsed, 1);
+  double share = scene_time_share(budget, elapsed, std::max<std::size_t>(scenes_left, 1));
+  if (std::isfinite(seconds_to_decide)) {
+    share = std::max(share, std::min(left, kRevisitMargin * seconds_to_decide));
+  }
   scene.max_seconds = std::min(scene.max_seconds, seconds_spent + share);
   return scene;
 }

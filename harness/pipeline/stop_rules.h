@@ -7,6 +7,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -51,11 +52,14 @@ BootstrapOptions change_bootstrap(const ScenePolicy& scene);
 // The first pass measures the scenes in order, each with what is left divided by the scenes left
 // plus `reserve_scenes`, so the time a scene saves by deciding early goes to the scenes after it
 // and about reserve / (scenes + reserve) of the budget stays for the second pass. The second
-// pass continues the scenes the first left undecided when their share ran out, each with what is
-// left divided by the undecided scenes left (pipeline/suite_measurement.h, SceneRevisits). A
-// scene that decides in the first pass costs no more than before; one that needs more rounds
-// than an even share gets them once every scene has had its turn, instead of starving the
-// scenes after it or being starved by them.
+// pass continues the scenes the first left undecided when their share ran out, the cheapest to
+// decide first (pipeline/suite_measurement.h, SceneRevisits), each with what it is estimated to
+// need and a margin (kRevisitMargin), and at least an even share of what is left. Given in that
+// order, the time decides the most scenes it can (an even share would stop each a round or two
+// short of a verdict while the hopeless scenes last in line take the rest). A scene that
+// decides in the first pass costs no more than before; one that needs more rounds than an even
+// share gets them once every scene has had its turn, instead of starving the scenes after it or
+// being starved by them.
 class SuiteBudget {
  public:
   SuiteBudget(const StoppingPolicy& policy, std::size_t scenes, Clock& clock,
@@ -64,9 +68,12 @@ class SuiteBudget {
   // at its share.
   StoppingPolicy next_scene();
   // The stopping policy of a second visit to a scene that has used `seconds_spent` so far, with
-  // `scenes_left` undecided scenes (this one included) still to visit: max_seconds is its
-  // seconds so far plus its share of what is left (the scheduler counts both visits' seconds).
-  StoppingPolicy again(double seconds_spent, std::size_t scenes_left) const;
+  // `scenes_left` undecided scenes (this one included) still to visit, estimated to need
+  // `seconds_to_decide` more (infinity: no estimate): max_seconds is its seconds so far plus the
+  // larger of an even share of what is left and kRevisitMargin times its estimate, never more
+  // than what is left (the scheduler counts both visits' seconds).
+  StoppingPolicy again(double seconds_spent, std::size_t scenes_left,
+                       double seconds_to_decide = std::numeric_limits<double>::infinity()) const;
 
  private:
   StoppingPolicy policy_;
@@ -75,6 +82,11 @@ class SuiteBudget {
   Clock& clock_;
   double started_;
 };
+
+// A revisited scene's estimate (measure/change.h estimated_rounds_to_decide) is a square law
+// from a few rounds, and at the least the rounds its interval needs to be bounded at all: give
+// half as much again, so a scene estimated a round short gets that round.
+inline constexpr double kRevisitMargin = 1.5;
 
 // How many scenes' worth of a compare's budget the first pass keeps for the second: a quarter
 // of the scenes, rounded up (4 of the ci suite's 13), none for a single scene.

@@ -172,7 +172,7 @@ std::string speed_plots(const ReportInput& input, const SceneView& view) {
     }
   }
   std::string out = ratio_bars_svg(rows);
-  if (const std::optional<ChangeCell> cell = change_cell(scene, view.gate.speed)) {
+  if (const std::optional<ChangeCell> cell = change_cell(scene, view.gate)) {
     const double limit = input.policy.for_scene(scene.entry.id).max_slowdown;
     out += change_bar_svg(*cell, limit, outcome_class(view.speed_outcome));
   }

@@ -44,7 +44,7 @@ json ratios(const SceneResult& scene) {
 
 // The change with the interval its verdict was drawn from, named as every format names it.
 json change(const SceneView& view) {
-  const std::optional<ChangeCell> cell = change_cell(*view.result, view.gate.speed);
+  const std::optional<ChangeCell> cell = change_cell(*view.result, view.gate);
   if (!cell) return nullptr;
   return {{"change", finite_number(cell->change)},
           {"interval", cell->interval ? interval(*cell->interval) : json(nullptr)},

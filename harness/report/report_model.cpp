@@ -157,7 +157,7 @@ std::string image_text(const SceneGate& gate, const std::string& none) {
   return gate.image ? image_verdict_text(*gate.image) : none;
 }
 
-std::optional<ChangeCell> change_cell(const SceneResult& scene, SpeedVerdict speed) {
+std::optional<ChangeCell> change_cell(const SceneResult& scene, const SceneGate& gate) {
   if (!scene.change || scene.runs.failed()) return std::nullopt;
   const ChangeSummary& c = *scene.change;
   ChangeCell cell;
@@ -165,25 +165,26 @@ std::optional<ChangeCell> change_cell(const SceneResult& scene, SpeedVerdict spe
   cell.rounds = c.rounds;
   cell.exact = c.exact;
   // The gate's verdict, so a report judged under another policy prints that policy's interval.
-  cell.verdict = change_verdict_of(speed).value_or(scene.change_verdict);
+  cell.verdict = change_verdict_of(gate.speed).value_or(scene.change_verdict);
   if (c.exact) {
     cell.interval_name = "exact";
-    cell.text = change_with_interval(c, cell.verdict);
+    cell.text = change_with_interval(c, cell.verdict, gate.speed_limit);
     return cell;
   }
-  const DecidingInterval decided = deciding_interval(c, cell.verdict);
+  const DecidingInterval decided = deciding_interval(c, cell.verdict, gate.speed_limit);
   cell.rounds_needed = rounds_to_bound(c, decided);
   if (c.rounds >= cell.rounds_needed) {
     cell.interval = decided.interval;
     cell.interval_name = interval_name(decided);
     cell.interval_confidence = decided.confidence;
   }
-  cell.text = fmt::format("{}, {} rounds", change_with_interval(c, cell.verdict), c.rounds);
+  cell.text = fmt::format("{}, {} rounds", change_with_interval(c, cell.verdict, gate.speed_limit),
+                          c.rounds);
   return cell;
 }
 
 std::string change_text(const SceneView& view) {
-  const auto cell = change_cell(*view.result, view.gate.speed);
+  const auto cell = change_cell(*view.result, view.gate);
   return cell ? cell->text : "";
 }
 
@@ -211,7 +212,8 @@ std::string columns_line(const ResultsDocument& document) {
   if (!is_compare(document.kind)) return ratio + ", [its 95% bootstrap CI]";
   return ratio + " the baseline joined; head's = base's x (1 + change), so both move with the "
                  "change; change = median of per-round time(head) / time(base) - 1, [the "
-                 "interval its verdict was drawn from]";
+                 "interval its verdict was drawn from; INCONCLUSIVE: the one that would decide "
+                 "it]";
 }
 
 std::string cell_text(ColumnKind kind, const ResultsDocument& document, const SceneView& view,

@@ -68,9 +68,9 @@ struct ChangeCell {
   ChangeVerdict verdict = ChangeVerdict::inconclusive;
   std::string text;  // change_text(): what the change column prints
 };
-// The scene's change judged as `speed` (the gate's verdict on it, which the policy decided);
-// nullopt when the scene has no change (a run, or a failed scene).
-std::optional<ChangeCell> change_cell(const SceneResult& scene, SpeedVerdict speed);
+// The scene's change as the gate judged it (`gate.speed` under the policy's limit
+// `gate.speed_limit`); nullopt when the scene has no change (a run, or a failed scene).
+std::optional<ChangeCell> change_cell(const SceneResult& scene, const SceneGate& gate);
 // "+7.9% [+6.1%, +9.8%] 99.33% CS, 40 rounds" (CS: anytime-valid confidence sequence; CI: a
 // one-look interval in older documents); "+0.4%, no interval yet (needs 16 rounds), 9 rounds";
 // "+0.912% exact (simulated cycles)" when counted (--timing sim); "" without a change.

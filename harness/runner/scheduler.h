@@ -43,8 +43,8 @@ struct ScheduleOptions {
   // rounds of a scene; 0 = every round. compare judges ln(head / base) within a round, where
   // the baseline cancels, so it is timed only as often as the normalized ratio needs.
   std::size_t normalizer_rounds = 0;
-  // Alternate schedule: each contender of a round runs this many times, in a mirrored order
-  // (baseline, base, head, head, base, baseline; the next round rotated), and the round keeps
+  // Alternate schedule: each contender of a round runs this many times, interleaved (baseline,
+  // base, head, baseline, base, head; the next round rotated), and the round keeps
   // each one's fastest run. A run is only ever slowed by what else the machine does, so the
   // fastest of two is much steadier than one (the identity tracer's per-round spread fell from
   // 1.0-6.9% to 0.2-1.6%); every contender repeats alike, so no ratio is biased by it.

@@ -83,12 +83,16 @@ TEST(Process, TimeoutKillsTheWholeProcessGroup) {
 TEST(Process, IgnoringSigtermStillEndsAfterTheGrace) {
   TempDir dir;
   ProcessSpec spec = shell("trap '' TERM; while :; do :; done", dir);
-  spec.timeout = std::chrono::milliseconds(200);
+  // A second for the shell to reach its trap even on a loaded runner (a TERM before it would
+  // end the test's child the easy way).
+  spec.timeout = std::chrono::milliseconds(1000);
   spec.kill_grace = std::chrono::milliseconds(200);
   const ProcessResult r = run_process(spec);
   EXPECT_EQ(r.outcome, ProcessOutcome::timed_out);
-  EXPECT_LT(r.wall_seconds, 5.0);
-  EXPECT_GT(r.cpu_seconds(), 0.1);  // it really was spinning
+  EXPECT_LT(r.wall_seconds, 6.0);
+  // It shrugged off TERM and was ended by KILL after the grace. (Its CPU seconds, asserted here
+  // before, depend on how busy the machine is: at load 12 a spinning child got under 0.1 s.)
+  EXPECT_EQ(r.signal, SIGKILL);
 }
 
 TEST(Process, LogsAreBoundedButTheChildIsNotBlocked) {

@@ -106,5 +106,18 @@ TEST(Explanation, RoundTripsThroughJsonAndPrintsTheTopFunctions) {
   EXPECT_THROW(bad.get<Explanation>(), std::invalid_argument);
 }
 
+TEST(Explanation, SourceAndCostWordsReadBackAsTheirValues) {
+  for (const ExplainSource source : {ExplainSource::explain_runs, ExplainSource::simulated_runs}) {
+    EXPECT_EQ(explain_source_named(to_string(source)), source);
+  }
+  for (const ExplainCost cost : {ExplainCost::instructions, ExplainCost::estimated_cycles}) {
+    EXPECT_EQ(explain_cost_named(to_string(cost)), cost);
+  }
+  EXPECT_EQ(to_string(ExplainSource::explain_runs), "explain-runs");
+  EXPECT_EQ(to_string(ExplainCost::estimated_cycles), "estimated-cycles");
+  EXPECT_FALSE(explain_source_named("explain_runs").has_value());
+  EXPECT_FALSE(explain_cost_named("cycles").has_value());
+}
+
 }  // namespace
 }  // namespace raygate

@@ -158,16 +158,33 @@ ChangeSummary sequence_summary(double change, Interval decision, Interval equiva
 
 TEST(MeasureDecidingInterval, UnchangedPrintsTheEquivalenceSequenceAndTheRestTheDecisionOne) {
   const ChangeSummary s = sequence_summary(0.004, {-0.20, 0.28}, {-0.012, 0.020}, 15);
-  const DecidingInterval unchanged = deciding_interval(s, ChangeVerdict::unchanged);
+  const DecidingInterval unchanged = deciding_interval(s, ChangeVerdict::unchanged, 0.03);
   EXPECT_DOUBLE_EQ(unchanged.interval.upper, 0.020);
   EXPECT_DOUBLE_EQ(unchanged.confidence, 0.90);
-  for (const ChangeVerdict v : {ChangeVerdict::regressed, ChangeVerdict::improved,
-                                ChangeVerdict::inconclusive}) {
-    EXPECT_DOUBLE_EQ(deciding_interval(s, v).interval.upper, 0.28);
-    EXPECT_DOUBLE_EQ(deciding_interval(s, v).confidence, 0.9985);
+  for (const ChangeVerdict v : {ChangeVerdict::regressed, ChangeVerdict::improved}) {
+    EXPECT_DOUBLE_EQ(deciding_interval(s, v, 0.03).interval.upper, 0.28);
+    EXPECT_DOUBLE_EQ(deciding_interval(s, v, 0.03).confidence, 0.9985);
   }
+  // INCONCLUSIVE names the interval that would decide it: inside the limit the equivalence
+  // sequence UNCHANGED needs, beyond it the decision sequence a regression must clear.
+  EXPECT_DOUBLE_EQ(deciding_interval(s, ChangeVerdict::inconclusive, 0.03).confidence, 0.90);
+  EXPECT_DOUBLE_EQ(deciding_interval(s, ChangeVerdict::inconclusive, 0.003).confidence, 0.9985);
   EXPECT_EQ(change_verdict_named("UNCHANGED"), ChangeVerdict::unchanged);
   EXPECT_FALSE(change_verdict_named("unchanged").has_value());
+}
+
+TEST(MeasureChangeWords, EveryVerdictAndIntervalKindReadsBackFromItsWord) {
+  for (const ChangeVerdict v : {ChangeVerdict::unchanged, ChangeVerdict::improved,
+                                ChangeVerdict::regressed, ChangeVerdict::inconclusive}) {
+    EXPECT_EQ(change_verdict_named(to_string(v)), v);
+  }
+  EXPECT_EQ(to_string(ChangeVerdict::inconclusive), "INCONCLUSIVE");
+  for (const ChangeIntervalKind kind :
+       {ChangeIntervalKind::order_statistic, ChangeIntervalKind::confidence_sequence}) {
+    EXPECT_EQ(change_interval_kind(to_string(kind)), kind);
+  }
+  EXPECT_EQ(to_string(ChangeIntervalKind::confidence_sequence), "confidence-sequence");
+  EXPECT_FALSE(change_interval_kind("order_statistic").has_value());
 }
 
 TEST(MeasureRoundsToDecide, ScaleWithTheSquareOfHowMuchTheIntervalMustNarrow) {

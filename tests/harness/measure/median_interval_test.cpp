@@ -5,9 +5,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "measure/change.h"
+#include "measure/confidence_sequence.h"
+#include "measure/probability.h"
 #include "measure/random.h"
 
 namespace raygate {
@@ -20,6 +24,33 @@ TEST(MedianInterval, FewestValuesForEachConfidence) {
   EXPECT_EQ(min_values_for_median_interval(0.80), 4u);
   EXPECT_THROW(min_values_for_median_interval(1.0), std::invalid_argument);
   EXPECT_THROW(min_values_for_median_interval(0.0), std::invalid_argument);
+}
+
+// The shared check (measure/probability.h) names the parameter and its open range, and a NaN
+// level is as far outside it as 1 is.
+TEST(MedianInterval, ALevelOutsideItsRangeIsRefusedByName) {
+  const auto message = [](auto call) {
+    try {
+      call();
+    } catch (const std::invalid_argument& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no throw)");
+  };
+  EXPECT_EQ(message([] { (void)min_values_for_median_interval(1.0); }),
+            "median interval: confidence must lie in (0, 1)");
+  EXPECT_EQ(message([] { (void)min_values_for_median_interval(std::nan("")); }),
+            "median interval: confidence must lie in (0, 1)");
+  EXPECT_EQ(message([] { (void)median_sequence_interval(std::vector<double>{1, 2, 3}, 0.5); }),
+            "confidence sequence: alpha per side must lie in (0, 0.5)");
+}
+
+TEST(MedianInterval, LogChooseMatchesSmallBinomialCoefficients) {
+  EXPECT_NEAR(std::exp(log_choose(10, 3)), 120.0, 1e-9);
+  EXPECT_NEAR(std::exp(log_choose(7, 0)), 1.0, 1e-12);
+  EXPECT_NEAR(std::exp(log_choose(7, 7)), 1.0, 1e-12);
+  // Where 1000! overflows a double, its logarithm does not: ln C(1000, 500) ~ 689.47.
+  EXPECT_NEAR(log_choose(1000, 500), 689.4672, 1e-3);
 }
 
 TEST(MedianInterval, RanksMatchTheBinomialTable) {

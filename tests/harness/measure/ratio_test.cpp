@@ -141,9 +141,12 @@ TEST(MeasureStopping, BelowMinimumRoundsContinuesEvenIfIdentical) {
             StopDecision::continue_measuring);
 }
 
-TEST(MeasureStopping, TightRoundsConverge) {
-  const std::vector<RoundSample> three(3, RoundSample{2.0, 1.0});
-  EXPECT_EQ(decide_stopping(three, StoppingPolicy{}, 1.0), StopDecision::stop_converged);
+TEST(MeasureStopping, TightRoundsConvergeAtTheMinimumRoundsAndNotBefore) {
+  // 6: the fewest rounds whose order-statistic interval of the median reaches 95%.
+  const std::vector<RoundSample> six(6, RoundSample{2.0, 1.0});
+  EXPECT_EQ(decide_stopping(six, StoppingPolicy{}, 1.0), StopDecision::stop_converged);
+  const std::vector<RoundSample> five(5, RoundSample{2.0, 1.0});
+  EXPECT_EQ(decide_stopping(five, StoppingPolicy{}, 1.0), StopDecision::continue_measuring);
 }
 
 TEST(MeasureStopping, NoisyRoundsContinueUntilBudget) {
@@ -162,9 +165,9 @@ TEST(MeasureStopping, RuleOnNumbers) {
   StoppingPolicy policy;
   policy.max_rounds = 20;
   policy.max_seconds = 100.0;
-  EXPECT_EQ(decide_stopping(5, 0.009, policy, 1.0), StopDecision::stop_converged);
-  EXPECT_EQ(decide_stopping(5, 0.011, policy, 1.0), StopDecision::continue_measuring);
-  EXPECT_EQ(decide_stopping(2, 0.0, policy, 1.0), StopDecision::continue_measuring);
+  EXPECT_EQ(decide_stopping(6, 0.009, policy, 1.0), StopDecision::stop_converged);
+  EXPECT_EQ(decide_stopping(6, 0.011, policy, 1.0), StopDecision::continue_measuring);
+  EXPECT_EQ(decide_stopping(5, 0.0, policy, 1.0), StopDecision::continue_measuring);
   EXPECT_EQ(decide_stopping(20, 0.009, policy, 500.0), StopDecision::stop_converged);
   EXPECT_EQ(decide_stopping(20, 0.05, policy, 500.0), StopDecision::stop_budget_rounds);
   EXPECT_EQ(decide_stopping(19, 0.05, policy, 100.0), StopDecision::stop_budget_time);

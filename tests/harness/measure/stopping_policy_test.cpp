@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "measure/confidence_sequence.h"
+#include "measure/median_interval.h"
 #include "synthetic.h"
 
 namespace raygate {
@@ -35,7 +36,8 @@ TEST(StoppingRule, DefaultsAreTheDocumentedOnes) {
   // docs/statistics.md and `raygate run --help` quote these; the options take them from here.
   const StoppingPolicy policy;
   EXPECT_DOUBLE_EQ(policy.target_relative_half_width, 0.01);
-  EXPECT_EQ(policy.min_rounds, 3u);
+  EXPECT_EQ(policy.min_rounds, 6u);
+  EXPECT_EQ(policy.min_rounds, min_values_for_median_interval(0.95));
   EXPECT_EQ(policy.max_rounds, 30u);
   EXPECT_DOUBLE_EQ(policy.max_seconds, 300.0);
   EXPECT_DOUBLE_EQ(policy.max_minutes, 0.0);

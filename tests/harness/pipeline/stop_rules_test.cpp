@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
 #include <vector>
 
 #include "../runner/fake_executor.h"
@@ -145,6 +146,24 @@ TEST(PipelineStopping, SuiteBudgetKeepsAReserveForASecondVisit) {
   policy.max_seconds = 120.0;
   SuiteBudget capped(policy, 1, clock);
   EXPECT_DOUBLE_EQ(capped.again(100.0, 1).max_seconds, 120.0);
+}
+
+TEST(PipelineStopping, ASecondVisitGetsWhatItIsEstimatedToNeedWithAMargin) {
+  StoppingPolicy policy;
+  policy.max_seconds = 1000.0;
+  policy.max_minutes = 5.0;  // 300 s
+  testing::FakeClock clock;
+  SuiteBudget budget(policy, 4, clock, 1);
+  clock.advance(200.0);  // 100 s left for 4 undecided scenes: an even share is 25 s
+  // Estimated to need 30 s more: 1.5 times that, not the even 25 s that stops it short.
+  EXPECT_DOUBLE_EQ(budget.again(40.0, 4, 30.0).max_seconds, 40.0 + 45.0);
+  // A cheap one still gets at least an even share.
+  EXPECT_DOUBLE_EQ(budget.again(40.0, 4, 4.0).max_seconds, 40.0 + 25.0);
+  // Never more than what is left of the whole budget.
+  EXPECT_DOUBLE_EQ(budget.again(40.0, 4, 90.0).max_seconds, 40.0 + 100.0);
+  // No estimate (a change on the limit): an even share.
+  EXPECT_DOUBLE_EQ(
+      budget.again(40.0, 4, std::numeric_limits<double>::infinity()).max_seconds, 40.0 + 25.0);
 }
 
 TEST(PipelineStopping, TheReserveIsAQuarterOfTheScenesAndNoneForOne) {

@@ -16,6 +16,7 @@
 #include <regex>
 #include <sstream>
 
+#include "gate/policy.h"
 #include "gate/verdict.h"
 #include "measure/change.h"
 #include "measure/confidence_sequence.h"
@@ -101,7 +102,9 @@ ResultsDocument compare_document(bool simulated) {
 }
 
 // From the document alone: which interval each verdict is drawn from (docs/statistics.md §6:
-// UNCHANGED on the equivalence sequence, the others on the decision sequence) and its name.
+// UNCHANGED on the equivalence sequence, REGRESSED and IMPROVED on the decision sequence, and
+// INCONCLUSIVE on the one that would decide it at the default +3% limit: the equivalence
+// sequence inside the limit) and its name.
 Expected expected_of(const SceneResult& s) {
   const ChangeSummary& c = *s.change;
   Expected e{s.entry.id, c.change, std::nullopt, "", 0, std::string(to_string(s.change_verdict))};
@@ -109,7 +112,9 @@ Expected expected_of(const SceneResult& s) {
     e.name = "exact";
     return e;
   }
-  const bool unchanged = s.change_verdict == ChangeVerdict::unchanged;
+  const bool unchanged = s.change_verdict == ChangeVerdict::unchanged ||
+                         (s.change_verdict == ChangeVerdict::inconclusive &&
+                          std::abs(c.change) < GatePolicy{}.defaults.max_slowdown);
   const double confidence = unchanged ? c.equivalence_confidence : c.confidence;
   const Interval interval = unchanged ? c.equivalence_interval : c.change_interval;
   const std::size_t needed = min_values_for_median_sequence((1.0 - confidence) / 2.0);

@@ -5,6 +5,7 @@
 #include <array>
 #include <utility>
 
+#include "core/enum_words.h"
 #include "results/typed_fields.h"
 
 namespace raygate {
@@ -14,7 +15,7 @@ using json = nlohmann::json;
 using namespace typed_fields;
 
 // Each quality's name in results documents and reports: one table, read both ways.
-constexpr std::array<std::pair<FitQuality, std::string_view>, 5> kQualityNames{{
+constexpr EnumWords<FitQuality, 5> kQualityNames{{
     {FitQuality::power_law, "power-law"},
     {FitQuality::startup_dominated, "startup-dominated"},
     {FitQuality::curved, "curved"},
@@ -166,18 +167,10 @@ FamilyScaling family_from(const JsonField& j) {
 
 }  // namespace
 
-std::string_view to_string(FitQuality quality) {
-  for (const auto& [known, name] : kQualityNames) {
-    if (known == quality) return name;
-  }
-  return "?";
-}
+std::string_view to_string(FitQuality quality) { return word_of(kQualityNames, quality, "?"); }
 
 std::optional<FitQuality> parse_fit_quality(std::string_view text) {
-  for (const auto& [quality, name] : kQualityNames) {
-    if (name == text) return quality;
-  }
-  return std::nullopt;
+  return value_of(kQualityNames, text);
 }
 
 nlohmann::json to_json(const ScalingAnalysis& analysis) {

@@ -8,6 +8,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/enum_words.h"
 #include "results/typed_fields.h"
 
 namespace raygate {
@@ -152,8 +153,9 @@ void read_value(const JsonField& f, std::optional<std::vector<MergedShard>>& out
 
 std::string_view to_string(PinnedBy pinned_by) {
   // The words as documents have always written them: the option's own name for --pin.
-  constexpr std::array<std::string_view, 3> kWords{"", "adapter", "--pin"};
-  return kWords.at(static_cast<std::size_t>(pinned_by));
+  constexpr EnumWords<PinnedBy, 3> kWords{
+      {{PinnedBy::none, ""}, {PinnedBy::adapter, "adapter"}, {PinnedBy::option, "--pin"}}};
+  return word_of(kWords, pinned_by, "");
 }
 
 json to_json(const MeasurementSettings& s) {

@@ -10,14 +10,10 @@
 namespace raygate {
 namespace {
 
+// Scenes identical (or the same within noise), different, missing, too noisy to tell.
 GoldenVerification counted(std::size_t identical, std::size_t different, std::size_t missing,
                            std::size_t inconclusive = 0) {
-  GoldenVerification v;
-  v.identical = identical;
-  v.different = different;
-  v.missing = missing;
-  v.inconclusive = inconclusive;
-  return v;
+  return {identical, different, missing, inconclusive};
 }
 
 TEST(GoldenCommands, TheBaselinesVerificationSaysEveryCount) {

@@ -3,13 +3,10 @@
 // N commits is searched for change points (alert/); a series whose newest change point is a
 // slowdown beyond the policy's limit is in alert, and the suspected commit range is named. Exit
 // 1 when a series is in alert (--on-regression fail, the default), 0 with annotate; 2 usage.
-#include <fmt/core.h>
-
-#include <memory>
-
 #include "cli/commands.h"
 #include "cli/console.h"
 #include "cli/store_options.h"
+#include "cli/subcommand.h"
 #include "pipeline/store_commands.h"
 
 namespace raygate::cli {
@@ -26,54 +23,40 @@ struct AlertArgs {
   std::string format;
 };
 
-int alert_command(AlertArgs args, const Console& console) {
-  args.request.action = parse_alert_action(args.on_regression);
-  const AlertJudgement judgement = judge_store_history(
-      args.request, [&console](const std::string& line) { console.info(line); });
-  print_result(args.format, [&] { return alert_json(judgement, args.request.detection); },
+int alert_command(const AlertArgs& args, const Console& console) {
+  AlertRequest request = args.request;
+  request.action = parse_alert_action(args.on_regression);
+  const AlertJudgement judgement =
+      judge_store_history(request, [&console](const std::string& line) { console.info(line); });
+  print_result(args.format, [&] { return alert_json(judgement, request.detection); },
                [&] { return alert_text(judgement); });
   return judgement.exit_code();
 }
 
 }  // namespace
 
-void add_alert_command(CLI::App& app, int& exit_code) {
-  auto args = std::make_shared<AlertArgs>();
-  CLI::App* command = app.add_subcommand(
-      "alert",
-      "flag a slowdown or a memory step that landed: change points in each series' history "
-      "(docs/gate.md)");
-  add_store_option(*command, args->request.store, kDefaultStorePath);
-  add_history_filters(*command, args->request.query);
-  command->add_option("--last", args->request.query.last_commits,
-                      "the newest N commits are the history judged")
-      ->check(CLI::Range(2, 100000))
-      ->capture_default_str();
-  command->add_option("--policy", args->request.policy,
-                      "gate policy file: each scene's max_slowdown is its alert limit")
+void add_alert_command(CLI::App& command, int& exit_code) {
+  AlertArgs& args = bind_command<AlertArgs>(command, alert_command, exit_code);
+  add_store_option(command, args.request.store, kDefaultStorePath);
+  add_history_filters(command, args.request.query);
+  add_bounded_option(command, "--last", args.request.query.last_commits, 2, 100000,
+                     "the newest N commits are the history judged");
+  command.add_option("--policy", args.request.policy,
+                     "gate policy file: each scene's max_slowdown is its alert limit")
       ->check(CLI::ExistingFile);
-  command->add_option("--on-regression", args->on_regression,
-                      "fail: exit 1 when a series is in alert; annotate: report it, exit 0")
+  command.add_option("--on-regression", args.on_regression,
+                     "fail: exit 1 when a series is in alert; annotate: report it, exit 0")
       ->check(CLI::IsMember({"fail", "annotate"}))
       ->capture_default_str();
-  command->add_option("--min-segment", args->request.detection.min_segment,
-                      "commits needed on each side of a change point")
-      ->check(CLI::Range(1, 1000))
+  add_bounded_option(command, "--min-segment", args.request.detection.min_segment, 1, 1000,
+                     "commits needed on each side of a change point");
+  add_bounded_option(command, "--permutations", args.request.detection.permutations, 9, 100000,
+                     "random orders of the series for the significance test");
+  add_bounded_option(command, "--significance", args.request.detection.significance, 0.0001,
+                     0.5, "a change point needs a permutation p-value below this");
+  command.add_option("--seed", args.request.detection.seed, "seed of the permutations")
       ->capture_default_str();
-  command->add_option("--permutations", args->request.detection.permutations,
-                      "random orders of the series for the significance test")
-      ->check(CLI::Range(9, 100000))
-      ->capture_default_str();
-  command->add_option("--significance", args->request.detection.significance,
-                      "a change point needs a permutation p-value below this")
-      ->check(CLI::Range(0.0001, 0.5))
-      ->capture_default_str();
-  command->add_option("--seed", args->request.detection.seed, "seed of the permutations")
-      ->capture_default_str();
-  add_format_option(*command, args->format, {"text", "json"});
-  command->callback([args, command, &exit_code] {
-    exit_code = alert_command(*args, console_of(*command));
-  });
+  add_format_option(command, args.format, {"text", "json"});
 }
 
 }  // namespace raygate::cli

@@ -5,13 +5,12 @@
 // measured.
 #include <fmt/core.h>
 
-#include <memory>
-
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.h"
 #include "cli/console.h"
 #include "cli/measure_options.h"
+#include "cli/subcommand.h"
 #include "cli/terminal_progress.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
@@ -57,24 +56,19 @@ int bisect_command(const BisectArgs& args, const Console& console) {
 
 }  // namespace
 
-void add_bisect_command(CLI::App& app, int& exit_code) {
-  auto args = std::make_shared<BisectArgs>();
-  CLI::App* command = add_measuring_subcommand(
-      app, "bisect", "find the first commit that made a scene slower (or its image wrong)",
-      args->measure, true);
-  command->add_option("--good", args->good, "a revision without the problem")->required();
-  command->add_option("--bad", args->bad, "a later revision with it")->required();
-  command->add_option("--metric", args->metric, "ratio: a slowdown beyond the policy; image: an "
-                      "image that differs from the good commit's")
+void add_bisect_command(CLI::App& command, int& exit_code) {
+  BisectArgs& args = bind_command<BisectArgs>(command, bisect_command, exit_code);
+  add_change_measure_options(command, args.measure);
+  command.add_option("--good", args.good, "a revision without the problem")->required();
+  command.add_option("--bad", args.bad, "a later revision with it")->required();
+  command.add_option("--metric", args.metric, "ratio: a slowdown beyond the policy; image: an "
+                     "image that differs from the good commit's")
       ->check(CLI::IsMember({"ratio", "image"}))
       ->capture_default_str();
-  command->add_flag("--explain", args->explain,
-                    "profile each REGRESSED step's two revisions once under cachegrind and end "
-                    "with where the culprit's time went (sim mode explains without it)");
-  add_format_option(*command, args->format, {"text", "json"});
-  command->callback([args, command, &exit_code] {
-    exit_code = bisect_command(*args, console_of(*command));
-  });
+  command.add_flag("--explain", args.explain,
+                   "profile each REGRESSED step's two revisions once under cachegrind and end "
+                   "with where the culprit's time went (sim mode explains without it)");
+  add_format_option(command, args.format, {"text", "json"});
 }
 
 }  // namespace raygate::cli

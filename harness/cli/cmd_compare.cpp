@@ -2,15 +2,11 @@
 // (baseline, base, head), so drift hits all three alike; per scene the change of the normalized
 // ratio with its CI and a verdict, images against the goldens and head's against base's; then
 // the gate. Exit 0 pass, 1 regression, 2 usage, 3 could not measure.
-#include <fmt/core.h>
-
-#include <memory>
-
 #include "cli/commands.h"
 #include "cli/console.h"
 #include "cli/measure_options.h"
 #include "cli/report_options.h"
-#include "cli/store_options.h"
+#include "cli/subcommand.h"
 #include "cli/terminal_progress.h"
 #include "core/error.h"
 #include "pipeline/compare_measurement.h"
@@ -27,8 +23,7 @@ struct CompareArgs {
   std::string out;
   bool fail_on_inconclusive = false;
   bool explain = false;  // --explain: profile REGRESSED scenes once each (pipeline/explain_stage.h)
-  RecordArgs record;                 // --store, --no-store, --branch
-  std::vector<std::string> reports;  // --report FORMAT:PATH
+  PublishOptions publish;  // --store, --no-store, --branch, --report, --format
 };
 
 int compare_command(const CompareArgs& args, const Console& console) {
@@ -37,8 +32,7 @@ int compare_command(const CompareArgs& args, const Console& console) {
   }
   MeasureContext context = load_measure_context(args.measure);
   context.explain = args.explain;
-  parse_report_targets(args.reports);
-  check_output_path(args.out, "--output");
+  check_publish_targets(args.publish, args.out, "--output");
   const BaselineTool baseline(context.tools.baseline);
   const CompareTrees trees = locate_compare_trees(args.measure.repo, args.base, args.base_branch,
                                                   args.head, context.cache_dir);
@@ -47,33 +41,28 @@ int compare_command(const CompareArgs& args, const Console& console) {
       {context, baseline, trees.repository, trees.base, trees.head, args.out}, terminal.io);
   GatePolicy policy = context.policy;
   policy.fail_on_inconclusive = policy.fail_on_inconclusive || args.fail_on_inconclusive;
-  return publish_measured(measured, args.record, context.cache_dir, policy, args.reports, console);
+  return publish_measured(measured, args.publish, context.cache_dir, policy, console);
 }
 
 }  // namespace
 
-void add_compare_command(CLI::App& app, int& exit_code) {
-  auto args = std::make_shared<CompareArgs>();
-  CLI::App* command = add_measuring_subcommand(
-      app, "compare", "measure base and head in the same job and gate the change", args->measure,
-      true);
-  add_shard_options(*command, args->measure);
-  command->add_option("--base", args->base, "base revision");
-  command->add_option("--base-branch", args->base_branch,
-                      "use the merge base of head and this branch as the base");
-  command->add_option("--head", args->head, "head revision")->capture_default_str();
-  command->add_flag("--fail-on-inconclusive", args->fail_on_inconclusive,
-                    "an INCONCLUSIVE change fails the gate instead of warning");
-  command->add_flag("--explain", args->explain,
-                    "run each REGRESSED scene's base and head once more under cachegrind and "
-                    "show the functions whose cost grew most (sim mode explains without it)");
+void add_compare_command(CLI::App& command, int& exit_code) {
+  CompareArgs& args = bind_command<CompareArgs>(command, compare_command, exit_code);
+  add_change_measure_options(command, args.measure);
+  add_shard_options(command, args.measure);
+  command.add_option("--base", args.base, "base revision");
+  command.add_option("--base-branch", args.base_branch,
+                     "use the merge base of head and this branch as the base");
+  command.add_option("--head", args.head, "head revision")->capture_default_str();
+  command.add_flag("--fail-on-inconclusive", args.fail_on_inconclusive,
+                   "an INCONCLUSIVE change fails the gate instead of warning");
+  command.add_flag("--explain", args.explain,
+                   "run each REGRESSED scene's base and head once more under cachegrind and "
+                   "show the functions whose cost grew most (sim mode explains without it)");
   add_publish_options(
-      *command, args->out,
+      command, args.out,
       "results document (default: <cache-dir>/runs/<time>-<base>-<head>/results.json)",
-      args->record, args->reports);
-  command->callback([args, command, &exit_code] {
-    exit_code = compare_command(*args, console_of(*command));
-  });
+      args.publish);
 }
 
 }  // namespace raygate::cli

@@ -4,12 +4,9 @@
 // documents and the scenes whose ratio is not machine-stable (harness/consistency/).
 // Exit 0 machine-independent, 1 not, 2 usage (fewer than 2 documents, mixed baselines or
 // revisions without --allow-mixed), 3 a document could not be read.
-#include <fmt/core.h>
-
-#include <memory>
-
 #include "cli/commands.h"
 #include "cli/console.h"
+#include "cli/subcommand.h"
 #include "consistency/consistency.h"
 #include "consistency/consistency_report.h"
 #include "core/fs.h"
@@ -35,28 +32,23 @@ int consistency_command(const ConsistencyArgs& args) {
 
 }  // namespace
 
-void add_consistency_command(CLI::App& app, int& exit_code) {
-  auto args = std::make_shared<ConsistencyArgs>();
-  CLI::App* command =
-      app.add_subcommand("consistency",
-                         "are the tracer's ratios the same on different machines? r² and per-scene "
-                         "deviation over results documents of one tracer revision");
-  command->add_option("documents", args->documents,
-                      "results documents (raygate run/compare --out), one per machine or run");
+void add_consistency_command(CLI::App& command, int& exit_code) {
+  ConsistencyArgs& args = bind_command<ConsistencyArgs>(command, consistency_command, exit_code);
+  command.add_option("documents", args.documents,
+                     "results documents (raygate run/compare --out), one per machine or run");
   command
-      ->add_option("--min-r2", args->options.min_r2,
-                   "every pair of documents needs at least this r² of per-scene ratios")
+      .add_option("--min-r2", args.options.min_r2,
+                  "every pair of documents needs at least this r² of per-scene ratios")
       ->capture_default_str();
   command
-      ->add_option("--max-deviation", args->options.max_deviation,
-                   "a scene whose ratio strays further than this fraction from its mean "
-                   "over documents is not machine-stable")
+      .add_option("--max-deviation", args.options.max_deviation,
+                  "a scene whose ratio strays further than this fraction from its mean "
+                  "over documents is not machine-stable")
       ->capture_default_str();
-  command->add_flag("--allow-mixed", args->options.allow_mixed,
-                    "compare documents of different baselines or tracer revisions anyway");
-  add_format_option(*command, args->format, {"text", "json"}, true);
-  command->add_option("--markdown", args->markdown, "also write the result as Markdown to PATH");
-  command->callback([args, &exit_code] { exit_code = consistency_command(*args); });
+  command.add_flag("--allow-mixed", args.options.allow_mixed,
+                   "compare documents of different baselines or tracer revisions anyway");
+  add_format_option(command, args.format, {"text", "json"}, true);
+  command.add_option("--markdown", args.markdown, "also write the result as Markdown to PATH");
 }
 
 }  // namespace raygate::cli

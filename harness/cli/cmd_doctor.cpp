@@ -4,10 +4,9 @@
 // only: exit 0 whenever it could check, 3 when the baseline could not run, 2 for bad options.
 #include <fmt/core.h>
 
-#include <memory>
-
 #include "cli/commands.h"
 #include "cli/console.h"
+#include "cli/subcommand.h"
 #include "core/exit_codes.h"
 #include "doctor/doctor_report.h"
 #include "pipeline/document_commands.h"
@@ -34,20 +33,15 @@ int doctor_command(const DoctorArgs& args) {
 
 }  // namespace
 
-void add_doctor_command(CLI::App& app, int& exit_code) {
-  auto args = std::make_shared<DoctorArgs>();
-  CLI::App* command = app.add_subcommand(
-      "doctor",
-      "is this machine fit to measure? checks governor, turbo, load, CPUs, SMT, perf, "
-      "ASLR, swap, virtualization, and measures a noise score");
-  add_format_option(*command, args->format, {"text", "json"}, true);
+void add_doctor_command(CLI::App& command, int& exit_code) {
+  DoctorArgs& args = bind_command<DoctorArgs>(command, doctor_command, exit_code);
+  add_format_option(command, args.format, {"text", "json"}, true);
   command
-      ->add_option("--rounds", args->rounds,
-                   "A/A pairs of raygate-baseline runs for the noise score")
+      .add_option("--rounds", args.rounds,
+                  "A/A pairs of raygate-baseline runs for the noise score")
       ->capture_default_str();
-  command->add_option("--baseline", args->baseline,
-                      "raygate-baseline executable (default: beside raygate)");
-  command->callback([args, &exit_code] { exit_code = doctor_command(*args); });
+  command.add_option("--baseline", args.baseline,
+                     "raygate-baseline executable (default: beside raygate)");
 }
 
 }  // namespace raygate::cli

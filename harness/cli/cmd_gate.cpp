@@ -4,10 +4,9 @@
 // 0 pass, 1 regression, 2 usage, 3 the document says something was not measured.
 #include <fmt/core.h>
 
-#include <memory>
-
 #include "cli/commands.h"
 #include "cli/console.h"
+#include "cli/subcommand.h"
 #include "pipeline/document_commands.h"
 #include "report/gate_summary.h"
 #include "report/reporter.h"
@@ -38,19 +37,14 @@ int gate_command(const GateArgs& args, const Console& console) {
 
 }  // namespace
 
-void add_gate_command(CLI::App& app, int& exit_code) {
-  auto args = std::make_shared<GateArgs>();
-  CLI::App* command =
-      app.add_subcommand("gate", "judge a results document under a policy; the exit code says");
-  command->add_option("results", args->results, "results document (from run or compare)")
+void add_gate_command(CLI::App& command, int& exit_code) {
+  GateArgs& args = bind_command<GateArgs>(command, gate_command, exit_code);
+  command.add_option("results", args.results, "results document (from run or compare)")
       ->required();
-  command->add_option("--policy", args->policy, "gate policy file (docs/gate.md)");
-  command->add_flag("--fail-on-inconclusive", args->fail_on_inconclusive,
-                    "an INCONCLUSIVE change fails the gate instead of warning");
-  add_format_option(*command, args->format, {"text", "json"});
-  command->callback([args, command, &exit_code] {
-    exit_code = gate_command(*args, console_of(*command));
-  });
+  command.add_option("--policy", args.policy, "gate policy file (docs/gate.md)");
+  command.add_flag("--fail-on-inconclusive", args.fail_on_inconclusive,
+                   "an INCONCLUSIVE change fails the gate instead of warning");
+  add_format_option(command, args.format, {"text", "json"});
 }
 
 }  // namespace raygate::cli

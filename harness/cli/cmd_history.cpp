@@ -4,13 +4,12 @@
 // for a page of plots. Exit 0, 2 for a bad store.
 #include <fmt/core.h>
 
-#include <memory>
-
 #include "cli/commands.h"
 #include "cli/console.h"
-#include "history/history_view.h"
 #include "cli/store_options.h"
+#include "cli/subcommand.h"
 #include "core/fs.h"
+#include "history/history_view.h"
 #include "pipeline/store_commands.h"
 
 namespace raygate::cli {
@@ -41,30 +40,21 @@ int history_command(const HistoryArgs& args) {
   return 0;
 }
 
-void add_history_command(CLI::App& app, int& exit_code) {
-  auto args = std::make_shared<HistoryArgs>();
-  CLI::App* command = app.add_subcommand(
-      "history", "normalized ratio and image error per scene over commits, from the store");
-  add_store_option(*command, args->store, kDefaultStorePath);
-  add_history_filters(*command, args->query);
-  command->add_option("--last", args->query.last_commits,
-                      "the newest N commits of each table (0: all)")
-      ->capture_default_str();
-  command->add_option("--series", args->query.series,
-                      "only this series (an id from --format json, or its first digits)");
-  command->add_flag("--include-dirty", args->query.include_dirty,
-                    "also trees measured with local changes (each its own point)");
-  add_format_option(*command, args->format, {"text", "json"}, true);
-  command->add_option("--html", args->html_dir, "also write DIR/history.html with SVG plots");
-  command->callback([args, &exit_code] { exit_code = history_command(*args); });
-}
-
 }  // namespace
 
-void add_history_commands(CLI::App& app, int& exit_code) {
-  add_history_command(app, exit_code);
-  add_import_command(app, exit_code);
-  add_export_command(app, exit_code);
+void add_history_command(CLI::App& command, int& exit_code) {
+  HistoryArgs& args = bind_command<HistoryArgs>(command, history_command, exit_code);
+  add_store_option(command, args.store, kDefaultStorePath);
+  add_history_filters(command, args.query);
+  command.add_option("--last", args.query.last_commits,
+                     "the newest N commits of each table (0: all)")
+      ->capture_default_str();
+  command.add_option("--series", args.query.series,
+                     "only this series (an id from --format json, or its first digits)");
+  command.add_flag("--include-dirty", args.query.include_dirty,
+                   "also trees measured with local changes (each its own point)");
+  add_format_option(command, args.format, {"text", "json"}, true);
+  command.add_option("--html", args.html_dir, "also write DIR/history.html with SVG plots");
 }
 
 }  // namespace raygate::cli

@@ -3,11 +3,10 @@
 // them. Exit 0, 2 for input that is not a results document or a query that matches nothing.
 #include <fmt/core.h>
 
-#include <memory>
-
 #include "cli/commands.h"
 #include "cli/console.h"
 #include "cli/store_options.h"
+#include "cli/subcommand.h"
 #include "pipeline/store_commands.h"
 
 namespace raygate::cli {
@@ -19,41 +18,39 @@ struct ImportArgs {
   std::string branch;
 };
 
-}  // namespace
-
-void add_import_command(CLI::App& app, int& exit_code) {
-  auto args = std::make_shared<ImportArgs>();
-  CLI::App* command = app.add_subcommand(
-      "import", "store results documents (a document already stored is kept once)");
-  command->add_option("files", args->files, "results documents (results.json)")->required();
-  add_store_option(*command, args->store, kDefaultStorePath);
-  command->add_option("--branch", args->branch,
-                      "branch to record a document under when its revision names none");
-  command->callback([args, &exit_code] {
-    fmt::print("{}", import_documents(args->files, args->store, args->branch));
-    exit_code = 0;
-  });
+int import_command(const ImportArgs& args) {
+  fmt::print("{}", import_documents(args.files, args.store, args.branch));
+  return 0;
 }
 
-void add_export_command(CLI::App& app, int& exit_code) {
-  auto args = std::make_shared<ExportRequest>();
-  args->store = kDefaultStorePath;
-  CLI::App* command = app.add_subcommand(
-      "export", "write stored results documents as JSON (newest first), as they were stored");
-  add_store_option(*command, args->store, kDefaultStorePath);
+int export_command(const ExportRequest& request) {
+  fmt::print("{}", export_stored_documents(request));
+  return 0;
+}
+
+}  // namespace
+
+void add_import_command(CLI::App& command, int& exit_code) {
+  ImportArgs& args = bind_command<ImportArgs>(command, import_command, exit_code);
+  command.add_option("files", args.files, "results documents (results.json)")->required();
+  add_store_option(command, args.store, kDefaultStorePath);
+  command.add_option("--branch", args.branch,
+                     "branch to record a document under when its revision names none");
+}
+
+void add_export_command(CLI::App& command, int& exit_code) {
+  ExportRequest& args = bind_command<ExportRequest>(command, export_command, exit_code);
+  args.store = kDefaultStorePath;
+  add_store_option(command, args.store, kDefaultStorePath);
   CLI::Option* sha =
-      command->add_option("--sha", args->sha, "documents that measured a commit (sha or prefix)");
-  command->add_option("--last", args->last, "the N most recently stored documents")->excludes(sha);
-  command->add_option("--branch", args->branch, "only documents recorded under this branch");
-  add_deprecated_alias(*command, "--out",
-                       command->add_option("-o,--output", args->out,
-                                           "a directory (one file per document) or FILE.json "
-                                           "(required)"),
-                       args->out);
-  command->callback([args, &exit_code] {
-    fmt::print("{}", export_stored_documents(*args));
-    exit_code = 0;
-  });
+      command.add_option("--sha", args.sha, "documents that measured a commit (sha or prefix)");
+  command.add_option("--last", args.last, "the N most recently stored documents")->excludes(sha);
+  command.add_option("--branch", args.branch, "only documents recorded under this branch");
+  add_deprecated_alias(command, "--out",
+                       command.add_option("-o,--output", args.out,
+                                          "a directory (one file per document) or FILE.json "
+                                          "(required)"),
+                       args.out);
 }
 
 }  // namespace raygate::cli

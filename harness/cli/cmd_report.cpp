@@ -2,10 +2,9 @@
 // one of the report formats (console, markdown, junit, json, html) to standard output or a
 // file. Exits 0 once the report is written, whatever the verdict (a report step should not fail
 // a CI job by itself); --exit-code makes it exit with the gate's code instead.
-#include <memory>
-
 #include "cli/commands.h"
 #include "cli/console.h"
+#include "cli/subcommand.h"
 #include "pipeline/document_commands.h"
 #include "report/reporter.h"
 
@@ -33,26 +32,21 @@ int report_command(const ReportArgs& args, const Console& console) {
 
 }  // namespace
 
-void add_report_command(CLI::App& app, int& exit_code) {
-  auto args = std::make_shared<ReportArgs>();
-  CLI::App* command = app.add_subcommand(
-      "report", "write the gate's verdict on a results document as " + report_format_list());
-  command->add_option("results", args->results, "results document (raygate run/compare --out)")
+void add_report_command(CLI::App& command, int& exit_code) {
+  ReportArgs& args = bind_command<ReportArgs>(command, report_command, exit_code);
+  command.add_option("results", args.results, "results document (raygate run/compare --out)")
       ->required()
       ->check(CLI::ExistingFile);
-  command->add_option("--format", args->format, report_format_list())
+  command.add_option("--format", args.format, report_format_list())
       ->check(CLI::IsMember(report_format_names()))
       ->capture_default_str();
-  command->add_option("-o,--output", args->output, "file to write; '-' for standard output")
+  command.add_option("-o,--output", args.output, "file to write; '-' for standard output")
       ->capture_default_str();
-  command->add_option("--policy", args->policy, "gate policy file (default: built-in defaults)")
+  command.add_option("--policy", args.policy, "gate policy file (default: built-in defaults)")
       ->check(CLI::ExistingFile);
-  command->add_flag("--exit-code", args->exit_code,
-                    "exit with the gate's code (0 pass, 1 regression, 3 not measured)");
+  command.add_flag("--exit-code", args.exit_code,
+                   "exit with the gate's code (0 pass, 1 regression, 3 not measured)");
   // --color is the global option (cli/console.h), accepted after `report` too.
-  command->callback([args, command, &exit_code] {
-    exit_code = report_command(*args, console_of(*command));
-  });
 }
 
 }  // namespace raygate::cli

@@ -5,14 +5,12 @@
 // failed, 3 a scene could not be measured (the document says which and why).
 #include <fmt/core.h>
 
-#include <memory>
-
 #include "cli/commands.h"
 #include "cli/console.h"
 #include "cli/measure_options.h"
-#include "cli/terminal_progress.h"
 #include "cli/report_options.h"
-#include "cli/store_options.h"
+#include "cli/subcommand.h"
+#include "cli/terminal_progress.h"
 #include "pipeline/run_measurement.h"
 #include "runner/baseline_tool.h"
 
@@ -24,14 +22,12 @@ struct RunArgs {
   std::string rev = "HEAD";
   std::string worktree;
   std::string out;
-  RecordArgs record;  // --store, --no-store, --branch
-  std::vector<std::string> reports;  // --report FORMAT:PATH
+  PublishOptions publish;  // --store, --no-store, --branch, --report, --format
 };
 
 int run_command(const RunArgs& args, const Console& console) {
   const MeasureContext context = load_measure_context(args.measure);
-  parse_report_targets(args.reports);
-  check_output_path(args.out, "--output");
+  check_publish_targets(args.publish, args.out, "--output");
   const BaselineTool baseline(context.tools.baseline);
   const RunTree tree = locate_run_tree(args.measure.repo, args.rev, args.worktree,
                                        context.cache_dir);
@@ -46,28 +42,22 @@ int run_command(const RunArgs& args, const Console& console) {
                              score->second.score, score->second.interval.lower,
                              score->second.interval.upper, score->second.scenes));
   }
-  return publish_measured(measured, args.record, context.cache_dir, context.policy, args.reports,
-                          console);
+  return publish_measured(measured, args.publish, context.cache_dir, context.policy, console);
 }
 
 }  // namespace
 
-void add_run_command(CLI::App& app, int& exit_code) {
-  auto args = std::make_shared<RunArgs>();
-  CLI::App* command = add_measuring_subcommand(
-      app, "run", "measure one revision against the baseline on a suite; writes a results document",
-      args->measure, false);
-  add_shard_options(*command, args->measure);
-  command->add_option("--rev", args->rev, "revision to measure (branch, tag, sha, HEAD~3, ...)")
+void add_run_command(CLI::App& command, int& exit_code) {
+  RunArgs& args = bind_command<RunArgs>(command, run_command, exit_code);
+  add_measure_options(command, args.measure);
+  add_shard_options(command, args.measure);
+  command.add_option("--rev", args.rev, "revision to measure (branch, tag, sha, HEAD~3, ...)")
       ->capture_default_str();
-  command->add_option("--worktree", args->worktree,
-                      "measure this directory as it is, uncommitted changes included");
-  add_publish_options(*command, args->out,
+  command.add_option("--worktree", args.worktree,
+                     "measure this directory as it is, uncommitted changes included");
+  add_publish_options(command, args.out,
                       "results document (default: <cache-dir>/runs/<time>-<sha>/results.json)",
-                      args->record, args->reports);
-  command->callback([args, command, &exit_code] {
-    exit_code = run_command(*args, console_of(*command));
-  });
+                      args.publish);
 }
 
 }  // namespace raygate::cli

@@ -5,11 +5,10 @@
 // family measured at 3 sizes or more.
 #include <fmt/core.h>
 
-#include <memory>
-
 #include "cli/commands.h"
 #include "cli/console.h"
 #include "cli/report_options.h"
+#include "cli/subcommand.h"
 #include "pipeline/document_commands.h"
 #include "report/gate_summary.h"
 #include "scaling/scaling_text.h"
@@ -21,21 +20,23 @@ struct ScalingArgs {
   std::string results;
   std::string policy;
   bool no_write = false;
-  std::vector<std::string> reports;
+  PublishOptions publish = [] {
+    PublishOptions p;
+    p.no_store = true;  // scaling writes the fits into the document, never to the store
+    return p;
+  }();
 };
 
 int scaling_command(const ScalingArgs& args, const Console& console) {
-  parse_report_targets(args.reports);
+  parse_report_targets(args.publish.reports);
   OutputFailures failures;
   const ScalingJudgement j = judge_scaling(args.results, args.policy, args.no_write, failures);
   for (const std::string& line : scaling_lines(j.analysis)) fmt::print("{}\n", line);
   print_gate_summary(j.gate, stdout);
-  if (!args.reports.empty()) {  // the scene table is run's and compare's; shown only on request
-    RecordArgs unrecorded;  // scaling writes the fits into the document, never to the store
-    unrecorded.no_store = true;
+  if (!args.publish.reports.empty()) {  // the scene table is run's and compare's; on request
     publish_reports(j.document, evaluate_gate(j.document, j.policy),
-                    publish_request(args.results, unrecorded, {}, j.policy, args.reports, console),
-                    console, failures);
+                    publish_request(args.publish, args.results, {}, j.policy, console), console,
+                    failures);
   }
   failures.say_summary(failures.exit_code(j.gate.exit_code));
   return failures.exit_code(j.gate.exit_code);
@@ -43,20 +44,15 @@ int scaling_command(const ScalingArgs& args, const Console& console) {
 
 }  // namespace
 
-void add_scaling_command(CLI::App& app, int& exit_code) {
-  auto args = std::make_shared<ScalingArgs>();
-  CLI::App* command = app.add_subcommand(
-      "scaling", "fit how time grows with scene size per scene family; judge a compare's change");
-  command->add_option("results", args->results, "results document (run or compare of a suite "
+void add_scaling_command(CLI::App& command, int& exit_code) {
+  ScalingArgs& args = bind_command<ScalingArgs>(command, scaling_command, exit_code);
+  command.add_option("results", args.results, "results document (run or compare of a suite "
                                                  "with 3+ sizes per scene, e.g. --suite scaling)")
       ->required();
-  command->add_option("--policy", args->policy,
-                      "gate policy file (max_exponent_increase, max_slowdown; docs/gate.md)");
-  command->add_flag("--no-write", args->no_write, "do not write the fits into the document");
-  add_report_options(*command, args->reports);
-  command->callback([args, command, &exit_code] {
-    exit_code = scaling_command(*args, console_of(*command));
-  });
+  command.add_option("--policy", args.policy,
+                     "gate policy file (max_exponent_increase, max_slowdown; docs/gate.md)");
+  command.add_flag("--no-write", args.no_write, "do not write the fits into the document");
+  add_report_options(command, args.publish.reports);
 }
 
 }  // namespace raygate::cli

@@ -6,6 +6,7 @@
 
 #include "cli/commands.h"
 #include "cli/console.h"
+#include "cli/subcommand.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "pipeline/scene_commands.h"
@@ -24,10 +25,20 @@ void run_generate(const SceneRequest& request, const std::string& output) {
   }
 }
 
+int run_convert(const ConvertRequest& request) {
+  for (const auto& path : convert_scene(request)) fmt::print("{}\n", path.string());
+  return 0;
+}
+
+int run_list(const std::string& format) {
+  print_result(format, scene_list_json, scene_list_text);
+  return 0;
+}
+
 void add_convert_command(CLI::App& scenes, int& exit_code) {
-  auto args = std::make_shared<ConvertRequest>();
-  CLI::App* convert = scenes.add_subcommand(
-      "convert", "Convert an NFF scene for another tracer: POV-Ray, OBJ + MTL, or pbrt-v4");
+  const auto [convert, args] = add_subcommand<ConvertRequest>(
+      scenes, "convert", "Convert an NFF scene for another tracer: POV-Ray, OBJ + MTL, or pbrt-v4",
+      run_convert, exit_code);
   convert->add_option("input", args->input, "NFF scene file")->required();
   convert->add_option("--to", args->format, "Output format: pov, obj or pbrt")->required();
   convert->add_option("-o,--output", args->output, "Output file (OBJ also writes OUT.mtl)")
@@ -36,35 +47,21 @@ void add_convert_command(CLI::App& scenes, int& exit_code) {
                       "Facets around tessellated spheres and cones (OBJ; pbrt cones)")
       ->default_val(args->segments)
       ->check(CLI::Range(3, 1024));
-  convert->callback([args, &exit_code] {
-    for (const auto& path : convert_scene(*args)) fmt::print("{}\n", path.string());
-    exit_code = 0;
-  });
 }
 
 }  // namespace
 
-void add_scenes_command(CLI::App& app, int& exit_code) {
-  CLI::App* scenes = app.add_subcommand(
-      "scenes", "List, generate and convert SPD scenes (NFF; POV-Ray, OBJ, pbrt-v4)");
-  scenes->require_subcommand(1);
+void add_scenes_command(CLI::App& scenes, int& exit_code) {
+  scenes.require_subcommand(1);
 
-  auto list_format = std::make_shared<std::string>();
-  CLI::App* list =
-      scenes->add_subcommand("list", "The 13 SPD scenes with default and largest size factors");
+  const auto [list, list_format] = add_subcommand<std::string>(
+      scenes, "list", "The 13 SPD scenes with default and largest size factors", run_list,
+      exit_code);
   add_format_option(*list, *list_format, {"text", "json"});
-  list->callback([list_format, &exit_code] {
-    if (*list_format == "json") {
-      fmt::print("{}\n", scene_list_json().dump(1));
-    } else {
-      fmt::print("{}", scene_list_text());
-    }
-    exit_code = 0;
-  });
 
   auto args = std::make_shared<SceneRequest>();
   auto output = std::make_shared<std::string>();
-  CLI::App* generate = scenes->add_subcommand("generate", "Write one SPD scene as NFF");
+  CLI::App* generate = scenes.add_subcommand("generate", "Write one SPD scene as NFF");
   generate->add_option("name", args->name, "Scene name (see 'raygate scenes list')")->required();
   generate->add_option("-s,--size", args->size, "SPD size factor (default: the scene's own)");
   generate->add_option("-t,--tessellate", args->tessellate,
@@ -78,7 +75,7 @@ void add_scenes_command(CLI::App& app, int& exit_code) {
     run_generate(*args, *output);
     exit_code = 0;
   });
-  add_convert_command(*scenes, exit_code);
+  add_convert_command(scenes, exit_code);
 }
 
 }  // namespace raygate::cli

@@ -2,9 +2,8 @@
 // (pipeline/spd_validation.h). Exit 0 when every count is within the tolerance, 1 otherwise.
 #include <fmt/core.h>
 
-#include <memory>
-
 #include "cli/commands.h"
+#include "cli/subcommand.h"
 #include "core/exit_codes.h"
 #include "core/fs.h"
 #include "pipeline/spd_validation.h"
@@ -27,19 +26,16 @@ int run_validate(const ValidateArgs& args) {
 
 }  // namespace
 
-void add_validate_command(CLI::App& app, int& exit_code) {
-  auto args = std::make_shared<ValidateArgs>();
-  CLI::App* cmd = app.add_subcommand(
-      "validate", "Compare the baseline's SPD ray counts with the published SPD statistics");
-  cmd->add_option("scenes", args->request.scenes, "Classic scenes to check (default: all seven)");
-  cmd->add_option("--accel", args->request.accel, "none or bbox (same counts; bbox is faster)")
+void add_validate_command(CLI::App& command, int& exit_code) {
+  ValidateArgs& args = bind_command<ValidateArgs>(command, run_validate, exit_code);
+  command.add_option("scenes", args.request.scenes, "Classic scenes to check (default: all seven)");
+  command.add_option("--accel", args.request.accel, "none or bbox (same counts; bbox is faster)")
       ->capture_default_str();
-  cmd->add_option("--work-dir", args->request.work_dir, "Where scenes and renders go")
+  command.add_option("--work-dir", args.request.work_dir, "Where scenes and renders go")
       ->capture_default_str();
-  cmd->add_option("--markdown", args->markdown, "Also write the table to this file");
-  cmd->add_option("--baseline", args->request.baseline,
-                  "raygate-baseline to use (default: beside raygate)");
-  cmd->callback([args, &exit_code] { exit_code = run_validate(*args); });
+  command.add_option("--markdown", args.markdown, "Also write the table to this file");
+  command.add_option("--baseline", args.request.baseline,
+                     "raygate-baseline to use (default: beside raygate)");
 }
 
 }  // namespace raygate::cli

@@ -1,11 +1,13 @@
 // raygate: measures ray tracers against a fixed baseline tracer on the SPD scenes and gates
-// merges on the normalized ratio. This file only wires subcommands and maps errors to exit codes.
+// merges on the normalized ratio. This file only names the subcommands (a table, as ninja's
+// kTools) and maps errors to exit codes.
 #include <fmt/core.h>
 
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
 #include <string>
+#include <vector>
 
 #include "cli/commands.h"
 #include "cli/console.h"
@@ -15,24 +17,67 @@
 #include "core/interrupt.h"
 #include "core/sanitize.h"
 #include "core/strays.h"
+#include "report/reporter.h"
 
 namespace {
 
-using AddCommand = void (*)(CLI::App& app, int& exit_code);
+namespace cli = raygate::cli;
+
+// A subcommand as `raygate --help` lists it, and the function that binds its options.
+struct Command {
+  const char* name;
+  std::string help;
+  void (*add)(CLI::App& command, int& exit_code);
+};
 
 // Every subcommand, in the order `raygate --help` lists them: the inputs (scenes, goldens,
-// adapters), measuring (run, compare, bisect), the documents (history, gate, report), then across
-// documents and machines (consistency, doctor, merge), and history's alerts and growth (alert,
-// scaling).
-constexpr AddCommand kCommands[] = {
-    raygate::cli::add_scenes_command,      raygate::cli::add_golden_command,
-    raygate::cli::add_validate_command,    raygate::cli::add_adapter_command,
-    raygate::cli::add_run_command,         raygate::cli::add_history_commands,
-    raygate::cli::add_compare_command,     raygate::cli::add_gate_command,
-    raygate::cli::add_bisect_command,      raygate::cli::add_report_command,
-    raygate::cli::add_consistency_command, raygate::cli::add_doctor_command,
-    raygate::cli::add_merge_command,       raygate::cli::add_alert_command,
-    raygate::cli::add_scaling_command};
+// adapters), measuring and the documents (run, history, import, export, compare, gate, bisect,
+// report), then across documents and machines (consistency, doctor, merge), and history's alerts
+// and growth (alert, scaling).
+std::vector<Command> commands() {
+  return {
+      {"scenes", "List, generate and convert SPD scenes (NFF; POV-Ray, OBJ, pbrt-v4)",
+       cli::add_scenes_command},
+      {"golden", "Verify or bless the baseline's golden images", cli::add_golden_command},
+      {"validate", "Compare the baseline's SPD ray counts with the published SPD statistics",
+       cli::add_validate_command},
+      {"adapter", "Work with adapter files (adapters/README.md)", cli::add_adapter_command},
+      {"run", "measure one revision against the baseline on a suite; writes a results document",
+       cli::add_run_command},
+      {"history", "normalized ratio and image error per scene over commits, from the store",
+       cli::add_history_command},
+      {"import", "store results documents (a document already stored is kept once)",
+       cli::add_import_command},
+      {"export", "write stored results documents as JSON (newest first), as they were stored",
+       cli::add_export_command},
+      {"compare", "measure base and head in the same job and gate the change",
+       cli::add_compare_command},
+      {"gate", "judge a results document under a policy; the exit code says",
+       cli::add_gate_command},
+      {"bisect", "find the first commit that made a scene slower (or its image wrong)",
+       cli::add_bisect_command},
+      {"report",
+       "write the gate's verdict on a results document as " + raygate::report_format_list(),
+       cli::add_report_command},
+      {"consistency",
+       "are the tracer's ratios the same on different machines? r² and per-scene deviation over "
+       "results documents of one tracer revision",
+       cli::add_consistency_command},
+      {"doctor",
+       "is this machine fit to measure? checks governor, turbo, load, CPUs, SMT, perf, ASLR, "
+       "swap, virtualization, and measures a noise score",
+       cli::add_doctor_command},
+      {"merge",
+       "join the results documents of the shards of a CI matrix (--shard K/N) into one and gate "
+       "it",
+       cli::add_merge_command},
+      {"alert",
+       "flag a slowdown or a memory step that landed: change points in each series' history "
+       "(docs/gate.md)",
+       cli::add_alert_command},
+      {"scaling", "fit how time grows with scene size per scene family; judge a compare's change",
+       cli::add_scaling_command}};
+}
 
 // The last words, on standard error. Never throws: after a hang-up the terminal is gone and
 // every write fails (EIO), and the exit code must still say what happened.
@@ -54,12 +99,14 @@ int main(int argc, char** argv) {
   // core/strays.h).
   raygate::install_interrupt_handlers();
   raygate::become_subreaper();
-  raygate::cli::add_global_options(app);
+  cli::add_global_options(app);
   int exit_code = 0;
-  for (const AddCommand add : kCommands) add(app, exit_code);
+  for (const Command& command : commands()) {
+    command.add(*app.add_subcommand(command.name, command.help), exit_code);
+  }
   try {
     // Before parsing: the command line overrides these (cli/project_config.h).
-    raygate::cli::apply_project_defaults(
+    cli::apply_project_defaults(
         app, raygate::load_project_defaults(raygate::find_config_argument(argc, argv)));
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {

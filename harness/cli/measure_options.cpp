@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "cli/subcommand.h"
 #include "runner/timing/timing_modes.h"
 
 namespace raygate::cli {
@@ -36,36 +37,24 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
   command.add_option("--duet-cpus", args.duet_cpus, "the two CPUs of the duet schedule")
       ->delimiter(',')
       ->capture_default_str();
-  command.add_option("--warmup", args.warmup, "untimed runs per program before the rounds")
-      ->check(CLI::Range(0, 10))
-      ->capture_default_str();
-  command.add_option("--target", args.stopping.target_relative_half_width,
-                     "stop a scene once the ratio's 95% CI half-width is below this fraction")
-      ->check(CLI::Range(0.0001, 1.0))
-      ->capture_default_str();
-  command.add_option("--min-rounds", args.stopping.min_rounds,
-                     "rounds before the stopping rule applies")
-      ->check(CLI::Range(2, 1000))
-      ->capture_default_str();
-  command.add_option("--max-rounds", args.stopping.max_rounds, "round budget per scene")
-      ->check(CLI::Range(1, 100000))
-      ->capture_default_str();
-  command.add_option("--max-seconds", args.stopping.max_seconds,
-                     "time budget per scene, in seconds")
-      ->check(CLI::Range(0.0, 1e7))
-      ->capture_default_str();
-  command.add_option("--max-minutes", args.stopping.max_minutes,
+  add_bounded_option(command, "--warmup", args.warmup, 0, 10,
+                     "untimed runs per program before the rounds");
+  add_bounded_option(command, "--target", args.stopping.target_relative_half_width, 0.0001, 1.0,
+                     "stop a scene once the ratio's 95% CI half-width is below this fraction");
+  add_bounded_option(command, "--min-rounds", args.stopping.min_rounds, 2, 1000,
+                     "rounds before the stopping rule applies");
+  add_bounded_option(command, "--max-rounds", args.stopping.max_rounds, 1, 100000,
+                     "round budget per scene");
+  add_bounded_option(command, "--max-seconds", args.stopping.max_seconds, 0.0, 1e7,
+                     "time budget per scene, in seconds");
+  add_bounded_option(command, "--max-minutes", args.stopping.max_minutes, 0.0, 1e6,
                      "time budget of the whole measurement, shared by the scenes still to "
-                     "measure; 0 = none")
-      ->check(CLI::Range(0.0, 1e6))
-      ->capture_default_str();
+                     "measure; 0 = none");
   command.add_option("--timing", args.metric, timing_choices_help())
       ->check(CLI::IsMember(timing_mode_choices()));
-  command.add_option("--repeats", args.repeats,
+  add_bounded_option(command, "--repeats", args.repeats, 1, 10,
                      "runs of each program per round, interleaved; the round keeps each "
-                     "one's fastest (steadier on a busy machine, at that many times the runs)")
-      ->check(CLI::Range(1, 10))
-      ->capture_default_str();
+                     "one's fastest (steadier on a busy machine, at that many times the runs)");
   command.add_option("--jobs", args.jobs, "parallel build jobs (default: all allowed CPUs)");
   command.add_option("--policy", args.policy,
                      "gate policy file: slowdown limit, significance, image thresholds "
@@ -76,22 +65,9 @@ void add_change_measure_options(CLI::App& command, MeasureArgs& args) {
   args.stopping = change_stopping_policy();
   args.baseline_rounds = kChangeBaselineRounds;
   add_measure_options(command, args);
-  command.add_option("--baseline-rounds", args.baseline_rounds,
+  add_bounded_option(command, "--baseline-rounds", args.baseline_rounds, 0, 100000,
                      "rounds per scene the baseline joins (the change of head against base "
-                     "needs none; the normalized ratios need a few); 0 = every round")
-      ->check(CLI::Range(0, 100000))
-      ->capture_default_str();
-}
-
-CLI::App* add_measuring_subcommand(CLI::App& app, const std::string& name,
-                                   const std::string& help, MeasureArgs& args, bool change) {
-  CLI::App* command = app.add_subcommand(name, help);
-  if (change) {
-    add_change_measure_options(*command, args);
-  } else {
-    add_measure_options(*command, args);
-  }
-  return command;
+                     "needs none; the normalized ratios need a few); 0 = every round");
 }
 
 void add_shard_options(CLI::App& command, MeasureArgs& args) {

@@ -15,15 +15,11 @@ namespace raygate::cli {
 // The options bind straight into the pipeline's record of them (pipeline/measure_options.h).
 using MeasureArgs = MeasureOptions;
 
+// run's: where the tracer is, how to build it, which scenes, the schedule and stopping policy.
 void add_measure_options(CLI::App& command, MeasureArgs& args);
 
-// run's, compare's or bisect's subcommand with the measure options bound to `args`: compare's
-// and bisect's (`change`) with add_change_measure_options, run's with add_measure_options.
-CLI::App* add_measuring_subcommand(CLI::App& app, const std::string& name,
-                                   const std::string& help, MeasureArgs& args, bool change);
-
 // compare's and bisect's: the measure options with the change's stopping policy and baseline
-// rounds as defaults (measure/stopping.h), and --baseline-rounds (the change of head against
+// rounds as defaults (measure/stopping_policy.h), and --baseline-rounds (the change of head against
 // base needs no baseline; the normalized ratios need a few).
 void add_change_measure_options(CLI::App& command, MeasureArgs& args);
 

@@ -1,7 +1,7 @@
 // The options of the commands that publish a results document (run, compare, merge, scaling):
 // `--format FORMAT` on standard output, `--report FORMAT:PATH` in files or on standard output
-// (PATH -), and the request pipeline/publish.h carries out from them, the console table on
-// standard error (colour on a terminal; none with --quiet).
+// (PATH -), bound into the pipeline's PublishOptions (pipeline/publish_options.h makes the
+// request pipeline/publish.h carries out from them).
 #pragma once
 
 #include <CLI/CLI.hpp>
@@ -9,11 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "cli/console.h"
 #include "cli/store_options.h"
-#include "gate/policy.h"
-#include "pipeline/publish.h"
-#include "pipeline/suite_measurement.h"
+#include "pipeline/publish_options.h"
 
 namespace raygate::cli {
 
@@ -23,20 +20,6 @@ void add_report_options(CLI::App& command, std::vector<std::string>& reports);
 // -o/--output (with the deprecated --out) for the document, --store, --no-store, --branch, and
 // --report/--format: what every command that publishes a document takes.
 void add_publish_options(CLI::App& command, std::string& output, const std::string& output_help,
-                         RecordArgs& record, std::vector<std::string>& reports);
-
-// Where the document, its record and its reports go, as the options and the console say. The
-// store is --store, else <cache_dir>/results.db, none with --no-store. UsageError for a bad
-// report spec (pipeline/publish.h, parse_report_targets).
-PublishRequest publish_request(const std::filesystem::path& document_path,
-                               const RecordArgs& record, const std::filesystem::path& cache_dir,
-                               const GatePolicy& policy, const std::vector<std::string>& reports,
-                               const Console& console);
-
-// The end of run and compare: the measured document's failed writes counted, then publish()
-// with the request above; returns the exit code.
-int publish_measured(const MeasuredDocument& measured, const RecordArgs& record,
-                     const std::filesystem::path& cache_dir, const GatePolicy& policy,
-                     const std::vector<std::string>& reports, const Console& console);
+                         PublishOptions& options);
 
 }  // namespace raygate::cli

@@ -43,11 +43,11 @@ void add_history_filters(CLI::App& command, HistoryQuery& query) {
       ->capture_default_str();
 }
 
-void add_record_options(CLI::App& command, RecordArgs& args) {
-  CLI::Option* store = add_store_option(command, args.store, "<cache-dir>/results.db");
-  command.add_flag("--no-store", args.no_store, "do not record the results in the store")
+void add_record_options(CLI::App& command, PublishOptions& options) {
+  CLI::Option* store = add_store_option(command, options.store, "<cache-dir>/results.db");
+  command.add_flag("--no-store", options.no_store, "do not record the results in the store")
       ->excludes(store);
-  command.add_option("--branch", args.branch,
+  command.add_option("--branch", options.branch,
                      "branch to record the results under when the revision names none");
 }
 

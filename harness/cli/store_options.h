@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <string>
 
+#include "pipeline/publish_options.h"
 #include "store/store.h"
 
 namespace raygate::cli {
@@ -21,13 +22,7 @@ CLI::Option* add_store_option(CLI::App& command, std::string& store,
 // --branch, --scene, --repository, --adapter, --suite, --role.
 void add_history_filters(CLI::App& command, HistoryQuery& query);
 
-struct RecordArgs {
-  std::string store;  // "" -> <cache-dir>/results.db
-  bool no_store = false;
-  std::string branch;  // recorded when the revision names no branch
-};
-
-// --store, --no-store, --branch for run and compare.
-void add_record_options(CLI::App& command, RecordArgs& args);
+// --store, --no-store, --branch for run, compare and merge (pipeline/publish_options.h).
+void add_record_options(CLI::App& command, PublishOptions& options);
 
 }  // namespace raygate::cli

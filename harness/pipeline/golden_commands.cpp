@@ -1,0 +1,68 @@
+#include "pipeline/golden_commands.h"
+
+#include <fmt/core.h>
+
+#include <optional>
+
+#include "core/error.h"
+
+namespace raygate {
+namespace {
+
+BaselineGoldens open_goldens(const GoldenOptions& options) {
+  return open_baseline_goldens(options.suite, options.scenes, options.golden_dir,
+                               options.work_dir, options.baseline);
+}
+
+}  // namespace
+
+BlessFromRun from_run_request(const GoldenOptions& options) {
+  BlessFromRun request;
+  request.results = std::filesystem::absolute(options.from_run);
+  const std::optional<Role> role = parse_role(options.role);
+  if (!role || *role == Role::baseline) {
+    throw UsageError("--role: no such revision role '" + options.role +
+                     "' (tracer, base or head)");
+  }
+  request.role = *role;
+  request.scene_ids = options.scenes;
+  request.golden_dir = options.golden_dir;
+  request.baseline = options.baseline;
+  return request;
+}
+
+GoldenOutcome baseline_verification_outcome(const GoldenVerification& v, std::size_t scenes) {
+  const std::string summary = fmt::format("{} scenes: {} identical, {} different, {} missing",
+                                          scenes, v.identical, v.different, v.missing);
+  if (v.missing > 0) return {summary, ExitCode::usage};
+  return {summary, v.different > 0 ? ExitCode::regression : ExitCode::pass};
+}
+
+GoldenOutcome run_verification_outcome(const GoldenVerification& v) {
+  const std::size_t scenes = v.identical + v.different + v.inconclusive + v.missing;
+  const std::string summary =
+      fmt::format("{} scenes: {} same, {} different, {} too noisy to tell, {} missing", scenes,
+                  v.identical, v.different, v.inconclusive, v.missing);
+  if (v.different > 0) return {summary, ExitCode::regression};
+  return {summary, v.missing > 0 ? ExitCode::usage : ExitCode::pass};
+}
+
+GoldenOutcome verify_goldens(const GoldenOptions& options, ProgressSink& lines) {
+  if (!options.from_run.empty()) {
+    return run_verification_outcome(verify_goldens_from_run(
+        from_run_request(options), std::filesystem::path(options.work_dir) / "evidence", lines));
+  }
+  const BaselineGoldens goldens = open_goldens(options);
+  return baseline_verification_outcome(verify_baseline_goldens(goldens, lines),
+                                       goldens.selected.size());
+}
+
+void bless_goldens(const GoldenOptions& options, ProgressSink& lines) {
+  if (options.from_run.empty()) {
+    bless_baseline_goldens(open_goldens(options), lines);
+  } else {
+    bless_goldens_from_run(from_run_request(options), lines);
+  }
+}
+
+}  // namespace raygate

@@ -1,0 +1,58 @@
+#include "pipeline/publish_options.h"
+
+#include <iostream>
+
+#include "core/error.h"
+#include "pipeline/output_failures.h"
+
+namespace raygate {
+
+void check_publish_targets(const PublishOptions& options, const std::string& output,
+                           const std::string& option) {
+  parse_report_targets(options.reports);
+  check_output_path(output, option);
+}
+
+PublishRequest publish_request(const PublishOptions& options,
+                               const std::filesystem::path& document_path,
+                               const std::filesystem::path& cache_dir, const GatePolicy& policy,
+                               const Console& console) {
+  PublishRequest request;
+  request.document_path = document_path;
+  if (!options.no_store) {
+    request.store = options.store.empty() ? cache_dir / "results.db"
+                                          : std::filesystem::path(options.store);
+  }
+  request.branch = options.branch;
+  request.policy = policy;
+  request.reports = parse_report_targets(options.reports);
+  if (!console.quiet()) request.table = &std::cerr;  // chatter: standard error
+  request.table_colour = console.colour(stderr);
+  request.report_colour = console.colour(stdout);
+  return request;
+}
+
+int publish_measured(const MeasuredDocument& measured, const PublishOptions& options,
+                     const std::filesystem::path& cache_dir, const GatePolicy& policy,
+                     const Console& console) {
+  OutputFailures failures;
+  for (const FailedWrite& failed : measured.unwritten) failures.add("the results document", failed);
+  return publish(measured.document,
+                 publish_request(options, measured.path, cache_dir, policy, console), console,
+                 failures);
+}
+
+int merge_and_publish(MergeRequest request, const PublishOptions& options,
+                      const std::filesystem::path& cache_dir, const Console& console) {
+  if (request.out.empty()) throw UsageError("merge: --output is required (the merged document)");
+  check_publish_targets(options, request.out, "--output");
+  request.out = std::filesystem::absolute(request.out).string();
+  OutputFailures failures;
+  const MergedShards merged = merge_shard_documents(request, console, failures);
+  return publish(merged.document,
+                 publish_request(options, request.out, std::filesystem::absolute(cache_dir),
+                                 merged.policy, console),
+                 console, failures);
+}
+
+}  // namespace raygate

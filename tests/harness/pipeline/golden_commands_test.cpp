@@ -1,0 +1,57 @@
+// pipeline/golden_commands: `raygate golden` as library calls. The closing line and exit code of
+// each kind of verification (a different scene fails; a missing golden is a usage problem, which
+// outranks a difference only for the baseline's own set) and the role a run's images are taken
+// from, without rendering anything.
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "pipeline/golden_commands.h"
+
+namespace raygate {
+namespace {
+
+// Scenes identical (or the same within noise), different, missing, too noisy to tell.
+GoldenVerification counted(std::size_t identical, std::size_t different, std::size_t missing,
+                           std::size_t inconclusive = 0) {
+  return {identical, different, missing, inconclusive};
+}
+
+TEST(GoldenCommands, TheBaselinesVerificationSaysEveryCount) {
+  const GoldenOutcome all = baseline_verification_outcome(counted(13, 0, 0), 13);
+  EXPECT_EQ(all.summary, "13 scenes: 13 identical, 0 different, 0 missing");
+  EXPECT_EQ(all.exit_code, ExitCode::pass);
+  EXPECT_EQ(baseline_verification_outcome(counted(12, 1, 0), 13).exit_code,
+            ExitCode::regression);
+  // Every golden of the baseline's set is expected: one missing is a usage problem first.
+  EXPECT_EQ(baseline_verification_outcome(counted(11, 1, 1), 13).exit_code, ExitCode::usage);
+}
+
+TEST(GoldenCommands, ARunsVerificationCountsNoiseAndPutsADifferenceFirst) {
+  const GoldenOutcome noisy = run_verification_outcome(counted(2, 0, 0, 1));
+  EXPECT_EQ(noisy.summary, "3 scenes: 2 same, 0 different, 1 too noisy to tell, 0 missing");
+  EXPECT_EQ(noisy.exit_code, ExitCode::pass);
+  EXPECT_EQ(run_verification_outcome(counted(1, 0, 2)).exit_code, ExitCode::usage);
+  EXPECT_EQ(run_verification_outcome(counted(1, 1, 2)).exit_code, ExitCode::regression);
+}
+
+TEST(GoldenCommands, ARunsImagesComeFromOneOfItsRevisions) {
+  GoldenOptions options;
+  options.from_run = "results.json";
+  options.scenes = {"balls"};
+  options.golden_dir = "golden/povray";
+  const BlessFromRun tracer = from_run_request(options);
+  EXPECT_EQ(tracer.role, Role::tracer);
+  EXPECT_TRUE(tracer.results.is_absolute());
+  EXPECT_EQ(tracer.results.filename().string(), "results.json");
+  EXPECT_EQ(tracer.scene_ids, std::vector<std::string>{"balls"});
+  EXPECT_EQ(tracer.golden_dir.string(), "golden/povray");
+  options.role = "head";
+  EXPECT_EQ(from_run_request(options).role, Role::head);
+  for (const char* refused : {"baseline", "HEAD", ""}) {
+    options.role = refused;
+    EXPECT_THROW(from_run_request(options), UsageError) << refused;
+  }
+}
+
+}  // namespace
+}  // namespace raygate

@@ -5,7 +5,6 @@
 
 #include <fmt/core.h>
 
-#include "scaling/scaling_json.h"
 #include "scaling/scaling_text.h"
 
 namespace raygate {
@@ -16,9 +15,8 @@ ScalingLimits scaling_limits(const GatePolicy& policy) {
 
 std::vector<SceneGate> judge_growth(const ResultsDocument& document, const GatePolicy& policy) {
   std::vector<SceneGate> gates;
-  if (document.scaling.is_null()) return gates;
-  const ScalingAnalysis analysis = scaling_from_json(document.scaling, "results document");
-  for (const FamilyScaling& family : analysis.families) {
+  if (!document.scaling) return gates;
+  for (const FamilyScaling& family : document.scaling->families) {
     if (!family.change) continue;
     ExponentChange change = *family.change;
     change.limit = policy.max_exponent_increase;

@@ -91,21 +91,21 @@ GatePolicy load_policy(const std::filesystem::path& path) {
   return policy;
 }
 
-GatePolicy recorded_policy(const nlohmann::json& settings, std::string& note) {
-  const std::string file = settings.value("policy_file", std::string());
+GatePolicy recorded_policy(const MeasurementSettings& settings, std::string& note) {
+  const std::string file = settings.policy_file.value_or("");
   if (!file.empty() && std::filesystem::is_regular_file(file)) {
     note = "the policy it was measured under, " + file;
     return load_policy(file);
   }
   GatePolicy policy;
-  policy.defaults.max_slowdown = settings.value("max_slowdown", policy.defaults.max_slowdown);
-  policy.defaults.significance = settings.value("significance", policy.defaults.significance);
+  policy.defaults.max_slowdown = settings.max_slowdown.value_or(policy.defaults.max_slowdown);
+  policy.defaults.significance = settings.significance.value_or(policy.defaults.significance);
   policy.defaults.max_memory_increase =
-      settings.value("max_memory_increase", policy.defaults.max_memory_increase);
+      settings.max_memory_increase.value_or(policy.defaults.max_memory_increase);
   policy.max_exponent_increase =
-      settings.value("max_exponent_increase", policy.max_exponent_increase);
+      settings.max_exponent_increase.value_or(policy.max_exponent_increase);
   policy.family_significance =
-      settings.value("family_significance", policy.family_significance);
+      settings.family_significance.value_or(policy.family_significance);
   note = fmt::format("the limits it was measured under (max_slowdown {}, significance {}){}",
                      policy.defaults.max_slowdown, policy.defaults.significance,
                      file.empty() ? "" : "; its policy file " + file +

@@ -14,6 +14,7 @@
 #include "compare/image_compare.h"
 #include "measure/family.h"
 #include "measure/memory_change.h"
+#include "results/measurement_settings.h"
 
 namespace raygate {
 
@@ -49,6 +50,6 @@ GatePolicy load_policy(const std::filesystem::path& path);
 // The policy a results document was measured under, for judging it again (gate, merge) when no
 // --policy is given: its policy file when that file is still there, else the defaults it
 // recorded (settings.max_slowdown, settings.significance); `note` says which was used.
-GatePolicy recorded_policy(const nlohmann::json& settings, std::string& note);
+GatePolicy recorded_policy(const MeasurementSettings& settings, std::string& note);
 
 }  // namespace raygate

@@ -59,42 +59,54 @@ std::vector<int> adapter_pinned_cpus(const MeasureContext& context) {
   return {allowed.begin(), allowed.begin() + static_cast<long>(count)};
 }
 
-nlohmann::json measure_settings(const MeasureContext& c) {
+namespace {
+
+// Who chose the pinned CPUs: the adapter's pin_cpus, --pin, or nobody.
+PinnedBy pinned_by(const MeasureContext& c, const std::vector<int>& adapter_cpus) {
+  if (!adapter_cpus.empty()) return PinnedBy::adapter;
+  return c.schedule.pin_cpus.empty() ? PinnedBy::none : PinnedBy::option;
+}
+
+}  // namespace
+
+MeasurementSettings measure_settings(const MeasureContext& c) {
   // What was really pinned: --pin's CPUs, or those the adapter's pin_cpus chose (issue 26: a
   // document said "pin_cpus": [] while the adapter had pinned the tracer to CPU 0).
   const std::vector<int> adapter_cpus = adapter_pinned_cpus(c);
-  nlohmann::json settings = {
-      {"schedule", std::string(to_string(c.schedule.kind))},
-      {"warmup_runs", c.schedule.warmup_runs},
-      {"pin_cpus", adapter_cpus.empty() ? c.schedule.pin_cpus : adapter_cpus},
-      {"pinned_by", !adapter_cpus.empty()            ? "adapter"
-                    : !c.schedule.pin_cpus.empty()   ? "--pin"
-                                                     : ""},
-      {"duet_cpus", c.schedule.duet_cpus},
-      {"round_cpus", c.schedule.round_cpus},
-      {"baseline_rounds", c.schedule.normalizer_rounds},
-      {"repeats", c.schedule.repeats},
-      {"target_relative_half_width", c.stopping.target_relative_half_width},
-      {"min_rounds", c.stopping.min_rounds},
-      {"max_rounds", c.stopping.max_rounds},
-      {"max_seconds_per_scene", c.stopping.max_seconds},
-      {"max_minutes", c.stopping.max_minutes},
-      {"metric", settings_metric(c)},
-      {"metric_by_threads",
-       !simulated(c) && c.timing_choice.empty() && c.adapter.timing.metric_by_threads},
-      {"timing_source", std::string(to_string(timing_mode(c).source()))},
-      {"tracer_clock", std::string(timing_mode(c).tracer_clock())},
-      {"baseline_clock", std::string(timing_mode(c).baseline_clock())},
-      {"threads", c.adapter.threads},
-      {"golden_dir", c.golden_dir.string()},
-      {"policy_file", c.policy.file.string()},
-      {"max_slowdown", c.policy.defaults.max_slowdown},
-      {"significance", c.policy.defaults.significance},
-      {"family_significance", c.policy.family_significance},
-      {"max_exponent_increase", c.policy.max_exponent_increase},
-      {"max_memory_increase", c.policy.defaults.max_memory_increase}};
-  if (c.shard) settings["shard"] = shard_to_json(*c.shard);
-  return settings;
+  const TimingMode& mode = timing_mode(c);
+  // One literal in the record's order; the policy's limits are those it will be judged again
+  // by (gate/policy.h recorded_policy).
+  return {.schedule = c.schedule.kind,
+          .warmup_runs = c.schedule.warmup_runs,
+          .pin_cpus = adapter_cpus.empty() ? c.schedule.pin_cpus : adapter_cpus,
+          .pinned_by = pinned_by(c, adapter_cpus),
+          .duet_cpus = c.schedule.duet_cpus,
+          .round_cpus = c.schedule.round_cpus,
+          .baseline_rounds = c.schedule.normalizer_rounds,
+          .repeats = c.schedule.repeats,
+          .target_relative_half_width = c.stopping.target_relative_half_width,
+          .min_rounds = c.stopping.min_rounds,
+          .max_rounds = c.stopping.max_rounds,
+          .max_seconds_per_scene = c.stopping.max_seconds,
+          .max_minutes = c.stopping.max_minutes,
+          .metric = settings_metric(c),
+          .metric_by_threads =
+              !simulated(c) && c.timing_choice.empty() && c.adapter.timing.metric_by_threads,
+          .timing_source = mode.source(),
+          .tracer_clock = std::string(mode.tracer_clock()),
+          .baseline_clock = std::string(mode.baseline_clock()),
+          .threads = c.adapter.threads,
+          .golden_dir = c.golden_dir.string(),
+          .goldens = std::nullopt,  // whose they are: new_document reads the golden manifest
+          .policy_file = c.policy.file.string(),
+          .max_slowdown = c.policy.defaults.max_slowdown,
+          .significance = c.policy.defaults.significance,
+          .family_significance = c.policy.family_significance,
+          .max_exponent_increase = c.policy.max_exponent_increase,
+          .max_memory_increase = c.policy.defaults.max_memory_increase,
+          .shard = c.shard,
+          .merged_shards = std::nullopt,
+          .unknown = {}};
 }
 
 }  // namespace raygate

@@ -14,6 +14,7 @@
 #include "core/paths.h"
 #include "gate/policy.h"
 #include "measure/stopping_policy.h"
+#include "results/measurement_settings.h"
 #include "results/shard.h"
 #include "runner/baseline_contender.h"
 #include "runner/cachegrind.h"
@@ -67,7 +68,8 @@ std::string shard_note(const MeasureContext& context);
 // --pin names others: the first `threads` CPUs this process may use; empty otherwise.
 std::vector<int> adapter_pinned_cpus(const MeasureContext& context);
 
-// The settings object of a results document: how this measurement was made.
-nlohmann::json measure_settings(const MeasureContext& context);
+// The settings of a results document: how this measurement was made (everything but whose
+// goldens judged it, which the golden manifest says: pipeline/suite_measurement.cpp).
+MeasurementSettings measure_settings(const MeasureContext& context);
 
 }  // namespace raygate

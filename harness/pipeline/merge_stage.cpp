@@ -27,7 +27,7 @@ MergedShards merge_shard_documents(const MergeRequest& request, const PublishSin
   std::string note;
   MergedShards merged;
   merged.policy = request.policy.empty() || inputs.empty()
-                      ? recorded_policy(inputs.empty() ? nlohmann::json::object()
+                      ? recorded_policy(inputs.empty() ? MeasurementSettings{}
                                                        : inputs.front().document.settings,
                                         note)
                       : load_policy(request.policy);

@@ -108,7 +108,7 @@ ResultsDocument new_document(DocumentKind kind, const MeasureContext& context,
   document.settings = measure_settings(context);
   // Whose goldens judge this run's images ("none": the tracer has none yet), so a report can
   // say so once instead of once per scene.
-  document.settings["goldens"] = golden_owner(load_golden_manifest(context.golden_dir));
+  document.settings.goldens = golden_owner(load_golden_manifest(context.golden_dir));
   if (context.shard) document.shard = to_string(context.shard->spec);
   return document;
 }

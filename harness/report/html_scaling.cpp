@@ -7,7 +7,6 @@
 #include <cmath>
 
 #include "report/html_parts.h"
-#include "scaling/scaling_json.h"
 #include "scaling/scaling_text.h"
 
 namespace raygate::report::html {
@@ -119,9 +118,8 @@ std::string family_block(const FamilyScaling& family) {
 }  // namespace
 
 std::string scaling_section(const ResultsDocument& document) {
-  if (document.scaling.is_null()) return "";
-  const ScalingAnalysis analysis = scaling_from_json(document.scaling, "results document");
-  if (analysis.families.empty()) return "";
+  if (!document.scaling || document.scaling->families.empty()) return "";
+  const ScalingAnalysis& analysis = *document.scaling;
   std::string html =
       R"(<section class="card scaling" id="scaling"><h2>Growth with scene size</h2>)"
       R"(<p class="muted">Seconds against primitives, both axes logarithmic: the slope k is the )"

@@ -10,7 +10,7 @@
 #include "report/memory_sections.h"
 #include "report/report_model.h"
 #include "report/reporters.h"
-#include "scaling/scaling_json.h"
+#include "results/settings_json.h"
 #include "scaling/scaling_text.h"
 
 namespace raygate::report {
@@ -111,7 +111,7 @@ std::string details(const ReportInput& input) {
     text += fmt::format("  - override {}: {}\n", md(id), md(scene.reason));
   }
   text.append("\n**Machine**\n\n").append(key_values(d.machine));
-  text.append("\n**Settings**\n\n").append(key_values(d.settings));
+  text.append("\n**Settings**\n\n").append(key_values(to_json(d.settings)));
   return text + "\n</details>\n";
 }
 
@@ -153,9 +153,9 @@ std::string MarkdownReporter::compose(const ReportInput& input,
   }
   for (const std::string& note : input.gate.notes) notes += "- note: " + md(note) + "\n";
   if (!notes.empty()) text.append("\n").append(notes);
-  if (!d.scaling.is_null()) {
+  if (d.scaling) {
     text += "\n**Growth with scene size** (exponent k of t ≈ c·n^k, 95% CI)\n\n```\n";
-    for (const std::string& fit : scaling_lines(scaling_from_json(d.scaling, "document"))) {
+    for (const std::string& fit : scaling_lines(*d.scaling)) {
       text += fit + "\n";
     }
     text += "```\n";

@@ -188,14 +188,7 @@ std::string change_text(const SceneView& view) {
   return cell ? cell->text : "";
 }
 
-bool simulated_timing(const ResultsDocument& document) {
-  const nlohmann::json& s = document.settings;
-  const auto is = [&](const char* key, const char* value) {
-    return s.is_object() && s.contains(key) && s.at(key).is_string() &&
-           s.at(key).get<std::string>() == value;
-  };
-  return is("timing_source", "simulated") || is("tracer_clock", "simulated-cycles");
-}
+bool simulated_timing(const ResultsDocument& document) { return document.settings.simulated(); }
 
 std::string cost_text(const ResultsDocument& document, double value) {
   if (simulated_timing(document)) return fmt::format("{:.4g} cycles", value);
@@ -235,22 +228,17 @@ std::string cell_text(ColumnKind kind, const ResultsDocument& document, const Sc
 }
 
 std::string clock_line(const ResultsDocument& document) {
-  const nlohmann::json& s = document.settings;
-  const auto text = [&](const char* key) {
-    return s.contains(key) && s.at(key).is_string() ? s.at(key).get<std::string>() : "";
-  };
-  const std::string tracer = text("tracer_clock");
+  const MeasurementSettings& s = document.settings;
+  const std::string tracer = s.tracer_clock.value_or("");
   if (tracer.empty()) return "";
   std::string line = tracer;
-  if (s.value("metric_by_threads", false)) {
-    line += s.value("threads", 1) > 1 ? " (auto: threads > 1)" : " (auto: one thread)";
+  if (s.metric_by_threads.value_or(false)) {
+    line += s.threads.value_or(1) > 1 ? " (auto: threads > 1)" : " (auto: one thread)";
   }
-  if (const std::string baseline = text("baseline_clock"); !baseline.empty()) {
+  if (const std::string baseline = s.baseline_clock.value_or(""); !baseline.empty()) {
     line += ", baseline " + baseline;
   }
-  if (s.contains("round_cpus") && s.at("round_cpus").is_array() && !s.at("round_cpus").empty()) {
-    line += "; each round pinned to one CPU";
-  }
+  if (s.round_cpus && !s.round_cpus->empty()) line += "; each round pinned to one CPU";
   return line;
 }
 

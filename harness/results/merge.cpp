@@ -7,10 +7,12 @@
 #include <map>
 #include <optional>
 #include <set>
+#include <utility>
 
 #include "core/error.h"
 #include "core/path_component.h"
 #include "results/scores.h"
+#include "results/settings_json.h"
 #include "results/shard.h"
 
 namespace raygate {
@@ -52,8 +54,7 @@ void check_names(const MergeInput& input) {
 // (or is not K/N at all) means the document was edited, and would be carried into reports.
 void check_shard_label(const MergeInput& input, const ShardRecord& record) {
   const std::string& label = input.document.shard;
-  const bool recorded = input.document.settings.is_object() &&
-                        input.document.settings.contains("shard");
+  const bool recorded = input.document.settings.shard.has_value();
   if (!recorded || label.empty() || label == to_string(record.spec)) return;
   throw UsageError(fmt::format("merge: {}: shard '{}' disagrees with settings.shard ({})",
                                input.origin, label, to_string(record.spec)));
@@ -62,7 +63,7 @@ void check_shard_label(const MergeInput& input, const ShardRecord& record) {
 // settings.shard, or for a document that only has the top-level "K/N", that.
 ShardRecord shard_record(const MergeInput& input) {
   check_names(input);
-  if (auto record = shard_from_settings(input.document.settings, input.origin)) {
+  if (const std::optional<ShardRecord>& record = input.document.settings.shard) {
     for (std::size_t i = 0; i < record->suite_scenes.size(); ++i) {
       checked_component(record->suite_scenes[i], "merge: " + input.origin +
                                                      ": settings.shard.suite_scenes[" +
@@ -122,18 +123,19 @@ void check_revisions(const Shard& a, const Shard& b) {
   }
 }
 
+// Every setting by the name the document gives it, known to this raygate or not, in the words
+// the document has them (results/settings_json.h), so the message quotes what the files say.
 void check_settings(const Shard& a, const Shard& b) {
-  const json& x = doc(a).settings;
-  const json& y = doc(b).settings;
+  const json x = to_json(doc(a).settings);
+  const json y = to_json(doc(b).settings);
   std::set<std::string> keys;
   for (const json* settings : {&x, &y}) {
-    if (!settings->is_object()) continue;
     for (const auto& item : settings->items()) keys.insert(item.key());
   }
   for (const std::string& key : keys) {
     if (per_runner_setting(key)) continue;
-    const json value_x = x.is_object() && x.contains(key) ? x.at(key) : json();
-    const json value_y = y.is_object() && y.contains(key) ? y.at(key) : json();
+    const json value_x = x.contains(key) ? x.at(key) : json();
+    const json value_y = y.contains(key) ? y.at(key) : json();
     same(a, b, "settings." + key, value_x.dump(), value_y.dump());
   }
 }
@@ -223,14 +225,12 @@ std::vector<std::string> unmeasured_scenes(const std::vector<Shard>& shards,
   return missing;
 }
 
-json shard_summary(const Shard& shard) {
-  json ids = json::array();
-  for (const SceneResult& scene : doc(shard).scenes) ids.push_back(scene.entry.id);
-  return {{"index", shard.record.spec.index},   {"count", shard.record.spec.count},
-          {"document", origin(shard)},          {"raygate_version", doc(shard).raygate_version},
-          {"started_at", doc(shard).started_at}, {"finished_at", doc(shard).finished_at},
-          {"complete", doc(shard).complete},     {"scenes", ids},
-          {"machine", doc(shard).machine}};
+MergedShard shard_summary(const Shard& shard) {
+  const ResultsDocument& d = doc(shard);
+  MergedShard summary{shard.record.spec, origin(shard), d.raygate_version, d.started_at,
+                      d.finished_at,     d.complete,    {},                 d.machine};
+  for (const SceneResult& scene : d.scenes) summary.scenes.push_back(scene.entry.id);
+  return summary;
 }
 
 // The header of the first shard, times spanning all shards, and every shard's own record.
@@ -239,7 +239,7 @@ ResultsDocument merged_header(const std::vector<Shard>& shards) {
   merged.scenes.clear();
   merged.shard.clear();
   merged.complete = true;
-  json summaries = json::array();
+  std::vector<MergedShard> summaries;
   for (const Shard& shard : shards) {
     const ResultsDocument& d = doc(shard);
     merged.started_at = std::min(merged.started_at, d.started_at);
@@ -249,8 +249,8 @@ ResultsDocument merged_header(const std::vector<Shard>& shards) {
     merged.complete = merged.complete && d.complete;
     summaries.push_back(shard_summary(shard));
   }
-  if (merged.settings.is_object()) merged.settings.erase("shard");
-  merged.settings["merged_shards"] = summaries;
+  merged.settings.shard.reset();
+  merged.settings.merged_shards = std::move(summaries);
   return merged;
 }
 

@@ -19,6 +19,8 @@
 #include "explain/explanation.h"
 #include "measure/change.h"
 #include "measure/ratio.h"
+#include "results/measurement_settings.h"
+#include "results/scaling_record.h"
 #include "runner/scheduler.h"
 #include "runner/suite.h"
 
@@ -80,13 +82,13 @@ struct ResultsDocument {
   BaselineRecord baseline;
   std::string suite;
   std::string shard;  // "K/N" when the suite was split across jobs (split: settings.shard)
-  nlohmann::json settings;  // schedule, stopping policy, thresholds, metric, threads, pinning
+  MeasurementSettings settings;  // schedule, stopping policy, clocks, limits, pinning, shard
   std::vector<RevisionRecord> revisions;
   std::vector<SceneResult> scenes;
   std::map<std::string, SuiteScore> scores;  // by role: geometric mean over measured scenes
-  // Growth exponents per scene family (scaling/scaling_json.h), when the suite measured a family
-  // at 3 sizes or more; null otherwise. Kept as JSON here: the store does not depend on scaling/.
-  nlohmann::json scaling;
+  // Growth exponents per scene family (results/scaling_record.h; fitted by scaling/), when the
+  // suite measured a family at 3 sizes or more; absent (null in JSON) otherwise.
+  std::optional<ScalingAnalysis> scaling;
 
   const RevisionRecord* revision(Role role) const;
 };

@@ -372,7 +372,8 @@ void check_results_json(const nlohmann::json& document) {
   check_strings(d, {"raygate_version", "started_at", "finished_at", "suite"});
   d.member("complete").as_bool();
   d.member("machine");
-  // null: a document built in memory without settings (tests, tools) writes them so.
+  // null: what a document built in memory without settings (tests, tools) wrote before the
+  // settings were typed; read as none. The fields are checked as they are read (settings_json).
   if (const JsonField settings = d.member("settings"); !settings.value().is_null()) object(settings);
   if (const auto shard = find(d, "shard")) shard->as_string();
   const JsonField baseline = object(d.member("baseline"));

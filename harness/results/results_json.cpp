@@ -7,6 +7,8 @@
 #include <limits>
 #include <optional>
 #include <stdexcept>
+#include <utility>
+#include <initializer_list>
 
 #include "core/error.h"
 #include "core/fs.h"
@@ -15,7 +17,8 @@
 #include "results/json_number.h"
 #include "results/results_check.h"
 #include "results/results.h"
-#include "results/shard.h"
+#include "results/scaling_json.h"
+#include "results/settings_json.h"
 
 namespace raygate {
 
@@ -42,6 +45,26 @@ Enum word_at(const json& object, const char* key,
 
 std::string word(auto value) { return std::string(to_string(value)); }
 
+// Members named in one list, so a record's fields are spelled once each: numbers written null
+// when not finite and read back by number_at, strings read as they are.
+using NumberFields = std::initializer_list<std::pair<const char*, double>>;
+using NumberTargets = std::initializer_list<std::pair<const char*, double*>>;
+using StringTargets = std::initializer_list<std::pair<const char*, std::string*>>;
+
+json finite_numbers(NumberFields fields) {
+  json j = json::object();
+  for (const auto& [key, value] : fields) j[key] = finite_number(value);
+  return j;
+}
+
+void read_numbers(const json& j, NumberTargets targets) {
+  for (const auto& [key, target] : targets) *target = number_at(j, key);
+}
+
+void read_strings(const json& j, StringTargets targets) {
+  for (const auto& [key, target] : targets) *target = j.at(key).get<std::string>();
+}
+
 json path_list(const std::vector<std::filesystem::path>& paths) {
   json out = json::array();
   for (const auto& path : paths) out.push_back(path.string());
@@ -62,24 +85,24 @@ void from_json(const json& j, Interval& interval) {
 }
 
 void to_json(json& j, const RatioSummary& r) {
-  j = json{{"rounds", r.rounds},
-           {"normalized_ratio", finite_number(r.ratio)},
-           {"ratio_interval", r.ratio_interval},
-           {"relative_half_width", finite_number(r.relative_half_width)},
-           {"log_ratio_median", finite_number(r.log_ratio_median)},
-           {"log_ratio_mad_scaled", finite_number(r.log_ratio_mad_scaled)},
-           {"tracer_median_seconds", finite_number(r.tracer_median_seconds)},
-           {"baseline_median_seconds", finite_number(r.baseline_median_seconds)}};
+  j = finite_numbers({{"normalized_ratio", r.ratio},
+                      {"relative_half_width", r.relative_half_width},
+                      {"log_ratio_median", r.log_ratio_median},
+                      {"log_ratio_mad_scaled", r.log_ratio_mad_scaled},
+                      {"tracer_median_seconds", r.tracer_median_seconds},
+                      {"baseline_median_seconds", r.baseline_median_seconds}});
+  j["rounds"] = r.rounds;
+  j["ratio_interval"] = r.ratio_interval;
 }
 void from_json(const json& j, RatioSummary& r) {
   r.rounds = j.at("rounds").get<std::size_t>();
-  r.ratio = number_at(j, "normalized_ratio");
   r.ratio_interval = j.at("ratio_interval").get<Interval>();
-  r.relative_half_width = number_at(j, "relative_half_width");
-  r.log_ratio_median = number_at(j, "log_ratio_median");
-  r.log_ratio_mad_scaled = number_at(j, "log_ratio_mad_scaled");
-  r.tracer_median_seconds = number_at(j, "tracer_median_seconds");
-  r.baseline_median_seconds = number_at(j, "baseline_median_seconds");
+  read_numbers(j, {{"normalized_ratio", &r.ratio},
+                   {"relative_half_width", &r.relative_half_width},
+                   {"log_ratio_median", &r.log_ratio_median},
+                   {"log_ratio_mad_scaled", &r.log_ratio_mad_scaled},
+                   {"tracer_median_seconds", &r.tracer_median_seconds},
+                   {"baseline_median_seconds", &r.baseline_median_seconds}});
 }
 
 void to_json(json& j, const SuiteScore& s) {
@@ -201,13 +224,9 @@ void to_json(json& j, const Worktree& w) {
 }
 void from_json(const json& j, Worktree& w) {
   w.path = j.at("path").get<std::string>();
-  w.revision = j.at("revision").get<std::string>();
-  w.ref_name = j.at("ref_name").get<std::string>();
-  w.sha = j.at("sha").get<std::string>();
-  w.short_sha = j.at("short_sha").get<std::string>();
-  w.subject = j.at("subject").get<std::string>();
-  w.author = j.at("author").get<std::string>();
-  w.commit_time = j.at("commit_time").get<std::string>();
+  read_strings(j, {{"revision", &w.revision}, {"ref_name", &w.ref_name}, {"sha", &w.sha},
+                   {"short_sha", &w.short_sha}, {"subject", &w.subject}, {"author", &w.author},
+                   {"commit_time", &w.commit_time}});
   w.dirty = j.at("dirty").get<bool>();
 }
 
@@ -336,11 +355,8 @@ void to_json(json& j, const BaselineRecord& b) {
            {"sampling", b.sampling}, {"timing", b.timing}};
 }
 void from_json(const json& j, BaselineRecord& b) {
-  b.version = j.at("version").get<std::string>();
-  b.source_sha256 = j.at("source_sha256").get<std::string>();
-  b.accel = j.at("accel").get<std::string>();
-  b.sampling = j.at("sampling").get<std::string>();
-  b.timing = j.at("timing").get<std::string>();
+  read_strings(j, {{"version", &b.version}, {"source_sha256", &b.source_sha256},
+                   {"accel", &b.accel}, {"sampling", &b.sampling}, {"timing", &b.timing}});
 }
 
 const RatioSummary* SceneResult::ratio(Role role) const {
@@ -366,11 +382,11 @@ nlohmann::json to_json(const ResultsDocument& d) {
               {"baseline", d.baseline},
               {"suite", d.suite},
               {"shard", d.shard},
-              {"settings", d.settings},
+              {"settings", to_json(d.settings)},
               {"revisions", d.revisions},
               {"scenes", d.scenes},
               {"scores", d.scores}};
-  if (!d.scaling.is_null()) j["scaling"] = d.scaling;
+  if (d.scaling) j["scaling"] = to_json(*d.scaling);
   return j;
 }
 
@@ -413,12 +429,14 @@ ResultsDocument results_from_json(const nlohmann::json& j, const std::string& or
     d.baseline = j.at("baseline").get<BaselineRecord>();
     d.suite = j.at("suite").get<std::string>();
     d.shard = j.value("shard", std::string());
-    d.settings = j.at("settings");
-    shard_from_settings(d.settings, origin);  // optional; when present it must be a shard
+    const JsonField root(j, "$");
+    d.settings = settings_from_json(root.member("settings"));
     d.revisions = j.at("revisions").get<std::vector<RevisionRecord>>();
     d.scenes = j.at("scenes").get<std::vector<SceneResult>>();
     d.scores = j.at("scores").get<std::map<std::string, SuiteScore>>();
-    d.scaling = j.value("scaling", json());
+    if (root.has("scaling") && !j.at("scaling").is_null()) {
+      d.scaling = scaling_from_json(root.member("scaling"));
+    }
     return d;
   } catch (const FieldError& e) {
     throw UsageError(origin + ": " + e.path() + ": " + e.what());

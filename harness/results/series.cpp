@@ -34,14 +34,9 @@ std::string scene_settings(const SuiteScene& entry, const BaselineRecord& baseli
 // the tracer's in settings.tracer_clock; older ones only have the metric (wall/cpu), which with
 // their baseline timing ("in-process") keeps them a series of their own.
 std::string timing_identity(const ResultsDocument& document) {
-  const auto setting = [&](const char* key) -> std::string {
-    if (!document.settings.is_object()) return {};
-    const auto found = document.settings.find(key);
-    return found != document.settings.end() && found->is_string() ? found->get<std::string>()
-                                                                   : std::string{};
-  };
-  std::string tracer = setting("tracer_clock");
-  if (tracer.empty()) tracer = setting("metric");
+  const MeasurementSettings& s = document.settings;
+  std::string tracer = s.tracer_clock.value_or("");
+  if (tracer.empty()) tracer = s.metric.value_or("");
   return (tracer.empty() ? "-" : tracer) + " " + document.baseline.timing;
 }
 

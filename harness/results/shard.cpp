@@ -14,8 +14,6 @@ namespace raygate {
 
 namespace {
 
-using nlohmann::json;
-
 // A whole decimal number, nothing around it; nullopt otherwise.
 std::optional<int> whole_number(std::string_view text) {
   int value = 0;
@@ -56,33 +54,6 @@ ShardSpec parse_shard(const std::string& text) {
 
 std::string to_string(const ShardSpec& shard) {
   return fmt::format("{}/{}", shard.index, shard.count);
-}
-
-json shard_to_json(const ShardRecord& record) {
-  return {{"index", record.spec.index},
-          {"count", record.spec.count},
-          {"suite_scenes", record.suite_scenes},
-          {"cost_basis", record.cost_basis}};
-}
-
-std::optional<ShardRecord> shard_from_settings(const json& settings, const std::string& origin) {
-  if (!settings.is_object() || !settings.contains("shard")) return std::nullopt;
-  const json& j = settings.at("shard");
-  ShardRecord record;
-  try {
-    record.spec.index = j.at("index").get<int>();
-    record.spec.count = j.at("count").get<int>();
-    record.suite_scenes = j.value("suite_scenes", std::vector<std::string>());
-    record.cost_basis = j.value("cost_basis", std::string("equal"));
-  } catch (const json::exception& e) {
-    throw UsageError(fmt::format("{}: settings.shard: {}", origin, e.what()));
-  }
-  if (record.spec.count < 1 || record.spec.index < 1 || record.spec.index > record.spec.count) {
-    throw UsageError(fmt::format("{}: settings.shard: index {} of count {} is not a shard "
-                                 "(1 <= index <= count)",
-                                 origin, record.spec.index, record.spec.count));
-  }
-  return record;
 }
 
 std::vector<int> assign_shards(std::span<const long long> expected_milliseconds, int count) {

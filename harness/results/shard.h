@@ -1,6 +1,6 @@
-// Splitting a suite across the jobs of a CI matrix (`--shard K/N` on run and compare), and the
-// record of that split in a results document's settings (`settings.shard`), against which
-// `raygate merge` checks the shards it combines. The split is a pure function of the selected
+// Splitting a suite across the jobs of a CI matrix (`--shard K/N` on run and compare); the record
+// of that split in a results document's settings (`settings.shard`, results/shard_record.h) is
+// what `raygate merge` checks the shards it combines against. The split is a pure function of the selected
 // scenes (in suite order) and their expected costs, computed in integer milliseconds, so every
 // job of a matrix gets the same partition whatever machine it runs on (docs/shards.md).
 #pragma once
@@ -11,35 +11,15 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "runner/suite.h"
 #include "results/results.h"
+#include "results/shard_record.h"
 
 namespace raygate {
-
-struct ShardSpec {
-  int index = 1;  // 1-based: 1 <= index <= count
-  int count = 1;
-};
 
 // "K/N" with 1 <= K <= N; anything else is a UsageError saying what a shard looks like.
 ShardSpec parse_shard(const std::string& text);
 std::string to_string(const ShardSpec& shard);
-
-// What a shard's document records under settings.shard.
-struct ShardRecord {
-  ShardSpec spec;
-  std::vector<std::string> suite_scenes;  // every selected scene of the suite, in suite order
-  std::string cost_basis = "equal";       // "equal", or which document's times were the costs
-};
-
-nlohmann::json shard_to_json(const ShardRecord& record);
-
-// settings.shard of a document's settings; nullopt when absent (the document is not a shard).
-// A present but malformed record is a UsageError naming `origin` and the field.
-std::optional<ShardRecord> shard_from_settings(const nlohmann::json& settings,
-                                               const std::string& origin);
 
 // The shard (1-based) of each scene, given expected costs in suite order (milliseconds, >= 1).
 // Longest first: scenes in decreasing cost (ties: suite order) each go to the shard with the

@@ -190,10 +190,6 @@ void diagnose(PowerFit& fit, std::span<const double> x, std::span<const double> 
 
 }  // namespace
 
-double PowerFit::predict(double primitives) const {
-  return std::exp(log_prefactor + exponent * std::log(primitives));
-}
-
 double student_t_975(int dof) {
   if (dof < 1) throw std::invalid_argument("student_t_975: dof must be >= 1");
   // Tabulated quantiles for small dof, where series expansions are poor.
@@ -240,32 +236,6 @@ PowerFit fit_power_law(std::span<const SizePoint> points) {
   fit.exponent_interval = {fit.exponent - half, fit.exponent + half};
   diagnose(fit, x, y, line);
   return fit;
-}
-
-namespace {
-
-// Each quality's name in results documents and reports: one table, read both ways.
-constexpr std::array<std::pair<FitQuality, std::string_view>, 5> kQualityNames{{
-    {FitQuality::power_law, "power-law"},
-    {FitQuality::startup_dominated, "startup-dominated"},
-    {FitQuality::curved, "curved"},
-    {FitQuality::scattered, "scattered"},
-    {FitQuality::too_few_points, "too-few-points"}}};
-
-}  // namespace
-
-std::string_view to_string(FitQuality quality) {
-  for (const auto& [known, name] : kQualityNames) {
-    if (known == quality) return name;
-  }
-  return "?";
-}
-
-FitQuality fit_quality_from_string(std::string_view text) {
-  for (const auto& [quality, name] : kQualityNames) {
-    if (name == text) return quality;
-  }
-  throw std::invalid_argument("unknown fit quality '" + std::string(text) + "'");
 }
 
 }  // namespace raygate

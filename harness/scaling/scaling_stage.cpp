@@ -2,7 +2,6 @@
 #include "scaling/scaling_stage.h"
 
 #include "scaling/primitive_count.h"
-#include "scaling/scaling_json.h"
 
 namespace raygate {
 
@@ -11,7 +10,7 @@ ScalingAnalysis attach_scaling(ResultsDocument& document, const ScalingLimits& l
   const ScalingAnalysis analysis = analyse_scaling(
       document, limits, [&](const std::string& scene, int size) { return counts(scene, size); });
   if (analysis.families.empty()) return analysis;
-  document.scaling = to_json(analysis);
+  document.scaling = analysis;
   return analysis;
 }
 

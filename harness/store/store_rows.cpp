@@ -78,11 +78,7 @@ void fill_change(SceneRow& row, const SceneResult& scene, Role role) {
 
 // The limit the document was measured with: its settings say the policy's default.
 double recorded_memory_limit(const ResultsDocument& document) {
-  const nlohmann::json& settings = document.settings;
-  if (!settings.is_object()) return kDefaultMaxMemoryIncrease;
-  const auto found = settings.find("max_memory_increase");
-  return found != settings.end() && found->is_number() ? found->get<double>()
-                                                       : kDefaultMaxMemoryIncrease;
+  return document.settings.max_memory_increase.value_or(kDefaultMaxMemoryIncrease);
 }
 
 void fill_memory(SceneRow& row, const ResultsDocument& document, const SceneResult& scene,

@@ -144,8 +144,8 @@ TEST_F(NewTracerCli, FirstCompareWithoutGoldensPassesAndSaysSoOnce) {
   EXPECT_TRUE(has(r.out, "note: images not checked against goldens")) << r.out;
   EXPECT_TRUE(has(r.out, "raygate golden bless --from-run RESULTS.json --role head")) << r.out;
   const ResultsDocument d = read_results(out);
-  EXPECT_EQ(d.settings.at("goldens"), "none");
-  EXPECT_EQ(d.settings.at("golden_dir"), own.string());
+  EXPECT_EQ(d.settings.goldens, "none");
+  EXPECT_EQ(d.settings.golden_dir, own.string());
   ASSERT_EQ(d.scenes.size(), 1u);
   bool head_vs_base = false;
   for (const ImageCheck& check : d.scenes[0].images) {
@@ -165,7 +165,7 @@ TEST_F(NewTracerCli, FirstCompareWithoutGoldensPassesAndSaysSoOnce) {
   EXPECT_EQ(gated.exit_code, 0) << gated.out;
   EXPECT_FALSE(has(gated.out, "no goldens")) << gated.out;
   const ResultsDocument run = read_results(dir_.path() / "r.json");
-  EXPECT_EQ(run.settings.at("goldens"), "make-nff");
+  EXPECT_EQ(run.settings.goldens, "make-nff");
   EXPECT_EQ(run.scenes.at(0).images.at(0).verdict, ImageVerdict::pass)
       << run.scenes.at(0).images.at(0).error;
 

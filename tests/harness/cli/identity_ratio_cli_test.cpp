@@ -133,15 +133,15 @@ TEST_F(IdentityRatio, ProcessWallAgainstProcessWall) {
   const ResultsDocument d =
       measure_timed(adapter("identity", {{"source", "process"}, {"metric", "wall"}}, ""), {});
   expect_identity(d, "process-wall");
-  EXPECT_EQ(d.settings.at("tracer_clock"), "process-wall");
-  EXPECT_EQ(d.settings.at("baseline_clock"), "process-wall");
+  EXPECT_EQ(d.settings.tracer_clock, "process-wall");
+  EXPECT_EQ(d.settings.baseline_clock, "process-wall");
 }
 
 TEST_F(IdentityRatio, ProcessCpuAgainstProcessCpu) {
   const ResultsDocument d = measure_timed(
       adapter("identity", {{"source", "process"}, {"metric", "wall"}}, ""), {"--timing", "cpu"});
   expect_identity(d, "process-cpu");
-  EXPECT_EQ(d.settings.at("tracer_clock"), "process-cpu");
+  EXPECT_EQ(d.settings.tracer_clock, "process-cpu");
 }
 
 // A tracer that prints its own time is compared with the baseline's in-process seconds.
@@ -151,7 +151,7 @@ TEST_F(IdentityRatio, ReportedAgainstInProcess) {
   const ResultsDocument d =
       measure_timed(adapter("identity-reported", timing, "--print-time"), {});
   expect_identity(d, "in-process");
-  EXPECT_EQ(d.settings.at("tracer_clock"), "reported");
+  EXPECT_EQ(d.settings.tracer_clock, "reported");
   // The tracer's seconds are the very number it printed: its in-process seconds.
   for (const SceneResult& s : d.scenes) {
     for (const Round& round : s.runs.rounds) {
@@ -170,7 +170,7 @@ TEST_F(IdentityRatio, SimulatedCyclesAgainstSimulatedCyclesIsOne) {
       measure(adapter("identity", {{"source", "process"}, {"metric", "wall"}}, ""),
               {"--timing", "sim"}, simulated_suite_, "2");
   EXPECT_EQ(d.baseline.timing, "simulated-cycles");
-  EXPECT_EQ(d.settings.at("tracer_clock"), "simulated-cycles");
+  EXPECT_EQ(d.settings.tracer_clock, "simulated-cycles");
   ASSERT_EQ(d.scenes.size(), 2u);
   for (const SceneResult& s : d.scenes) {
     SCOPED_TRACE("scene " + s.entry.id);

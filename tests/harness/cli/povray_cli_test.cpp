@@ -53,8 +53,8 @@ TEST(PovrayCli, RunMeasuresRatiosAndPassesItsGoldens) {
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const ResultsDocument doc = read_results(dir.path() / "results.json");
   ASSERT_EQ(doc.scenes.size(), 2u);
-  EXPECT_EQ(doc.settings.at("metric"), "cpu");
-  EXPECT_EQ(fs::path(doc.settings.at("golden_dir").get<std::string>()).filename(), "povray");
+  EXPECT_EQ(doc.settings.metric, "cpu");
+  EXPECT_EQ(fs::path(doc.settings.golden_dir.value_or("")).filename(), "povray");
   for (const char* id : {"tetra", "balls"}) {
     const SceneResult* scene = scene_of(doc, id);
     ASSERT_NE(scene, nullptr) << id;

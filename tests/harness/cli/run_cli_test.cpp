@@ -150,7 +150,7 @@ TEST_F(RunCli, MeasuresARevisionIntoACompleteDocument) {
   EXPECT_FALSE(d.finished_at.empty());
   EXPECT_TRUE(has(d.baseline.version, "raygate-baseline")) << d.baseline.version;
   EXPECT_FALSE(d.machine.empty());
-  EXPECT_EQ(d.settings.at("schedule"), "alternate");
+  EXPECT_EQ(d.settings.schedule, ScheduleKind::alternate);
   ASSERT_EQ(d.revisions.size(), 1u);
   const RevisionRecord& tracer = d.revisions[0];
   EXPECT_EQ(tracer.worktree.sha, sha);

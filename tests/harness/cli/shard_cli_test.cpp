@@ -61,7 +61,7 @@ TEST_F(ShardCli, TwoShardsMergeIntoOneDocumentAndAnotherRevisionIsRefused) {
   EXPECT_EQ(scene_ids(a), std::vector<std::string>{"tetra"});
   EXPECT_EQ(scene_ids(b), std::vector<std::string>{"balls"});
   EXPECT_EQ(a.shard, "1/2");
-  const std::optional<ShardRecord> record = shard_from_settings(b.settings, second.string());
+  const std::optional<ShardRecord>& record = b.settings.shard;
   ASSERT_TRUE(record.has_value());
   EXPECT_EQ(record->spec.index, 2);
   EXPECT_EQ(record->spec.count, 2);
@@ -78,7 +78,8 @@ TEST_F(ShardCli, TwoShardsMergeIntoOneDocumentAndAnotherRevisionIsRefused) {
   EXPECT_EQ(scene_ids(d), (std::vector<std::string>{"tetra", "balls"}));
   ASSERT_TRUE(d.scores.contains("tracer"));
   EXPECT_EQ(d.scores.at("tracer").scenes, 2u);
-  EXPECT_EQ(d.settings.at("merged_shards").size(), 2u);
+  ASSERT_TRUE(d.settings.merged_shards.has_value());
+  EXPECT_EQ(d.settings.merged_shards->size(), 2u);
 
   // Shard 2 of the next commit does not belong with shard 1 of this one.
   const std::string next = commit(sources_.slow, "trace every pixel four times");

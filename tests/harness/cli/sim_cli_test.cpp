@@ -114,9 +114,9 @@ TEST_F(SimCli, AaCompareIsExactlyZeroAfterTwoRoundsAndTheBaselineIsThenCached) {
   EXPECT_EQ(c.change_interval.upper, 0.0);
   EXPECT_EQ(document_.scenes[0].change_verdict, ChangeVerdict::unchanged);
   ASSERT_EQ(document_.scenes[0].runs.rounds.size(), 2u);
-  EXPECT_EQ(document_.settings.at("tracer_clock"), "simulated-cycles");
+  EXPECT_EQ(document_.settings.tracer_clock, "simulated-cycles");
   EXPECT_EQ(document_.baseline.timing, "simulated-cycles");
-  EXPECT_EQ(document_.settings.at("max_slowdown"), 0.01);  // sim mode's own default limit
+  EXPECT_EQ(document_.settings.max_slowdown, 0.01);  // sim mode's own default limit
   for (const Round& round : document_.scenes[0].runs.rounds) {
     for (const auto& [role, run] : round.runs) {
       ASSERT_TRUE(run.simulated) << role;  // the raw counters are in the document

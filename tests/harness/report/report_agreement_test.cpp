@@ -84,14 +84,17 @@ ResultsDocument compare_document(bool simulated) {
   d.suite = "ci";
   d.revisions = {revision(Role::base, 'a'), revision(Role::head, 'b')};
   if (simulated) {
-    d.settings = {{"timing_source", "simulated"}, {"tracer_clock", "simulated-cycles"}};
+    d.settings.timing_source = TimingSource::simulated;
+    d.settings.tracer_clock = "simulated-cycles";
     ChangeSummary counted = summarize_change(rounds(2, 0.00912, 0.0, 1));
     counted.exact = true;
     d.scenes.push_back(scene("counted", counted));
     return d;
   }
   const SequenceLevels levels{0.01 / 3, 0.05, 0.95};
-  d.settings = {{"tracer_clock", "process-cpu"}, {"baseline_clock", "process-cpu"}};
+  d.settings = {};
+  d.settings.tracer_clock = "process-cpu";
+  d.settings.baseline_clock = "process-cpu";
   d.scenes.push_back(scene("slow", summarize_change(rounds(60, 0.08, 0.01, 2), {}, levels)));
   d.scenes.push_back(scene("same", summarize_change(rounds(80, 0.0, 0.004, 3), {}, levels)));
   d.scenes.push_back(scene("early", summarize_change(rounds(5, 0.01, 0.01, 4), {}, levels)));

@@ -134,7 +134,9 @@ ResultsDocument header(DocumentKind kind) {
                {"kernel", "Linux 6.1.0 x86_64"}, {"hostname", "ci-runner-3"}};
   d.baseline.version = "raygate-baseline 0.1.0";
   d.suite = "ci";
-  d.settings = {{"schedule", "alternate"}, {"max_rounds", 40}, {"threads", 1}};
+  d.settings.schedule = ScheduleKind::alternate;
+  d.settings.max_rounds = 40;
+  d.settings.threads = 1;
   return d;
 }
 

@@ -113,7 +113,7 @@ TEST(HtmlReport, TrendMarksBaseAndHeadNotTheNewestCommit) {
 // A counted change is shown as counted: cycles, not seconds, and no test of sampling error.
 TEST(HtmlReport, SimulatedCostsAreCyclesWithoutAMannWhitneyP) {
   Fixture f(true);
-  f.document.settings["timing_source"] = "simulated";
+  f.document.settings.timing_source = TimingSource::simulated;
   for (SceneResult& scene : f.document.scenes) {
     if (scene.change) scene.change->exact = true;
     for (auto& [role, ratio] : scene.ratios) {

@@ -67,8 +67,8 @@ ResultsDocument shard_document(int index, int count) {
   spec.started_at = "2026-01-02T00:0" + std::to_string(index) + ":00Z";
   ResultsDocument d = test::make_document(spec);
   d.shard = to_string(ShardSpec{index, count});
-  d.settings["shard"] = shard_to_json({{index, count}, ids_of(kScenes), "equal"});
-  d.settings["golden_dir"] = "/runner-" + std::to_string(index) + "/golden";  // per runner
+  d.settings.shard = ShardRecord{{index, count}, ids_of(kScenes), "equal"};
+  d.settings.golden_dir = "/runner-" + std::to_string(index) + "/golden";  // per runner
   d.scores = suite_scores(d.scenes, scored_roles(d));
   return d;
 }
@@ -96,7 +96,7 @@ TEST(Merge, EqualsTheSingleJobThatMeasuredEveryScene) {
     EXPECT_TRUE(merged.warnings.empty());
     EXPECT_TRUE(d.complete);
     EXPECT_TRUE(d.shard.empty());
-    EXPECT_FALSE(d.settings.contains("shard"));
+    EXPECT_FALSE(d.settings.shard.has_value());
     ASSERT_EQ(d.scenes.size(), whole.scenes.size());
     for (std::size_t i = 0; i < d.scenes.size(); ++i) {
       EXPECT_EQ(d.scenes[i].entry.id, whole.scenes[i].entry.id) << "suite order";
@@ -125,13 +125,14 @@ TEST(Merge, EqualsTheSingleJobThatMeasuredEveryScene) {
 TEST(Merge, KeepsEveryShardsMachineAndSpansTheirTimes) {
   const ResultsDocument d = merge_shards(two_shards(), {}).document;
   EXPECT_EQ(d.machine.at("hostname"), "ci-runner-1");  // shard 1's
-  const json& shards = d.settings.at("merged_shards");
+  ASSERT_TRUE(d.settings.merged_shards.has_value());
+  const std::vector<MergedShard>& shards = *d.settings.merged_shards;
   ASSERT_EQ(shards.size(), 2u);
-  EXPECT_EQ(shards[0].at("index"), 1);
-  EXPECT_EQ(shards[0].at("document"), "a.json");
-  EXPECT_EQ(shards[0].at("machine").at("hostname"), "ci-runner-1");
-  EXPECT_EQ(shards[1].at("machine").at("hostname"), "ci-runner-2");
-  EXPECT_EQ(shards[1].at("scenes"), json::array({"gears", "rings"}));
+  EXPECT_EQ(shards[0].spec.index, 1);
+  EXPECT_EQ(shards[0].document, "a.json");
+  EXPECT_EQ(shards[0].machine.at("hostname"), "ci-runner-1");
+  EXPECT_EQ(shards[1].machine.at("hostname"), "ci-runner-2");
+  EXPECT_EQ(shards[1].scenes, (std::vector<std::string>{"gears", "rings"}));
   EXPECT_EQ(d.started_at, "2026-01-02T00:01:00Z");
   EXPECT_EQ(d.finished_at, "2026-01-02T00:02:00Z");
 }
@@ -169,12 +170,15 @@ TEST(Merge, RefusesInconsistentShardsNamingBothFilesAndTheField) {
       {"suite", "suite", [](ResultsDocument& d) { d.suite = "full"; }},
       {"schema", "schema_version", [](ResultsDocument& d) { d.schema_version = 0; }},
       {"shard count", "shard count",
-       [](ResultsDocument& d) { d.settings["shard"]["count"] = 3; }},
+       [](ResultsDocument& d) { d.settings.shard->spec.count = 3; }},
       {"selection", "settings.shard.suite_scenes",
        [](ResultsDocument& d) {
-         d.settings["shard"]["suite_scenes"] = json::array({"balls", "gears"});
+         d.settings.shard->suite_scenes = {"balls", "gears"};
        }},
-      {"settings", "settings.target", [](ResultsDocument& d) { d.settings["target"] = 0.05; }},
+      {"settings", "settings.target",
+       [](ResultsDocument& d) { d.settings.unknown["target"] = 0.05; }},
+      {"typed settings", "settings.max_rounds",
+       [](ResultsDocument& d) { d.settings.max_rounds = 7; }},
   };
   for (const Inconsistency& c : cases) {
     std::vector<MergeInput> inputs = two_shards();
@@ -232,7 +236,7 @@ TEST(Merge, IncompleteShardGivesAnIncompleteDocumentThatCannotPass) {
 
 TEST(Merge, RefusesADocumentThatIsNoShard) {
   std::vector<MergeInput> inputs = two_shards();
-  inputs[1].document.settings.erase("shard");
+  inputs[1].document.settings.shard.reset();
   inputs[1].document.shard.clear();
   EXPECT_NE(merge_error(inputs).find("b.json records no shard"), std::string::npos)
       << merge_error(inputs);

@@ -134,7 +134,8 @@ ResultsDocument make_document(const DocumentSpec& spec) {
   d.baseline.source_sha256 = spec.baseline_sha256;
   d.suite = spec.suite;
   d.shard = spec.shard;
-  d.settings = {{"schedule", "alternate"}, {"target", 0.01}};
+  d.settings.schedule = ScheduleKind::alternate;
+  d.settings.unknown = {{"target", 0.01}};  // a key this raygate does not know
   for (const Role role : spec.roles) d.revisions.push_back(revision(spec, role));
   double log_sum = 0.0;
   for (const SceneSpec& s : spec.scenes) {

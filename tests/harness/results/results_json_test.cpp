@@ -165,7 +165,9 @@ ResultsDocument full_document() {
   d.baseline = {"raygate-baseline 0.1.0", std::string(64, 'b'), "none", "center", "in-process"};
   d.suite = "ci";
   d.shard = "1/2";
-  d.settings = {{"schedule", "alternate"}, {"min_rounds", 3}, {"pin_cpus", json::array()}};
+  d.settings.schedule = ScheduleKind::alternate;
+  d.settings.min_rounds = 3;
+  d.settings.pin_cpus = std::vector<int>{};
   RevisionRecord r;
   r.role = Role::tracer;
   r.repository = "/repos/tracer";

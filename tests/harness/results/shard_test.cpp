@@ -169,13 +169,13 @@ TEST(ShardRecord, RoundTripsThroughSettingsAndOldDocumentsStillLoad) {
   ResultsDocument d = test::make_document(spec);
   // Written before --shard existed: no settings.shard at all.
   const ResultsDocument old = results_from_json(to_json(d), "old.json");
-  EXPECT_FALSE(shard_from_settings(old.settings, "old.json").has_value());
+  EXPECT_FALSE(old.settings.shard.has_value());
   EXPECT_TRUE(old.shard.empty());
 
-  d.settings["shard"] = shard_to_json({{2, 3}, {"a", "b", "c"}, "equal"});
+  d.settings.shard = ShardRecord{{2, 3}, {"a", "b", "c"}, "equal"};
   d.shard = "2/3";
   const ResultsDocument back = results_from_json(to_json(d), "new.json");
-  const std::optional<ShardRecord> record = shard_from_settings(back.settings, "new.json");
+  const std::optional<ShardRecord>& record = back.settings.shard;
   ASSERT_TRUE(record.has_value());
   EXPECT_EQ(record->spec.index, 2);
   EXPECT_EQ(record->spec.count, 3);
@@ -195,7 +195,7 @@ TEST(ShardRecord, MalformedRecordIsAUsageErrorNamingTheFile) {
       results_from_json(j, "shard-x.json");
       ADD_FAILURE() << "accepted " << bad.dump();
     } catch (const UsageError& e) {
-      EXPECT_NE(std::string(e.what()).find("shard-x.json: settings.shard"), std::string::npos)
+      EXPECT_NE(std::string(e.what()).find("shard-x.json: $.settings.shard"), std::string::npos)
           << e.what();
     }
   }

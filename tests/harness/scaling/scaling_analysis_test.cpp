@@ -8,7 +8,7 @@
 
 #include "core/error.h"
 #include "gate/growth_gate.h"
-#include "scaling/scaling_json.h"
+#include "results/scaling_json.h"
 #include "scaling/scaling_text.h"
 
 namespace raygate {
@@ -122,7 +122,7 @@ TEST(ScalingAnalysisTest, AddedLinearWorkBehindAFixedCostIsJudgedAtTheLargeEnd) 
   EXPECT_NE(describe_change("balls", c).find("between the two largest sizes"), std::string::npos);
   // Stored and read back, the gate judges the same slope.
   ResultsDocument d = compare_document(0.0, 4, [](double n) { return 1 + 1e-3 * n; });
-  d.scaling = to_json(a);
+  d.scaling = scaling_from_json(JsonField(to_json(a), "$.scaling"));
   EXPECT_EQ(judge_growth(d, GatePolicy{})[0].outcome, GateOutcome::fail);
 }
 
@@ -148,14 +148,20 @@ TEST(ScalingAnalysisTest, FailedScenesLeaveTheFamilyAndTooFewSizesDropIt) {
 TEST(ScalingAnalysisTest, JsonRoundTripKeepsEverything) {
   const ScalingAnalysis a = analyse_scaling(compare_document(0.3), {}, balls_count);
   const nlohmann::json j = to_json(a);
-  const ScalingAnalysis back = scaling_from_json(j, "test");
+  const ScalingAnalysis back = scaling_from_json(JsonField(j, "$.scaling"));
   EXPECT_EQ(to_json(back), j);
-  EXPECT_THROW(scaling_from_json(nlohmann::json{{"families", 3}}, "test"), UsageError);
+  const nlohmann::json bad{{"max_exponent_increase", 0.1}, {"families", 3}};
+  try {
+    scaling_from_json(JsonField(bad, "$.scaling"));
+    ADD_FAILURE() << "accepted " << bad.dump();
+  } catch (const FieldError& e) {
+    EXPECT_EQ(e.path(), "$.scaling.families");
+  }
 }
 
 TEST(GrowthGateTest, JudgesTheStoredFitUnderThePolicyLimit) {
   ResultsDocument d = compare_document(0.3);
-  d.scaling = to_json(analyse_scaling(d, {}, balls_count));
+  d.scaling = analyse_scaling(d, {}, balls_count);
   GatePolicy policy;
   std::vector<SceneGate> gates = judge_growth(d, policy);
   ASSERT_EQ(gates.size(), 1u);
@@ -171,7 +177,7 @@ TEST(GrowthGateTest, JudgesTheStoredFitUnderThePolicyLimit) {
 TEST(GrowthGateTest, ARegressedExponentFailsTheWholeGate) {
   ResultsDocument d = compare_document(0.3);
   d.complete = true;
-  d.scaling = to_json(analyse_scaling(d, {}, balls_count));
+  d.scaling = analyse_scaling(d, {}, balls_count);
   for (SceneResult& s : d.scenes) s.change_verdict = ChangeVerdict::unchanged;
   const GateResult gate = evaluate_gate(d, GatePolicy{});
   EXPECT_EQ(gate.exit_code, 1);
@@ -190,9 +196,9 @@ TEST(GrowthPolicyTest, MaxExponentIncreaseIsReadAndChecked) {
                    0.25);
   EXPECT_THROW(parse_policy(R"({"max_exponent_increase": -1})", "p.json"), UsageError);
   std::string note;
-  EXPECT_DOUBLE_EQ(
-      recorded_policy(nlohmann::json{{"max_exponent_increase", 0.4}}, note).max_exponent_increase,
-      0.4);
+  MeasurementSettings settings;
+  settings.max_exponent_increase = 0.4;
+  EXPECT_DOUBLE_EQ(recorded_policy(settings, note).max_exponent_increase, 0.4);
 }
 
 }  // namespace

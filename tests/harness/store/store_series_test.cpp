@@ -53,8 +53,8 @@ TEST(SeriesKey, EveryPartOfTheKeyStartsANewSeries) {
   EXPECT_NE(changed([](ResultsDocument& d) { d.scenes[0].entry.width = 128; }), id);
   EXPECT_NE(changed([](ResultsDocument& d) { d.scenes[0].entry.height = 128; }), id);
   EXPECT_NE(changed([](ResultsDocument& d) { d.baseline.sampling = "corners"; }), id);
-  EXPECT_NE(changed([](ResultsDocument& d) { d.settings["metric"] = "cpu"; }), id);
-  EXPECT_NE(changed([](ResultsDocument& d) { d.settings["tracer_clock"] = "process-cpu"; }), id);
+  EXPECT_NE(changed([](ResultsDocument& d) { d.settings.metric = "cpu"; }), id);
+  EXPECT_NE(changed([](ResultsDocument& d) { d.settings.tracer_clock = "process-cpu"; }), id);
   EXPECT_NE(changed([](ResultsDocument& d) { d.baseline.timing = "in-process"; }), id);
   EXPECT_NE(changed([](ResultsDocument& d) { d.baseline.source_sha256 = std::string(64, 'c'); }),
             id);

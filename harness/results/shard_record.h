@@ -1,0 +1,27 @@
+// What a results document records about the shard of a CI matrix it measured (`settings.shard`):
+// the split itself, apart from how a suite is split (results/shard.h), so the document's settings
+// can hold it without the splitting code.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace raygate {
+
+struct ShardSpec {
+  int index = 1;  // 1-based: 1 <= index <= count
+  int count = 1;
+
+  bool operator==(const ShardSpec&) const = default;
+};
+
+// What a shard's document records under settings.shard.
+struct ShardRecord {
+  ShardSpec spec;
+  std::vector<std::string> suite_scenes;  // every selected scene of the suite, in suite order
+  std::string cost_basis = "equal";       // "equal", or which document's times were the costs
+
+  bool operator==(const ShardRecord&) const = default;
+};
+
+}  // namespace raygate

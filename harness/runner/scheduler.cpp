@@ -217,10 +217,11 @@ SceneRuns run_scene(const SceneInput& scene, std::span<const Contender* const> c
       for (std::size_t n = 0; n < sequence.size(); ++n) {
         const Contender& contender = *sequence[n];
         // A repeat's run directory is "<round>-<k>", so no run overwrites another's files.
-        const std::size_t earlier = static_cast<std::size_t>(
+        const std::size_t runs_before = static_cast<std::size_t>(
             std::count(sequence.begin(), sequence.begin() + static_cast<long>(n), &contender));
         RunRecord run = launcher.run(
-            contender, earlier == 0 ? label : fmt::format("{}-{}", label, earlier + 1), cpus);
+            contender, runs_before == 0 ? label : fmt::format("{}-{}", label, runs_before + 1),
+            cpus);
         if (!run.ok) return fail(contender.role(), run, round.runs);
         round.order.push_back(contender.name());
         keep_fastest(round.runs, contender.name(), std::move(run));

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "core/enum_words.h"
+#include "measure/probability.h"
 
 namespace raygate {
 
@@ -167,17 +168,6 @@ std::string_view to_string(NoisyVerdict verdict) {
 }
 
 double two_sided_p(double z) { return std::erfc(std::abs(z) / std::sqrt(2.0)); }
-
-double normal_quantile(double p) {
-  if (!(p > 0)) return -std::numeric_limits<double>::infinity();
-  if (!(p < 1)) return std::numeric_limits<double>::infinity();
-  double low = -40, high = 40;  // bisection on the CDF: slow but exact enough, and called rarely
-  for (int i = 0; i < 200 && high - low > 1e-12; ++i) {
-    const double middle = (low + high) / 2;
-    (0.5 * std::erfc(-middle / std::sqrt(2.0)) < p ? low : high) = middle;
-  }
-  return (low + high) / 2;
-}
 
 NoisyComparison compare_noisy(const NoisyImageStats& actual, const NoisyImageStats& expected,
                               const NoisyThresholds& thresholds) {

@@ -90,8 +90,8 @@ NoisyComparison compare_noisy(const NoisyImageStats& actual, const NoisyImageSta
 // (32,0)-(63,31) G -8.1% [-9.9%, -6.3%], ...".
 std::string summarize(const NoisyComparison& comparison);
 
-// Standard normal helpers, exposed for tests: the two-sided p of z, and the quantile of p.
+// The two-sided p of a standard normal z, exposed for tests (the quantile is
+// measure/probability.h normal_quantile).
 double two_sided_p(double z);
-double normal_quantile(double p);
 
 }  // namespace raygate

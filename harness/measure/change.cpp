@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "measure/confidence_sequence.h"
 #include "measure/descriptive.h"
 #include "measure/median_interval.h"
+#include "measure/probability.h"
 
 namespace raygate {
 namespace {
@@ -33,6 +35,78 @@ std::optional<Interval> to_change(const std::optional<Interval>& log_interval) {
   if (!log_interval) return std::nullopt;
   return Interval{std::expm1(log_interval->lower), std::expm1(log_interval->upper)};
 }
+
+
+// Where an undecided scene's intervals will be after n rounds in all, if its rounds go on as
+// they went: a confidence sequence's ends are order statistics whose ranks depend on n alone
+// (median_sequence_upper_rank), and the j-th of n values spread like a normal around the
+// median ℓ with the rounds' robust spread σ (scaled MAD of the log-changes) lies near
+// ℓ + σ Φ⁻¹((j - 0.375) / (n + 0.25)) (Blom's approximation). The spread is the MAD's and not
+// the interval's own width: a few rounds in, that width is the range of the rounds, which one
+// outlier from a host's hiccup sets, while the sequence's ranks move past it within a few rounds
+// more. (The identity tracer's teapot after 8 rounds, all within 0.7% of each other but one at
+// -20%, was estimated at 374 rounds by a square law on that width.)
+class RoundsProjection {
+ public:
+  // Projected round by round up to here; beyond, the half-width's square law from this round.
+  static constexpr std::size_t kMaxRounds = 2048;
+
+  RoundsProjection(const ChangeSummary& summary, double threshold)
+      : log_change_(std::log1p(summary.change)),
+        spread_(summary.log_change_mad_scaled),
+        threshold_(threshold),
+        towards_unchanged_(std::abs(summary.change) < threshold),
+        equivalence_alpha_((1.0 - summary.equivalence_confidence) / 2.0),
+        decision_alpha_((1.0 - summary.confidence) / 2.0) {}
+
+  // Whether the verdict the scene is nearer to holds after n rounds (classify_sequential's
+  // conditions on the projected intervals).
+  bool decides_at(std::size_t n) const {
+    if (towards_unchanged_) {
+      const double half = spread_ * rank_quantile(n, equivalence_alpha_);
+      return std::expm1(log_change_ + half) <= threshold_ &&
+             std::expm1(log_change_ - half) >= -threshold_;
+    }
+    const double size = std::abs(log_change_);
+    const double decision_half = spread_ * rank_quantile(n, decision_alpha_);
+    // The one-look 95% interval of a median: about 1.96 x 1.2533 sigma / sqrt(n) each side.
+    const double one_look_half = 1.96 * 1.2533 * spread_ / std::sqrt(static_cast<double>(n));
+    return decision_half < size &&
+           (one_look_half <= threshold_ || decision_half < size - std::log1p(threshold_));
+  }
+
+  // Past kMaxRounds the sequence narrows about like 1/sqrt(n): the rounds at which the
+  // projected half-width at kMaxRounds would shrink to the room the verdict leaves; nullopt
+  // when that is beyond any budget (ten million rounds).
+  std::optional<std::size_t> beyond_max_rounds() const {
+    const double alpha = towards_unchanged_ ? equivalence_alpha_ : decision_alpha_;
+    const double half = spread_ * rank_quantile(kMaxRounds, alpha);
+    const double room = towards_unchanged_
+                            ? std::min(std::log1p(threshold_) - log_change_,
+                                       log_change_ - std::log1p(-threshold_))
+                            : std::abs(log_change_);
+    if (!(room > 0.0)) return std::nullopt;
+    const double rounds = static_cast<double>(kMaxRounds) * (half / room) * (half / room);
+    if (!(rounds <= 1e7)) return std::nullopt;
+    return std::max(kMaxRounds + 1, static_cast<std::size_t>(std::ceil(rounds)));
+  }
+
+ private:
+  // Φ⁻¹ at the expected position of the sequence's upper end among n values; infinite while
+  // the sequence is unbounded.
+  static double rank_quantile(std::size_t n, double alpha_each_side) {
+    const std::size_t rank = median_sequence_upper_rank(n, alpha_each_side);
+    if (rank > n) return std::numeric_limits<double>::infinity();
+    return normal_quantile((static_cast<double>(rank) - 0.375) / (static_cast<double>(n) + 0.25));
+  }
+
+  double log_change_;
+  double spread_;
+  double threshold_;
+  bool towards_unchanged_;
+  double equivalence_alpha_;
+  double decision_alpha_;
+};
 
 }  // namespace
 
@@ -211,35 +285,21 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
   if (summary.interval_kind != ChangeIntervalKind::confidence_sequence || summary.rounds == 0) {
     return std::nullopt;
   }
-  const double size = std::abs(summary.change);
-  const bool towards_unchanged = size < threshold;
   // Below the rounds the interval that decides needs to be bounded at all, those rounds are the
-  // estimate: a point estimate from a handful of rounds says too little to call a scene
-  // hopeless or cheap.
+  // estimate: a point estimate and a spread from a handful of rounds say too little to call a
+  // scene hopeless or cheap.
   const std::size_t to_bound =
       rounds_to_bound(summary, deciding_interval(summary, ChangeVerdict::inconclusive, threshold));
   if (summary.rounds < to_bound) return to_bound;
   // Within a tenth of the limit the point estimate itself may fall on either side of it
   // whatever the rounds: no estimate.
-  if (std::abs(size - threshold) < 0.1 * threshold) return std::nullopt;
-  const double c = summary.change;
-  // How many times too wide the interval is on the side that must move: both sides for
-  // UNCHANGED (each end must come inside the limit on its side of the estimate), the side
-  // towards 0 for a change.
-  double ratio = 0.0;
-  if (towards_unchanged) {
-    const Interval& e = summary.equivalence_interval;
-    ratio = std::max((e.upper - c) / (threshold - c), (c - e.lower) / (c + threshold));
-  } else {
-    const Interval& d = summary.change_interval;
-    ratio = (c > 0.0 ? c - d.lower : d.upper - c) / size;
+  if (std::abs(std::abs(summary.change) - threshold) < 0.1 * threshold) return std::nullopt;
+  const RoundsProjection projection(summary, threshold);
+  const std::size_t first = summary.rounds + 1;  // undecided now, so at least one more round
+  for (std::size_t n = first; n <= RoundsProjection::kMaxRounds; ++n) {
+    if (projection.decides_at(n)) return n;
   }
-  if (!(ratio >= 0.0) || !std::isfinite(ratio)) return std::nullopt;
-  const double n = static_cast<double>(summary.rounds);
-  const double rounds = n * std::max(1.0, ratio * ratio);
-  if (rounds > 1e7) return std::nullopt;
-  // Undecided now, so at least one more round; 80.000000001 rounds is 80.
-  return std::max(summary.rounds + 1, static_cast<std::size_t>(std::ceil(rounds - 1e-6)));
+  return projection.beyond_max_rounds();
 }
 
 DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict,

@@ -134,12 +134,15 @@ ChangeVerdict classify_sequential(const SequentialIntervals& intervals, double t
 ChangeVerdict classify_change(const ChangeSummary& summary,
                               double threshold = kDefaultChangeThreshold);
 
-// About how many rounds in all an INCONCLUSIVE scene would need at its present spread: its
-// intervals narrow about like 1/sqrt(rounds), so rounds (half-width now / half-width needed)^2.
-// The half-width needed is the room its nearer verdict leaves: UNCHANGED needs the equivalence
-// interval within +-threshold (room: threshold - |change|), REGRESSED or IMPROVED the decision
-// interval clear of 0 (room: |change|). nullopt for a summary that is not on confidence
-// sequences, or a change within a tenth of the limit (no number of rounds decides it).
+// About how many rounds in all an INCONCLUSIVE scene would need if its rounds go on as they
+// went: the first round count at which the interval its nearer verdict needs (UNCHANGED: the
+// equivalence sequence within +-threshold; REGRESSED or IMPROVED: the decision sequence clear of
+// 0, and precise) is projected to hold. The projection puts the sequence's ends, whose ranks
+// depend on the round count alone, where those ranks fall for rounds spread normally with the
+// rounds' robust spread (log_change_mad_scaled) around the change, so one outlier that sets
+// today's interval does not make a scene look hopeless. At least the rounds the interval needs
+// to be bounded, and at least one more round. nullopt for a summary that is not on confidence
+// sequences, a change within a tenth of the limit, or one beyond ten million rounds.
 std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summary,
                                                       double threshold);
 

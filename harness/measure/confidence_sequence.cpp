@@ -97,6 +97,11 @@ std::optional<Interval> median_sequence_interval(std::span<const double> values,
   return Interval{sorted[n - k_star], sorted[k_star - 1]};
 }
 
+std::size_t median_sequence_upper_rank(std::size_t n, double alpha_each_side) {
+  validate(alpha_each_side);
+  return rejecting_count(n, alpha_each_side);
+}
+
 std::size_t min_values_for_median_sequence(double alpha_each_side) {
   validate(alpha_each_side);
   // All n values on one side: wealth 2^(n+1)/(n+1) * (1 - 2^-(n+1)), which passes any

@@ -32,6 +32,11 @@ double median_sequence_log_wealth(std::size_t n, std::size_t count);
 std::optional<Interval> median_sequence_interval(std::span<const double> values,
                                                  double alpha_each_side);
 
+// k*: the rank of the interval's upper end among n sorted values (the lower end's is
+// n + 1 - k*), or n + 1 while the interval is unbounded. What the interval of n values will be,
+// whatever the values: the estimate of the rounds a scene needs projects with it.
+std::size_t median_sequence_upper_rank(std::size_t n, double alpha_each_side);
+
 // The fewest values for which the interval can be finite: all n values on one side must reach
 // 1 / alpha (8 at alpha 0.025, 14 at 0.01/13).
 std::size_t min_values_for_median_sequence(double alpha_each_side);

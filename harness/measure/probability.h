@@ -1,10 +1,12 @@
 // What the interval constructions (order statistics, confidence sequences, the bootstrap, a
-// family's split) share below their formulas: the check that a level lies strictly inside its
-// range, and the logarithm of a binomial coefficient for the sign test's tails.
+// family's split, the noisy-image test) share below their formulas: the check that a level lies
+// strictly inside its range, the logarithm of a binomial coefficient for the sign test's tails,
+// and the standard normal's quantile.
 #pragma once
 
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -26,6 +28,21 @@ inline double log_choose(std::size_t n, std::size_t k) {
   const auto total = static_cast<double>(n);
   const auto chosen = static_cast<double>(k);
   return std::lgamma(total + 1.0) - std::lgamma(chosen + 1.0) - std::lgamma(total - chosen + 1.0);
+}
+
+// The standard normal's quantile: the x with P(Z <= x) = p; -inf at p <= 0, +inf at p >= 1.
+// Bisection on the CDF to the last bit (about 60 halvings of [-40, 40]): slower than a rational
+// approximation, but exact, and no caller needs more than a few thousand a second.
+inline double normal_quantile(double p) {
+  if (!(p > 0.0)) return -std::numeric_limits<double>::infinity();
+  if (!(p < 1.0)) return std::numeric_limits<double>::infinity();
+  double low = -40.0;
+  double high = 40.0;
+  for (int i = 0; i < 200 && high - low > 1e-13; ++i) {
+    const double middle = (low + high) / 2.0;
+    (0.5 * std::erfc(-middle / std::sqrt(2.0)) < p ? low : high) = middle;
+  }
+  return (low + high) / 2.0;
 }
 
 }  // namespace raygate

@@ -83,8 +83,8 @@ class SuiteBudget {
   double started_;
 };
 
-// A revisited scene's estimate (measure/change.h estimated_rounds_to_decide) is a square law
-// from a few rounds, and at the least the rounds its interval needs to be bounded at all: give
+// A revisited scene's estimate (measure/change.h estimated_rounds_to_decide) is projected from a
+// few rounds' spread, and at the least the rounds its interval needs to be bounded at all: give
 // half as much again, so a scene estimated a round short gets that round.
 inline constexpr double kRevisitMargin = 1.5;
 

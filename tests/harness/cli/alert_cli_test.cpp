@@ -101,7 +101,7 @@ TEST_F(AlertCli, TextThatIsNotUtf8InTheStoreIsRepairedOnTheWayOut) {
   const CliStreams j = run_raygate_streams(
       {"alert", "--store", "store.db", "--branch", "main", "--format", "json"}, dir);
   EXPECT_EQ(j.exit_code, 1) << j.err;
-  ASSERT_NO_THROW((void)nlohmann::json::parse(j.out)) << j.out;
+  ASSERT_TRUE(nlohmann::json::accept(j.out)) << j.out;
   EXPECT_THAT(j.out, HasSubstr("commit 9 caf\xEF\xBF\xBD"));
 
   const CliStreams t =

@@ -11,6 +11,8 @@
 #include <cstdio>
 #include <random>
 
+#include "measure/probability.h"
+
 namespace raygate {
 namespace {
 

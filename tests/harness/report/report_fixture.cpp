@@ -184,7 +184,7 @@ TrendSeries make_trend(const std::string& scene, int n) {
   for (int i = 0; i < n; ++i) {
     const double r = 0.73 + 0.004 * std::sin(i * 1.3) + (i == n - 1 ? 0.058 : 0.0);
     series.points.push_back({"c0ffee" + std::to_string(i), "commit " + std::to_string(i), "",
-                             r, r * 0.994, r * 1.006, "", false});
+                             r, r * 0.994, r * 1.006, "", false, ""});
   }
   return series;
 }

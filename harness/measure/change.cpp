@@ -46,6 +46,14 @@ std::optional<Interval> to_change(const std::optional<Interval>& log_interval) {
 // outlier from a host's hiccup sets, while the sequence's ranks move past it within a few rounds
 // more. (The identity tracer's teapot after 8 rounds, all within 0.7% of each other but one at
 // -20%, was estimated at 374 rounds by a square law on that width.)
+// Φ⁻¹ at the expected position of a median sequence's upper end among n values (Blom); infinite
+// while the sequence is unbounded.
+double rank_quantile(std::size_t n, double alpha_each_side) {
+  const std::size_t rank = median_sequence_upper_rank(n, alpha_each_side);
+  if (rank > n) return std::numeric_limits<double>::infinity();
+  return normal_quantile((static_cast<double>(rank) - 0.375) / (static_cast<double>(n) + 0.25));
+}
+
 class RoundsProjection {
  public:
   // Projected round by round up to here; beyond, the half-width's square law from this round.
@@ -92,14 +100,6 @@ class RoundsProjection {
   }
 
  private:
-  // Φ⁻¹ at the expected position of the sequence's upper end among n values; infinite while
-  // the sequence is unbounded.
-  static double rank_quantile(std::size_t n, double alpha_each_side) {
-    const std::size_t rank = median_sequence_upper_rank(n, alpha_each_side);
-    if (rank > n) return std::numeric_limits<double>::infinity();
-    return normal_quantile((static_cast<double>(rank) - 0.375) / (static_cast<double>(n) + 0.25));
-  }
-
   double log_change_;
   double spread_;
   double threshold_;
@@ -300,6 +300,15 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
     if (projection.decides_at(n)) return n;
   }
   return projection.beyond_max_rounds();
+}
+
+std::optional<double> largest_deciding_spread(std::size_t rounds, double threshold,
+                                              double equivalence_confidence) {
+  const double alpha = (1.0 - equivalence_confidence) / 2.0;
+  if (!(alpha > 0.0 && alpha < 0.5) || !(threshold > 0.0)) return std::nullopt;
+  const double z = rank_quantile(rounds, alpha);
+  if (!std::isfinite(z) || !(z > 0.0)) return std::nullopt;
+  return std::log1p(threshold) / z;
 }
 
 DecidingInterval deciding_interval(const ChangeSummary& summary, ChangeVerdict verdict,

@@ -146,6 +146,14 @@ ChangeVerdict classify_change(const ChangeSummary& summary,
 std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summary,
                                                       double threshold);
 
+// The largest spread of the rounds (scaled MAD of their log-changes) at which an unchanged scene
+// is projected UNCHANGED after `rounds` rounds: its equivalence sequence at
+// `equivalence_confidence` inside +-threshold (the projection of estimated_rounds_to_decide).
+// nullopt while that sequence is unbounded, or for a level or threshold out of range. What a
+// runner's noise must be below for the rounds a compare could afford.
+std::optional<double> largest_deciding_spread(std::size_t rounds, double threshold,
+                                              double equivalence_confidence);
+
 // The interval a verdict was drawn from, and its confidence, so a report prints the one that
 // decided: on confidence sequences, the equivalence sequence for UNCHANGED (it must lie within
 // the limit) and the decision sequence for REGRESSED and IMPROVED (what a regression must

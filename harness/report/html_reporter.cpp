@@ -161,7 +161,8 @@ class HtmlReporter final : public Reporter {
     out << "<footer>raygate " << escape(d.raygate_version)
         << " · normalized ratio = time(tracer) / time(baseline), median of the rounds the "
            "baseline joined, with its 95% bootstrap CI (head's: base's times the change) · "
-           "change = median of per-round head/base, with the interval that decided its verdict ("
+           "change = median of per-round head/base, with the interval that decided its verdict or, "
+           "for INCONCLUSIVE, would decide it ("
         << escape(kIntervalLegend)
         << ") · hover an image to see its reference</footer></div>\n"
         << "<script>" << page_script() << "</script></body></html>\n";

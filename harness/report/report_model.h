@@ -51,7 +51,7 @@ std::string image_verdict_text(ImageVerdict verdict);
 // The change column's heading, the same in every format: the change is the median of per-round
 // head/base, the interval the one its verdict was drawn from (measure/change.h
 // deciding_interval), named in each row because UNCHANGED and REGRESSED use different levels.
-inline constexpr const char* kChangeHeading = "change [interval that decided]";
+inline constexpr const char* kChangeHeading = "change [deciding interval]";
 
 // One scene's change as every format shows it, taken apart for the formats that print numbers
 // (JSON, the HTML plot) and for the test that checks all formats agree.

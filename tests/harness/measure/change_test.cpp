@@ -247,6 +247,24 @@ TEST(MeasureRoundsToDecide, WaitForTheBoundAndSayNothingOnTheLimitOrForOneLook) 
   EXPECT_FALSE(estimated_rounds_to_decide(one_look, 0.03));
 }
 
+TEST(MeasureRoundsToDecide, TheLargestSpreadThatDecidesAgreesWithTheProjection) {
+  // At 10 rounds the 90% sequence is the range: the 10th of 10 normals lies near 1.55 sigma
+  // (Blom), so +3% is reached at sigma ln(1.03) / 1.55 = 1.9%.
+  EXPECT_NEAR(*largest_deciding_spread(10, 0.03, 0.90), std::log(1.03) / 1.5459, 2e-4);
+  EXPECT_GT(*largest_deciding_spread(40, 0.03, 0.90), *largest_deciding_spread(10, 0.03, 0.90));
+  EXPECT_FALSE(largest_deciding_spread(5, 0.03, 0.90)) << "unbounded below 7 rounds";
+  EXPECT_FALSE(largest_deciding_spread(10, 0.03, 1.0));
+  for (const std::size_t rounds : {10u, 20u, 40u, 80u}) {
+    const double spread = *largest_deciding_spread(rounds, 0.03, 0.90);
+    const auto at = [&](double s) {
+      return *estimated_rounds_to_decide(sequence_summary(0.0, {-1, 1}, {-1, 1}, 7, s), 0.03);
+    };
+    // Up to the steps of the sequence's ranks (its range at 8 rounds is narrower than at 10).
+    EXPECT_LE(at(0.99 * spread), rounds) << rounds;
+    EXPECT_GT(at(1.1 * spread), 0.9 * static_cast<double>(rounds)) << rounds;
+  }
+}
+
 // The estimate is only worth its use (the second pass gives a scene what it is estimated to
 // need, and INCONCLUSIVE lines print it) if simulated scenes do decide about then. On the VM's
 // noise model (spikes and bursts included), estimated after 10 rounds, against the round at

@@ -84,6 +84,14 @@ TEST_F(ComparePipelineTest, AnUndecidedChangeGetsRoundsUntilTheBudget) {
   EXPECT_NE(undecided[0].find("after 10 rounds, no 99% CS yet (it needs 11 rounds at least, "),
             std::string::npos)
       << undecided[0];
+  // And the runner's noise, with what it would have to be below for the rounds the scenes got:
+  // at 10 rounds the 90% equivalence sequence is the rounds' range, about +-1.55 sigma.
+  const std::vector<std::string> noise = progress_.lines_with("runner noise: ");
+  ASSERT_EQ(noise.size(), 1u);
+  EXPECT_NE(noise[0].find("median of 2 scenes); in the 10 rounds a scene typically got, an "
+                          "unchanged scene is decided within the 3.0% limit below about 1.9%. "),
+            std::string::npos)
+      << noise[0];
 }
 
 TEST_F(ComparePipelineTest, ScenesTheirShareLeftUndecidedGetASecondVisit) {
@@ -107,6 +115,7 @@ TEST_F(ComparePipelineTest, ScenesTheirShareLeftUndecidedGetASecondVisit) {
   EXPECT_LE(clock_.now_seconds() - started, 90.0 + 5.0)
       << "the budget, and at most the round in flight";
   EXPECT_TRUE(progress_.lines_with("undecided (INCONCLUSIVE)").empty());
+  EXPECT_TRUE(progress_.lines_with("runner noise").empty()) << "said only when it mattered";
 }
 
 TEST_F(ComparePipelineTest, OpensWithWhatItCompares) {

@@ -80,10 +80,10 @@ StoppingPolicy SuiteBudget::again(double seconds_spent, std::size_t scenes_left,
   const double budget = 60.0 * policy_.max_minutes;
   const double elapsed = clock_.now_seconds() - started_;
   const double left = scene_time_share(budget, elapsed, 1);
-  double share = scene_time_share(budget, elapsed, std::max<std::size_t>(scenes_left, 1));
-  if (std::isfinite(seconds_to_decide)) {
-    share = std::max(share, std::min(left, kRevisitMargin * seconds_to_decide));
-  }
+  const double share =
+      std::isfinite(seconds_to_decide)
+          ? std::min(left, kRevisitMargin * seconds_to_decide)
+          : scene_time_share(budget, elapsed, std::max<std::size_t>(scenes_left, 1));
   scene.max_seconds = std::min(scene.max_seconds, seconds_spent + share);
   return scene;
 }

@@ -52,14 +52,13 @@ BootstrapOptions change_bootstrap(const ScenePolicy& scene);
 // The first pass measures the scenes in order, each with what is left divided by the scenes left
 // plus `reserve_scenes`, so the time a scene saves by deciding early goes to the scenes after it
 // and about reserve / (scenes + reserve) of the budget stays for the second pass. The second
-// pass continues the scenes the first left undecided when their share ran out, the cheapest to
-// decide first (pipeline/suite_measurement.h, SceneRevisits), each with what it is estimated to
-// need and a margin (kRevisitMargin), and at least an even share of what is left. Given in that
-// order, the time decides the most scenes it can (an even share would stop each a round or two
-// short of a verdict while the hopeless scenes last in line take the rest). A scene that
-// decides in the first pass costs no more than before; one that needs more rounds than an even
-// share gets them once every scene has had its turn, instead of starving the scenes after it or
-// being starved by them.
+// pass (pipeline/suite_measurement.h, SceneRevisits) visits the scenes still undecided, the
+// cheapest to decide first, each with what it is estimated to need and a margin
+// (kRevisitMargin), estimated anew after every visit, until the time is gone. Given in that
+// order, the time decides the most scenes it can: an even share would stop each a round or two
+// short of a verdict, or let one scene that needs more than its estimate keep time the scenes
+// after it could have decided with. A scene that decides in the first pass costs no more than
+// before.
 class SuiteBudget {
  public:
   SuiteBudget(const StoppingPolicy& policy, std::size_t scenes, Clock& clock,
@@ -67,11 +66,11 @@ class SuiteBudget {
   // The stopping policy of the next scene of the first pass: `policy` with max_seconds capped
   // at its share.
   StoppingPolicy next_scene();
-  // The stopping policy of a second visit to a scene that has used `seconds_spent` so far, with
-  // `scenes_left` undecided scenes (this one included) still to visit, estimated to need
-  // `seconds_to_decide` more (infinity: no estimate): max_seconds is its seconds so far plus the
-  // larger of an even share of what is left and kRevisitMargin times its estimate, never more
-  // than what is left (the scheduler counts both visits' seconds).
+  // The stopping policy of a further visit to a scene that has used `seconds_spent` so far,
+  // estimated to need `seconds_to_decide` more: max_seconds is its seconds so far plus
+  // kRevisitMargin times its estimate, never more than what is left (the scheduler counts every
+  // visit's seconds). With no estimate (infinity: a change on the limit) an even share of what
+  // is left among the `scenes_left` undecided scenes (this one included).
   StoppingPolicy again(double seconds_spent, std::size_t scenes_left,
                        double seconds_to_decide = std::numeric_limits<double>::infinity()) const;
 

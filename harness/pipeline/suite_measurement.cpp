@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <memory>
 
 #include "core/error.h"
@@ -138,14 +139,16 @@ std::filesystem::path scene_dir(const SuiteMeasurement& m, const SuiteScene& ent
   return join_component(m.work_dir / "scenes", entry.id, "scene id");
 }
 
-// The scenes of `document` the first pass stopped undecided for lack of time, the cheapest to
-// decide first (a stable order: equal estimates keep the suite's order).
+// The scenes of `document` stopped undecided for lack of time, the cheapest to decide first (a
+// stable order: equal estimates keep the suite's order), leaving out those in `spent` (a visit
+// gave them no round: no time is left for them).
 std::vector<std::size_t> scenes_to_revisit(const ResultsDocument& document,
-                                           const SceneRevisits& revisits) {
+                                           const SceneRevisits& revisits,
+                                           const std::vector<bool>& spent) {
   std::vector<std::pair<double, std::size_t>> undecided;
   for (std::size_t i = 0; i < document.scenes.size(); ++i) {
     const SceneResult& scene = document.scenes[i];
-    if (scene.runs.failed() || scene.runs.rounds.empty() ||
+    if (spent[i] || scene.runs.failed() || scene.runs.rounds.empty() ||
         scene.runs.stop_reason != to_string(StopDecision::stop_budget_time)) {
       continue;
     }
@@ -158,23 +161,33 @@ std::vector<std::size_t> scenes_to_revisit(const ResultsDocument& document,
   return order;
 }
 
-// The second pass: more rounds for each scene scenes_to_revisit() names, the document kept after
-// each as after the first pass, and one line per scene revisited ("[again 1/3] balls ...").
+// The second pass: while time is left, the undecided scene cheapest to decide gets what it is
+// estimated to need (SceneRevisits::stop), is judged again over all its rounds, and goes back
+// among the undecided if it is still one, its estimate now from more rounds. Estimated anew after
+// every visit, a scene that needed more than its estimate competes again instead of keeping the
+// time, and the scenes after it still get their turn. The document is kept after each visit as
+// after the first pass, with one line per visit ("[again 1, 3 undecided] balls ...").
 void revisit_scenes(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
                     PipelineIo& io) {
-  const std::vector<std::size_t> order = scenes_to_revisit(document, *m.revisits);
-  for (std::size_t n = 0; n < order.size(); ++n) {
+  std::vector<bool> spent(document.scenes.size(), false);
+  for (std::size_t visit = 1;; ++visit) {
     throw_if_interrupted("between scenes");
-    SceneResult& scene = document.scenes[order[n]];
-    const std::optional<StopRule> stop = m.revisits->stop(scene, order.size() - n);
-    if (!stop) continue;
-    ProgressState state{n + 1, order.size(), scene.entry.id + " (again)", scene.runs.rounds.size(),
-                        0.0, 0.0, -1.0};
+    const std::vector<std::size_t> order = scenes_to_revisit(document, *m.revisits, spent);
+    if (order.empty()) return;
+    SceneResult& scene = document.scenes[order.front()];
+    const std::optional<StopRule> stop = m.revisits->stop(scene, order.size());
+    if (!stop) {
+      spent[order.front()] = true;
+      continue;
+    }
+    ProgressState state{visit, visit + order.size() - 1, scene.entry.id + " (again)",
+                        scene.runs.rounds.size(), 0.0, 0.0, -1.0};
     io.progress.update(state);
     const RoundObserver observe = [&](const std::vector<Round>& rounds, double) {
       state.round = rounds.size();
       io.progress.update(state);
     };
+    const std::size_t rounds_before = scene.runs.rounds.size();
     const SceneInput input = prepare_scene_input(scene.entry, m);
     scene.runs = continue_scene(input, m.contenders, m.schedule, *stop, executor, io.clock,
                                 scene_dir(m, scene.entry), std::move(scene.runs), observe);
@@ -188,9 +201,15 @@ void revisit_scenes(ResultsDocument& document, const SuiteMeasurement& m, Execut
     } else {
       m.revisits->rejudge(scene);
     }
+    // A visit that ran no round had no time; a scene still without an estimate (a change on the
+    // limit) had its even share, and more of the same would not decide it.
+    if (scene.runs.rounds.size() == rounds_before ||
+        !std::isfinite(m.revisits->seconds_to_decide(scene))) {
+      spent[order.front()] = true;
+    }
     update_scores(document, m.tracer_roles);
     keep(document, m);
-    io.progress.line(fmt::format("[again {}/{}] {}", n + 1, order.size(),
+    io.progress.line(fmt::format("[again {}, {} undecided] {}", visit, order.size(),
                                  scene_line(scene, m.tracer_roles)));
   }
 }

@@ -26,9 +26,10 @@
 
 namespace raygate {
 
-// The second pass of a measurement (pipeline/stopping.h, SuiteBudget): the scenes the first
-// pass left undecided when their share of the time ran out get more rounds, continued where they
-// stopped (runner/scheduler.h, continue_scene), the cheapest to decide first.
+// The second pass of a measurement (pipeline/stop_rules.h, SuiteBudget): the scenes left
+// undecided when their share of the time ran out get more rounds, continued where they stopped
+// (runner/scheduler.h, continue_scene), the cheapest to decide first, each estimated anew after
+// its visit, until the time is gone.
 struct SceneRevisits {
   // The stopping rule of a scene's further rounds; `scenes_left` counts it and the scenes still
   // to be visited after it. nullopt: no time is left for it (--max-seconds reached, say).

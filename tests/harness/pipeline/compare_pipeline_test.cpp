@@ -118,6 +118,28 @@ TEST_F(ComparePipelineTest, ScenesTheirShareLeftUndecidedGetASecondVisit) {
   EXPECT_TRUE(progress_.lines_with("runner noise").empty()) << "said only when it mattered";
 }
 
+TEST_F(ComparePipelineTest, AScenesSecondPassGoesOnWhileItIsTheCheapestToDecide) {
+  const std::string base = commit_tracer("2.0", "base");
+  const std::string head = commit_tracer("2.0", "head: the same speed");
+  // Noisy rounds (head/base about +2% with a few percent of spread) and 120 s for two scenes:
+  // neither is decided in the first pass. Each visit gives the cheaper one what it is estimated
+  // to need; estimated too few, it is estimated again and, still the cheapest, visited again
+  // until it is decided, and the other gets what is left.
+  set_tracer_noise({1.0, 1.02, 0.99, 1.01, 0.98, 1.0, 1.03, 0.99});
+  context_.stopping.max_minutes = 2.0;
+  const double started = clock_.now_seconds();
+  const auto [document, path, unwritten] = compare(base, head);
+  ASSERT_EQ(document.scenes.size(), 2u);
+  const SceneResult& tetra = document.scenes[0];
+  EXPECT_EQ(tetra.entry.id, "tetra");
+  EXPECT_EQ(tetra.change_verdict, ChangeVerdict::unchanged);
+  EXPECT_GE(progress_.lines_with("] tetra").size(), 3u) << "the first pass and two visits or more";
+  EXPECT_EQ(progress_.lines_with("undecided] balls").size(), 1u);
+  EXPECT_EQ(progress_.lines_with("[again 1, 2 undecided] tetra").size(), 1u);
+  EXPECT_LE(clock_.now_seconds() - started, 120.0 + 5.0)
+      << "the budget, and at most the round in flight";
+}
+
 TEST_F(ComparePipelineTest, OpensWithWhatItCompares) {
   const std::string base = commit_tracer("2.0", "base");
   const std::string head = commit_tracer("2.0", "head");

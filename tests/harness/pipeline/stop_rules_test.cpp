@@ -136,8 +136,8 @@ TEST(PipelineStopping, SuiteBudgetKeepsAReserveForASecondVisit) {
   clock.advance(20.0);  // this one decided early
   EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, 100.0);  // 300 s left for 1 + 2
   clock.advance(100.0);
-  // Second pass: 200 s left for two undecided scenes; the first has used 80 s already, and the
-  // scheduler counts both visits' seconds.
+  // Second pass: 200 s left for two undecided scenes without an estimate; the first has used
+  // 80 s already, and the scheduler counts both visits' seconds.
   EXPECT_DOUBLE_EQ(budget.again(80.0, 2).max_seconds, 180.0);
   clock.advance(100.0);
   EXPECT_DOUBLE_EQ(budget.again(100.0, 1).max_seconds, 200.0);
@@ -157,8 +157,9 @@ TEST(PipelineStopping, ASecondVisitGetsWhatItIsEstimatedToNeedWithAMargin) {
   clock.advance(200.0);  // 100 s left for 4 undecided scenes: an even share is 25 s
   // Estimated to need 30 s more: 1.5 times that, not the even 25 s that stops it short.
   EXPECT_DOUBLE_EQ(budget.again(40.0, 4, 30.0).max_seconds, 40.0 + 45.0);
-  // A cheap one still gets at least an even share.
-  EXPECT_DOUBLE_EQ(budget.again(40.0, 4, 4.0).max_seconds, 40.0 + 25.0);
+  // A cheap one gets what it needs and no more: if that was too little, it is estimated again
+  // and competes with the others for the rest.
+  EXPECT_DOUBLE_EQ(budget.again(40.0, 4, 4.0).max_seconds, 40.0 + 6.0);
   // Never more than what is left of the whole budget.
   EXPECT_DOUBLE_EQ(budget.again(40.0, 4, 90.0).max_seconds, 40.0 + 100.0);
   // No estimate (a change on the limit): an even share.

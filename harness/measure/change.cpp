@@ -36,6 +36,13 @@ std::optional<Interval> to_change(const std::optional<Interval>& log_interval) {
   return Interval{std::expm1(log_interval->lower), std::expm1(log_interval->upper)};
 }
 
+// Φ⁻¹ at the expected position of a median sequence's upper end among n values (Blom); infinite
+// while the sequence is unbounded.
+double rank_quantile(std::size_t n, double alpha_each_side) {
+  const std::size_t rank = median_sequence_upper_rank(n, alpha_each_side);
+  if (rank > n) return std::numeric_limits<double>::infinity();
+  return normal_quantile((static_cast<double>(rank) - 0.375) / (static_cast<double>(n) + 0.25));
+}
 
 // Where an undecided scene's intervals will be after n rounds in all, if its rounds go on as
 // they went: a confidence sequence's ends are order statistics whose ranks depend on n alone
@@ -46,14 +53,6 @@ std::optional<Interval> to_change(const std::optional<Interval>& log_interval) {
 // outlier from a host's hiccup sets, while the sequence's ranks move past it within a few rounds
 // more. (The identity tracer's teapot after 8 rounds, all within 0.7% of each other but one at
 // -20%, was estimated at 374 rounds by a square law on that width.)
-// Φ⁻¹ at the expected position of a median sequence's upper end among n values (Blom); infinite
-// while the sequence is unbounded.
-double rank_quantile(std::size_t n, double alpha_each_side) {
-  const std::size_t rank = median_sequence_upper_rank(n, alpha_each_side);
-  if (rank > n) return std::numeric_limits<double>::infinity();
-  return normal_quantile((static_cast<double>(rank) - 0.375) / (static_cast<double>(n) + 0.25));
-}
-
 class RoundsProjection {
  public:
   // Projected round by round up to here; beyond, the half-width's square law from this round.
@@ -296,10 +295,28 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
   if (std::abs(std::abs(summary.change) - threshold) < 0.1 * threshold) return std::nullopt;
   const RoundsProjection projection(summary, threshold);
   const std::size_t first = summary.rounds + 1;  // undecided now, so at least one more round
-  for (std::size_t n = first; n <= RoundsProjection::kMaxRounds; ++n) {
+  // Round by round while the sequence's rank steps make the projection jump back and forth
+  // (its range at 8 rounds is narrower than at 10); beyond, it narrows steadily, so the first
+  // deciding round is found by doubling and halving.
+  constexpr std::size_t kSteadyFrom = 64;
+  for (std::size_t n = first; n <= kSteadyFrom; ++n) {
     if (projection.decides_at(n)) return n;
   }
-  return projection.beyond_max_rounds();
+  std::size_t low = std::max(first, kSteadyFrom);  // does not decide
+  std::size_t high = low;
+  while (!projection.decides_at(high)) {
+    if (high >= RoundsProjection::kMaxRounds) {
+      const std::optional<std::size_t> beyond = projection.beyond_max_rounds();
+      return beyond ? std::optional<std::size_t>(std::max(*beyond, first)) : std::nullopt;
+    }
+    low = high;
+    high = std::min(2 * high, RoundsProjection::kMaxRounds);
+  }
+  while (high - low > 1) {
+    const std::size_t middle = low + (high - low) / 2;
+    (projection.decides_at(middle) ? high : low) = middle;
+  }
+  return high;
 }
 
 std::optional<double> largest_deciding_spread(std::size_t rounds, double threshold,

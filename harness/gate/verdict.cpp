@@ -8,6 +8,7 @@
 #include "core/format.h"
 #include "gate/growth_gate.h"
 #include "gate/memory_gate.h"
+#include "gate/runner_noise.h"
 #include "measure/change.h"
 
 namespace raygate {
@@ -172,6 +173,9 @@ GateResult evaluate_gate(const ResultsDocument& document, const GatePolicy& poli
   }
   result.families = judge_growth(document, policy);
   result.notes = missing_golden_notes(missing, document);
+  if (std::optional<std::string> noise = runner_noise_note(document, policy)) {
+    result.notes.push_back(std::move(*noise));
+  }
   result.problems = document_problems(document);
   if (result.count(GateOutcome::fail) > 0 || failed_growth(result)) {
     result.exit_code = to_int(ExitCode::regression);

@@ -7,7 +7,6 @@
 
 #include "core/format.h"
 #include "measure/confidence_sequence.h"
-#include "measure/descriptive.h"
 #include "measure/family.h"
 #include "pipeline/stop_rules.h"
 
@@ -114,39 +113,6 @@ std::string undecided_line(const ResultsDocument& document, const GatePolicy& po
             undecided_scene(scene, policy.for_scene(scene.entry.id).max_slowdown);
   }
   return line.empty() ? line : "undecided (INCONCLUSIVE): " + line;
-}
-
-std::string runner_noise_line(const ResultsDocument& document, const GatePolicy& policy) {
-  std::vector<double> spreads;
-  std::vector<double> rounds;
-  std::vector<double> thresholds;
-  const ChangeSummary* any_undecided = nullptr;
-  for (const SceneResult& scene : document.scenes) {
-    if (!in_family(scene)) continue;
-    spreads.push_back(scene.change->log_change_mad_scaled);
-    rounds.push_back(static_cast<double>(scene.change->rounds));
-    thresholds.push_back(policy.for_scene(scene.entry.id).max_slowdown);
-    if (scene.change_verdict == ChangeVerdict::inconclusive) any_undecided = &*scene.change;
-  }
-  if (!any_undecided) return "";
-  std::string line = fmt::format(
-      "runner noise: the rounds of a scene differed by {:.1f}% (head/base per round, scaled MAD, "
-      "median of {} scenes)",
-      100 * median(spreads), spreads.size());
-  const auto typical_rounds = static_cast<std::size_t>(std::lround(median(rounds)));
-  const bool one_limit = std::all_of(thresholds.begin(), thresholds.end(),
-                                     [&](double t) { return t == thresholds.front(); });
-  const std::optional<double> decides_below =
-      one_limit ? largest_deciding_spread(typical_rounds, thresholds.front(),
-                                          any_undecided->equivalence_confidence)
-                : std::nullopt;
-  if (decides_below) {
-    line += fmt::format("; in the {} rounds a scene typically got, an unchanged scene is decided "
-                        "within the {:.1f}% limit below about {:.1f}%",
-                        typical_rounds, 100 * thresholds.front(), 100 * *decides_below);
-  }
-  return line + ". A quieter runner, --repeats 2 or a longer --max-minutes decides more; "
-                "raygate doctor measures a runner's noise.";
 }
 
 }  // namespace raygate

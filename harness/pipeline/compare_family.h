@@ -33,11 +33,4 @@ std::vector<std::string> apply_family_control(ResultsDocument& document, const G
 // runner); ..." for the INCONCLUSIVE scenes, or "" when every measured scene is decided.
 std::string undecided_line(const ResultsDocument& document, const GatePolicy& policy);
 
-// "runner noise: the rounds of a scene differed by 5.8% (head/base per round, scaled MAD, median
-// of 13 scenes); in the 9 rounds a scene typically got, an unchanged scene is decided within the
-// 3.0% limit below about 1.2%. A quieter runner, ..." when some scene is INCONCLUSIVE, else "".
-// The runner's noise, which neither the load average nor steal time shows on a VM whose host is
-// busy, measured by the compare itself.
-std::string runner_noise_line(const ResultsDocument& document, const GatePolicy& policy);
-
 }  // namespace raygate

@@ -166,7 +166,6 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
     }
     if (std::string undecided = undecided_line(document, context.policy); !undecided.empty()) {
       lines.push_back(std::move(undecided));
-      lines.push_back(runner_noise_line(document, context.policy));
     }
     for (std::string& line :
          explain_regressed_scenes(document, context, m, base_runs, head_runs, io.executor)) {

@@ -136,6 +136,45 @@ TEST(GateVerdict, InconclusiveWarnsUnlessTheFlagSaysFail) {
   EXPECT_EQ(gate.exit_code, 1);
 }
 
+// A compare scene on confidence sequences: its change, equivalence sequence and rounds' spread.
+SceneResult sequenced(const std::string& id, double change, Interval equivalence,
+                      std::size_t rounds, double spread) {
+  SceneResult scene = compared(id, change, -0.5, 0.5, rounds);
+  ChangeSummary& c = *scene.change;
+  c.interval_kind = ChangeIntervalKind::confidence_sequence;
+  c.confidence = 0.9985;
+  c.equivalence_interval = equivalence;
+  c.equivalence_confidence = 0.90;
+  c.one_look_interval = {-0.5, 0.5};
+  c.one_look_confidence = 0.95;
+  c.log_change_mad_scaled = spread;
+  return scene;
+}
+
+TEST(GateVerdict, AnUndecidedCompareSaysHowNoisyTheRunnerWas) {
+  // Two scenes decided, one not: the note gives the median spread of all three and, at their
+  // typical 10 rounds (the 90% sequence is the rounds' range, about +-1.55 sigma), what the
+  // spread would have had to be below: ln(1.03) / 1.546 = 1.9%.
+  const ResultsDocument document =
+      compare_document({sequenced("balls", 0.0, {-0.01, 0.01}, 10, 0.004),
+                        sequenced("gears", 0.0, {-0.02, 0.02}, 10, 0.041),
+                        sequenced("mount", 0.01, {-0.09, 0.12}, 12, 0.089)});
+  const GateResult gate = evaluate_gate(document, GatePolicy{});
+  EXPECT_EQ(gate.exit_code, 0);
+  ASSERT_EQ(gate.notes.size(), 1u);
+  EXPECT_EQ(gate.notes[0],
+            "runner noise: the rounds of a scene differed by 4.1% (head/base per round, scaled "
+            "MAD, median of 3 scenes); in the 10 rounds a scene typically got, an unchanged scene "
+            "is decided within the 3.0% limit below about 1.9%. A quieter runner, --repeats 2 or "
+            "a longer --max-minutes decides more; raygate doctor measures a runner's noise.");
+  // Nothing to say when every scene is decided, or for documents before confidence sequences.
+  EXPECT_TRUE(evaluate_gate(compare_document({sequenced("balls", 0.0, {-0.01, 0.01}, 10, 0.004)}),
+                            GatePolicy{})
+                  .notes.empty());
+  EXPECT_TRUE(evaluate_gate(compare_document({compared("tetra", 0.02, -0.01, 0.05)}), GatePolicy{})
+                  .notes.empty());
+}
+
 SceneResult failed(const std::string& id, Role role, bool base_ran) {
   SceneResult scene;
   scene.entry.id = id;

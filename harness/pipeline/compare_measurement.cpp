@@ -142,10 +142,11 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
                             simulated(context));
   };
   m.revisits = SceneRevisits{
-      [&](const SceneResult& scene, std::size_t scenes_left) -> std::optional<StopRule> {
+      [&](const SceneResult& scene, std::size_t scenes_left,
+          double seconds_needed) -> std::optional<StopRule> {
         const ScenePolicy& policy = context.policy.for_scene(scene.entry.id);
-        const StoppingPolicy again = budget.again(scene.runs.seconds_spent, scenes_left,
-                                                  seconds_to_decide(scene, context.policy));
+        const StoppingPolicy again =
+            budget.again(scene.runs.seconds_spent, scenes_left, seconds_needed);
         if (again.max_seconds <= scene.runs.seconds_spent) return std::nullopt;
         return change_stop_rule(again, policy, scene_levels(policy, alpha), simulated(context));
       },

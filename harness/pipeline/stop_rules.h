@@ -54,7 +54,8 @@ BootstrapOptions change_bootstrap(const ScenePolicy& scene);
 // and about reserve / (scenes + reserve) of the budget stays for the second pass. The second
 // pass (pipeline/suite_measurement.h, SceneRevisits) visits the scenes still undecided, the
 // cheapest to decide first, each with what it is estimated to need and a margin
-// (kRevisitMargin), estimated anew after every visit, until the time is gone. Given in that
+// (kRevisitMargin), estimated anew after every visit (and doubled for each visit it outlived),
+// until the time is gone. Given in that
 // order, the time decides the most scenes it can: an even share would stop each a round or two
 // short of a verdict, or let one scene that needs more than its estimate keep time the scenes
 // after it could have decided with. A scene that decides in the first pass costs no more than

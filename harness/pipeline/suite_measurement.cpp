@@ -139,20 +139,36 @@ std::filesystem::path scene_dir(const SuiteMeasurement& m, const SuiteScene& ent
   return join_component(m.work_dir / "scenes", entry.id, "scene id");
 }
 
+// What the second pass knows of each scene besides its rounds: whether no more time can go to
+// it, and how many visits ended undecided although its estimate said they would not.
+struct RevisitState {
+  bool spent = false;
+  int misses = 0;
+};
+
+// About how many seconds more the scene needs: its estimate, doubled for every visit it outlived.
+// The estimate projects from the rounds' spread (measure/change.h), which a scene with heavier
+// tails than its spread shows outlives visit after visit, one round at a time; backed off, it
+// gets longer visits and lets the other scenes go first (the identity tracer's nurbtst, estimated
+// a round short 15 times running, took 30 rounds in 2-round visits while balls waited).
+double backed_off_seconds(const SceneRevisits& revisits, const SceneResult& scene,
+                          const RevisitState& state) {
+  return std::ldexp(revisits.seconds_to_decide(scene), std::min(state.misses, 20));
+}
+
 // The scenes of `document` stopped undecided for lack of time, the cheapest to decide first (a
-// stable order: equal estimates keep the suite's order), leaving out those in `spent` (a visit
-// gave them no round: no time is left for them).
+// stable order: equal estimates keep the suite's order), leaving out those with no time left.
 std::vector<std::size_t> scenes_to_revisit(const ResultsDocument& document,
                                            const SceneRevisits& revisits,
-                                           const std::vector<bool>& spent) {
+                                           const std::vector<RevisitState>& states) {
   std::vector<std::pair<double, std::size_t>> undecided;
   for (std::size_t i = 0; i < document.scenes.size(); ++i) {
     const SceneResult& scene = document.scenes[i];
-    if (spent[i] || scene.runs.failed() || scene.runs.rounds.empty() ||
+    if (states[i].spent || scene.runs.failed() || scene.runs.rounds.empty() ||
         scene.runs.stop_reason != to_string(StopDecision::stop_budget_time)) {
       continue;
     }
-    undecided.emplace_back(revisits.seconds_to_decide(scene), i);
+    undecided.emplace_back(backed_off_seconds(revisits, scene, states[i]), i);
   }
   std::stable_sort(undecided.begin(), undecided.end(),
                    [](const auto& a, const auto& b) { return a.first < b.first; });
@@ -163,21 +179,24 @@ std::vector<std::size_t> scenes_to_revisit(const ResultsDocument& document,
 
 // The second pass: while time is left, the undecided scene cheapest to decide gets what it is
 // estimated to need (SceneRevisits::stop), is judged again over all its rounds, and goes back
-// among the undecided if it is still one, its estimate now from more rounds. Estimated anew after
-// every visit, a scene that needed more than its estimate competes again instead of keeping the
-// time, and the scenes after it still get their turn. The document is kept after each visit as
-// after the first pass, with one line per visit ("[again 1, 3 undecided] balls ...").
+// among the undecided if it is still one, its estimate now from more rounds and doubled for
+// each visit it outlived (backed_off_seconds). Estimated anew after every visit, a scene that
+// needed more than its estimate competes again instead of keeping the time, and the scenes
+// after it still get their turn. The document is kept after each visit as after the first
+// pass, with one line per visit ("[again 1, 3 undecided] balls ...").
 void revisit_scenes(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
                     PipelineIo& io) {
-  std::vector<bool> spent(document.scenes.size(), false);
+  std::vector<RevisitState> states(document.scenes.size());
   for (std::size_t visit = 1;; ++visit) {
     throw_if_interrupted("between scenes");
-    const std::vector<std::size_t> order = scenes_to_revisit(document, *m.revisits, spent);
+    const std::vector<std::size_t> order = scenes_to_revisit(document, *m.revisits, states);
     if (order.empty()) return;
     SceneResult& scene = document.scenes[order.front()];
-    const std::optional<StopRule> stop = m.revisits->stop(scene, order.size());
+    RevisitState& revisit = states[order.front()];
+    const double seconds_needed = backed_off_seconds(*m.revisits, scene, revisit);
+    const std::optional<StopRule> stop = m.revisits->stop(scene, order.size(), seconds_needed);
     if (!stop) {
-      spent[order.front()] = true;
+      revisit.spent = true;
       continue;
     }
     ProgressState state{visit, visit + order.size() - 1, scene.entry.id + " (again)",
@@ -205,7 +224,10 @@ void revisit_scenes(ResultsDocument& document, const SuiteMeasurement& m, Execut
     // limit) had its even share, and more of the same would not decide it.
     if (scene.runs.rounds.size() == rounds_before ||
         !std::isfinite(m.revisits->seconds_to_decide(scene))) {
-      spent[order.front()] = true;
+      revisit.spent = true;
+    }
+    if (scene.runs.stop_reason == to_string(StopDecision::stop_budget_time)) {
+      ++revisit.misses;
     }
     update_scores(document, m.tracer_roles);
     keep(document, m);

@@ -31,9 +31,12 @@ namespace raygate {
 // (runner/scheduler.h, continue_scene), the cheapest to decide first, each estimated anew after
 // its visit, until the time is gone.
 struct SceneRevisits {
-  // The stopping rule of a scene's further rounds; `scenes_left` counts it and the scenes still
-  // to be visited after it. nullopt: no time is left for it (--max-seconds reached, say).
-  std::function<std::optional<StopRule>(const SceneResult& scene, std::size_t scenes_left)> stop;
+  // The stopping rule of a scene's further rounds, given about how many seconds more it needs
+  // (seconds_to_decide, backed off after visits that did not decide it); `scenes_left` counts it
+  // and the undecided scenes after it. nullopt: no time is left for it (--max-seconds reached).
+  std::function<std::optional<StopRule>(const SceneResult& scene, std::size_t scenes_left,
+                                        double seconds_to_decide)>
+      stop;
   // About how many seconds more the scene needs to decide; infinity when no number of rounds is
   // known to decide it (those go last).
   std::function<double(const SceneResult& scene)> seconds_to_decide;

@@ -86,6 +86,20 @@ std::string banner(const ReportInput& input, const std::vector<SceneView>& views
       escape(line.detail), input.gate.exit_code);
 }
 
+// What the gate says of the whole document (a problem that keeps it from passing; notes such as
+// missing goldens or the runner's noise), under the headline, as the Markdown comment and the
+// console list them.
+std::string gate_notes_html(const GateResult& gate) {
+  std::string html;
+  for (const std::string& problem : gate.problems) {
+    html += R"(<p class="note"><b>problem</b>: )" + escape(problem) + "</p>";
+  }
+  for (const std::string& note : gate.notes) {
+    html += R"(<p class="note">note: )" + escape(note) + "</p>";
+  }
+  return html;
+}
+
 std::string counts_html(const GateResult& gate) {
   std::string html = R"(<div class="counts">)";
   for (const GateOutcome o : {GateOutcome::fail, GateOutcome::unmeasured, GateOutcome::warn,
@@ -154,7 +168,7 @@ class HtmlReporter final : public Reporter {
         << "<body data-js=\"off\"><div class=\"page\">"
         << "<header class=\"top card\"><div class=\"brand\">raygate <span>" << to_string(d.kind)
         << " report</span></div><h1>" << escape(title) << "</h1>" << banner(input, views)
-        << meta_list(input) << "</header>\n"
+        << gate_notes_html(input.gate) << meta_list(input) << "</header>\n"
         << overview(input, views) << '\n' << scaling_section(d) << '\n'
         << memory_html(input) << explanation_html(input) << '\n';  // issue 27
     for (const SceneView& view : views) out << scene_section(input, view) << '\n';

@@ -68,6 +68,18 @@ TEST(HtmlReport, FailuresFirstWithBadgesAndReasons) {
   EXPECT_EQ(count(html, "Mann–Whitney U "), 3u);
 }
 
+TEST(HtmlReport, SaysTheGatesNotesUnderTheHeadline) {
+  Fixture f(true);
+  f.gate.notes.push_back("runner noise: the rounds of a scene differed by 8.9% <of 13>");
+  const std::string html = f.render("html");
+  const std::size_t note =
+      html.find(R"(<p class="note">note: runner noise: the rounds of a scene differed by 8.9% )"
+                R"(&lt;of 13&gt;</p>)");
+  ASSERT_NE(note, std::string::npos);
+  EXPECT_LT(html.find(R"(<div class="banner)"), note);
+  EXPECT_LT(note, html.find(R"(<dl class="meta">)"));
+}
+
 TEST(HtmlReport, EscapesText) {
   const Fixture f(true);
   const std::string html = f.render("html");

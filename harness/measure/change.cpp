@@ -298,6 +298,12 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
   // Round by round while the sequence's rank steps make the projection jump back and forth
   // (its range at 8 rounds is narrower than at 10); beyond, it narrows steadily, so the first
   // deciding round is found by doubling and halving.
+  // A document may claim any number of rounds: past the projected range the square law
+  // answers, without scanning ranks a count of rounds that large would need.
+  if (first > RoundsProjection::kMaxRounds) {
+    const std::optional<std::size_t> beyond = projection.beyond_max_rounds();
+    return beyond ? std::optional<std::size_t>(std::max(*beyond, first)) : std::nullopt;
+  }
   constexpr std::size_t kSteadyFrom = 64;
   for (std::size_t n = first; n <= kSteadyFrom; ++n) {
     if (projection.decides_at(n)) return n;
@@ -323,7 +329,11 @@ std::optional<double> largest_deciding_spread(std::size_t rounds, double thresho
                                               double equivalence_confidence) {
   const double alpha = (1.0 - equivalence_confidence) / 2.0;
   if (!(alpha > 0.0 && alpha < 0.5) || !(threshold > 0.0)) return std::nullopt;
-  const double z = rank_quantile(rounds, alpha);
+  // Past the projected range the sequence narrows like 1/sqrt(rounds) (and a stored document
+  // may claim any number of rounds: no rank scan that long).
+  const std::size_t projected = std::min(rounds, RoundsProjection::kMaxRounds);
+  const double z = rank_quantile(projected, alpha) *
+                   std::sqrt(static_cast<double>(projected) / static_cast<double>(rounds));
   if (!std::isfinite(z) || !(z > 0.0)) return std::nullopt;
   return std::log1p(threshold) / z;
 }

@@ -232,6 +232,19 @@ TEST(MeasureRoundsToDecide, TowardsAVerdictOfChangeTheDecisionSequenceMustClearZ
       estimated_rounds_to_decide(sequence_summary(0.04, {-0.1, 0.2}, {0.0, 0.1}, 40, 50.0), 0.03));
 }
 
+TEST(MeasureRoundsToDecide, ARoundCountFromAHostileDocumentIsAnsweredAtOnce) {
+  // A stored document may claim a trillion rounds; the ranks of such a sequence are not scanned
+  // (that took longer than any CI job), the square law answers.
+  const std::size_t trillion = 1'000'000'000'000;
+  const std::optional<std::size_t> more =
+      estimated_rounds_to_decide(sequence_summary(0.0, {-1, 1}, {-1, 1}, trillion, 0.02), 0.03);
+  ASSERT_TRUE(more);
+  EXPECT_GT(*more, trillion);
+  const std::optional<double> spread = largest_deciding_spread(trillion, 0.03, 0.90);
+  ASSERT_TRUE(spread);
+  EXPECT_GT(*spread, *largest_deciding_spread(2048, 0.03, 0.90));
+}
+
 TEST(MeasureRoundsToDecide, WaitForTheBoundAndSayNothingOnTheLimitOrForOneLook) {
   // Too few rounds for the equivalence sequence to be bounded: its interval is the observed
   // range, which may fit already (identical times), but the verdict waits for the bound.

@@ -25,4 +25,10 @@ std::string duration_text(double seconds) {
   return fmt::format("{:.0f} s", std::max(seconds, 0.0));
 }
 
+std::string count_text(std::size_t count, std::string_view noun, std::string_view plural) {
+  if (count == 1) return fmt::format("1 {}", noun);
+  if (plural.empty()) return fmt::format("{} {}s", count, noun);
+  return fmt::format("{} {}", count, plural);
+}
+
 }  // namespace raygate

@@ -55,9 +55,9 @@ void judge_speed(const SceneResult& scene, const ScenePolicy& policy, bool fail_
   gate.speed_limit = policy.max_slowdown;
   // The same words as the reports' change column (measure/change.h change_with_interval).
   const std::string numbers = fmt::format(
-      "head vs base {}, ratio {:.3f} -> {:.3f}, {} rounds, limit {}",
-      change_with_interval(change, verdict, policy.max_slowdown), change.base.ratio, change.head.ratio, change.rounds,
-      signed_percent(policy.max_slowdown));
+      "head vs base {}, ratio {:.3f} -> {:.3f}, {}, limit {}",
+      change_with_interval(change, verdict, policy.max_slowdown), change.base.ratio,
+      change.head.ratio, count_text(change.rounds, "round"), signed_percent(policy.max_slowdown));
   if (verdict == ChangeVerdict::regressed) {
     raise_speed(gate, GateOutcome::fail, "slower: " + numbers);
   }

@@ -54,16 +54,17 @@ std::string undecided_scene(const SceneResult& scene, double threshold) {
   const ChangeSummary& c = *scene.change;
   const DecidingInterval sequence = deciding_sequence(c, threshold);
   if (const std::size_t needed = rounds_to_bound(c, sequence); c.rounds < needed) {
-    return fmt::format("{} {:+.1f}% after {} rounds, no {} yet (it needs {} rounds at least, {} "
+    return fmt::format("{} {:+.1f}% after {}, no {} yet (it needs {} rounds at least, {} "
                        "more at this scene's pace)",
-                       scene.entry.id, 100 * c.change, c.rounds, interval_name(sequence), needed,
+                       scene.entry.id, 100 * c.change, count_text(c.rounds, "round"), interval_name(sequence), needed,
                        duration_text(seconds_per_round(scene) *
                                      static_cast<double>(needed - c.rounds)));
   }
   const Interval& i = sequence.interval;
-  return fmt::format("{} {:+.1f}% [{:+.1f}%, {:+.1f}%] {} (width {:.1f} points) after {} rounds {}",
+  return fmt::format("{} {:+.1f}% [{:+.1f}%, {:+.1f}%] {} (width {:.1f} points) after {} {}",
                      scene.entry.id, 100 * c.change, 100 * i.lower, 100 * i.upper,
-                     interval_name(sequence), 100 * (i.upper - i.lower), c.rounds,
+                     interval_name(sequence), 100 * (i.upper - i.lower),
+                     count_text(c.rounds, "round"),
                      what_would_decide(scene, threshold));
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 
+#include "core/format.h"
 #include "report/html_parts.h"
 
 namespace raygate::report::html {
@@ -185,10 +186,10 @@ std::vector<std::string> round_facts(const ResultsDocument& d, const SceneResult
   const RatioSummary* primary = scene.ratio(primary_role(d));
   if (primary == nullptr) return facts;
   if (scene.change && scene.change->rounds != primary->rounds) {
-    facts.push_back(fmt::format("{} rounds (the baseline in {})", scene.change->rounds,
-                                primary->rounds));
+    facts.push_back(fmt::format("{} (the baseline in {})",
+                                count_text(scene.change->rounds, "round"), primary->rounds));
   } else {
-    facts.push_back(fmt::format("{} rounds", primary->rounds));
+    facts.push_back(count_text(primary->rounds, "round"));
   }
   std::string medians = "medians: baseline " + cost_text(d, primary->baseline_median_seconds);
   for (const Role role : ratio_roles(d)) {

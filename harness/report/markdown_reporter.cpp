@@ -132,6 +132,15 @@ std::string MarkdownReporter::compose(const ReportInput& input,
   const ResultsDocument& d = input.document;
   const Headline line = headline(input, views);
   std::string text = fmt::format("**{}** ({})\n\n", md(line.title), md(line.detail));
+  // Said once for the document, however many scenes share them (a tracer without goldens), and
+  // under the headline, as in the HTML report: the runner-noise note says why scenes stayed
+  // INCONCLUSIVE, which a reviewer needs before the table, not after the memory section.
+  std::string notes;
+  for (const std::string& problem : input.gate.problems) {
+    notes += "- **problem**: " + md(problem) + "\n";
+  }
+  for (const std::string& note : input.gate.notes) notes += "- note: " + md(note) + "\n";
+  if (!notes.empty()) text.append(notes).append("\n");
   text += intro(d) + "\n" + table_head(d);
   std::string reasons;
   for (std::size_t i = 0; i < shown; ++i) {
@@ -146,13 +155,6 @@ std::string MarkdownReporter::compose(const ReportInput& input,
   }
   if (!reasons.empty()) text.append("\n").append(reasons);
   text += memory_markdown(input) + explanation_markdown(input);  // issue 27
-  // Said once for the document, however many scenes share them (a tracer without goldens).
-  std::string notes;
-  for (const std::string& problem : input.gate.problems) {
-    notes += "- **problem**: " + md(problem) + "\n";
-  }
-  for (const std::string& note : input.gate.notes) notes += "- note: " + md(note) + "\n";
-  if (!notes.empty()) text.append("\n").append(notes);
   if (d.scaling) {
     text += "\n**Growth with scene size** (exponent k of t ≈ c·n^k, 95% CI)\n\n```\n";
     for (const std::string& fit : scaling_lines(*d.scaling)) {

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/format.h"
+
 namespace raygate::report {
 namespace {
 
@@ -178,8 +180,8 @@ std::optional<ChangeCell> change_cell(const SceneResult& scene, const SceneGate&
     cell.interval_name = interval_name(decided);
     cell.interval_confidence = decided.confidence;
   }
-  cell.text = fmt::format("{}, {} rounds", change_with_interval(c, cell.verdict, gate.speed_limit),
-                          c.rounds);
+  cell.text = fmt::format("{}, {}", change_with_interval(c, cell.verdict, gate.speed_limit),
+                          count_text(c.rounds, "round"));
   return cell;
 }
 

@@ -167,6 +167,8 @@ TEST(MarkdownReport, NoGoldensIsSaidOnce) {
   EXPECT_EQ(occurrences(text, "no goldens in golden/my-tracer"), 1u) << text;
   at(text, "- note: images not checked against goldens");
   EXPECT_EQ(text.rfind("**raygate: pass** (2 scenes; suite score 0.439)\n", 0), 0u) << text;
+  // Under the headline, as in the HTML report, not after the table and the memory section.
+  EXPECT_LT(text.find("- note: images not checked"), text.find("<sub>")) << text;
 }
 
 // A commit subject is the author's text: Markdown link or image syntax in it stays text.

@@ -52,9 +52,14 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
                      "measure; 0 = none");
   command.add_option("--timing", args.metric, timing_choices_help())
       ->check(CLI::IsMember(timing_mode_choices()));
-  add_bounded_option(command, "--repeats", args.repeats, 1, 10,
-                     "runs of each program per round, interleaved; the round keeps each "
-                     "one's fastest (steadier on a busy machine, at that many times the runs)");
+  // No default shown: not given, it is one run, and compare's second pass chooses per scene.
+  command
+      .add_option("--repeats", args.repeats,
+                  "runs of each program per round, interleaved; the round keeps each one's "
+                  "fastest (steadier on a busy machine, at that many times the runs). Default: "
+                  "one, and compare's second pass gives a scene the fastest of two where its "
+                  "rounds show that decides it sooner")
+      ->check(CLI::Range(1, 10));
   command.add_option("--jobs", args.jobs, "parallel build jobs (default: all allowed CPUs)");
   command.add_option("--policy", args.policy,
                      "gate policy file: slowdown limit, significance, image thresholds "

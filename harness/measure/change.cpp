@@ -36,12 +36,18 @@ std::optional<Interval> to_change(const std::optional<Interval>& log_interval) {
   return Interval{std::expm1(log_interval->lower), std::expm1(log_interval->upper)};
 }
 
-// Φ⁻¹ at the expected position of a median sequence's upper end among n values (Blom); infinite
-// while the sequence is unbounded.
-double rank_quantile(std::size_t n, double alpha_each_side) {
+// The expected position of a median sequence's upper end among n values (Blom), as a
+// probability; nullopt while the sequence is unbounded.
+std::optional<double> upper_end_position(std::size_t n, double alpha_each_side) {
   const std::size_t rank = median_sequence_upper_rank(n, alpha_each_side);
-  if (rank > n) return std::numeric_limits<double>::infinity();
-  return normal_quantile((static_cast<double>(rank) - 0.375) / (static_cast<double>(n) + 0.25));
+  if (rank > n) return std::nullopt;
+  return (static_cast<double>(rank) - 0.375) / (static_cast<double>(n) + 0.25);
+}
+
+// P(X <= x) for X normal around 0 with this spread (a step at 0 for spread 0).
+double normal_cdf(double x, double spread) {
+  if (!(spread > 0.0)) return x >= 0.0 ? 1.0 : 0.0;
+  return 0.5 * std::erfc(-x / (spread * std::sqrt(2.0)));
 }
 
 // Where an undecided scene's intervals will be after n rounds in all, if its rounds go on as
@@ -58,9 +64,15 @@ class RoundsProjection {
   // Projected round by round up to here; beyond, the half-width's square law from this round.
   static constexpr std::size_t kMaxRounds = 2048;
 
-  RoundsProjection(const ChangeSummary& summary, double threshold)
+  // The rounds so far are spread like summary.log_change_mad_scaled; the rounds still to come
+  // like `later_spread` when given (the fastest of two runs per side, measure/fastest_of_two.h),
+  // so the sequence after n rounds is projected from a mixture of the two.
+  RoundsProjection(const ChangeSummary& summary, double threshold,
+                   std::optional<double> later_spread)
       : log_change_(std::log1p(summary.change)),
         spread_(summary.log_change_mad_scaled),
+        later_spread_(later_spread.value_or(summary.log_change_mad_scaled)),
+        rounds_now_(summary.rounds),
         threshold_(threshold),
         towards_unchanged_(std::abs(summary.change) < threshold),
         equivalence_alpha_((1.0 - summary.equivalence_confidence) / 2.0),
@@ -70,14 +82,15 @@ class RoundsProjection {
   // conditions on the projected intervals).
   bool decides_at(std::size_t n) const {
     if (towards_unchanged_) {
-      const double half = spread_ * rank_quantile(n, equivalence_alpha_);
+      const double half = half_width(n, equivalence_alpha_);
       return std::expm1(log_change_ + half) <= threshold_ &&
              std::expm1(log_change_ - half) >= -threshold_;
     }
     const double size = std::abs(log_change_);
-    const double decision_half = spread_ * rank_quantile(n, decision_alpha_);
+    const double decision_half = half_width(n, decision_alpha_);
     // The one-look 95% interval of a median: about 1.96 x 1.2533 sigma / sqrt(n) each side.
-    const double one_look_half = 1.96 * 1.2533 * spread_ / std::sqrt(static_cast<double>(n));
+    const double one_look_half =
+        1.96 * 1.2533 * median_spread(n) / std::sqrt(static_cast<double>(n));
     return decision_half < size &&
            (one_look_half <= threshold_ || decision_half < size - std::log1p(threshold_));
   }
@@ -87,7 +100,7 @@ class RoundsProjection {
   // when that is beyond any budget (ten million rounds).
   std::optional<std::size_t> beyond_max_rounds() const {
     const double alpha = towards_unchanged_ ? equivalence_alpha_ : decision_alpha_;
-    const double half = spread_ * rank_quantile(kMaxRounds, alpha);
+    const double half = half_width(kMaxRounds, alpha);
     const double room = towards_unchanged_
                             ? std::min(std::log1p(threshold_) - log_change_,
                                        log_change_ - std::log1p(-threshold_))
@@ -99,8 +112,41 @@ class RoundsProjection {
   }
 
  private:
+  // The projected distance from the change to the sequence's ends after n rounds: where the
+  // upper end's rank falls among n values, of which the first rounds_now_ are spread like
+  // spread_ and the rest like later_spread_; infinite while the sequence is unbounded.
+  double half_width(std::size_t n, double alpha) const {
+    const std::optional<double> position = upper_end_position(n, alpha);
+    if (!position) return std::numeric_limits<double>::infinity();
+    const double z = normal_quantile(*position);
+    if (later_spread_ == spread_ || n <= rounds_now_) return spread_ * z;
+    // The mixture's quantile lies between its parts' (z > 0: an upper end), found by bisection.
+    const double now_share = static_cast<double>(rounds_now_) / static_cast<double>(n);
+    double low = std::min(spread_, later_spread_) * z;
+    double high = std::max(spread_, later_spread_) * z;
+    for (int step = 0; step < 60 && high - low > 1e-9; ++step) {
+      const double middle = 0.5 * (low + high);
+      const double below = now_share * normal_cdf(middle, spread_) +
+                           (1.0 - now_share) * normal_cdf(middle, later_spread_);
+      (below < *position ? low : high) = middle;
+    }
+    return high;
+  }
+
+  // The spread whose median is as precise as the mixture's after n rounds: a median's variance
+  // is 1 / (4 n f(0)^2), and the mixture's density at its centre is the rounds' shares of each
+  // part's, 1 / (sigma sqrt(2 pi)).
+  double median_spread(std::size_t n) const {
+    if (later_spread_ == spread_ || n <= rounds_now_) return spread_;
+    if (!(spread_ > 0.0 && later_spread_ > 0.0)) return 0.0;
+    const double now_share = static_cast<double>(rounds_now_) / static_cast<double>(n);
+    return 1.0 / (now_share / spread_ + (1.0 - now_share) / later_spread_);
+  }
+
   double log_change_;
   double spread_;
+  double later_spread_;
+  std::size_t rounds_now_;
   double threshold_;
   bool towards_unchanged_;
   double equivalence_alpha_;
@@ -280,7 +326,8 @@ ChangeVerdict classify_change(const ChangeSummary& summary, double threshold) {
 }
 
 std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summary,
-                                                      double threshold) {
+                                                      double threshold,
+                                                      std::optional<double> later_spread) {
   if (summary.interval_kind != ChangeIntervalKind::confidence_sequence || summary.rounds == 0) {
     return std::nullopt;
   }
@@ -293,7 +340,7 @@ std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summa
   // Within a tenth of the limit the point estimate itself may fall on either side of it
   // whatever the rounds: no estimate.
   if (std::abs(std::abs(summary.change) - threshold) < 0.1 * threshold) return std::nullopt;
-  const RoundsProjection projection(summary, threshold);
+  const RoundsProjection projection(summary, threshold, later_spread);
   const std::size_t first = summary.rounds + 1;  // undecided now, so at least one more round
   // Round by round while the sequence's rank steps make the projection jump back and forth
   // (its range at 8 rounds is narrower than at 10); beyond, it narrows steadily, so the first
@@ -332,7 +379,9 @@ std::optional<double> largest_deciding_spread(std::size_t rounds, double thresho
   // Past the projected range the sequence narrows like 1/sqrt(rounds) (and a stored document
   // may claim any number of rounds: no rank scan that long).
   const std::size_t projected = std::min(rounds, RoundsProjection::kMaxRounds);
-  const double z = rank_quantile(projected, alpha) *
+  const std::optional<double> position = upper_end_position(projected, alpha);
+  if (!position) return std::nullopt;
+  const double z = normal_quantile(*position) *
                    std::sqrt(static_cast<double>(projected) / static_cast<double>(rounds));
   if (!std::isfinite(z) || !(z > 0.0)) return std::nullopt;
   return std::log1p(threshold) / z;

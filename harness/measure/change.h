@@ -143,8 +143,12 @@ ChangeVerdict classify_change(const ChangeSummary& summary,
 // today's interval does not make a scene look hopeless. At least the rounds the interval needs
 // to be bounded, and at least one more round. nullopt for a summary that is not on confidence
 // sequences, a change within a tenth of the limit, or one beyond ten million rounds.
-std::optional<std::size_t> estimated_rounds_to_decide(const ChangeSummary& summary,
-                                                      double threshold);
+// `later_spread`: the rounds from now on are spread like this instead (the fastest of two runs
+// per side, measure/fastest_of_two.h); the projection then mixes the rounds so far, at their
+// spread, with the rounds to come, at this one.
+std::optional<std::size_t> estimated_rounds_to_decide(
+    const ChangeSummary& summary, double threshold,
+    std::optional<double> later_spread = std::nullopt);
 
 // The largest spread of the rounds (scaled MAD of their log-changes) at which an unchanged scene
 // is projected UNCHANGED after `rounds` rounds: its equivalence sequence at

@@ -14,6 +14,7 @@
 #include "pipeline/run_images.h"
 #include "pipeline/explain_stage.h"
 #include "pipeline/stop_rules.h"
+#include "pipeline/visit_plan.h"
 #include "runner/baseline_contender.h"
 #include "runner/tracer_contender.h"
 
@@ -42,18 +43,6 @@ void judge_change(SceneResult& scene, const GatePolicy& gate_policy, double alph
     scene.ratios[role_name(Role::base)] = scene.change->base;
     scene.ratios[role_name(Role::head)] = scene.change->head;
   }
-}
-
-// About how many seconds more a scene left INCONCLUSIVE needs (infinity: no estimate), at the
-// pace of its rounds so far: the second pass visits the cheapest first.
-double seconds_to_decide(const SceneResult& scene, const GatePolicy& gate_policy) {
-  const std::size_t rounds = scene.runs.rounds.size();
-  if (!scene.change || rounds == 0) return std::numeric_limits<double>::infinity();
-  const std::optional<std::size_t> needed =
-      estimated_rounds_to_decide(*scene.change, gate_policy.for_scene(scene.entry.id).max_slowdown);
-  if (!needed) return std::numeric_limits<double>::infinity();
-  const double seconds_per_round = scene.runs.seconds_spent / static_cast<double>(rounds);
-  return seconds_per_round * static_cast<double>(*needed > rounds ? *needed - rounds : 0);
 }
 
 void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, double alpha,
@@ -150,7 +139,9 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
         if (again.max_seconds <= scene.runs.seconds_spent) return std::nullopt;
         return change_stop_rule(again, policy, scene_levels(policy, alpha), simulated(context));
       },
-      [&](const SceneResult& scene) { return seconds_to_decide(scene, context.policy); },
+      [&](const SceneResult& scene) {
+        return plan_visit(scene, context.policy, context.repeat_where_it_pays);
+      },
       [&](SceneResult& scene) { judge_change(scene, context.policy, alpha, simulated(context)); }};
   m.finish_scene = [&](SceneResult& scene) {
     finish_compare_scene(scene, context.policy, alpha, work_dir / "evidence",

@@ -96,8 +96,9 @@ MeasureContext load_measure_context(const MeasureOptions& args,
   c.schedule.duet_cpus = args.duet_cpus;
   c.schedule.round_cpus = default_round_cpus(args, c);
   c.schedule.normalizer_rounds = args.baseline_rounds;
-  c.schedule.repeats = args.repeats;
-  if (c.schedule.kind == ScheduleKind::duet && args.repeats != 1) {
+  c.schedule.repeats = std::max<std::size_t>(args.repeats, 1);
+  c.repeat_where_it_pays = args.repeats == 0 && c.schedule.kind == ScheduleKind::alternate;
+  if (c.schedule.kind == ScheduleKind::duet && args.repeats > 1) {
     throw UsageError("--repeats applies to the alternate schedule (a duet round runs each "
                      "program once)");
   }

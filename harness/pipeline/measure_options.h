@@ -24,7 +24,9 @@ struct MeasureOptions {
   std::vector<int> pin_cpus;
   bool no_pin = false;  // --no-pin: not even the default pinning of a round to one CPU
   std::size_t baseline_rounds = 0;  // rounds per scene the baseline joins; 0 = every round
-  std::size_t repeats = 1;  // runs of each contender per round, the fastest kept
+  // Runs of each contender per round, the fastest kept; 0 (not given): one, and compare's second
+  // pass repeats where it pays (MeasureContext::repeat_where_it_pays).
+  std::size_t repeats = 0;
   std::vector<int> duet_cpus{0, 1};
   int warmup = 1;
   StoppingPolicy stopping;  // --target, --min-rounds, ...; its defaults are the policy's own

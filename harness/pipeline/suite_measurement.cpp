@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 
+#include "core/format.h"
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/path_component.h"
@@ -153,7 +154,7 @@ struct RevisitState {
 // a round short 15 times running, took 30 rounds in 2-round visits while balls waited).
 double backed_off_seconds(const SceneRevisits& revisits, const SceneResult& scene,
                           const RevisitState& state) {
-  return std::ldexp(revisits.seconds_to_decide(scene), std::min(state.misses, 20));
+  return std::ldexp(revisits.plan(scene).seconds, std::min(state.misses, 20));
 }
 
 // The scenes of `document` stopped undecided for lack of time, the cheapest to decide first (a
@@ -208,7 +209,11 @@ void revisit_scenes(ResultsDocument& document, const SuiteMeasurement& m, Execut
     };
     const std::size_t rounds_before = scene.runs.rounds.size();
     const SceneInput input = prepare_scene_input(scene.entry, m);
-    scene.runs = continue_scene(input, m.contenders, m.schedule, *stop, executor, io.clock,
+    ScheduleOptions schedule = m.schedule;
+    if (const std::size_t repeats = m.revisits->plan(scene).repeats; repeats > 0) {
+      schedule.repeats = repeats;
+    }
+    scene.runs = continue_scene(input, m.contenders, schedule, *stop, executor, io.clock,
                                 scene_dir(m, scene.entry), std::move(scene.runs), observe);
     summarize_ratios(scene, m);
     if (scene.runs.failed()) {
@@ -223,7 +228,7 @@ void revisit_scenes(ResultsDocument& document, const SuiteMeasurement& m, Execut
     // A visit that ran no round had no time; a scene still without an estimate (a change on the
     // limit) had its even share, and more of the same would not decide it.
     if (scene.runs.rounds.size() == rounds_before ||
-        !std::isfinite(m.revisits->seconds_to_decide(scene))) {
+        !std::isfinite(m.revisits->plan(scene).seconds)) {
       revisit.spent = true;
     }
     if (scene.runs.stop_reason == to_string(StopDecision::stop_budget_time)) {
@@ -350,7 +355,11 @@ std::string scene_line(const SceneResult& scene, const std::vector<Role>& tracer
                           r->ratio, r->ratio_interval.lower, r->ratio_interval.upper);
     }
   }
-  text += fmt::format("  {} rounds, {}", scene.runs.rounds.size(), scene.runs.stop_reason);
+  text += fmt::format("  {}, {}", count_text(scene.runs.rounds.size(), "round"),
+                      scene.runs.stop_reason);
+  if (const std::string repeats = repeats_note(scene.runs.rounds); !repeats.empty()) {
+    text += ", " + repeats;
+  }
   if (const std::string note = determinism_note(scene.runs); !note.empty()) text += "  " + note;
   if (scene.runs.failed()) {
     const RunRecord& run = *scene.runs.failed_run;

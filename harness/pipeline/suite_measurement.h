@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,16 +31,26 @@ namespace raygate {
 // undecided when their share of the time ran out get more rounds, continued where they stopped
 // (runner/scheduler.h, continue_scene), the cheapest to decide first, each estimated anew after
 // its visit, until the time is gone.
+// The second pass's plan for a scene's next visit.
+struct VisitPlan {
+  // About how many seconds more the scene needs to decide; infinity when no number of rounds is
+  // known to decide it (those go last).
+  double seconds = std::numeric_limits<double>::infinity();
+  // Runs of each contender per round in the visit, the fastest kept (ScheduleOptions::repeats):
+  // 2 where each side's fastest of two is estimated to decide the scene sooner for its double
+  // cost (measure/fastest_of_two.h); 0 keeps the measurement's own.
+  std::size_t repeats = 0;
+};
+
 struct SceneRevisits {
   // The stopping rule of a scene's further rounds, given about how many seconds more it needs
-  // (seconds_to_decide, backed off after visits that did not decide it); `scenes_left` counts it
+  // (the plan's seconds, backed off after visits that did not decide it); `scenes_left` counts it
   // and the undecided scenes after it. nullopt: no time is left for it (--max-seconds reached).
   std::function<std::optional<StopRule>(const SceneResult& scene, std::size_t scenes_left,
                                         double seconds_to_decide)>
       stop;
-  // About how many seconds more the scene needs to decide; infinity when no number of rounds is
-  // known to decide it (those go last).
-  std::function<double(const SceneResult& scene)> seconds_to_decide;
+  // What the scene's next visit needs, and how it runs.
+  std::function<VisitPlan(const SceneResult& scene)> plan;
   // The scene's summaries again, over all its rounds (its image checks stay the first visit's).
   std::function<void(SceneResult& scene)> rejudge;
 };

@@ -297,6 +297,28 @@ std::vector<CompareRound> compare_samples(const std::vector<Round>& rounds) {
   return samples;
 }
 
+std::size_t runs_per_contender(const Round& round) {
+  std::size_t most = 1;
+  for (const std::string& name : round.order) {
+    most = std::max(most, static_cast<std::size_t>(
+                              std::count(round.order.begin(), round.order.end(), name)));
+  }
+  return most;
+}
+
+std::string repeats_note(const std::vector<Round>& rounds) {
+  std::size_t repeated = 0;
+  std::size_t most = 1;
+  for (const Round& round : rounds) {
+    const std::size_t runs = runs_per_contender(round);
+    if (runs > 1) ++repeated;
+    most = std::max(most, runs);
+  }
+  if (repeated == 0) return {};
+  if (repeated == rounds.size()) return fmt::format("each the fastest of {} runs", most);
+  return fmt::format("{} of them the fastest of {} runs", repeated, most);
+}
+
 std::string_view to_string(ScheduleKind kind) {
   return kind == ScheduleKind::duet ? "duet" : "alternate";
 }

@@ -119,6 +119,15 @@ std::vector<RoundSample> round_samples(const std::vector<Round>& rounds, Role tr
 // is empty in rounds it did not join.
 std::vector<CompareRound> compare_samples(const std::vector<Round>& rounds);
 
+// How many times each contender ran in this round (ScheduleOptions::repeats when it ran): the
+// most times one name appears in its order. 1 for a round whose order is empty (documents
+// written before the order was kept).
+std::size_t runs_per_contender(const Round& round);
+
+// What the rounds' repeats were, for a scene's line: "6 of them the fastest of 2 runs", "each
+// the fastest of 2 runs"; empty when every round ran each contender once.
+std::string repeats_note(const std::vector<Round>& rounds);
+
 std::string_view to_string(ScheduleKind kind);
 
 }  // namespace raygate

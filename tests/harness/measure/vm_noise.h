@@ -5,6 +5,7 @@
 // whichever revision ran in it: the skewed, serially dependent noise the gate must live with.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 
@@ -24,13 +25,18 @@ class VmRounds {
  public:
   VmRounds(std::uint64_t seed, VmNoise noise) : rng_(seed), noise_(noise) {}
 
-  // The next round, head = base * true_factor before noise.
-  CompareRound next(double true_factor) {
-    double seconds[3] = {1.0, 2.0, 2.0 * true_factor};  // baseline, base, head
+  // The next round, head = base * true_factor before noise; with `repeats`, each role runs that
+  // many times, interleaved (baseline, base, head, baseline, ...), and keeps its fastest run, as
+  // ScheduleOptions::repeats does.
+  CompareRound next(double true_factor, int repeats = 1) {
+    const double nominal[3] = {1.0, 2.0, 2.0 * true_factor};  // baseline, base, head
+    double seconds[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL};
     const int first = static_cast<int>(round_ % 3);
-    for (int k = 0; k < 3; ++k) {
-      const int role = (first + k) % 3;
-      seconds[role] *= slowdown();
+    for (int r = 0; r < repeats; ++r) {
+      for (int k = 0; k < 3; ++k) {
+        const int role = (first + k) % 3;
+        seconds[role] = std::min(seconds[role], nominal[role] * slowdown());
+      }
     }
     ++round_;
     return {seconds[0], seconds[1], seconds[2]};

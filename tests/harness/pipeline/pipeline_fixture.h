@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -30,7 +31,10 @@ namespace raygate::testing {
 class RecordingProgress final : public ProgressSink {
  public:
   void update(const ProgressState& state) override { updates.push_back(state); }
-  void line(const std::string& text) override { lines.push_back(text); }
+  void line(const std::string& text) override {
+    lines.push_back(text);
+    if (on_line) on_line(text);
+  }
   void status(const std::string& text) override { statuses.push_back(text); }
 
   // The lines that contain `part`.
@@ -39,6 +43,9 @@ class RecordingProgress final : public ProgressSink {
   std::vector<ProgressState> updates;
   std::vector<std::string> lines;
   std::vector<std::string> statuses;
+  // Called after each line is recorded: a test's way to act at a point of the pipeline (send a
+  // signal after a given scene).
+  std::function<void(const std::string&)> on_line;
 };
 
 class PipelineTest : public ::testing::Test {

@@ -211,6 +211,14 @@ TEST_F(SchedulerTest, RepeatsRunEveryContenderInterleavedAndKeepItsFastestRun) {
   EXPECT_NE(runs.rounds[0].runs.at("base").log.string().find("round-001-2"), std::string::npos);
   // A tie keeps the first.
   EXPECT_NE(runs.rounds[0].runs.at("head").log.string().find("round-001/"), std::string::npos);
+  // A scene's line says how its rounds ran.
+  EXPECT_EQ(runs_per_contender(runs.rounds[1]), 2u);
+  EXPECT_EQ(repeats_note(runs.rounds), "each the fastest of 2 runs");
+  std::vector<Round> mixed = runs.rounds;
+  mixed.push_back(Round{{"base", "head"}, {}});
+  EXPECT_EQ(runs_per_contender(mixed.back()), 1u);
+  EXPECT_EQ(repeats_note(mixed), "2 of them the fastest of 2 runs");
+  EXPECT_EQ(repeats_note({mixed.back()}), "");
 }
 
 TEST_F(SchedulerTest, RepeatsAreForTheAlternateScheduleOnly) {

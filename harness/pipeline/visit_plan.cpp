@@ -1,0 +1,73 @@
+#include "pipeline/visit_plan.h"
+
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "measure/change.h"
+#include "measure/fastest_of_two.h"
+#include "runner/scheduler.h"
+
+namespace raygate {
+namespace {
+
+// Seconds of one run per side and round: the scene's seconds so far over the runs it made, so
+// warm-ups and the baseline's rounds are spread over them as they will be in later rounds.
+double seconds_per_run(const SceneRuns& runs) {
+  std::size_t count = 0;
+  for (const Round& round : runs.rounds) count += runs_per_contender(round);
+  return count == 0 ? 0.0 : runs.seconds_spent / static_cast<double>(count);
+}
+
+// The spread of the scene's rounds with each side's fastest of two: measured, over the rounds
+// that repeated, once there are enough of them; else projected from pairs of one-run rounds.
+std::optional<double> spread_with_fastest_of_two(const SceneRuns& runs) {
+  std::vector<Round> one_run;
+  std::vector<Round> repeated;
+  for (const Round& round : runs.rounds) {
+    (runs_per_contender(round) >= 2 ? repeated : one_run).push_back(round);
+  }
+  if (repeated.size() >= 2 * kMinPairsForSpread) {
+    return quartile_spread(compare_log_changes(compare_samples(repeated)));
+  }
+  return fastest_of_two_spread(compare_samples(one_run));
+}
+
+double seconds_for(std::optional<std::size_t> needed, std::size_t rounds,
+                   double seconds_per_round) {
+  if (!needed) return std::numeric_limits<double>::infinity();
+  return seconds_per_round * static_cast<double>(*needed > rounds ? *needed - rounds : 0);
+}
+
+}  // namespace
+
+VisitPlan plan_visit(const SceneResult& scene, const GatePolicy& gate_policy, bool may_repeat) {
+  VisitPlan plan;
+  const std::size_t rounds = scene.runs.rounds.size();
+  if (!scene.change || rounds == 0) return plan;
+  const double threshold = gate_policy.for_scene(scene.entry.id).max_slowdown;
+  const double run_seconds = seconds_per_run(scene.runs);
+  // Projected from the quartiles rather than the MAD: on one-sided noise the MAD sees only the
+  // steady rounds and promises a verdict the slowed ones keep away (measure/fastest_of_two.h).
+  ChangeSummary projected = *scene.change;
+  if (!projected.exact) {
+    projected.log_change_mad_scaled =
+        quartile_spread(compare_log_changes(compare_samples(scene.runs.rounds)));
+  }
+  plan.seconds = seconds_for(estimated_rounds_to_decide(projected, threshold), rounds,
+                             run_seconds);
+  if (!may_repeat || projected.exact) return plan;
+  const std::optional<double> spread = spread_with_fastest_of_two(scene.runs);
+  if (!spread) return plan;
+  const double repeated_seconds = seconds_for(
+      estimated_rounds_to_decide(projected, threshold, *spread), rounds, 2.0 * run_seconds);
+  if (repeated_seconds < kFastestOfTwoMustSave * plan.seconds) {
+    plan.seconds = repeated_seconds;
+    plan.repeats = 2;
+  } else {
+    plan.repeats = 1;
+  }
+  return plan;
+}
+
+}  // namespace raygate

@@ -1,0 +1,29 @@
+// How the second pass of a compare plans a scene's next visit (pipeline/suite_measurement.h,
+// SceneRevisits): about how many seconds more the scene needs, at the pace of its rounds so far,
+// and whether it gets there sooner with each side's fastest of two runs per round.
+#pragma once
+
+#include <cstddef>
+
+#include "gate/policy.h"
+#include "pipeline/suite_measurement.h"
+#include "results/results.h"
+
+namespace raygate {
+
+// A plan pays for the fastest of two only when it is estimated to need at most this share of
+// one run's seconds: its spread comes from a handful of pairs, and a plan that merely breaks
+// even is not worth a switch on that evidence.
+inline constexpr double kFastestOfTwoMustSave = 0.75;
+
+// The next visit of `scene`, left INCONCLUSIVE by its share of the time: its estimated rounds
+// (measure/change.h, estimated_rounds_to_decide, projected from the rounds' quartile_spread)
+// times its seconds per round. With
+// `may_repeat` (the measurement's own --repeats was not set), the same for rounds of the
+// fastest of two runs per side, projected from their spread (measured in the scene's earlier
+// visits, else from pairs of its one-run rounds, measure/fastest_of_two.h) at twice a one-run
+// round's seconds; the visit repeats when that saves at least 1 - kFastestOfTwoMustSave.
+// Seconds are infinite for a scene without a change or an estimate.
+VisitPlan plan_visit(const SceneResult& scene, const GatePolicy& gate_policy, bool may_repeat);
+
+}  // namespace raygate

@@ -182,6 +182,15 @@ std::optional<ChangeCell> change_cell(const SceneResult& scene, const SceneGate&
   }
   cell.text = fmt::format("{}, {}", change_with_interval(c, cell.verdict, gate.speed_limit),
                           count_text(c.rounds, "round"));
+  // How many runs decided it: rounds of the fastest of two (compare's second pass, --repeats).
+  std::size_t repeated = 0;
+  std::size_t most = 1;
+  for (const Round& round : scene.runs.rounds) {
+    const std::size_t runs = runs_per_contender(round);
+    repeated += runs > 1 ? 1 : 0;
+    most = std::max(most, runs);
+  }
+  if (repeated > 0) cell.text += fmt::format(" ({} fastest of {})", repeated, most);
   return cell;
 }
 

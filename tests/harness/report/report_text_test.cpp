@@ -57,6 +57,26 @@ TEST(ConsoleReport, CompareHasNumbersAndFailuresFirst) {
   EXPECT_EQ(text.find('\033'), std::string::npos) << "no colour unless asked";
 }
 
+// How many runs decided a scene: the rounds that kept the fastest of two are counted in the
+// change column of every text report.
+TEST(ConsoleReport, SaysHowManyRoundsRanTheFastestOfTwo) {
+  Fixture f(true);
+  for (SceneResult& scene : f.document.scenes) {
+    if (scene.entry.id != "mount") continue;
+    for (int k = 0; k < 12; ++k) {
+      Round round;
+      round.order = k < 7 ? std::vector<std::string>{"base", "head"}
+                          : std::vector<std::string>{"base", "head", "base", "head"};
+      scene.runs.rounds.push_back(round);
+    }
+  }
+  for (const char* format : {"console", "markdown"}) {
+    const std::string text = f.render(format);
+    at(text, "12 rounds (5 fastest of 2)");
+    EXPECT_EQ(occurrences(text, "fastest of"), 1u) << format << "\n" << text;
+  }
+}
+
 TEST(ConsoleReport, ColourOnlyWhenAsked) {
   const Fixture f(true);
   ReportOptions options;

@@ -9,6 +9,7 @@
 #include "measure/confidence_sequence.h"
 #include "measure/family.h"
 #include "pipeline/stop_rules.h"
+#include "pipeline/visit_plan.h"
 
 namespace raygate {
 
@@ -28,7 +29,7 @@ double seconds_per_round(const SceneResult& scene) {
 // runner)", or why no number of rounds would do.
 std::string what_would_decide(const SceneResult& scene, double threshold) {
   const ChangeSummary& c = *scene.change;
-  const std::optional<std::size_t> rounds = estimated_rounds_to_decide(c, threshold);
+  const std::optional<std::size_t> rounds = rounds_to_decide(scene, threshold);
   if (!rounds) {
     return fmt::format("(a change this close to the {:+.1f}% limit takes more rounds than any "
                        "budget; a limit below the smallest slowdown that matters decides it)",

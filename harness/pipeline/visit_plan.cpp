@@ -19,18 +19,35 @@ double seconds_per_run(const SceneRuns& runs) {
   return count == 0 ? 0.0 : runs.seconds_spent / static_cast<double>(count);
 }
 
-// The spread of the scene's rounds with each side's fastest of two: measured, over the rounds
-// that repeated, once there are enough of them; else projected from pairs of one-run rounds.
-std::optional<double> spread_with_fastest_of_two(const SceneRuns& runs) {
+// A scene's rounds by how they ran: each contender once, or its fastest of two (or more).
+struct RoundsByRuns {
   std::vector<Round> one_run;
   std::vector<Round> repeated;
+};
+
+RoundsByRuns split_by_runs(const SceneRuns& runs) {
+  RoundsByRuns split;
   for (const Round& round : runs.rounds) {
-    (runs_per_contender(round) >= 2 ? repeated : one_run).push_back(round);
+    (runs_per_contender(round) >= 2 ? split.repeated : split.one_run).push_back(round);
   }
-  if (repeated.size() >= 2 * kMinPairsForSpread) {
-    return quartile_spread(compare_log_changes(compare_samples(repeated)));
+  return split;
+}
+
+// The spread of the scene's rounds with each side's fastest of two: measured, over the rounds
+// that repeated, once there are enough of them; else projected from pairs of one-run rounds.
+std::optional<double> spread_with_fastest_of_two(const RoundsByRuns& rounds) {
+  if (rounds.repeated.size() >= 2 * kMinPairsForSpread) {
+    return quartile_spread(compare_log_changes(compare_samples(rounds.repeated)));
   }
-  return fastest_of_two_spread(compare_samples(one_run));
+  return fastest_of_two_spread(compare_samples(rounds.one_run));
+}
+
+// The spread of one-run rounds to come, once the scene also has repeated ones (whose steadier
+// rounds would otherwise make one run look better than it is): the one-run rounds' own.
+// nullopt while every round ran once: the rounds so far are the one-run rounds.
+std::optional<double> spread_with_one_run(const RoundsByRuns& rounds) {
+  if (rounds.repeated.empty() || rounds.one_run.empty()) return std::nullopt;
+  return quartile_spread(compare_log_changes(compare_samples(rounds.one_run)));
 }
 
 double seconds_for(std::optional<std::size_t> needed, std::size_t rounds,
@@ -39,7 +56,25 @@ double seconds_for(std::optional<std::size_t> needed, std::size_t rounds,
   return seconds_per_round * static_cast<double>(*needed > rounds ? *needed - rounds : 0);
 }
 
+// The scene's change with the spread of its rounds from their quartiles: on one-sided noise the
+// MAD sees only the steady rounds and promises a verdict the slowed ones keep away
+// (measure/fastest_of_two.h).
+ChangeSummary projected_change(const SceneResult& scene) {
+  ChangeSummary projected = *scene.change;
+  if (!projected.exact && !scene.runs.rounds.empty()) {
+    projected.log_change_mad_scaled =
+        quartile_spread(compare_log_changes(compare_samples(scene.runs.rounds)));
+  }
+  return projected;
+}
+
 }  // namespace
+
+std::optional<std::size_t> rounds_to_decide(const SceneResult& scene, double threshold) {
+  if (!scene.change) return std::nullopt;
+  return estimated_rounds_to_decide(projected_change(scene), threshold,
+                                    spread_with_one_run(split_by_runs(scene.runs)));
+}
 
 VisitPlan plan_visit(const SceneResult& scene, const GatePolicy& gate_policy, bool may_repeat) {
   VisitPlan plan;
@@ -47,17 +82,11 @@ VisitPlan plan_visit(const SceneResult& scene, const GatePolicy& gate_policy, bo
   if (!scene.change || rounds == 0) return plan;
   const double threshold = gate_policy.for_scene(scene.entry.id).max_slowdown;
   const double run_seconds = seconds_per_run(scene.runs);
-  // Projected from the quartiles rather than the MAD: on one-sided noise the MAD sees only the
-  // steady rounds and promises a verdict the slowed ones keep away (measure/fastest_of_two.h).
-  ChangeSummary projected = *scene.change;
-  if (!projected.exact) {
-    projected.log_change_mad_scaled =
-        quartile_spread(compare_log_changes(compare_samples(scene.runs.rounds)));
-  }
-  plan.seconds = seconds_for(estimated_rounds_to_decide(projected, threshold), rounds,
-                             run_seconds);
+  const ChangeSummary projected = projected_change(scene);
+  const RoundsByRuns split = split_by_runs(scene.runs);
+  plan.seconds = seconds_for(rounds_to_decide(scene, threshold), rounds, run_seconds);
   if (!may_repeat || projected.exact) return plan;
-  const std::optional<double> spread = spread_with_fastest_of_two(scene.runs);
+  const std::optional<double> spread = spread_with_fastest_of_two(split);
   if (!spread) return plan;
   const double repeated_seconds = seconds_for(
       estimated_rounds_to_decide(projected, threshold, *spread), rounds, 2.0 * run_seconds);

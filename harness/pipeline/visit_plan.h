@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
 #include "gate/policy.h"
 #include "pipeline/suite_measurement.h"
@@ -25,5 +26,11 @@ inline constexpr double kFastestOfTwoMustSave = 0.75;
 // round's seconds; the visit repeats when that saves at least 1 - kFastestOfTwoMustSave.
 // Seconds are infinite for a scene without a change or an estimate.
 VisitPlan plan_visit(const SceneResult& scene, const GatePolicy& gate_policy, bool may_repeat);
+
+// About how many rounds in all the scene needs if its rounds go on as they went (the plan's
+// one-run projection, from the quartile_spread of its rounds); nullopt as for
+// estimated_rounds_to_decide. What compare's INCONCLUSIVE line prints, so the line and the
+// second pass agree.
+std::optional<std::size_t> rounds_to_decide(const SceneResult& scene, double threshold);
 
 }  // namespace raygate

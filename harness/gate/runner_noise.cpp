@@ -47,8 +47,10 @@ std::optional<std::string> runner_noise_note(const ResultsDocument& document,
                         "within the {:.1f}% limit below about {:.1f}%",
                         typical_rounds, 100 * thresholds.front(), 100 * *decides_below);
   }
-  return note + ". A quieter runner, --repeats 2 or a longer --max-minutes decides more; "
-                "raygate doctor measures a runner's noise.";
+  // Not "--repeats 2": compare already gives the fastest of two to the scenes it pays for, and
+  // repeating every round doubles the floor every scene pays (docs/statistics.md §6d).
+  return note + ". A quieter runner or a longer --max-minutes decides more; raygate doctor "
+                "measures a runner's noise.";
 }
 
 }  // namespace raygate

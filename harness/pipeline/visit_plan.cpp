@@ -84,7 +84,9 @@ VisitPlan plan_visit(const SceneResult& scene, const GatePolicy& gate_policy, bo
   const double run_seconds = seconds_per_run(scene.runs);
   const ChangeSummary projected = projected_change(scene);
   const RoundsByRuns split = split_by_runs(scene.runs);
-  plan.seconds = seconds_for(rounds_to_decide(scene, threshold), rounds, run_seconds);
+  plan.seconds = seconds_for(
+      estimated_rounds_to_decide(projected, threshold, spread_with_one_run(split)), rounds,
+      run_seconds);
   if (!may_repeat || projected.exact) return plan;
   const std::optional<double> spread = spread_with_fastest_of_two(split);
   if (!spread) return plan;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string_view>
 
 #include "core/error.h"
 
@@ -298,11 +299,10 @@ std::vector<CompareRound> compare_samples(const std::vector<Round>& rounds) {
 }
 
 std::size_t runs_per_contender(const Round& round) {
+  // Counted in one pass: a stored document's order may be as long as its author likes.
+  std::map<std::string_view, std::size_t> runs;
   std::size_t most = 1;
-  for (const std::string& name : round.order) {
-    most = std::max(most, static_cast<std::size_t>(
-                              std::count(round.order.begin(), round.order.end(), name)));
-  }
+  for (const std::string& name : round.order) most = std::max(most, ++runs[name]);
   return most;
 }
 

@@ -18,8 +18,23 @@
 namespace raygate::testing {
 namespace {
 
+std::vector<double> one_run_in_four_slowed();
+
 class ComparePipelineTest : public PipelineTest {
  protected:
+  // An A/A compare of two scenes in 6 minutes under one_run_in_four_slowed(), the second pass
+  // free to choose the fastest of two or not.
+  MeasuredDocument compare_beside_one_sided_noise(bool repeat_where_it_pays) {
+    const std::string base = commit_tracer("2.0", "base");
+    const std::string head = commit_tracer("2.0", "head: the same speed");
+    set_tracer_noise(one_run_in_four_slowed());
+    context_.repeat_where_it_pays = repeat_where_it_pays;
+    context_.stopping.max_minutes = 6.0;
+    MeasuredDocument measured = compare(base, head);
+    EXPECT_EQ(measured.document.scenes.size(), 2u);
+    return measured;
+  }
+
   MeasuredDocument compare(const std::string& base, const std::string& head) {
     const Repository repository = Repository::open(repo_.path().string(), context_.cache_dir);
     return measure_compare({context_, baseline_, repository.location(),
@@ -201,18 +216,12 @@ std::vector<double> one_run_in_four_slowed() {
 }
 
 TEST_F(ComparePipelineTest, TheSecondPassGivesOneSidedNoiseTheFastestOfTwo) {
-  const std::string base = commit_tracer("2.0", "base");
-  const std::string head = commit_tracer("2.0", "head: the same speed");
-  set_tracer_noise(one_run_in_four_slowed());
-  context_.repeat_where_it_pays = true;
-  context_.stopping.max_minutes = 6.0;
-  const auto [document, path, unwritten] = compare(base, head);
-  ASSERT_EQ(document.scenes.size(), 2u);
+  const MeasuredDocument measured = compare_beside_one_sided_noise(true);
   const std::vector<std::string> visits = progress_.lines_with("[again ");
   ASSERT_FALSE(visits.empty());
   EXPECT_NE(visits.front().find("of them the fastest of 2 runs"), std::string::npos)
       << visits.front();
-  for (const SceneResult& scene : document.scenes) {
+  for (const SceneResult& scene : measured.document.scenes) {
     EXPECT_EQ(scene.change_verdict, ChangeVerdict::unchanged) << scene.entry.id;
     EXPECT_NE(repeats_note(scene.runs.rounds), "") << scene.entry.id;
   }
@@ -221,14 +230,8 @@ TEST_F(ComparePipelineTest, TheSecondPassGivesOneSidedNoiseTheFastestOfTwo) {
 // The same without the choice (--repeats given): the second pass goes on with one run, and
 // the same noise leaves the scenes undecided.
 TEST_F(ComparePipelineTest, WithoutTheChoiceTheSameNoiseStaysUndecided) {
-  const std::string base = commit_tracer("2.0", "base");
-  const std::string head = commit_tracer("2.0", "head: the same speed");
-  set_tracer_noise(one_run_in_four_slowed());
-  context_.repeat_where_it_pays = false;
-  context_.stopping.max_minutes = 6.0;
-  const auto [document, path, unwritten] = compare(base, head);
-  ASSERT_EQ(document.scenes.size(), 2u);
-  for (const SceneResult& scene : document.scenes) {
+  const MeasuredDocument measured = compare_beside_one_sided_noise(false);
+  for (const SceneResult& scene : measured.document.scenes) {
     EXPECT_EQ(scene.change_verdict, ChangeVerdict::inconclusive) << scene.entry.id;
     EXPECT_EQ(repeats_note(scene.runs.rounds), "") << scene.entry.id;
   }

@@ -52,13 +52,13 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
                      "measure; 0 = none");
   command.add_option("--timing", args.metric, timing_choices_help())
       ->check(CLI::IsMember(timing_mode_choices()));
-  // No default shown: not given, it is one run, and compare's second pass chooses per scene.
+  // No default shown: not given, it is one run, and each scene chooses (see the help).
   command
       .add_option("--repeats", args.repeats,
                   "runs of each program per round, interleaved; the round keeps each one's "
                   "fastest (steadier on a busy machine, at that many times the runs). Default: "
-                  "one, and compare's second pass gives a scene the fastest of two where its "
-                  "rounds show that decides it sooner")
+                  "one, and a scene whose rounds show that the fastest of two gets there sooner "
+                  "takes it (run: after 10 rounds; compare: in its second pass)")
       ->check(CLI::Range(1, 10));
   command.add_option("--jobs", args.jobs, "parallel build jobs (default: all allowed CPUs)");
   command.add_option("--policy", args.policy,

@@ -17,20 +17,53 @@ double quartile_spread(std::span<const double> log_changes) {
   return std::max(below, above) / kQuartileSigmas;
 }
 
-std::optional<double> fastest_of_two_spread(std::span<const CompareRound> one_run_rounds) {
+namespace {
+
+// Seconds of a round as (numerator, denominator) of the log the verdict judges.
+struct RoundSeconds {
+  double numerator = 0.0;
+  double denominator = 0.0;
+};
+
+RoundSeconds seconds_of(const CompareRound& round) {
+  return {round.head_seconds, round.base_seconds};
+}
+
+RoundSeconds seconds_of(const RoundSample& round) {
+  return {round.tracer_seconds, round.baseline_seconds};
+}
+
+template <typename RoundT>
+std::optional<double> spread_of_pairs(std::span<const RoundT> one_run_rounds) {
   const std::size_t pairs = one_run_rounds.size() / 2;
   if (pairs < kMinPairsForSpread) return std::nullopt;
-  std::vector<double> log_changes;
-  log_changes.reserve(pairs);
+  std::vector<double> log_values;
+  log_values.reserve(pairs);
   for (std::size_t k = 0; k < pairs; ++k) {
-    const CompareRound& first = one_run_rounds[2 * k];
-    const CompareRound& second = one_run_rounds[2 * k + 1];
-    const double base = std::min(first.base_seconds, second.base_seconds);
-    const double head = std::min(first.head_seconds, second.head_seconds);
-    if (!(base > 0.0 && head > 0.0)) return std::nullopt;
-    log_changes.push_back(std::log(head / base));
+    const RoundSeconds first = seconds_of(one_run_rounds[2 * k]);
+    const RoundSeconds second = seconds_of(one_run_rounds[2 * k + 1]);
+    const double numerator = std::min(first.numerator, second.numerator);
+    const double denominator = std::min(first.denominator, second.denominator);
+    if (!(numerator > 0.0 && denominator > 0.0)) return std::nullopt;
+    log_values.push_back(std::log(numerator / denominator));
   }
-  return quartile_spread(log_changes);
+  return quartile_spread(log_values);
+}
+
+}  // namespace
+
+std::optional<double> fastest_of_two_spread(std::span<const CompareRound> one_run_rounds) {
+  return spread_of_pairs(one_run_rounds);
+}
+
+std::optional<double> fastest_of_two_spread(std::span<const RoundSample> one_run_rounds) {
+  return spread_of_pairs(one_run_rounds);
+}
+
+bool fastest_of_two_pays(double one_run_spread, double fastest_of_two_spread) {
+  // Strictly: rounds without spread (sim mode's counts) have nothing to gain.
+  return 2.0 * fastest_of_two_spread * fastest_of_two_spread <
+         kFastestOfTwoMustSave * one_run_spread * one_run_spread;
 }
 
 }  // namespace raygate

@@ -12,11 +12,17 @@
 #include <span>
 
 #include "measure/change.h"
+#include "measure/ratio.h"
 
 namespace raygate {
 
 // Fewer pairs than this give no spread: the quartiles of four values say too little.
 inline constexpr std::size_t kMinPairsForSpread = 5;
+
+// The fastest of two pays only when it is estimated to need at most this share of one run's
+// seconds: its spread comes from a handful of pairs, and a switch that merely breaks even is not
+// worth making on that evidence.
+inline constexpr double kFastestOfTwoMustSave = 0.75;
 
 // The spread a projection of a sequence's ends should use for these log-changes: the wider of
 // the two quartiles' distances from the median, as a normal's sigma (/ 0.6745). For symmetric
@@ -30,5 +36,14 @@ double quartile_spread(std::span<const double> log_changes);
 // orders) make one value ln(min(head) / min(base)), as a round of `--repeats 2` would. nullopt
 // below kMinPairsForSpread pairs. Rounds in measurement order; a round's times must be positive.
 std::optional<double> fastest_of_two_spread(std::span<const CompareRound> one_run_rounds);
+
+// The same for `run`'s normalized ratio: pairs of one-run rounds make ln(min(tracer) /
+// min(baseline)).
+std::optional<double> fastest_of_two_spread(std::span<const RoundSample> one_run_rounds);
+
+// For a precision that grows with the rounds (`run`'s interval of the median): is a round of the
+// fastest of two, at twice one run's seconds, worth it? Rounds needed go as the spread squared,
+// so it pays when 2 * fastest_of_two_spread^2 < kFastestOfTwoMustSave * one_run_spread^2.
+bool fastest_of_two_pays(double one_run_spread, double fastest_of_two_spread);
 
 }  // namespace raygate

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "core/time_text.h"
+#include "pipeline/ratio_repeats.h"
 #include "pipeline/stop_rules.h"
 #include "runner/tracer_contender.h"
 
@@ -25,6 +26,11 @@ MeasuredDocument measure_prepared_run(const RunRequest& request, const PreparedR
   SuiteBudget budget(context.stopping, m.scenes.size(), io.clock);
   m.stop = [&](const SuiteScene&) { return ratio_stop_rule(budget.next_scene(), Role::tracer); };
   m.tracer_roles = {Role::tracer};
+  if (context.repeat_where_it_pays) {
+    m.repeats = [](const SuiteScene&) -> RepeatChooser {
+      return [](const SceneRuns& so_far) { return ratio_repeats(so_far.rounds, Role::tracer); };
+    };
+  }
   const BaselineContender baseline_runs =
       baseline_contender(context, request.baseline.source_hash());
   const TracerContender tracer_runs(tracer.setup);

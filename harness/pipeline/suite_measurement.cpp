@@ -270,8 +270,10 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Pipeli
       state.eta_seconds = eta_seconds(elapsed_done, index, m.scenes.size(), spent);
       progress.update(state);
     };
-    result.runs = measure_scene(input, m.contenders, m.schedule, m.stop(entry), executor,
-                                clock, scene_dir(m, entry), observe);
+    ScheduleOptions schedule = m.schedule;
+    if (m.repeats) schedule.repeats_from_rounds = m.repeats(entry);
+    result.runs = measure_scene(input, m.contenders, schedule, m.stop(entry), executor, clock,
+                                scene_dir(m, entry), observe);
     result.status = result.runs.failed() ? SceneStatus::failed : SceneStatus::measured;
     summarize_ratios(result, m);
     check_images(result, m, manifest, document.baseline.sampling);

@@ -1,5 +1,6 @@
 #include "pipeline/visit_plan.h"
 
+#include <algorithm>
 #include <limits>
 #include <optional>
 #include <vector>
@@ -59,11 +60,11 @@ double seconds_for(std::optional<std::size_t> needed, std::size_t rounds,
 // The scene's change with the spread of its rounds from their quartiles: on one-sided noise the
 // MAD sees only the steady rounds and promises a verdict the slowed ones keep away
 // (measure/fastest_of_two.h).
-ChangeSummary projected_change(const SceneResult& scene) {
-  ChangeSummary projected = *scene.change;
-  if (!projected.exact && !scene.runs.rounds.empty()) {
+ChangeSummary projected_change(const SceneRuns& runs, const ChangeSummary& change) {
+  ChangeSummary projected = change;
+  if (!projected.exact && !runs.rounds.empty()) {
     projected.log_change_mad_scaled =
-        quartile_spread(compare_log_changes(compare_samples(scene.runs.rounds)));
+        quartile_spread(compare_log_changes(compare_samples(runs.rounds)));
   }
   return projected;
 }
@@ -72,18 +73,30 @@ ChangeSummary projected_change(const SceneResult& scene) {
 
 std::optional<std::size_t> rounds_to_decide(const SceneResult& scene, double threshold) {
   if (!scene.change) return std::nullopt;
-  return estimated_rounds_to_decide(projected_change(scene), threshold,
+  return estimated_rounds_to_decide(projected_change(scene.runs, *scene.change), threshold,
                                     spread_with_one_run(split_by_runs(scene.runs)));
 }
 
 VisitPlan plan_visit(const SceneResult& scene, const GatePolicy& gate_policy, bool may_repeat) {
+  if (!scene.change) return {};
+  return plan_rounds(scene.runs, *scene.change,
+                     gate_policy.for_scene(scene.entry.id).max_slowdown, may_repeat);
+}
+
+std::size_t next_round_repeats(const SceneRuns& so_far, const ChangeSummary& change,
+                               double threshold) {
+  if (so_far.rounds.size() < 2 * kMinPairsForSpread) return 1;
+  return std::max<std::size_t>(plan_rounds(so_far, change, threshold, true).repeats, 1);
+}
+
+VisitPlan plan_rounds(const SceneRuns& runs, const ChangeSummary& change, double threshold,
+                      bool may_repeat) {
   VisitPlan plan;
-  const std::size_t rounds = scene.runs.rounds.size();
-  if (!scene.change || rounds == 0) return plan;
-  const double threshold = gate_policy.for_scene(scene.entry.id).max_slowdown;
-  const double run_seconds = seconds_per_run(scene.runs);
-  const ChangeSummary projected = projected_change(scene);
-  const RoundsByRuns split = split_by_runs(scene.runs);
+  const std::size_t rounds = runs.rounds.size();
+  if (rounds == 0) return plan;
+  const double run_seconds = seconds_per_run(runs);
+  const ChangeSummary projected = projected_change(runs, change);
+  const RoundsByRuns split = split_by_runs(runs);
   plan.seconds = seconds_for(
       estimated_rounds_to_decide(projected, threshold, spread_with_one_run(split)), rounds,
       run_seconds);

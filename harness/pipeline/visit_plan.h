@@ -12,11 +12,6 @@
 
 namespace raygate {
 
-// A plan pays for the fastest of two only when it is estimated to need at most this share of
-// one run's seconds: its spread comes from a handful of pairs, and a plan that merely breaks
-// even is not worth a switch on that evidence.
-inline constexpr double kFastestOfTwoMustSave = 0.75;
-
 // The next visit of `scene`, left INCONCLUSIVE by its share of the time: its estimated rounds
 // (measure/change.h, estimated_rounds_to_decide, projected from the rounds' quartile_spread)
 // times its seconds per round. With
@@ -26,6 +21,19 @@ inline constexpr double kFastestOfTwoMustSave = 0.75;
 // round's seconds; the visit repeats when that saves at least 1 - kFastestOfTwoMustSave.
 // Seconds are infinite for a scene without a change or an estimate.
 VisitPlan plan_visit(const SceneResult& scene, const GatePolicy& gate_policy, bool may_repeat);
+
+// The same for a scene's rounds `runs` with their `change`, at the scene's slowdown limit
+// `threshold`.
+VisitPlan plan_rounds(const SceneRuns& runs, const ChangeSummary& change, double threshold,
+                      bool may_repeat);
+
+// The first pass's choice before each round of a compare scene (runner/scheduler.h,
+// RepeatChooser): one run until the scene has 2 * kMinPairsForSpread rounds, then the fastest of
+// two whenever a visit planned now would take it. A scene that will not decide within its
+// share reaches the second pass with rounds of the kind that decides it, instead of more of the
+// kind that does not.
+std::size_t next_round_repeats(const SceneRuns& so_far, const ChangeSummary& change,
+                               double threshold);
 
 // About how many rounds in all the scene needs if its rounds go on as they went (the plan's
 // one-run projection, from the quartile_spread of its rounds); nullopt as for

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string_view>
 
 #include "core/error.h"
@@ -117,6 +118,15 @@ std::vector<const Contender*> interleaved(const std::vector<const Contender*>& o
   return sequence;
 }
 
+// The runs per contender of the next round: the chooser's, from the scene's runs so far, or the
+// schedule's fixed number.
+std::size_t repeats_of_round(const ScheduleOptions& options, const SceneRuns& so_far) {
+  if (!options.repeats_from_rounds) return options.repeats;
+  const std::size_t repeats = options.repeats_from_rounds(so_far);
+  if (repeats < 1) throw std::logic_error("a round's repeats must be at least 1");
+  return repeats;
+}
+
 // A round keeps each role's fastest run (by its timing metric: `seconds`).
 void keep_fastest(std::map<std::string, RunRecord>& runs, const std::string& role, RunRecord run) {
   const auto found = runs.find(role);
@@ -127,7 +137,7 @@ void check_options(std::span<const Contender* const> contenders, const ScheduleO
   if (contenders.empty()) throw std::invalid_argument("measure_scene: no contenders");
   if (options.repeats < 1) throw UsageError("--repeats must be at least 1");
   if (options.kind != ScheduleKind::duet) return;
-  if (options.repeats != 1) {
+  if (options.repeats != 1 || options.repeats_from_rounds) {
     throw UsageError("--repeats applies to the alternate schedule (a duet round runs each "
                      "contender once)");
   }
@@ -214,7 +224,7 @@ SceneRuns run_scene(const SceneInput& scene, std::span<const Contender* const> c
               : std::vector<const Contender*>(roster.begin() + 1, roster.end());
       const std::vector<int> cpus = cpus_of_round(options, index);
       const std::vector<const Contender*> sequence =
-          interleaved(rotated(present, index), options.repeats);
+          interleaved(rotated(present, index), repeats_of_round(options, out));
       for (std::size_t n = 0; n < sequence.size(); ++n) {
         const Contender& contender = *sequence[n];
         // A repeat's run directory is "<round>-<k>", so no run overwrites another's files.

@@ -29,6 +29,14 @@ namespace raygate {
 
 enum class ScheduleKind { alternate, duet };
 
+struct SceneRuns;
+
+// The runs per contender of a scene's next round, chosen from its runs so far: each side's
+// fastest of two where the scene's rounds show it pays (`run`: pipeline/ratio_repeats.h;
+// compare: pipeline/visit_plan.h). Only the past may choose, so no round's runs depend on its
+// own times, and the verdicts' guarantees hold (docs/statistics.md §6d).
+using RepeatChooser = std::function<std::size_t(const SceneRuns& so_far)>;
+
 struct ScheduleOptions {
   ScheduleKind kind = ScheduleKind::alternate;
   int warmup_runs = 1;         // per contender, not counted
@@ -49,6 +57,9 @@ struct ScheduleOptions {
   // fastest of two is much steadier than one (the identity tracer's per-round spread fell from
   // 1.0-6.9% to 0.2-1.6%); every contender repeats alike, so no ratio is biased by it.
   std::size_t repeats = 1;
+  // Alternate schedule: the runs per contender of each round, chosen from the scene's runs
+  // before it (RepeatChooser); unset: `repeats` for every round.
+  RepeatChooser repeats_from_rounds;
 };
 
 // The CPUs the runs of round `index` (0-based) are pinned to: pin_cpus if given, else one of

@@ -58,6 +58,31 @@ TEST(FastestOfTwo, FewerThanFivePairsGiveNoSpread) {
   EXPECT_FALSE(fastest_of_two_spread(rounds)) << "a time that is not positive";
 }
 
+// `run`'s ratio: the same pairs, of (tracer, baseline).
+TEST(FastestOfTwo, PairsOfRatioRoundsLoseTheOneSidedNoiseToo) {
+  std::vector<RoundSample> rounds;
+  for (const CompareRound& round : one_sided_rounds()) {
+    rounds.push_back({round.head_seconds, round.base_seconds});
+  }
+  const std::optional<double> fastest = fastest_of_two_spread(rounds);
+  ASSERT_TRUE(fastest);
+  EXPECT_DOUBLE_EQ(*fastest, *fastest_of_two_spread(one_sided_rounds()));
+  const double one_run = quartile_spread(log_ratios(rounds));
+  EXPECT_GT(one_run, 0.03);
+  EXPECT_LT(*fastest, 0.005);
+  EXPECT_TRUE(fastest_of_two_pays(one_run, *fastest));
+  rounds.resize(2 * kMinPairsForSpread - 1);
+  EXPECT_FALSE(fastest_of_two_spread(rounds));
+}
+
+TEST(FastestOfTwo, PaysOnlyWhenItSavesAQuarterOfTheSeconds) {
+  // Twice the seconds per round: the spread must fall below sqrt(0.75 / 2) = 0.612 of one run's.
+  EXPECT_TRUE(fastest_of_two_pays(0.05, 0.030));
+  EXPECT_FALSE(fastest_of_two_pays(0.05, 0.031));
+  EXPECT_FALSE(fastest_of_two_pays(0.05, 0.05)) << "the same spread at twice the cost";
+  EXPECT_FALSE(fastest_of_two_pays(0.0, 0.0)) << "exact counts (sim mode) gain nothing";
+}
+
 ChangeSummary early_summary(const std::vector<CompareRound>& rounds) {
   return summarize_change(rounds, {}, SequenceLevels{0.01 / 13, 0.05, 0.95});
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "measure/fastest_of_two.h"
 #include "runner/scheduler.h"
 
 namespace raygate {

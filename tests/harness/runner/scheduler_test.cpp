@@ -226,10 +226,37 @@ TEST_F(SchedulerTest, RepeatsRunEveryContenderInterleavedAndKeepItsFastestRun) {
   EXPECT_EQ(runs_per_contender(claimed), 100000u);
 }
 
+// A RepeatChooser (ScheduleOptions::repeats_from_rounds): asked before every round with the
+// rounds before it only, and the round runs each contender that many times.
+TEST_F(SchedulerTest, EachRoundsRepeatsAreChosenFromTheRoundsBeforeIt) {
+  options_.warmup_runs = 1;
+  std::vector<std::size_t> asked_with;
+  options_.repeats_from_rounds = [&](const SceneRuns& so_far) -> std::size_t {
+    asked_with.push_back(so_far.rounds.size());
+    return so_far.rounds.size() >= 2 ? 2 : 1;
+  };
+  executor_.set_seconds("tracer", {1.0, 0.9, 1.1, 0.8, 1.3, 0.7});
+  const SceneRuns runs = measure_pair(stop_after(4));
+  ASSERT_EQ(runs.rounds.size(), 4u);
+  EXPECT_EQ(asked_with, (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_EQ(runs_per_contender(runs.rounds[1]), 1u);
+  EXPECT_EQ(runs_per_contender(runs.rounds[2]), 2u);
+  EXPECT_EQ(runs.rounds[3].order, (Roles{"tracer", "baseline", "tracer", "baseline"}));
+  EXPECT_EQ(repeats_note(runs.rounds), "2 of them the fastest of 2 runs");
+  // 2 warm-ups, 2 rounds of two runs, 2 rounds of four.
+  EXPECT_EQ(executor_.calls().size(), 2u + 4u + 8u);
+  options_.repeats_from_rounds = [](const SceneRuns&) -> std::size_t { return 0; };
+  EXPECT_THROW(measure_pair(stop_after(1)), std::logic_error);
+}
+
 TEST_F(SchedulerTest, RepeatsAreForTheAlternateScheduleOnly) {
   options_.kind = ScheduleKind::duet;
   options_.repeats = 2;
   EXPECT_THROW(measure_pair(stop_after(1)), UsageError);
+  options_.repeats = 1;
+  options_.repeats_from_rounds = [](const SceneRuns&) -> std::size_t { return 2; };
+  EXPECT_THROW(measure_pair(stop_after(1)), UsageError);
+  options_.repeats_from_rounds = nullptr;
   options_.kind = ScheduleKind::alternate;
   options_.repeats = 0;
   EXPECT_THROW(measure_pair(stop_after(1)), UsageError);

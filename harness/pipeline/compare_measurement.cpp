@@ -8,6 +8,7 @@
 
 #include "core/time_text.h"
 #include "measure/confidence_sequence.h"
+#include "measure/fastest_of_two.h"
 #include "measure/simulated_cost.h"
 #include "compare/noisy_image_check.h"
 #include "pipeline/compare_family.h"
@@ -130,6 +131,18 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
     return change_stop_rule(budget.next_scene(), policy, scene_levels(policy, alpha),
                             simulated(context));
   };
+  if (context.repeat_where_it_pays && !simulated(context)) {
+    m.repeats = [&](const SuiteScene& entry) -> RepeatChooser {
+      const ScenePolicy& policy = context.policy.for_scene(entry.id);
+      return [&policy, alpha](const SceneRuns& so_far) -> std::size_t {
+        if (so_far.rounds.size() < 2 * kMinPairsForSpread) return 1;  // no spread yet
+        const ChangeSummary change =
+            measured_change(compare_samples(so_far.rounds), change_bootstrap(policy), false,
+                            scene_levels(policy, alpha));
+        return next_round_repeats(so_far, change, policy.max_slowdown);
+      };
+    };
+  }
   m.revisits = SceneRevisits{
       [&](const SceneResult& scene, std::size_t scenes_left,
           double seconds_needed) -> std::optional<StopRule> {

@@ -159,6 +159,24 @@ std::string image_text(const SceneGate& gate, const std::string& none) {
   return gate.image ? image_verdict_text(*gate.image) : none;
 }
 
+namespace {
+
+// How many runs decided a scene: " (8 fastest of 2)" when that many of its rounds kept each
+// program's fastest of two runs (chosen per scene, or --repeats); empty when every round ran
+// each once.
+std::string fastest_of_text(const std::vector<Round>& rounds) {
+  std::size_t repeated = 0;
+  std::size_t most = 1;
+  for (const Round& round : rounds) {
+    const std::size_t runs = runs_per_contender(round);
+    repeated += runs > 1 ? 1 : 0;
+    most = std::max(most, runs);
+  }
+  return repeated > 0 ? fmt::format(" ({} fastest of {})", repeated, most) : "";
+}
+
+}  // namespace
+
 std::optional<ChangeCell> change_cell(const SceneResult& scene, const SceneGate& gate) {
   if (!scene.change || scene.runs.failed()) return std::nullopt;
   const ChangeSummary& c = *scene.change;
@@ -180,17 +198,8 @@ std::optional<ChangeCell> change_cell(const SceneResult& scene, const SceneGate&
     cell.interval_name = interval_name(decided);
     cell.interval_confidence = decided.confidence;
   }
-  cell.text = fmt::format("{}, {}", change_with_interval(c, cell.verdict, gate.speed_limit),
-                          count_text(c.rounds, "round"));
-  // How many runs decided it: rounds of the fastest of two (compare's second pass, --repeats).
-  std::size_t repeated = 0;
-  std::size_t most = 1;
-  for (const Round& round : scene.runs.rounds) {
-    const std::size_t runs = runs_per_contender(round);
-    repeated += runs > 1 ? 1 : 0;
-    most = std::max(most, runs);
-  }
-  if (repeated > 0) cell.text += fmt::format(" ({} fastest of {})", repeated, most);
+  cell.text = fmt::format("{}, {}{}", change_with_interval(c, cell.verdict, gate.speed_limit),
+                          count_text(c.rounds, "round"), fastest_of_text(scene.runs.rounds));
   return cell;
 }
 
@@ -263,8 +272,10 @@ std::string ratio_text(const ResultsDocument& document, const SceneResult& scene
   }
   const RatioSummary* tracer = scene.ratio(Role::tracer);
   if (tracer == nullptr) return "";
-  return fmt::format("{:.3f} [{:.3f}, {:.3f}]", tracer->ratio, tracer->ratio_interval.lower,
-                     tracer->ratio_interval.upper);
+  return fmt::format("{:.3f} [{:.3f}, {:.3f}], {}{}", tracer->ratio,
+                     tracer->ratio_interval.lower, tracer->ratio_interval.upper,
+                     count_text(tracer->rounds, "round"),
+                     fastest_of_text(scene.runs.rounds));
 }
 
 std::optional<double> suite_change(const ResultsDocument& document) {

@@ -227,6 +227,23 @@ TEST_F(ComparePipelineTest, TheSecondPassGivesOneSidedNoiseTheFastestOfTwo) {
   }
 }
 
+// The first pass chooses too: after ten one-run rounds, a scene whose pairs of rounds show the
+// fastest of two decides it sooner takes it for its rounds to come.
+TEST_F(ComparePipelineTest, TheFirstPassTakesTheFastestOfTwoOnceTenRoundsShowItPays) {
+  const MeasuredDocument measured = compare_beside_one_sided_noise(true);
+  const std::vector<std::string> first_pass = progress_.lines_with("/2] ");
+  ASSERT_EQ(first_pass.size(), 2u);
+  for (const std::string& line : first_pass) {
+    EXPECT_NE(line.find("of them the fastest of 2 runs"), std::string::npos) << line;
+  }
+  for (const SceneResult& scene : measured.document.scenes) {
+    const std::vector<Round>& rounds = scene.runs.rounds;
+    ASSERT_GT(rounds.size(), 10u) << scene.entry.id;
+    for (std::size_t i = 0; i < 10; ++i) EXPECT_EQ(runs_per_contender(rounds[i]), 1u) << i;
+    EXPECT_EQ(runs_per_contender(rounds[10]), 2u) << scene.entry.id;
+  }
+}
+
 // The same without the choice (--repeats given): the second pass goes on with one run, and
 // the same noise leaves the scenes undecided.
 TEST_F(ComparePipelineTest, WithoutTheChoiceTheSameNoiseStaysUndecided) {

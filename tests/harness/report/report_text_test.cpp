@@ -77,6 +77,24 @@ TEST(ConsoleReport, SaysHowManyRoundsRanTheFastestOfTwo) {
   }
 }
 
+// `run` chooses the fastest of two per scene too, and its ratio column says so.
+TEST(ConsoleReport, ARunSaysHowManyRoundsRanTheFastestOfTwo) {
+  Fixture f(false);
+  SceneResult& balls = f.document.scenes.front();
+  ASSERT_EQ(balls.entry.id, "balls");
+  for (int k = 0; k < 12; ++k) {
+    Round round;
+    round.order = k < 10 ? std::vector<std::string>{"baseline", "tracer"}
+                         : std::vector<std::string>{"baseline", "tracer", "baseline", "tracer"};
+    balls.runs.rounds.push_back(round);
+  }
+  for (const char* format : {"console", "markdown", "html"}) {
+    const std::string text = f.render(format);
+    at(text, "0.512 [0.508, 0.516], 12 rounds (2 fastest of 2)");
+    EXPECT_EQ(occurrences(text, "fastest of"), 1u) << format << "\n" << text;
+  }
+}
+
 TEST(ConsoleReport, ColourOnlyWhenAsked) {
   const Fixture f(true);
   ReportOptions options;
@@ -136,7 +154,7 @@ TEST(MarkdownReport, RunSaysPass) {
   const Fixture f(false);
   const std::string text = f.render("markdown");
   EXPECT_EQ(text.rfind("**raygate: pass** (2 scenes; suite score 0.439)\n", 0), 0u) << text;
-  at(text, "| **PASS** | balls | 0.512 [0.508, 0.516] | MEASURED | pass |");
+  at(text, "| **PASS** | balls | 0.512 [0.508, 0.516], 12 rounds | MEASURED | pass |");
 }
 
 TEST(ConsoleReport, NoGoldensIsSaidOnce) {

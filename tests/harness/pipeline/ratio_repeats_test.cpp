@@ -5,30 +5,17 @@
 
 #include <vector>
 
+#include "noisy_rounds.h"
+
 namespace raygate {
 namespace {
 
 Round round_of(double baseline_seconds, double tracer_seconds, int runs_each = 1) {
-  Round round;
-  for (int k = 0; k < runs_each; ++k) {
-    round.order.push_back("baseline");
-    round.order.push_back("tracer");
-  }
-  round.runs["baseline"].seconds = baseline_seconds;
-  round.runs["tracer"].seconds = tracer_seconds;
-  return round;
+  return testing::round_of(testing::kBaselineTracer, baseline_seconds, tracer_seconds, runs_each);
 }
 
-// Of each adjacent pair of rounds, the first's tracer and the second's baseline slowed by 4-14%
-// (the host took the CPU): one run per round spreads by several percent, the fastest of two
-// hardly at all.
 std::vector<Round> one_sided_noise(int pairs) {
-  std::vector<Round> rounds;
-  for (int k = 0; k < pairs; ++k) {
-    rounds.push_back(round_of(1.0, 1.04 + 0.02 * (k % 6)));
-    rounds.push_back(round_of(1.14 - 0.02 * (k % 6), 1.0 + 0.001 * (k % 3)));
-  }
-  return rounds;
+  return testing::one_sided_noise(testing::kBaselineTracer, pairs);
 }
 
 // Rounds whose noise is the same in a pair's two rounds (a slow spell as long as both): the

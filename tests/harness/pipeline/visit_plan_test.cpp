@@ -8,20 +8,14 @@
 #include <limits>
 
 #include "measure/fastest_of_two.h"
+#include "noisy_rounds.h"
 #include "runner/scheduler.h"
 
 namespace raygate {
 namespace {
 
 Round round_of(double base_seconds, double head_seconds, int runs_each = 1) {
-  Round round;
-  for (int k = 0; k < runs_each; ++k) {
-    round.order.push_back("base");
-    round.order.push_back("head");
-  }
-  round.runs["base"].seconds = base_seconds;
-  round.runs["head"].seconds = head_seconds;
-  return round;
+  return testing::round_of(testing::kBaseHead, base_seconds, head_seconds, runs_each);
 }
 
 // A scene judged over `rounds`, at 2 s a round per run of each side.
@@ -39,16 +33,8 @@ SceneResult scene_of(std::vector<Round> rounds) {
   return scene;
 }
 
-// Of each adjacent pair of rounds, the first's head and the second's base slowed by 4-14% (the
-// host took the CPU): one run per round spreads by several percent, the fastest of two hardly
-// at all.
 std::vector<Round> one_sided_noise(int pairs) {
-  std::vector<Round> rounds;
-  for (int k = 0; k < pairs; ++k) {
-    rounds.push_back(round_of(1.0, 1.04 + 0.02 * (k % 6)));
-    rounds.push_back(round_of(1.14 - 0.02 * (k % 6), 1.0 + 0.001 * (k % 3)));
-  }
-  return rounds;
+  return testing::one_sided_noise(testing::kBaseHead, pairs);
 }
 
 TEST(VisitPlan, OneSidedNoiseGetsTheFastestOfTwo) {

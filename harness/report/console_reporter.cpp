@@ -112,7 +112,7 @@ void add_header(const ReportInput& input, Spans& spans) {
     spans.push_back(dim("clock: " + clock));
     spans.push_back(plain("\n"));
   }
-  spans.push_back(dim("policy: " + policy_line(input.policy)));
+  spans.push_back(dim("policy: " + policy_line(input.policy, input.document.kind)));
   spans.push_back(plain("\n"));
   spans.push_back(dim("columns: " + columns_line(d)));
   spans.push_back(plain("\n\n"));

@@ -43,7 +43,7 @@ void add_properties(pugi::xml_node suite, const ReportInput& input) {
       add_property(properties, "machine." + key, value_text(value));
     }
   }
-  add_property(properties, "policy", policy_line(input.policy));
+  add_property(properties, "policy", policy_line(input.policy, input.document.kind));
 }
 
 std::string joined(const std::vector<std::string>& lines) {

@@ -323,23 +323,25 @@ std::string revision_line(const ResultsDocument& document, Role role) {
   return line;
 }
 
-std::string policy_line(const GatePolicy& policy) {
+std::string policy_line(const GatePolicy& policy, DocumentKind kind) {
   const ScenePolicy& d = policy.defaults;
-  // The equivalence sequence's level, the one UNCHANGED rows name (measure/change.h).
-  const DecidingInterval equivalence{{}, 1.0 - 2.0 * d.significance,
-                                     ChangeIntervalKind::confidence_sequence};
-  // No verdict words here: a report of a passing compare must not contain them (CI templates
-  // search a comment for REGRESSED).
-  std::string line = fmt::format(
-      "max slowdown {} (within the limit when the {} lies within ±{:.4g}%, slower when the decision CS "
-      "lies above 0, "
-      "at most {:.4g}% false alarms per compare; {}); image fail over {:.4g} on more than "
-      "{:.4g}% of pixels, warn over {:.4g}",
-      signed_percent(d.max_slowdown), interval_name(equivalence), 100.0 * d.max_slowdown,
-      100.0 * policy.family_significance, kIntervalLegend, d.image.fail_threshold,
-      d.image.fail_percent, d.image.warn_threshold);
+  std::string line;
+  if (is_compare(kind)) {
+    // The equivalence sequence's level, the one UNCHANGED rows name (measure/change.h).
+    const DecidingInterval equivalence{{}, 1.0 - 2.0 * d.significance,
+                                       ChangeIntervalKind::confidence_sequence};
+    // No verdict words here: a report of a passing compare must not contain them (CI templates
+    // search a comment for REGRESSED).
+    line = fmt::format(
+        "max slowdown {} (within the limit when the {} lies within ±{:.4g}%, slower when the "
+        "decision CS lies above 0, at most {:.4g}% false alarms per compare; {}); ",
+        signed_percent(d.max_slowdown), interval_name(equivalence), 100.0 * d.max_slowdown,
+        100.0 * policy.family_significance, kIntervalLegend);
+  }
+  line += fmt::format("image fail over {:.4g} on more than {:.4g}% of pixels, warn over {:.4g}",
+                      d.image.fail_threshold, d.image.fail_percent, d.image.warn_threshold);
   if (d.image.hard_fail < 1e29) line += fmt::format(", hard fail over {:.4g}", d.image.hard_fail);
-  if (policy.fail_on_inconclusive) line += "; inconclusive fails";
+  if (policy.fail_on_inconclusive && is_compare(kind)) line += "; inconclusive fails";
   if (!policy.scenes.empty()) {
     line += fmt::format("; {}", plural(policy.scenes.size(), "scene override", "scene overrides"));
   }

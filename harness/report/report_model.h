@@ -112,8 +112,10 @@ std::string value_text(const nlohmann::json& value);
 std::string machine_line(const nlohmann::json& machine);
 // "abc1234 Fix the BVH split (main)"; "" for a role not in the document.
 std::string revision_line(const ResultsDocument& document, Role role);
-// "max slowdown +3.0% at 95%; image fail 0.004 over 0.02% of pixels, warn 0.004".
-std::string policy_line(const GatePolicy& policy);
+// "max slowdown +3.0% (...); image fail over 0.004 on more than 0.02% of pixels, warn over
+// 0.004". A document without a change (`run`) is judged on its images only: its line leaves
+// the slowdown limit out.
+std::string policy_line(const GatePolicy& policy, DocumentKind kind);
 
 // The image of `role` per the document's image checks, or its first successful run.
 std::filesystem::path role_image(const SceneResult& scene, Role role);

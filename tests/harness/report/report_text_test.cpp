@@ -112,6 +112,9 @@ TEST(ConsoleReport, RunShowsRatioWithInterval) {
   at(text, "MEASURED");
   at(text, "raygate: pass (2 scenes; suite score 0.439), exit 0");
   EXPECT_EQ(text.find("change"), std::string::npos) << "a run has no change column";
+  // A run is judged on its images: its policy line does not promise a slowdown limit.
+  at(text, "policy: image fail over 0.004 on more than 0.02% of pixels, warn over 0.004");
+  EXPECT_EQ(text.find("max slowdown"), std::string::npos) << text;
 }
 
 TEST(MarkdownReport, HeadlineTableAndDetails) {

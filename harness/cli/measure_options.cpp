@@ -58,7 +58,7 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
                   "runs of each program per round, interleaved; the round keeps each one's "
                   "fastest (steadier on a busy machine, at that many times the runs). Default: "
                   "one, and a scene whose rounds show that the fastest of two gets there sooner "
-                  "takes it (run: after 10 rounds; compare: in its second pass)")
+                  "takes it (from the scene's 11th round on, in run and in compare)")
       ->check(CLI::Range(1, 10));
   command.add_option("--jobs", args.jobs, "parallel build jobs (default: all allowed CPUs)");
   command.add_option("--policy", args.policy,

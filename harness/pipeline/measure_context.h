@@ -33,9 +33,9 @@ struct MeasureContext {
   std::filesystem::path cache_dir;
   std::filesystem::path golden_dir;
   ScheduleOptions schedule;
-  // --repeats not given: one run per round, and where a scene's rounds show that each side's
-  // fastest of two gets there sooner, compare's second pass (pipeline/visit_plan.h) and `run`'s
-  // later rounds (pipeline/ratio_repeats.h) take it.
+  // --repeats not given: one run per round, and from a scene's 11th round on, where its rounds
+  // show that each side's fastest of two gets there sooner, it takes it (compare: pipeline/
+  // visit_plan.h, in both passes; run: pipeline/ratio_repeats.h).
   bool repeat_where_it_pays = false;
   StoppingPolicy stopping;
   // How runs are timed (runner/timing/): --timing's word ("" = the adapter's own) and the mode

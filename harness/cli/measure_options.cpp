@@ -34,6 +34,10 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
   command.add_flag("--no-pin", args.no_pin,
                    "do not pin: by default each round of a one-thread tracer runs on one CPU, "
                    "changing every second round");
+  command.add_flag("--no-idle-poll", args.no_idle_poll,
+                   "let idle CPUs sleep: by default they are held polling while raygate "
+                   "measures (/dev/cpu_dma_latency), as a CPU woken from sleep runs the next "
+                   "milliseconds slow");
   command.add_option("--duet-cpus", args.duet_cpus, "the two CPUs of the duet schedule")
       ->delimiter(',')
       ->capture_default_str();

@@ -199,6 +199,24 @@ Finding virtualization(const SystemFacts& facts) {
                          "dedicated or bare-metal runner"};
 }
 
+// A CPU woken from an idle halt runs its first milliseconds slow; on this project's VM a tracer
+// that sleeps during its run (POV-Ray) measured 35-50% slow in a third of its runs until idle
+// CPUs were held polling (docs/statistics.md §6d).
+Finding idle(const SystemFacts& facts) {
+  if (!facts.idle_polling) return {"idle", Level::info, "idle CPU states not checked", ""};
+  if (facts.idle_polling->holdable) {
+    return {"idle", Level::ok,
+            "idle CPUs can be held polling while raygate measures (/dev/cpu_dma_latency)", ""};
+  }
+  return {"idle", Level::warn,
+          "idle CPUs cannot be held polling (" + facts.idle_polling->why_not +
+              "): a CPU woken from sleep runs its first milliseconds slow, so runs that "
+              "follow a pause, or a tracer that sleeps during its run, measure noisier",
+          "let raygate write /dev/cpu_dma_latency: run it as root, or give its user the device "
+          "(a udev rule: KERNEL==\"cpu_dma_latency\", GROUP=\"<group>\", MODE=\"0660\"; a "
+          "container needs the device passed in)"};
+}
+
 // The levels' words, as the report prints them and its JSON writes them.
 constexpr EnumWords<FindingLevel, 3> kLevelWords{{
     {FindingLevel::ok, "ok"}, {FindingLevel::info, "info"}, {FindingLevel::warn, "warn"}}};
@@ -209,7 +227,7 @@ std::string to_string(FindingLevel level) { return std::string(word_of(kLevelWor
 
 std::vector<Finding> diagnose(const SystemFacts& facts) {
   return {governor(facts), turbo(facts), load(facts), cpus(facts),          smt(facts),
-          perf(facts),     aslr(facts),  swap(facts), virtualization(facts)};
+          perf(facts),     aslr(facts),  swap(facts), virtualization(facts), idle(facts)};
 }
 
 }  // namespace raygate

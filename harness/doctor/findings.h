@@ -20,7 +20,7 @@ std::string to_string(FindingLevel level);
 
 struct Finding {
   std::string check;  // "governor", "turbo", "load", "cpus", "smt", "perf", "aslr", "swap",
-                      // "virtualization"
+                      // "virtualization", "idle"
   FindingLevel level = FindingLevel::ok;
   std::string detail;  // what was seen, one line
   std::string advice;  // what to do; empty when nothing

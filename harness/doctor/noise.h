@@ -10,6 +10,7 @@
 #include <span>
 #include <string>
 
+#include "runner/idle_poll.h"
 #include "runner/suite.h"
 
 namespace raygate {
@@ -66,6 +67,7 @@ struct NoiseOptions {
   int rounds = kDefaultNoiseRounds;
   std::filesystem::path work_dir;    // scene and run files go here
   std::filesystem::path root = "/";  // for /proc/stat (steal time)
+  std::filesystem::path idle_poll_device{kCpuLatencyDevice};  // runner/idle_poll.h
 };
 
 // The fixed scene: SPD balls at size 3, 128x128 (820 spheres; about 0.1 s per run on a current

@@ -11,6 +11,7 @@
 #include "core/fs.h"
 #include "core/process.h"
 #include "core/text.h"
+#include "runner/idle_poll.h"
 #include "measure/machine_context.h"
 
 namespace raygate {
@@ -338,6 +339,10 @@ SystemFacts probe_system_facts(const ProbeOptions& options) {
     facts.swap = parse_swap(*text);
   facts.cpu_quota = probe_cpu_quota(options.root);
   probe_virtualization(options, facts);
+  if (options.live) {
+    const IdlePollHold hold(kCpuLatencyDevice);  // asked and let go at once
+    facts.idle_polling = IdlePolling{hold.held(), hold.why_not()};
+  }
   return facts;
 }
 

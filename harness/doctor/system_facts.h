@@ -38,6 +38,12 @@ struct CpuTimes {  // the "cpu" line of /proc/stat, in clock ticks
   std::uint64_t steal = 0;  // time a hypervisor gave this VM's CPUs to someone else
 };
 
+// Whether raygate can hold idle CPUs polling while it measures (runner/idle_poll.h).
+struct IdlePolling {
+  bool holdable = false;
+  std::string why_not;  // when not: "cannot open /dev/cpu_dma_latency: Permission denied"
+};
+
 struct SystemFacts {
   MachineContext machine;
   bool cpufreq_present = false;                      // some cpuN/cpufreq directory exists
@@ -49,6 +55,7 @@ struct SystemFacts {
   std::optional<SwapUsage> swap;
   std::optional<double> cpu_quota;  // cgroup v2 cpu.max as CPUs; nullopt: no quota
   Virtualization virtualization;
+  std::optional<IdlePolling> idle_polling;  // asked of the live system only
 };
 
 struct ProbeOptions {

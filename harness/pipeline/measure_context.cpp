@@ -84,6 +84,10 @@ MeasurementSettings measure_settings(const MeasureContext& c) {
           .round_cpus = c.schedule.round_cpus,
           .baseline_rounds = c.schedule.normalizer_rounds,
           .repeats = c.schedule.repeats,
+          // As asked; measure_suite says "os" instead when the machine refuses the hold.
+          .cpu_idle = simulated(c) ? std::nullopt
+                                   : std::optional(c.idle_poll_device.empty() ? CpuIdle::os : CpuIdle::poll),
+          .cpu_idle_refused = std::nullopt,
           .target_relative_half_width = c.stopping.target_relative_half_width,
           .min_rounds = c.stopping.min_rounds,
           .max_rounds = c.stopping.max_rounds,

@@ -18,6 +18,7 @@
 #include "results/shard.h"
 #include "runner/baseline_contender.h"
 #include "runner/cachegrind.h"
+#include "runner/idle_poll.h"
 #include "runner/scheduler.h"
 #include "runner/suite.h"
 #include "runner/timing/timing_mode.h"
@@ -37,6 +38,10 @@ struct MeasureContext {
   // show that each side's fastest of two gets there sooner, it takes it (compare: pipeline/
   // visit_plan.h, in both passes; run: pipeline/ratio_repeats.h).
   bool repeat_where_it_pays = false;
+  // Idle CPUs are held polling while measuring through this PM QoS file (runner/idle_poll.h);
+  // empty: left to the kernel (--no-idle-poll). Never in sim mode, whose counts no idle state
+  // moves.
+  std::filesystem::path idle_poll_device{kCpuLatencyDevice};
   StoppingPolicy stopping;
   // How runs are timed (runner/timing/): --timing's word ("" = the adapter's own) and the mode
   // it resolved to (choose_timing); null: the adapter's.

@@ -97,6 +97,7 @@ MeasureContext load_measure_context(const MeasureOptions& args,
   c.schedule.round_cpus = default_round_cpus(args, c);
   c.schedule.normalizer_rounds = args.baseline_rounds;
   c.schedule.repeats = std::max<std::size_t>(args.repeats, 1);
+  if (args.no_idle_poll) c.idle_poll_device.clear();
   c.repeat_where_it_pays = args.repeats == 0 && c.schedule.kind == ScheduleKind::alternate;
   if (c.schedule.kind == ScheduleKind::duet && args.repeats > 1) {
     throw UsageError("--repeats applies to the alternate schedule (a duet round runs each "

@@ -23,6 +23,7 @@ struct MeasureOptions {
   std::string schedule = "alternate";
   std::vector<int> pin_cpus;
   bool no_pin = false;  // --no-pin: not even the default pinning of a round to one CPU
+  bool no_idle_poll = false;  // --no-idle-poll: idle CPUs sleep as the kernel chooses
   std::size_t baseline_rounds = 0;  // rounds per scene the baseline joins; 0 = every round
   // Runs of each contender per round, the fastest kept; 0 (not given): one, and compare's second
   // pass repeats where it pays (MeasureContext::repeat_where_it_pays).

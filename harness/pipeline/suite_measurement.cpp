@@ -20,6 +20,7 @@
 #include "runner/baseline_cost_cache.h"
 #include "runner/cachegrind.h"
 #include "runner/deadline_executor.h"
+#include "runner/idle_poll.h"
 #include "runner/scene_files.h"
 #include "results/scores.h"
 #include "scaling/scaling_stage.h"
@@ -92,6 +93,7 @@ SuiteMeasurement suite_measurement(const MeasureContext& context, const std::str
   m.formats = {context.adapter.scene_format};
   m.images = context.adapter.images;
   m.budget_seconds = 60.0 * context.stopping.max_minutes;
+  if (!simulated(context)) m.idle_poll_device = context.idle_poll_device;
   return m;
 }
 
@@ -305,7 +307,31 @@ SceneInput prepare_scene_input(const SuiteScene& entry, const SuiteMeasurement& 
   return input;
 }
 
+namespace {
+
+// Idle CPUs held polling for the whole measurement, and the document saying whether they were.
+// A machine that refuses (not root, a container) still measures validly, only noisier for a
+// tracer that sleeps during its run, so the refusal is said once and recorded, not an error.
+std::optional<IdlePollHold> hold_idle_polling(MeasurementSettings& settings,
+                                              const SuiteMeasurement& m, PipelineIo& io) {
+  if (m.idle_poll_device.empty()) return std::nullopt;
+  IdlePollHold hold(m.idle_poll_device);
+  if (hold.held()) {
+    settings.cpu_idle = CpuIdle::poll;
+    return hold;
+  }
+  settings.cpu_idle = CpuIdle::os;
+  settings.cpu_idle_refused = hold.why_not();
+  io.progress.status("note: idle CPUs not held polling (" + hold.why_not() +
+                     "): a tracer that sleeps during its runs measures noisier "
+                     "(docs/statistics.md §6d); --no-idle-poll asks for none");
+  return std::nullopt;
+}
+
+}  // namespace
+
 void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io) {
+  const std::optional<IdlePollHold> idle_polling = hold_idle_polling(document.settings, m, io);
   // Within it a signal is not fatal at once: the running child's group is killed, the scenes
   // finished so far are written, and Interrupted says where.
   const InterruptScope stop_here;

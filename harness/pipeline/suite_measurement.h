@@ -71,6 +71,9 @@ struct SuiteMeasurement {
   std::filesystem::path scene_cache;  // generated scene files
   std::filesystem::path work_dir;     // run directories and evidence images
   std::filesystem::path out;          // the results document
+  // Idle CPUs are held polling while measuring, through this PM QoS file (runner/idle_poll.h);
+  // empty: left to the kernel (--no-idle-poll, sim mode, tests).
+  std::filesystem::path idle_poll_device;
   // The whole measurement's budget (--max-minutes), in seconds; 0: none. Every run started is
   // bounded by it (runner/deadline_executor.h), not only the stopping rule between rounds.
   double budget_seconds = 0.0;

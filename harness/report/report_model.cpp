@@ -259,6 +259,8 @@ std::string clock_line(const ResultsDocument& document) {
     line += ", baseline " + baseline;
   }
   if (s.round_cpus && !s.round_cpus->empty()) line += "; each round pinned to one CPU";
+  if (s.cpu_idle == CpuIdle::poll) line += "; idle CPUs held polling";
+  if (s.cpu_idle_refused) line += "; idle CPUs not held polling (" + *s.cpu_idle_refused + ")";
   return line;
 }
 

@@ -26,6 +26,10 @@ namespace raygate {
 // Who chose the CPUs the tracer was pinned to (settings.pinned_by).
 enum class PinnedBy { none, adapter, option };  // "", "adapter", "--pin"
 
+// Idle CPUs while measuring (settings.cpu_idle; runner/idle_poll.h): as the kernel chose, or
+// held polling.
+enum class CpuIdle { os, poll };  // "os", "poll"
+
 // One shard a merged document was made of (settings.merged_shards[]).
 struct MergedShard {
   ShardSpec spec;
@@ -50,6 +54,10 @@ struct MeasurementSettings {
   std::optional<std::vector<int>> round_cpus;
   std::optional<std::size_t> baseline_rounds;  // ScheduleOptions::normalizer_rounds
   std::optional<std::size_t> repeats;
+  // Idle CPUs while measuring, and why polling was not held when it was asked for ("cannot open
+  // /dev/cpu_dma_latency: Permission denied"): absent in documents from before it.
+  std::optional<CpuIdle> cpu_idle;
+  std::optional<std::string> cpu_idle_refused;
   // The stopping budget (measure/stopping_policy.h).
   std::optional<double> target_relative_half_width;
   std::optional<std::size_t> min_rounds;

@@ -29,6 +29,8 @@ void each_field(Settings& s, Visit&& visit) {
   visit("round_cpus", s.round_cpus);
   visit("baseline_rounds", s.baseline_rounds);
   visit("repeats", s.repeats);
+  visit("cpu_idle", s.cpu_idle);
+  visit("cpu_idle_refused", s.cpu_idle_refused);
   visit("target_relative_half_width", s.target_relative_half_width);
   visit("min_rounds", s.min_rounds);
   visit("max_rounds", s.max_rounds);
@@ -68,6 +70,7 @@ constexpr std::array<ScheduleKind, 2> kSchedules{ScheduleKind::alternate, Schedu
 constexpr std::array<TimingSource, 3> kSources{TimingSource::process, TimingSource::reported,
                                                TimingSource::simulated};
 constexpr std::array<PinnedBy, 3> kPinners{PinnedBy::none, PinnedBy::adapter, PinnedBy::option};
+constexpr std::array<CpuIdle, 2> kIdles{CpuIdle::os, CpuIdle::poll};
 
 json shard_json(const ShardRecord& record) {
   return {{"index", record.spec.index},
@@ -119,6 +122,7 @@ json value_json(const T& value) {
 json value_json(ScheduleKind kind) { return std::string(to_string(kind)); }
 json value_json(TimingSource source) { return std::string(to_string(source)); }
 json value_json(PinnedBy pinned_by) { return std::string(to_string(pinned_by)); }
+json value_json(CpuIdle idle) { return std::string(to_string(idle)); }
 json value_json(const ShardRecord& record) { return shard_json(record); }
 json value_json(const std::vector<MergedShard>& shards) {
   json list = json::array();
@@ -143,6 +147,9 @@ void read_value(const JsonField& f, std::optional<TimingSource>& out) {
 void read_value(const JsonField& f, std::optional<PinnedBy>& out) {
   out = word_from(f, kPinners, "pinner");
 }
+void read_value(const JsonField& f, std::optional<CpuIdle>& out) {
+  out = word_from(f, kIdles, "cpu idle");
+}
 void read_value(const JsonField& f, std::optional<ShardRecord>& out) { out = shard_from(f); }
 void read_value(const JsonField& f, std::optional<std::vector<MergedShard>>& out) {
   out.emplace();
@@ -156,6 +163,11 @@ std::string_view to_string(PinnedBy pinned_by) {
   constexpr EnumWords<PinnedBy, 3> kWords{
       {{PinnedBy::none, ""}, {PinnedBy::adapter, "adapter"}, {PinnedBy::option, "--pin"}}};
   return word_of(kWords, pinned_by, "");
+}
+
+std::string_view to_string(CpuIdle idle) {
+  constexpr EnumWords<CpuIdle, 2> kWords{{{CpuIdle::os, "os"}, {CpuIdle::poll, "poll"}}};
+  return word_of(kWords, idle, "");
 }
 
 json to_json(const MeasurementSettings& s) {

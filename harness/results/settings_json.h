@@ -19,5 +19,6 @@ nlohmann::json to_json(const MeasurementSettings& settings);
 MeasurementSettings settings_from_json(const JsonField& field);
 
 std::string_view to_string(PinnedBy pinned_by);
+std::string_view to_string(CpuIdle idle);
 
 }  // namespace raygate

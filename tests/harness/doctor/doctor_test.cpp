@@ -197,6 +197,18 @@ TEST(DoctorFindings, QuietBareMetalIsAllOk) {
   EXPECT_EQ(report.warnings(), 0u);
 }
 
+TEST(DoctorFindings, IdleCpusThatCannotBeHeldPollingAreAWarningWithTheWay) {
+  SystemFacts facts;
+  EXPECT_EQ(find(diagnose(facts), "idle").level, FindingLevel::info);  // a fake root: not asked
+  facts.idle_polling = IdlePolling{true, ""};
+  EXPECT_EQ(find(diagnose(facts), "idle").level, FindingLevel::ok);
+  facts.idle_polling = IdlePolling{false, "cannot open /dev/cpu_dma_latency: Permission denied"};
+  const Finding refused = find(diagnose(facts), "idle");
+  EXPECT_EQ(refused.level, FindingLevel::warn);
+  EXPECT_THAT(refused.detail, HasSubstr("(cannot open /dev/cpu_dma_latency: Permission denied)"));
+  EXPECT_THAT(refused.advice, HasSubstr("udev rule"));
+}
+
 TEST(DoctorFindings, VmWithoutCpufreqOrCountersSaysSo) {
   SystemFacts facts;
   facts.machine.online_cpus = 2;

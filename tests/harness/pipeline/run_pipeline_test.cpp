@@ -4,6 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <string>
+
 #include "pipeline_fixture.h"
 #include "results/results.h"
 
@@ -67,6 +70,45 @@ TEST_F(RunPipelineTest, SaysWhatItDoesThroughTheProgressSinkOnly) {
   EXPECT_EQ(progress_.updates.size(), 2 * (1 + context_.stopping.min_rounds));
   EXPECT_EQ(progress_.updates.back().scene_id, "balls");
   EXPECT_DOUBLE_EQ(progress_.updates.back().ratio, 2.0);
+}
+
+std::size_t statuses_with(const RecordingProgress& progress, const std::string& part) {
+  return static_cast<std::size_t>(
+      std::count_if(progress.statuses.begin(), progress.statuses.end(),
+                    [&](const std::string& s) { return s.find(part) != std::string::npos; }));
+}
+
+TEST_F(RunPipelineTest, IdleCpusAreHeldPollingWhileItMeasuresAndTheDocumentSaysSo) {
+  commit_tracer("2.0", "tracer");
+  const MeasuredDocument measured = run("HEAD");
+  EXPECT_EQ(measured.document.settings.cpu_idle, CpuIdle::poll);
+  EXPECT_FALSE(measured.document.settings.cpu_idle_refused.has_value());
+  // The PM QoS request: a 32-bit latency of 0 microseconds.
+  EXPECT_EQ(read_file(context_.idle_poll_device), std::string(4, '\0'));
+  EXPECT_EQ(statuses_with(progress_, "idle CPUs"), 0u);
+}
+
+TEST_F(RunPipelineTest, AMachineThatRefusesIdlePollingStillMeasuresAndSaysWhy) {
+  commit_tracer("2.0", "tracer");
+  context_.idle_poll_device = dir_.path() / "no-such-dir" / "cpu_dma_latency";
+  const MeasuredDocument measured = run("HEAD");
+  EXPECT_TRUE(measured.document.complete);
+  EXPECT_EQ(measured.document.settings.cpu_idle, CpuIdle::os);
+  const std::string why = "cannot open " + context_.idle_poll_device.string() +
+                          ": No such file or directory";
+  EXPECT_EQ(measured.document.settings.cpu_idle_refused, why);
+  EXPECT_EQ(statuses_with(progress_, "note: idle CPUs not held polling (" + why + ")"), 1u);
+  // Recorded, so a later reader of the document sees it too.
+  EXPECT_EQ(read_results(measured.path).settings.cpu_idle_refused, why);
+}
+
+TEST_F(RunPipelineTest, NoIdlePollLeavesIdleCpusToTheKernel) {
+  commit_tracer("2.0", "tracer");
+  context_.idle_poll_device.clear();  // --no-idle-poll
+  const MeasuredDocument measured = run("HEAD");
+  EXPECT_EQ(measured.document.settings.cpu_idle, CpuIdle::os);
+  EXPECT_FALSE(measured.document.settings.cpu_idle_refused.has_value());
+  EXPECT_EQ(statuses_with(progress_, "idle CPUs"), 0u);
 }
 
 TEST_F(RunPipelineTest, ANoisyTracerSpendsTheRoundBudget) {

@@ -117,6 +117,22 @@ TEST(ConsoleReport, RunShowsRatioWithInterval) {
   EXPECT_EQ(text.find("max slowdown"), std::string::npos) << text;
 }
 
+TEST(ConsoleReport, TheClockLineSaysWhetherIdleCpusWereHeldPolling) {
+  Fixture f(true);
+  f.document.settings.tracer_clock = "process-cpu";
+  f.document.settings.round_cpus = std::vector<int>{0, 1};
+  f.document.settings.cpu_idle = CpuIdle::poll;
+  at(f.render("console"),
+     "clock: process-cpu; each round pinned to one CPU; idle CPUs held polling\n");
+  f.document.settings.cpu_idle = CpuIdle::os;
+  f.document.settings.cpu_idle_refused = "cannot open /dev/cpu_dma_latency: Permission denied";
+  at(f.render("console"), "clock: process-cpu; each round pinned to one CPU; idle CPUs not held "
+                          "polling (cannot open /dev/cpu_dma_latency: Permission denied)\n");
+  // --no-idle-poll, or a document from before: nothing said.
+  f.document.settings.cpu_idle_refused.reset();
+  EXPECT_EQ(f.render("console").find("idle CPUs"), std::string::npos);
+}
+
 TEST(MarkdownReport, HeadlineTableAndDetails) {
   const Fixture f(true);
   const std::string text = f.render("markdown");

@@ -126,6 +126,24 @@ TEST(TypedSettings, AWrongValueNamesItsPath) {
       << usage_error(not_object);
 }
 
+TEST(TypedSettings, IdleCpusAreWordsAndARefusalKeepsItsReason) {
+  json file = old_document("main-60ebc9f-compare.json");
+  EXPECT_FALSE(results_from_json(file, "c.json").settings.cpu_idle.has_value());
+  file["settings"]["cpu_idle"] = "os";
+  file["settings"]["cpu_idle_refused"] = "cannot open /dev/cpu_dma_latency: Permission denied";
+  const ResultsDocument d = results_from_json(file, "c.json");
+  EXPECT_EQ(d.settings.cpu_idle, CpuIdle::os);
+  EXPECT_EQ(d.settings.cpu_idle_refused, "cannot open /dev/cpu_dma_latency: Permission denied");
+  EXPECT_EQ(to_json(d).at("settings"), file.at("settings"));
+  file["settings"]["cpu_idle"] = "poll";
+  EXPECT_EQ(results_from_json(file, "c.json").settings.cpu_idle, CpuIdle::poll);
+  file["settings"]["cpu_idle"] = "halt";
+  EXPECT_NE(usage_error(file).find("$.settings.cpu_idle: unknown cpu idle \"halt\" (\"os\", "
+                                   "\"poll\")"),
+            std::string::npos)
+      << usage_error(file);
+}
+
 TEST(TypedSettings, TheGateReadsTheRecordedLimits) {
   json file = old_document("main-60ebc9f-compare.json");
   file["settings"]["max_slowdown"] = 0.07;

@@ -68,6 +68,9 @@ std::string meta_list(const ReportInput& input) {
   if (const std::string machine = machine_line(d.machine); !machine.empty()) {
     rows += meta_row("machine", escape(machine));
   }
+  if (const std::string clock = clock_line(d); !clock.empty()) {
+    rows += meta_row("clock", escape(clock));
+  }
   rows += meta_row("baseline", escape(fmt::format("{} · accel {} · {} timing", d.baseline.version,
                                                   d.baseline.accel, d.baseline.timing)));
   rows += meta_row("policy", escape(policy_line(input.policy, input.document.kind)) + overrides_html(input.policy));

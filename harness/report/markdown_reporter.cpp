@@ -106,6 +106,9 @@ std::string details(const ReportInput& input) {
   text += fmt::format("- raygate {}, baseline {} (accel {}, {} timing)\n", md(d.raygate_version),
                       md(d.baseline.version), md(d.baseline.accel), md(d.baseline.timing));
   text += fmt::format("- started {}, finished {}\n", md(d.started_at), md(d.finished_at));
+  if (const std::string clock = clock_line(d); !clock.empty()) {
+    text += fmt::format("- clock: {}\n", md(clock));
+  }
   text += fmt::format("- policy: {}\n", md(policy_line(input.policy, input.document.kind)));
   for (const auto& [id, scene] : input.policy.scenes) {
     text += fmt::format("  - override {}: {}\n", md(id), md(scene.reason));

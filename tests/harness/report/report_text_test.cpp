@@ -133,6 +133,19 @@ TEST(ConsoleReport, TheClockLineSaysWhetherIdleCpusWereHeldPolling) {
   EXPECT_EQ(f.render("console").find("idle CPUs"), std::string::npos);
 }
 
+TEST(Reports, EveryFormatNamesTheClock) {
+  Fixture f(true);
+  f.document.settings.tracer_clock = "process-cpu";
+  f.document.settings.baseline_clock = "process-cpu";
+  f.document.settings.cpu_idle = CpuIdle::poll;
+  const std::string clock = "process-cpu, baseline process-cpu; idle CPUs held polling";
+  at(f.render("console"), "clock: " + clock + "\n");
+  at(f.render("markdown"), "- clock: " + clock + "\n");
+  at(f.render("html"), "<dt>clock</dt>");
+  at(f.render("html"), clock);
+  at(f.render("junit"), "name=\"clock\" value=\"" + clock + "\"");
+}
+
 TEST(MarkdownReport, HeadlineTableAndDetails) {
   const Fixture f(true);
   const std::string text = f.render("markdown");

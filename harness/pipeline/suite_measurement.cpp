@@ -324,7 +324,7 @@ std::optional<IdlePollHold> hold_idle_polling(MeasurementSettings& settings,
   settings.cpu_idle_refused = hold.why_not();
   io.progress.status("note: idle CPUs not held polling (" + hold.why_not() +
                      "): a tracer that sleeps during its runs measures noisier "
-                     "(docs/statistics.md §6d); --no-idle-poll asks for none");
+                     "(docs/statistics.md §6d); --no-idle-poll stops asking");
   return std::nullopt;
 }
 

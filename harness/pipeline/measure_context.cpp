@@ -86,7 +86,8 @@ MeasurementSettings measure_settings(const MeasureContext& c) {
           .repeats = c.schedule.repeats,
           // As asked; measure_suite says "os" instead when the machine refuses the hold.
           .cpu_idle = simulated(c) ? std::nullopt
-                                   : std::optional(c.idle_poll_device.empty() ? CpuIdle::os : CpuIdle::poll),
+                                   : std::optional(c.idle_poll_device.empty() ? CpuIdle::os
+                                                                              : CpuIdle::poll),
           .cpu_idle_refused = std::nullopt,
           .target_relative_half_width = c.stopping.target_relative_half_width,
           .min_rounds = c.stopping.min_rounds,

@@ -43,7 +43,9 @@ void add_properties(pugi::xml_node suite, const ReportInput& input) {
       add_property(properties, "machine." + key, value_text(value));
     }
   }
-  if (const std::string clock = clock_line(d); !clock.empty()) add_property(properties, "clock", clock);
+  if (const std::string clock = clock_line(d); !clock.empty()) {
+    add_property(properties, "clock", clock);
+  }
   add_property(properties, "policy", policy_line(input.policy, input.document.kind));
 }
 

@@ -30,7 +30,7 @@ struct ConsistencyOptions {
 // One scene's ratio in one document.
 struct SceneRatio {
   double ratio = 0.0;
-  Interval interval;         // 95% bootstrap CI of the ratio
+  Interval interval;         // the ratio's 95% CI, as its document stored it
   std::string scene_sha256;  // the NFF measured: same id, other file = another scene
 };
 

@@ -2,11 +2,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "core/error.h"
 #include "measure/descriptive.h"
+#include "measure/median_interval.h"
 
 namespace raygate {
 namespace {
@@ -26,6 +29,16 @@ std::vector<double> field(std::span<const RoundSample> rounds, double RoundSampl
   return values;
 }
 
+// The distribution-free interval of the median log-ratio at `confidence`; below the rounds it
+// needs (6 at 95%), the range of the rounds, which covers with 1 - 2^(1-n) only. Not the
+// bootstrap: `run` stops at the first round whose interval is narrow enough, and at that round
+// the bootstrap's "95%" covered 86-90% in simulation (docs/statistics.md §3).
+Interval log_ratio_interval(std::span<const double> logs, double confidence) {
+  if (std::optional<Interval> interval = median_interval(logs, confidence)) return *interval;
+  const auto [lowest, highest] = std::minmax_element(logs.begin(), logs.end());
+  return {*lowest, *highest};
+}
+
 }  // namespace
 
 std::vector<double> log_ratios(std::span<const RoundSample> rounds) {
@@ -43,13 +56,13 @@ RatioSummary summarize_ratio(std::span<const RoundSample> rounds,
                              const BootstrapOptions& options) {
   if (rounds.empty()) throw std::invalid_argument("summarize_ratio: no rounds");
   const std::vector<double> logs = log_ratios(rounds);
-  const Interval log_interval = bootstrap_median_interval(logs, options);
+  const Interval log_interval = log_ratio_interval(logs, options.confidence);
 
   RatioSummary summary;
   summary.rounds = rounds.size();
   summary.log_ratio_median = median(logs);
   summary.ratio = std::exp(summary.log_ratio_median);
-  // exp is monotone, so the percentile interval maps across unchanged.
+  // exp is monotone, so an interval of order statistics maps across unchanged.
   summary.ratio_interval = {std::exp(log_interval.lower), std::exp(log_interval.upper)};
   summary.relative_half_width = summary.ratio_interval.width() / 2.0 / summary.ratio;
   summary.log_ratio_mad_scaled = mad_scaled(logs);

@@ -20,7 +20,7 @@ struct RoundSample {
 struct RatioSummary {
   std::size_t rounds = 0;
   double ratio = 0.0;                // exp(median of per-round ln(tracer / baseline))
-  Interval ratio_interval;           // percentile bootstrap over rounds, in ratio units
+  Interval ratio_interval;           // order statistics of the rounds' log-ratios, in ratio units
   double relative_half_width = 0.0;  // ratio_interval.width() / 2 / ratio: the stopping rule's
   double log_ratio_median = 0.0;
   double log_ratio_mad_scaled = 0.0;  // scaled MAD of the log-ratios: about the relative spread
@@ -32,7 +32,10 @@ struct RatioSummary {
 // round if a time is not positive and finite (a tracer that reports 0 s cannot be normalized).
 std::vector<double> log_ratios(std::span<const RoundSample> rounds);
 
-// Throws std::invalid_argument for no rounds, InfraError for bad times (see log_ratios).
+// The interval is the distribution-free order-statistic interval of the median log-ratio at
+// options.confidence (measure/median_interval.h), or the rounds' range below the rounds that
+// needs; options.resamples is not used. Throws std::invalid_argument for no rounds, InfraError
+// for bad times (see log_ratios).
 RatioSummary summarize_ratio(std::span<const RoundSample> rounds,
                              const BootstrapOptions& options = {});
 

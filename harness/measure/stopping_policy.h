@@ -93,7 +93,7 @@ bool change_decided(std::span<const CompareRound> rounds, const StoppingPolicy& 
 StopDecision decide_stopping(std::size_t rounds, double relative_half_width,
                              const StoppingPolicy& policy, double seconds_spent);
 
-// The rule on samples: summarizes them (bootstrap CI) when there are at least min_rounds.
+// The rule on samples: summarizes them (order-statistic CI) when there are at least min_rounds.
 StopDecision decide_stopping(std::span<const RoundSample> rounds, const StoppingPolicy& policy,
                              double seconds_spent, const BootstrapOptions& options = {});
 

@@ -178,7 +178,7 @@ class HtmlReporter final : public Reporter {
     for (const SceneView& view : views) out << scene_section(input, view) << '\n';
     out << "<footer>raygate " << escape(d.raygate_version)
         << " · normalized ratio = time(tracer) / time(baseline), median of the rounds the "
-           "baseline joined, with its 95% bootstrap CI (head's: base's times the change) · "
+           "baseline joined, with its 95% CI (head's: base's times the change) · "
            "change = median of per-round head/base, with the interval that decided its verdict or, "
            "for INCONCLUSIVE, would decide it ("
         << escape(kIntervalLegend)

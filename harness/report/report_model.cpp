@@ -229,7 +229,7 @@ std::vector<TableColumn> table_columns(const ResultsDocument& document) {
 
 std::string columns_line(const ResultsDocument& document) {
   const std::string ratio = "ratio = time(tracer) / time(baseline), the median over rounds";
-  if (!is_compare(document.kind)) return ratio + ", [its 95% bootstrap CI]";
+  if (!is_compare(document.kind)) return ratio + ", [its 95% CI]";
   return ratio + " the baseline joined; head's = base's x (1 + change), so both move with the "
                  "change; change = median of per-round time(head) / time(base) - 1, [the "
                  "interval its verdict was drawn from; INCONCLUSIVE: the one that would decide "

@@ -20,7 +20,10 @@ std::string quoted(const std::string& arg) {
 
 std::string command_line(const std::vector<std::string>& argv) {
   std::string out;
-  for (const std::string& arg : argv) out += (out.empty() ? "" : " ") + quoted(arg);
+  for (const std::string& arg : argv) {
+    if (!out.empty()) out += ' ';
+    out += quoted(arg);
+  }
   return out;
 }
 

@@ -140,7 +140,7 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "tracer: %s\n", e.what());
     return 1;
   }
-  std::printf("tracer: %dx%d, %zu spheres, %zu cones, %zu polygons, %zu triangles, %zu BVH nodes, %.3f s\n",
+  std::printf("tracer: %dx%d, %zu spheres, %zu cones, %zu polygons, %zu triangles, %zu BVH nodes, %.6f s\n",
               image.width, image.height, scene.spheres.size(), scene.cones.size(), scene.polygons.size(),
               scene.triangles.size(), bvh.node_count(), seconds.count());
   return 0;

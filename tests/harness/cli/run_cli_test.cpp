@@ -67,11 +67,7 @@ class RunCli : public ::testing::Test {
 
   // One round of one scene, no warm-up: for what does not need numbers.
   static Options quick() {
-    Options options;
-    options.scenes = {"tetra"};
-    options.max_rounds = "1";
-    options.warmup = "0";
-    return options;
+    return Options{.scenes = {"tetra"}, .max_rounds = "1", .warmup = "0", .extra = {}};
   }
 
   // The shipped make-nff adapter with a 1 s run timeout, as a file in the temp dir.

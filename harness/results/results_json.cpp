@@ -3,34 +3,28 @@
 #include <fmt/core.h>
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <optional>
 #include <stdexcept>
-#include <utility>
-#include <initializer_list>
 
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/json_field.h"
 #include "core/json_reader.h"
 #include "results/json_number.h"
+#include "results/json_record.h"
 #include "results/results_check.h"
 #include "results/results.h"
 #include "results/scaling_json.h"
 #include "results/settings_json.h"
+#include "results/summary_json.h"
 
 namespace raygate {
 
 namespace {
 
 using nlohmann::json;
-
-// Non-finite numbers have no JSON form: they are written as null and read back as `if_null`.
-double number_at(const json& object, const char* key, double if_null = 0.0) {
-  const json& value = object.at(key);
-  return value.is_null() ? if_null : value.get<double>();
-}
+using json_record::number_at;
+using json_record::read_strings;
 
 // A word of the document's vocabulary read as its enum (core/domain.h): results_check.cpp has
 // already refused unknown words, so this names the field only for a document built in memory.
@@ -45,26 +39,6 @@ Enum word_at(const json& object, const char* key,
 
 std::string word(auto value) { return std::string(to_string(value)); }
 
-// Members named in one list, so a record's fields are spelled once each: numbers written null
-// when not finite and read back by number_at, strings read as they are.
-using NumberFields = std::initializer_list<std::pair<const char*, double>>;
-using NumberTargets = std::initializer_list<std::pair<const char*, double*>>;
-using StringTargets = std::initializer_list<std::pair<const char*, std::string*>>;
-
-json finite_numbers(NumberFields fields) {
-  json j = json::object();
-  for (const auto& [key, value] : fields) j[key] = finite_number(value);
-  return j;
-}
-
-void read_numbers(const json& j, NumberTargets targets) {
-  for (const auto& [key, target] : targets) *target = number_at(j, key);
-}
-
-void read_strings(const json& j, StringTargets targets) {
-  for (const auto& [key, target] : targets) *target = j.at(key).get<std::string>();
-}
-
 json path_list(const std::vector<std::filesystem::path>& paths) {
   json out = json::array();
   for (const auto& path : paths) out.push_back(path.string());
@@ -72,150 +46,6 @@ json path_list(const std::vector<std::filesystem::path>& paths) {
 }
 
 }  // namespace
-
-void to_json(json& j, const Interval& interval) {
-  j = json{{"lower", finite_number(interval.lower)}, {"upper", finite_number(interval.upper)}};
-}
-// A bound written as null was not finite: the interval is unbounded on that side. Read as 0 it
-// would say the opposite (an upper bound of +inf read back as 0 put lower above upper; found by
-// fuzzing the round trip, tests/fuzz/corpus/results/found-null-upper.json).
-void from_json(const json& j, Interval& interval) {
-  interval.lower = number_at(j, "lower", -std::numeric_limits<double>::infinity());
-  interval.upper = number_at(j, "upper", std::numeric_limits<double>::infinity());
-}
-
-void to_json(json& j, const RatioSummary& r) {
-  j = finite_numbers({{"normalized_ratio", r.ratio},
-                      {"relative_half_width", r.relative_half_width},
-                      {"log_ratio_median", r.log_ratio_median},
-                      {"log_ratio_mad_scaled", r.log_ratio_mad_scaled},
-                      {"tracer_median_seconds", r.tracer_median_seconds},
-                      {"baseline_median_seconds", r.baseline_median_seconds}});
-  j["rounds"] = r.rounds;
-  j["ratio_interval"] = r.ratio_interval;
-}
-void from_json(const json& j, RatioSummary& r) {
-  r.rounds = j.at("rounds").get<std::size_t>();
-  r.ratio_interval = j.at("ratio_interval").get<Interval>();
-  read_numbers(j, {{"normalized_ratio", &r.ratio},
-                   {"relative_half_width", &r.relative_half_width},
-                   {"log_ratio_median", &r.log_ratio_median},
-                   {"log_ratio_mad_scaled", &r.log_ratio_mad_scaled},
-                   {"tracer_median_seconds", &r.tracer_median_seconds},
-                   {"baseline_median_seconds", &r.baseline_median_seconds}});
-}
-
-void to_json(json& j, const SuiteScore& s) {
-  j = json{{"scenes", s.scenes}, {"score", finite_number(s.score)}, {"interval", s.interval}};
-}
-void from_json(const json& j, SuiteScore& s) {
-  s.scenes = j.at("scenes").get<std::size_t>();
-  s.score = number_at(j, "score");
-  s.interval = j.at("interval").get<Interval>();
-}
-
-void to_json(json& j, const ChangeSummary& c) {
-  j = json{{"rounds", c.rounds},
-           {"change", finite_number(c.change)},
-           {"change_interval", c.change_interval},
-           {"confidence", finite_number(c.confidence)},
-           {"interval_kind", std::string(to_string(c.interval_kind))},
-           {"log_change_median", finite_number(c.log_change_median)},
-           {"log_change_mad_scaled", finite_number(c.log_change_mad_scaled)},
-           {"base", c.base},
-           {"head", c.head},
-           {"mann_whitney",
-            {{"u", finite_number(c.mann_whitney.u)},
-             {"z", finite_number(c.mann_whitney.z)},
-             {"p_value", finite_number(c.mann_whitney.p_value)}}}};
-  if (c.exact) j["exact"] = true;  // --timing sim with identical counts: no interval needed
-  if (c.interval_kind == ChangeIntervalKind::confidence_sequence) {
-    j["equivalence_interval"] = c.equivalence_interval;
-    j["equivalence_confidence"] = finite_number(c.equivalence_confidence);
-    j["one_look_interval"] = c.one_look_interval;
-    j["one_look_confidence"] = finite_number(c.one_look_confidence);
-  }
-}
-void from_json(const json& j, ChangeSummary& c) {
-  c.rounds = j.at("rounds").get<std::size_t>();
-  c.change = number_at(j, "change");
-  c.change_interval = j.at("change_interval").get<Interval>();
-  c.confidence = j.value("confidence", 0.95);  // documents before it was recorded: 95%
-  // Documents before the confidence sequence carried the one-look interval.
-  const std::string kind = j.value("interval_kind", std::string("order-statistic"));
-  const std::optional<ChangeIntervalKind> parsed = change_interval_kind(kind);
-  if (!parsed) {
-    throw std::invalid_argument("change.interval_kind: unknown interval \"" + kind +
-                                "\" (order-statistic or confidence-sequence)");
-  }
-  c.interval_kind = *parsed;
-  if (c.interval_kind == ChangeIntervalKind::confidence_sequence) {
-    c.equivalence_interval = j.at("equivalence_interval").get<Interval>();
-    c.equivalence_confidence = number_at(j, "equivalence_confidence");
-    c.one_look_interval = j.at("one_look_interval").get<Interval>();
-    c.one_look_confidence = number_at(j, "one_look_confidence");
-  }
-  c.log_change_median = number_at(j, "log_change_median");
-  c.log_change_mad_scaled = number_at(j, "log_change_mad_scaled");
-  c.base = j.at("base").get<RatioSummary>();
-  c.head = j.at("head").get<RatioSummary>();
-  const json& mw = j.at("mann_whitney");
-  c.mann_whitney = {number_at(mw, "u"), number_at(mw, "z"), number_at(mw, "p_value", 1.0)};
-  c.exact = j.value("exact", false);
-}
-
-void to_json(json& j, const ImageMetrics& m) {
-  j = json{{"size_mismatch", m.size_mismatch},
-           {"width", m.width},
-           {"height", m.height},
-           {"expected_width", m.expected_width},
-           {"expected_height", m.expected_height},
-           {"mean_error", finite_number(m.mean_error)},
-           {"rms_error", finite_number(m.rms_error)},
-           {"psnr_db", finite_number(m.psnr_db)},  // null: identical images (infinite PSNR)
-           {"max_error", finite_number(m.max_error)},
-           {"max_pixel", {m.max_x, m.max_y, m.max_channel}},
-           {"max_actual_value", finite_number(m.max_actual_value)},
-           {"max_expected_value", finite_number(m.max_expected_value)},
-           {"pixels_over_warn", m.pixels_over_warn},
-           {"pixels_over_fail", m.pixels_over_fail},
-           {"percent_over_fail", finite_number(m.percent_over_fail)},
-           {"mean_luminance_actual", finite_number(m.mean_luminance_actual)},
-           {"mean_luminance_expected", finite_number(m.mean_luminance_expected)},
-           {"nonfinite_values", m.nonfinite_values},
-           {"nonfinite_pixels", m.nonfinite_pixels},
-           {"first_nonfinite_pixel", {m.nonfinite_x, m.nonfinite_y}},
-           {"expected_nonfinite_pixels", m.expected_nonfinite_pixels}};
-}
-void from_json(const json& j, ImageMetrics& m) {
-  m.size_mismatch = j.at("size_mismatch").get<bool>();
-  m.width = j.at("width").get<int>();
-  m.height = j.at("height").get<int>();
-  m.expected_width = j.at("expected_width").get<int>();
-  m.expected_height = j.at("expected_height").get<int>();
-  m.mean_error = number_at(j, "mean_error");
-  m.rms_error = number_at(j, "rms_error");
-  m.psnr_db = number_at(j, "psnr_db", std::numeric_limits<double>::infinity());
-  m.max_error = number_at(j, "max_error");
-  const json& pixel = j.at("max_pixel");
-  m.max_x = pixel.at(0).get<int>();
-  m.max_y = pixel.at(1).get<int>();
-  m.max_channel = pixel.at(2).get<int>();
-  m.max_actual_value = number_at(j, "max_actual_value");
-  m.max_expected_value = number_at(j, "max_expected_value");
-  m.pixels_over_warn = j.at("pixels_over_warn").get<long>();
-  m.pixels_over_fail = j.at("pixels_over_fail").get<long>();
-  m.percent_over_fail = number_at(j, "percent_over_fail");
-  m.mean_luminance_actual = number_at(j, "mean_luminance_actual");
-  m.mean_luminance_expected = number_at(j, "mean_luminance_expected");
-  m.nonfinite_values = j.at("nonfinite_values").get<long>();
-  // Absent from documents written before NaN pixels were counted.
-  m.nonfinite_pixels = j.value("nonfinite_pixels", 0L);
-  const json first = j.value("first_nonfinite_pixel", json::array({0, 0}));
-  m.nonfinite_x = first.at(0).get<int>();
-  m.nonfinite_y = first.at(1).get<int>();
-  m.expected_nonfinite_pixels = j.value("expected_nonfinite_pixels", 0L);
-}
 
 void to_json(json& j, const Worktree& w) {
   j = json{{"path", w.path.string()},       {"revision", w.revision}, {"ref_name", w.ref_name},

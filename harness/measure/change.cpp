@@ -189,9 +189,9 @@ ChangeSummary summarize_change(std::span<const CompareRound> rounds,
   }
   summary.log_change_mad_scaled = mad_scaled(log_changes);
   if (!base_rounds.empty()) {
-    summary.base = summarize_ratio(base_rounds, options);
-    summary.head = ratio_through_change(summary.base, summarize_ratio(head_rounds, options),
-                                        summary.change);
+    summary.base = summarize_ratio(base_rounds, options.confidence);
+    summary.head = ratio_through_change(
+        summary.base, summarize_ratio(head_rounds, options.confidence), summary.change);
     // Ranks are unchanged by exp, so testing the log-ratios is testing the ratios.
     summary.mann_whitney = mann_whitney_u(head_logs, base_logs);
   }

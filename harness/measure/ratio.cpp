@@ -52,11 +52,10 @@ std::vector<double> log_ratios(std::span<const RoundSample> rounds) {
   return logs;
 }
 
-RatioSummary summarize_ratio(std::span<const RoundSample> rounds,
-                             const BootstrapOptions& options) {
+RatioSummary summarize_ratio(std::span<const RoundSample> rounds, double confidence) {
   if (rounds.empty()) throw std::invalid_argument("summarize_ratio: no rounds");
   const std::vector<double> logs = log_ratios(rounds);
-  const Interval log_interval = log_ratio_interval(logs, options.confidence);
+  const Interval log_interval = log_ratio_interval(logs, confidence);
 
   RatioSummary summary;
   summary.rounds = rounds.size();

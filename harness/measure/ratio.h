@@ -33,11 +33,9 @@ struct RatioSummary {
 std::vector<double> log_ratios(std::span<const RoundSample> rounds);
 
 // The interval is the distribution-free order-statistic interval of the median log-ratio at
-// options.confidence (measure/median_interval.h), or the rounds' range below the rounds that
-// needs; options.resamples is not used. Throws std::invalid_argument for no rounds, InfraError
-// for bad times (see log_ratios).
-RatioSummary summarize_ratio(std::span<const RoundSample> rounds,
-                             const BootstrapOptions& options = {});
+// `confidence` (measure/median_interval.h), or the rounds' range below the rounds that needs.
+// Throws std::invalid_argument for no rounds, InfraError for bad times (see log_ratios).
+RatioSummary summarize_ratio(std::span<const RoundSample> rounds, double confidence = 0.95);
 
 struct SuiteScore {
   std::size_t scenes = 0;

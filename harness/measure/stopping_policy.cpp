@@ -45,7 +45,7 @@ std::size_t rounds_to_decide(const StoppingPolicy& policy) {
 bool ratio_decided(std::span<const RoundSample> rounds, const StoppingPolicy& policy,
                    const BootstrapOptions& options) {
   if (rounds.size() < rounds_to_decide(policy)) return false;
-  return summarize_ratio(rounds, options).relative_half_width <=
+  return summarize_ratio(rounds, options.confidence).relative_half_width <=
          policy.target_relative_half_width;
 }
 
@@ -69,7 +69,7 @@ StopDecision decide_stopping(std::span<const RoundSample> rounds, const Stopping
   // No CI is computed below min_rounds: with one round it would be a point and "converge".
   double relative_half_width = std::numeric_limits<double>::infinity();
   if (!rounds.empty() && rounds.size() >= policy.min_rounds) {
-    relative_half_width = summarize_ratio(rounds, options).relative_half_width;
+    relative_half_width = summarize_ratio(rounds, options.confidence).relative_half_width;
   }
   return decide_stopping(rounds.size(), relative_half_width, policy, seconds_spent);
 }

@@ -144,6 +144,10 @@ std::string calibration_line(const SceneCalibration& s, double target_seconds) {
                         "or a longer target)", target_seconds);
   } else if (!s.chosen.reached) {
     line += fmt::format("  NOT REACHED: a side limit stops it short of {:g} s", target_seconds);
+  } else if (s.model.fixed_seconds > 0.5 * s.chosen.predicted_seconds) {
+    // Most of the render is start-up and set-up: its ratio says little about rendering.
+    line += fmt::format("  (the fixed part is {:.0f}% of it)",
+                        100.0 * s.model.fixed_seconds / s.chosen.predicted_seconds);
   }
   return line;
 }

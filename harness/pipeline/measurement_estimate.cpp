@@ -171,10 +171,13 @@ void MeasurementEstimate::first_scene_done(const std::vector<Round>& rounds, dou
                                            StopDecision decision) {
   if (!cost_ || shape_.scenes < 2) return;
   if (decision != StopDecision::stop_converged) {
+    // Its rounds so far are a floor for scenes like it, above the first line's.
     progress_.line(fmt::format(
-        "estimate: {} was not decided in {} rounds ({}); a scene like it needs more than its "
-        "share, so the estimate above is a floor",
-        first_scene_, rounds.size(), duration_text(seconds_spent)));
+        "estimate: {} was not decided in {} rounds ({}, its share of the budget); scenes like "
+        "it need more: over {} scenes x {} = {}",
+        first_scene_, rounds.size(), duration_text(seconds_spent), shape_.scenes,
+        duration_text(seconds_spent),
+        duration_text(seconds_spent * static_cast<double>(shape_.scenes))));
     return;
   }
   // The rounds it took, at the cost of a round as measured over all of them.

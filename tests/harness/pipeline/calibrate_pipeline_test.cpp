@@ -48,8 +48,7 @@ class CalibratePipelineTest : public PipelineTest {
   Calibration calibrate(const std::string& rev, double target_seconds, const fs::path& out) {
     const Repository repository = Repository::open(repo_.path().string(), context_.cache_dir);
     CalibrateRequest request{context_, baseline_, repository.location(),
-                             repository.checkout(rev), target_seconds};
-    request.out = out;
+                             repository.checkout(rev), target_seconds, 1, 16, "", out};
     return calibrate_suite(request, io_);
   }
 };

@@ -6,14 +6,16 @@
 #include <cmath>
 
 #include "core/domain.h"
+#include "core/format.h"
 #include "measure/confidence_sequence.h"
 
 namespace raygate {
 
 namespace {
 
-// Minutes as a person reads them: "45 s" below two minutes, else "6.3 min".
-std::string duration_text(double seconds) {
+// Seconds below two minutes ("45 s"), else minutes to a tenth ("6.3 min"), so an estimate and
+// its budget compare at a glance.
+std::string span_text(double seconds) {
   if (seconds < 120.0) return fmt::format("{:.0f} s", seconds);
   return fmt::format("{:.1f} min", seconds / 60.0);
 }
@@ -78,11 +80,11 @@ std::vector<std::string> estimate_lines(const Estimate& estimate, const Estimate
                                         const std::string& basis) {
   std::vector<std::string> lines;
   std::string line = fmt::format("estimate {}: {} scenes x {} = {}", basis, shape.scenes,
-                                 duration_text(estimate.seconds_per_scene),
-                                 duration_text(estimate.total_seconds));
+                                 span_text(estimate.seconds_per_scene),
+                                 span_text(estimate.total_seconds));
   if (shape.budget_seconds > 0.0) {
     line += fmt::format(" for a budget of {} (--max-minutes {:g})",
-                        duration_text(shape.budget_seconds), shape.budget_seconds / 60.0);
+                        span_text(shape.budget_seconds), shape.budget_seconds / 60.0);
   }
   lines.push_back(std::move(line));
   if (!estimate.fits_budget) {
@@ -92,7 +94,7 @@ std::vector<std::string> estimate_lines(const Estimate& estimate, const Estimate
   if (!estimate.fits_scene_limit) {
     lines.push_back(fmt::format("  a scene needs about {}, beyond --max-seconds {:g}: it stops "
                                 "INCONCLUSIVE unless given more",
-                                duration_text(estimate.seconds_per_scene),
+                                span_text(estimate.seconds_per_scene),
                                 shape.scene_max_seconds));
   }
   return lines;
@@ -173,11 +175,12 @@ void MeasurementEstimate::first_scene_done(const std::vector<Round>& rounds, dou
   if (decision != StopDecision::stop_converged) {
     // Its rounds so far are a floor for scenes like it, above the first line's.
     progress_.line(fmt::format(
-        "estimate: {} was not decided in {} rounds ({}, its share of the budget); scenes like "
+        "estimate: {} was not decided in {} ({}, its share of the budget); scenes like "
         "it need more: over {} scenes x {} = {}",
-        first_scene_, rounds.size(), duration_text(seconds_spent), shape_.scenes,
-        duration_text(seconds_spent),
-        duration_text(seconds_spent * static_cast<double>(shape_.scenes))));
+        first_scene_, count_text(rounds.size(), "round"), span_text(seconds_spent),
+        shape_.scenes,
+        span_text(seconds_spent),
+        span_text(seconds_spent * static_cast<double>(shape_.scenes))));
     return;
   }
   // The rounds it took, at the cost of a round as measured over all of them.
@@ -187,7 +190,7 @@ void MeasurementEstimate::first_scene_done(const std::vector<Round>& rounds, dou
   const Estimate estimate = estimate_measurement(cost, shape_, rounds.size(), tracer_count_);
   const std::string basis = fmt::format(
       "from {} (decided in {} rounds, {}), for scenes like it", first_scene_, rounds.size(),
-      duration_text(seconds_spent));
+      span_text(seconds_spent));
   for (const std::string& line : estimate_lines(estimate, shape_, basis)) progress_.line(line);
 }
 

@@ -11,7 +11,8 @@ namespace raygate {
 struct TimedRender {
   int width = 0;
   int height = 0;
-  double seconds = 0.0;
+  double seconds = 0.0;        // wall seconds, as the budget counts them
+  double timed_seconds = 0.0;  // the seconds the ratio uses (the adapter's clock: CPU, ...)
 
   double pixels() const { return static_cast<double>(width) * static_cast<double>(height); }
 };

@@ -12,6 +12,7 @@ void add_scenes_command(CLI::App& command, int& exit_code);  // list, generate, 
 void add_golden_command(CLI::App& command, int& exit_code);  // verify, bless
 void add_validate_command(CLI::App& command, int& exit_code);
 void add_adapter_command(CLI::App& command, int& exit_code);  // check
+void add_calibrate_command(CLI::App& command, int& exit_code);  // a suite sized to a tracer
 void add_run_command(CLI::App& command, int& exit_code);
 void add_history_command(CLI::App& command, int& exit_code);
 void add_import_command(CLI::App& command, int& exit_code);

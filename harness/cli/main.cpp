@@ -42,6 +42,8 @@ std::vector<Command> commands() {
       {"validate", "Compare the baseline's SPD ray counts with the published SPD statistics",
        cli::add_validate_command},
       {"adapter", "Work with adapter files (adapters/README.md)", cli::add_adapter_command},
+      {"calibrate", "size a suite to a tracer: resolutions at which each render takes a target time",
+       cli::add_calibrate_command},
       {"run", "measure one revision against the baseline on a suite; writes a results document",
        cli::add_run_command},
       {"history", "normalized ratio and image error per scene over commits, from the store",

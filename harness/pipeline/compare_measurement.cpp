@@ -14,6 +14,7 @@
 #include "pipeline/compare_family.h"
 #include "pipeline/run_images.h"
 #include "pipeline/explain_stage.h"
+#include "pipeline/measurement_estimate.h"
 #include "pipeline/stop_rules.h"
 #include "pipeline/visit_plan.h"
 #include "runner/baseline_contender.h"
@@ -126,10 +127,13 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
   const TracerContender head_runs(head.setup);
   SuiteBudget budget(context.stopping, m.scenes.size(), io.clock,
                      revisit_reserve_scenes(m.scenes.size()));
+  MeasurementEstimate estimate(estimate_shape(context, m.scenes.size(), "compare"),
+                               fewest_compare_rounds(context, alpha), 2, io.progress);
   m.stop = [&](const SuiteScene& scene) {
     const ScenePolicy& policy = context.policy.for_scene(scene.id);
-    return change_stop_rule(budget.next_scene(), policy, scene_levels(policy, alpha),
-                            simulated(context));
+    return estimate.watch(change_stop_rule(budget.next_scene(), policy,
+                                           scene_levels(policy, alpha), simulated(context)),
+                          scene.id);
   };
   if (context.repeat_where_it_pays && !simulated(context)) {
     m.repeats = [&](const SuiteScene& entry) -> RepeatChooser {

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "core/time_text.h"
+#include "pipeline/measurement_estimate.h"
 #include "pipeline/ratio_repeats.h"
 #include "pipeline/stop_rules.h"
 #include "runner/tracer_contender.h"
@@ -24,7 +25,11 @@ MeasuredDocument measure_prepared_run(const RunRequest& request, const PreparedR
   SuiteMeasurement m = suite_measurement(
       context, compact_utc_timestamp() + "-" + worktree.short_sha, request.out);
   SuiteBudget budget(context.stopping, m.scenes.size(), io.clock);
-  m.stop = [&](const SuiteScene&) { return ratio_stop_rule(budget.next_scene(), Role::tracer); };
+  MeasurementEstimate estimate(estimate_shape(context, m.scenes.size(), "run"),
+                               rounds_to_decide(context.stopping), 1, io.progress);
+  m.stop = [&](const SuiteScene& scene) {
+    return estimate.watch(ratio_stop_rule(budget.next_scene(), Role::tracer), scene.id);
+  };
   m.tracer_roles = {Role::tracer};
   if (context.repeat_where_it_pays) {
     m.repeats = [](const SuiteScene&) -> RepeatChooser {

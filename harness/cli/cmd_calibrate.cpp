@@ -1,0 +1,86 @@
+// `raygate calibrate`: size a suite to a tracer, so that each render takes about the target
+// seconds and a compare of a slow tracer fits a CI job (docs/calibrate.md). Options -> a
+// calibrate request -> the pipeline (pipeline/calibrate.h: build, time each scene at two
+// resolutions, write the suite file). Exit 0 written, 2 bad options or suite, 3 the tracer
+// could not be built or run.
+#include <fmt/core.h>
+
+#include "cli/commands.h"
+#include "cli/console.h"
+#include "cli/measure_options.h"
+#include "cli/subcommand.h"
+#include "cli/terminal_progress.h"
+#include "pipeline/calibrate.h"
+#include "pipeline/measure_options.h"
+#include "pipeline/revision_setup.h"
+#include "runner/baseline_tool.h"
+
+namespace raygate::cli {
+namespace {
+
+struct CalibrateArgs {
+  MeasureOptions measure;
+  std::string rev = "HEAD";
+  std::string worktree;
+  double target_seconds = 0.0;
+  std::size_t runs = 1;
+  int min_side = 16;
+  std::string name;
+  std::string out;
+};
+
+int calibrate_command(const CalibrateArgs& args, const Console& console) {
+  const MeasureContext context = load_measure_context(args.measure);
+  const BaselineTool baseline(context.tools.baseline);
+  const RunTree tree = locate_run_tree(args.measure.repo, args.rev, args.worktree,
+                                       context.cache_dir);
+  const CalibrateRequest request{context,         baseline,      tree.repository,
+                                 tree.worktree,   args.target_seconds, args.runs,
+                                 args.min_side,   args.name,     args.out};
+  check_calibrate_request(request);  // before the build
+  TerminalIo terminal(console.quiet(), is_terminal(stderr));
+  const Calibration calibration = calibrate_suite(request, terminal.io);
+  std::size_t reached = 0;
+  for (const SceneCalibration& scene : calibration.scenes) reached += scene.chosen.reached;
+  console.info(fmt::format(
+      "wrote suite '{}' to {}: {} of {} scenes predicted within 10% of {:g} s; use it with "
+      "--suite {}",
+      calibration.suite.name, calibration.path.string(), reached, calibration.scenes.size(),
+      args.target_seconds, calibration.path.string()));
+  return 0;
+}
+
+}  // namespace
+
+void add_calibrate_command(CLI::App& command, int& exit_code) {
+  CalibrateArgs& args = bind_command<CalibrateArgs>(command, calibrate_command, exit_code);
+  MeasureOptions& m = args.measure;
+  command.add_option("--repo", m.repo, "the tracer's git repository: a path or a URL")
+      ->capture_default_str();
+  command.add_option("--adapter", m.adapter,
+                     "adapter file, or the name of a shipped adapter (povray, ...)")
+      ->required();
+  command.add_option("--rev", args.rev, "revision to time")->capture_default_str();
+  command.add_option("--worktree", args.worktree, "time this directory as it is");
+  command.add_option("--suite", m.suite, "the suite to size (name or file)")
+      ->capture_default_str();
+  command.add_option("--scene", m.scenes, "only these suite scene ids (repeatable)");
+  command.add_option("--cache-dir", m.cache_dir, "worktrees, builds, scenes and run files")
+      ->capture_default_str();
+  command.add_option("--baseline", m.baseline, "raygate-baseline executable (its hash keys "
+                                                "the build cache)");
+  command.add_option("--jobs", m.jobs, "parallel build jobs (default: all allowed CPUs)");
+  add_bounded_option(command, "--target-seconds", args.target_seconds, 0.001, 3600.0,
+                     "wall seconds one render of each scene should take")
+      ->required();
+  add_bounded_option(command, "--runs", args.runs, 1, 20,
+                     "renders at each of the two sizes timed; the fastest is kept");
+  add_bounded_option(command, "--min-side", args.min_side, 1, 4096,
+                     "no calibrated picture side below this many pixels");
+  command.add_option("--name", args.name, "the written suite's name (default: <suite>-<adapter>)");
+  command.add_option("-o,--output", args.out,
+                     "the suite file to write (.json), e.g. beside the adapter")
+      ->required();
+}
+
+}  // namespace raygate::cli

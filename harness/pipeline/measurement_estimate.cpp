@@ -1,0 +1,197 @@
+#include "pipeline/measurement_estimate.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/domain.h"
+#include "core/format.h"
+#include "measure/confidence_sequence.h"
+
+namespace raygate {
+
+namespace {
+
+// Seconds below two minutes ("45 s"), else minutes to a tenth ("6.3 min"), so an estimate and
+// its budget compare at a glance.
+std::string span_text(double seconds) {
+  if (seconds < 120.0) return fmt::format("{:.0f} s", seconds);
+  return fmt::format("{:.1f} min", seconds / 60.0);
+}
+
+// A margin on what the advice asks for: the estimate is of a typical scene, and half the
+// scenes take longer than it.
+constexpr double kAdviceMargin = 1.25;
+
+// What would decide a suite the budget cannot: each lever with its number.
+std::string advice(const Estimate& estimate, const EstimateShape& shape) {
+  std::string text = fmt::format(
+      "what would: --max-minutes {:.0f}; or {} shards of a CI matrix, each `{} --shard K/{}` "
+      "with this budget (docs/shards.md)",
+      std::ceil(kAdviceMargin * estimate.total_seconds / 60.0), estimate.shards_needed,
+      shape.command, estimate.shards_needed);
+  if (estimate.tracer_render_seconds_to_fit > 0.0) {
+    text += fmt::format("; or a suite whose renders take about {:.2g} s (raygate calibrate "
+                        "--target-seconds {:.2g}, docs/calibrate.md)",
+                        estimate.tracer_render_seconds_to_fit,
+                        estimate.tracer_render_seconds_to_fit);
+  }
+  return text;
+}
+
+}  // namespace
+
+double scene_seconds(const RoundCost& cost, const EstimateShape& shape, std::size_t rounds) {
+  const double warmups =
+      static_cast<double>(std::max(shape.warmup_runs, 0)) *
+      (cost.normalizer_seconds + cost.tracers_seconds);
+  const std::size_t normalizer_rounds =
+      shape.normalizer_rounds == 0 ? rounds : std::min(rounds, shape.normalizer_rounds);
+  const double runs = warmups + static_cast<double>(normalizer_rounds) * cost.normalizer_seconds +
+                      static_cast<double>(rounds) * cost.tracers_seconds;
+  return runs * std::max(cost.overhead_factor, 1.0);
+}
+
+Estimate estimate_measurement(const RoundCost& cost, const EstimateShape& shape,
+                              std::size_t rounds, std::size_t tracer_count) {
+  Estimate e;
+  e.rounds_per_scene = rounds;
+  e.seconds_per_scene = scene_seconds(cost, shape, rounds);
+  e.total_seconds = e.seconds_per_scene * static_cast<double>(shape.scenes);
+  e.fits_scene_limit = shape.scene_max_seconds <= 0.0 || e.seconds_per_scene <= shape.scene_max_seconds;
+  if (shape.budget_seconds > 0.0 && e.total_seconds > shape.budget_seconds) {
+    e.fits_budget = false;
+    e.shards_needed = static_cast<std::size_t>(
+        std::ceil(kAdviceMargin * e.total_seconds / shape.budget_seconds));
+    e.shards_needed = std::clamp<std::size_t>(e.shards_needed, 2, std::max<std::size_t>(shape.scenes, 2));
+    // Smaller renders shrink every program's run alike (the baseline renders the same smaller
+    // pictures), so the tracer's render time scales by the budget's share of the estimate.
+    if (tracer_count > 0 && cost.tracers_seconds > 0.0) {
+      const double per_render = cost.tracers_seconds / static_cast<double>(tracer_count);
+      e.tracer_render_seconds_to_fit =
+          per_render * shape.budget_seconds / (kAdviceMargin * e.total_seconds);
+    }
+  }
+  return e;
+}
+
+std::vector<std::string> estimate_lines(const Estimate& estimate, const EstimateShape& shape,
+                                        const std::string& basis) {
+  std::vector<std::string> lines;
+  std::string line = fmt::format("estimate {}: {} scenes x {} = {}", basis, shape.scenes,
+                                 span_text(estimate.seconds_per_scene),
+                                 span_text(estimate.total_seconds));
+  if (shape.budget_seconds > 0.0) {
+    line += fmt::format(" for a budget of {} (--max-minutes {:g})",
+                        span_text(shape.budget_seconds), shape.budget_seconds / 60.0);
+  }
+  lines.push_back(std::move(line));
+  if (!estimate.fits_budget) {
+    lines.push_back("  the budget cannot decide every scene at this pace; " +
+                    advice(estimate, shape));
+  }
+  if (!estimate.fits_scene_limit) {
+    lines.push_back(fmt::format("  a scene needs about {}, beyond --max-seconds {:g}: it stops "
+                                "INCONCLUSIVE unless given more",
+                                span_text(estimate.seconds_per_scene),
+                                shape.scene_max_seconds));
+  }
+  return lines;
+}
+
+EstimateShape estimate_shape(const MeasureContext& context, std::size_t scenes,
+                             const std::string& command) {
+  EstimateShape shape;
+  shape.scenes = scenes;
+  shape.warmup_runs = context.schedule.warmup_runs;
+  shape.normalizer_rounds = context.schedule.normalizer_rounds;
+  shape.budget_seconds = 60.0 * context.stopping.max_minutes;
+  shape.scene_max_seconds = context.stopping.max_seconds;
+  shape.command = "raygate " + command;
+  return shape;
+}
+
+std::size_t fewest_compare_rounds(const MeasureContext& context, double decision_alpha) {
+  if (simulated(context)) return 2;
+  std::size_t fewest = min_values_for_median_sequence(decision_alpha);
+  for (const SuiteScene& scene : context.scenes) {
+    fewest = std::min(fewest, min_values_for_median_sequence(
+                                  context.policy.for_scene(scene.id).significance));
+  }
+  return std::max(fewest, rounds_to_decide(context.stopping));
+}
+
+RoundCost round_cost(const Round& round, double seconds_spent, int warmup_runs) {
+  RoundCost cost;
+  for (const auto& [role, run] : round.runs) {
+    if (role == role_name(Role::baseline)) {
+      cost.normalizer_seconds += run.wall_seconds;
+    } else {
+      cost.tracers_seconds += run.wall_seconds;
+    }
+  }
+  // The warm-ups ran every contender once each, about as long as this round's runs.
+  const double runs = (1.0 + std::max(warmup_runs, 0)) *
+                      (cost.normalizer_seconds + cost.tracers_seconds);
+  if (runs > 0.0 && seconds_spent > runs) cost.overhead_factor = seconds_spent / runs;
+  return cost;
+}
+
+MeasurementEstimate::MeasurementEstimate(EstimateShape shape, std::size_t fewest_rounds,
+                                         std::size_t tracer_count, ProgressSink& progress)
+    : shape_(std::move(shape)),
+      fewest_rounds_(fewest_rounds),
+      tracer_count_(tracer_count),
+      progress_(progress) {}
+
+StopRule MeasurementEstimate::watch(StopRule rule, const std::string& scene_id) {
+  if (scenes_watched_++ > 0) return rule;
+  first_scene_ = scene_id;
+  return [this, rule = std::move(rule)](const std::vector<Round>& rounds, double seconds_spent) {
+    if (rounds.size() == 1) first_round(rounds, seconds_spent);
+    const StopDecision decision = rule(rounds, seconds_spent);
+    if (decision != StopDecision::continue_measuring) {
+      first_scene_done(rounds, seconds_spent, decision);
+    }
+    return decision;
+  };
+}
+
+void MeasurementEstimate::first_round(const std::vector<Round>& rounds, double seconds_spent) {
+  cost_ = round_cost(rounds.front(), seconds_spent, shape_.warmup_runs);
+  const Estimate estimate = estimate_measurement(*cost_, shape_, fewest_rounds_, tracer_count_);
+  const std::string basis = fmt::format(
+      "from {}'s first round (baseline {:.2f} s, {} {:.2f} s a round, {:.0f}% around the runs) "
+      "at the fewest rounds a verdict needs ({}), so at least",
+      first_scene_, cost_->normalizer_seconds, tracer_count_ > 1 ? "tracers" : "tracer",
+      cost_->tracers_seconds, 100.0 * (cost_->overhead_factor - 1.0), fewest_rounds_);
+  for (const std::string& line : estimate_lines(estimate, shape_, basis)) progress_.line(line);
+}
+
+void MeasurementEstimate::first_scene_done(const std::vector<Round>& rounds, double seconds_spent,
+                                           StopDecision decision) {
+  if (!cost_ || shape_.scenes < 2) return;
+  if (decision != StopDecision::stop_converged) {
+    // Its rounds so far are a floor for scenes like it, above the first line's.
+    progress_.line(fmt::format(
+        "estimate: {} was not decided in {} ({}, its share of the budget); scenes like "
+        "it need more: over {} scenes x {} = {}",
+        first_scene_, count_text(rounds.size(), "round"), span_text(seconds_spent),
+        shape_.scenes,
+        span_text(seconds_spent),
+        span_text(seconds_spent * static_cast<double>(shape_.scenes))));
+    return;
+  }
+  // The rounds it took, at the cost of a round as measured over all of them.
+  RoundCost cost = *cost_;
+  const double per_round = seconds_spent / scene_seconds(cost, shape_, rounds.size());
+  cost.overhead_factor *= per_round;
+  const Estimate estimate = estimate_measurement(cost, shape_, rounds.size(), tracer_count_);
+  const std::string basis = fmt::format(
+      "from {} (decided in {} rounds, {}), for scenes like it", first_scene_, rounds.size(),
+      span_text(seconds_spent));
+  for (const std::string& line : estimate_lines(estimate, shape_, basis)) progress_.line(line);
+}
+
+}  // namespace raygate

@@ -115,7 +115,7 @@ TEST(NewTimingMode, ItsRunsRoundTripAndReportInItsUnit) {
   EXPECT_EQ(nlohmann::json(run), written);
   ResultsDocument document;
   document.settings.unit = "instructions";
-  EXPECT_EQ(cost_text(document, 3.0e9), "3e+09 instructions");
+  EXPECT_EQ(report::cost_text(document, 3.0e9), "3e+09 instructions");
 }
 
 }  // namespace

@@ -28,8 +28,8 @@ constexpr EnumWords<SceneFormat, 4> kSceneFormatWords{{
 constexpr EnumWords<TimingSource, 3> kTimingSourceWords{{
     {TimingSource::process, "process"}, {TimingSource::reported, "reported"},
     {TimingSource::simulated, "simulated"}}};
-constexpr EnumWords<TimeUnit, 2> kTimeUnitWords{{
-    {TimeUnit::seconds, "s"}, {TimeUnit::milliseconds, "ms"}}};
+constexpr EnumWords<TimeUnit, 3> kTimeUnitWords{{
+    {TimeUnit::seconds, "s"}, {TimeUnit::milliseconds, "ms"}, {TimeUnit::clock, "h:m:s"}}};
 constexpr EnumWords<ImageKind, 2> kImageKindWords{{
     {ImageKind::deterministic, "deterministic"}, {ImageKind::monte_carlo, "monte-carlo"}}};
 

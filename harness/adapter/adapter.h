@@ -21,7 +21,9 @@ enum class TimingSource {
   simulated,  // estimated cycles counted by Valgrind's cachegrind (docs/simulated-timing.md)
 };
 enum class TimingMetric { wall, cpu };  // for TimingSource::process
-enum class TimeUnit { seconds, milliseconds };  // for TimingSource::reported
+// For TimingSource::reported: the captured number's unit. clock: "[[h:]m:]s", as Blender prints
+// its render time ("Time: 00:01.23").
+enum class TimeUnit { seconds, milliseconds, clock };
 
 // What kind of images the tracer makes ("images" in the file): the same pixels every run, judged
 // by the per-pixel rule, or Monte Carlo renders whose noise changes with the seed, judged by

@@ -39,6 +39,30 @@ std::optional<double> to_number(std::string_view text) {
   return value;
 }
 
+// "[[h:]m:]s" (Blender's "00:01.23", "01:02:03.5") as seconds: at most three parts, each a
+// number, every part before the seconds a whole one.
+std::optional<double> clock_seconds(std::string_view text) {
+  double seconds = 0.0;
+  int parts = 0;
+  for (;;) {
+    const std::size_t colon = text.find(':');
+    const std::string_view part = text.substr(0, colon);
+    const std::optional<double> value = to_number(part);
+    if (!value || ++parts > 3) return std::nullopt;
+    seconds = seconds * 60.0 + *value;
+    if (colon == std::string_view::npos) return seconds;
+    if (*value != std::floor(*value)) return std::nullopt;  // "1.5:00"
+    text.remove_prefix(colon + 1);
+  }
+}
+
+std::optional<double> in_seconds(std::string_view text, TimeUnit unit) {
+  if (unit == TimeUnit::clock) return clock_seconds(text);
+  const std::optional<double> value = to_number(text);
+  if (!value) return std::nullopt;
+  return unit == TimeUnit::milliseconds ? *value / 1000.0 : *value;
+}
+
 }  // namespace
 
 std::optional<std::string> reported_regex_error(const std::string& pattern) {
@@ -68,9 +92,7 @@ std::optional<double> parse_reported_seconds(const Adapter& adapter, std::string
     std::match_results<std::string_view::const_iterator> match;
     if (std::regex_search(line.begin(), line.end(), match, re)) {
       if (!match[1].matched) return std::nullopt;
-      const auto value = to_number(std::string_view(match[1].first, match[1].second));
-      if (!value) return std::nullopt;
-      return adapter.timing.unit == TimeUnit::milliseconds ? *value / 1000.0 : *value;
+      return in_seconds(std::string_view(match[1].first, match[1].second), adapter.timing.unit);
     }
     if (newline == std::string_view::npos) break;
     end = newline;

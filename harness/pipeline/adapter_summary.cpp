@@ -30,11 +30,13 @@ std::string command_line(const std::vector<std::string>& argv) {
 std::string timing_line(const Timing& timing) {
   const TimingMode& mode = adapter_timing_mode(timing);
   if (!timing.regex.empty()) {
-    const char* unit = timing.unit == TimeUnit::seconds ? "seconds" : "milliseconds";
+    const char* unit = timing.unit == TimeUnit::seconds        ? "seconds"
+                       : timing.unit == TimeUnit::milliseconds ? "milliseconds"
+                                                               : "[[hours:]minutes:]seconds";
     return fmt::format("{}: last line matching /{}/, group in {}", mode.description(),
                        timing.regex, unit);
   }
-  if (!timing.metric_by_threads || mode.counted()) return std::string(mode.description());
+  if (!timing.metric_by_threads || mode.exact()) return std::string(mode.description());
   return fmt::format("{} (metric auto: {})", mode.description(),
                      timing.metric == TimingMetric::wall
                          ? "threads > 1, so wall time, which shows the parallel speed-up"

@@ -66,7 +66,7 @@ void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, dou
 // A round budget below what a verdict needs makes the compare a slow way to print
 // INCONCLUSIVE; say so before measuring, with the numbers (sim mode decides in two rounds).
 std::optional<std::string> round_budget_warning(const MeasureContext& context, double alpha) {
-  if (simulated(context)) return std::nullopt;
+  if (exact_timing(context)) return std::nullopt;
   const std::size_t max_rounds = context.stopping.max_rounds;
   const std::size_t to_regress = min_values_for_median_sequence(alpha);
   std::size_t to_pass = to_regress;
@@ -132,10 +132,10 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
   m.stop = [&](const SuiteScene& scene) {
     const ScenePolicy& policy = context.policy.for_scene(scene.id);
     return estimate.watch(change_stop_rule(budget.next_scene(), policy,
-                                           scene_levels(policy, alpha), simulated(context)),
+                                           scene_levels(policy, alpha), exact_timing(context)),
                           scene.id);
   };
-  if (context.repeat_where_it_pays && !simulated(context)) {
+  if (context.repeat_where_it_pays && !exact_timing(context)) {
     m.repeats = [&](const SuiteScene& entry) -> RepeatChooser {
       const ScenePolicy& policy = context.policy.for_scene(entry.id);
       return [&policy, alpha](const SceneRuns& so_far) -> std::size_t {
@@ -154,15 +154,17 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
         const StoppingPolicy again =
             budget.again(scene.runs.seconds_spent, scenes_left, seconds_needed);
         if (again.max_seconds <= scene.runs.seconds_spent) return std::nullopt;
-        return change_stop_rule(again, policy, scene_levels(policy, alpha), simulated(context));
+        return change_stop_rule(again, policy, scene_levels(policy, alpha), exact_timing(context));
       },
       [&](const SceneResult& scene) {
         return plan_visit(scene, context.policy, context.repeat_where_it_pays);
       },
-      [&](SceneResult& scene) { judge_change(scene, context.policy, alpha, simulated(context)); }};
+      [&](SceneResult& scene) {
+        judge_change(scene, context.policy, alpha, exact_timing(context));
+      }};
   m.finish_scene = [&](SceneResult& scene) {
     finish_compare_scene(scene, context.policy, alpha, work_dir / "evidence",
-                         simulated(context),
+                         exact_timing(context),
                          context.adapter.images == ImageKind::monte_carlo
                              ? std::optional<std::size_t>(family_size)
                              : std::nullopt);

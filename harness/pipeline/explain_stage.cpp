@@ -21,7 +21,7 @@ std::optional<Explanation> explain_one(const SceneResult& scene, const MeasureCo
                                        const Cachegrind& cachegrind, const SuiteMeasurement& m,
                                        const Contender& base, const Contender& head,
                                        Executor& executor) {
-  if (simulated(context)) return explain_simulated_runs(scene.runs, cachegrind);
+  if (under_cachegrind(context)) return explain_simulated_runs(scene.runs, cachegrind);
   const SceneInput input = prepare_scene_input(scene.entry, m);
   const std::filesystem::path dir =
       join_component(m.work_dir / "explain", scene.entry.id, "scene id");
@@ -35,7 +35,7 @@ std::vector<std::string> explain_regressed_scenes(ResultsDocument& document,
                                                   const MeasureContext& context,
                                                   const SuiteMeasurement& m, const Contender& base,
                                                   const Contender& head, Executor& executor) {
-  if (!simulated(context) && !context.explain) return {};
+  if (!under_cachegrind(context) && !context.explain) return {};
   std::vector<SceneResult*> targets;
   for (SceneResult& scene : document.scenes) {
     if (regressed(scene)) targets.push_back(&scene);
@@ -58,9 +58,10 @@ std::vector<std::string> explain_regressed_scenes(ResultsDocument& document,
   lines.push_back(fmt::format(
       "explained {} regressed {} with {} in {:.1f} s{}", explained,
       explained == 1 ? "scene" : "scenes",
-      simulated(context) ? profiler_name(cachegrind) : callgrind_profiler_name(cachegrind), seconds,
-      simulated(context) ? " (from the sim runs' own files)"
-                         : " (one profiled run each of base and head)"));
+      under_cachegrind(context) ? profiler_name(cachegrind) : callgrind_profiler_name(cachegrind),
+      seconds,
+      under_cachegrind(context) ? " (from the sim runs' own files)"
+                                : " (one profiled run each of base and head)"));
   return lines;
 }
 

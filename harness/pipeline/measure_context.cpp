@@ -13,7 +13,11 @@ const TimingMode& timing_mode(const MeasureContext& context) {
   return context.timing != nullptr ? *context.timing : adapter_timing_mode(context.adapter.timing);
 }
 
-bool simulated(const MeasureContext& context) { return timing_mode(context).counted(); }
+bool exact_timing(const MeasureContext& context) { return timing_mode(context).exact(); }
+
+bool under_cachegrind(const MeasureContext& context) {
+  return timing_mode(context).under_cachegrind();
+}
 
 std::vector<std::string> choose_timing(MeasureContext& c, const std::string& choice,
                                        bool policy_given) {
@@ -34,11 +38,11 @@ std::vector<std::string> choose_timing(MeasureContext& c, const std::string& cho
 
 namespace {
 
-// settings.metric: the clock's word (--timing's, else the adapter's metric), or the counted
-// mode's clock name, as documents have always said.
+// settings.metric: the clock's word (--timing's, else the adapter's metric), or an exact mode's
+// clock name, as documents have always said.
 std::string settings_metric(const MeasureContext& c) {
   const TimingMode& mode = timing_mode(c);
-  if (mode.counted()) return std::string(mode.tracer_clock());
+  if (mode.exact()) return std::string(mode.tracer_clock());
   if (!c.timing_choice.empty()) return c.timing_choice;
   return std::string(to_string(c.adapter.timing.metric));
 }
@@ -85,9 +89,9 @@ MeasurementSettings measure_settings(const MeasureContext& c) {
           .baseline_rounds = c.schedule.normalizer_rounds,
           .repeats = c.schedule.repeats,
           // As asked; measure_suite says "os" instead when the machine refuses the hold.
-          .cpu_idle = simulated(c) ? std::nullopt
-                                   : std::optional(c.idle_poll_device.empty() ? CpuIdle::os
-                                                                              : CpuIdle::poll),
+          .cpu_idle = exact_timing(c) ? std::nullopt
+                                      : std::optional(c.idle_poll_device.empty() ? CpuIdle::os
+                                                                                 : CpuIdle::poll),
           .cpu_idle_refused = std::nullopt,
           .target_relative_half_width = c.stopping.target_relative_half_width,
           .min_rounds = c.stopping.min_rounds,
@@ -96,10 +100,11 @@ MeasurementSettings measure_settings(const MeasureContext& c) {
           .max_minutes = c.stopping.max_minutes,
           .metric = settings_metric(c),
           .metric_by_threads =
-              !simulated(c) && c.timing_choice.empty() && c.adapter.timing.metric_by_threads,
+              !exact_timing(c) && c.timing_choice.empty() && c.adapter.timing.metric_by_threads,
           .timing_source = mode.source(),
           .tracer_clock = std::string(mode.tracer_clock()),
           .baseline_clock = std::string(mode.baseline_clock()),
+          .unit = std::string(mode.unit()),
           .threads = c.adapter.threads,
           .golden_dir = c.golden_dir.string(),
           .goldens = std::nullopt,  // whose they are: new_document reads the golden manifest

@@ -59,9 +59,12 @@ struct MeasureContext {
 // ratio are timed by it (DESIGN.md §11).
 const TimingMode& timing_mode(const MeasureContext& context);
 
-// Counted rather than timed: every run under cachegrind (--timing sim or an adapter timed
-// "simulated").
-bool simulated(const MeasureContext& context);
+// The mode's two questions (timing_mode.h): does every run repeat its reading exactly (a change
+// can be exact; no warm-ups, no held idle CPUs), and do runs execute under cachegrind (its
+// files explain a regression; the baseline's counts are cached)? --timing sim answers yes to
+// both; a hardware instruction counter would be exact without cachegrind.
+bool exact_timing(const MeasureContext& context);
+bool under_cachegrind(const MeasureContext& context);
 
 // Resolves --timing's `choice` ("" = the adapter's) against the adapter and lets the mode adjust
 // the measurement (timing_mode.h, prepare): schedule, stopping budget, the simulator, and the

@@ -113,7 +113,7 @@ EstimateShape estimate_shape(const MeasureContext& context, std::size_t scenes,
 }
 
 std::size_t fewest_compare_rounds(const MeasureContext& context, double decision_alpha) {
-  if (simulated(context)) return 2;
+  if (exact_timing(context)) return 2;
   std::size_t fewest = min_values_for_median_sequence(decision_alpha);
   for (const SuiteScene& scene : context.scenes) {
     fewest = std::min(fewest, min_values_for_median_sequence(

@@ -93,7 +93,7 @@ SuiteMeasurement suite_measurement(const MeasureContext& context, const std::str
   m.formats = {context.adapter.scene_format};
   m.images = context.adapter.images;
   m.budget_seconds = 60.0 * context.stopping.max_minutes;
-  if (!simulated(context)) m.idle_poll_device = context.idle_poll_device;
+  if (!exact_timing(context)) m.idle_poll_device = context.idle_poll_device;
   return m;
 }
 
@@ -366,7 +366,7 @@ BaselineContender baseline_contender(const MeasureContext& context,
   const std::chrono::milliseconds timeout(static_cast<long long>(1000.0 * timeout_seconds));
   BaselineContender baseline(context.tools.baseline, context.suite.sampling, timeout, "none",
                              &timing_mode(context));
-  if (simulated(context)) {
+  if (under_cachegrind(context)) {
     baseline.simulate({*context.cachegrind,
                        std::make_shared<BaselineCostCache>(context.cache_dir / "simulated-baseline"),
                        baseline_source_sha256});

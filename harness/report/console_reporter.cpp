@@ -10,6 +10,7 @@
 
 #include "core/sanitize.h"
 #include "report/memory_sections.h"
+#include "report/counters_line.h"
 #include "report/report_model.h"
 #include "report/reporters.h"
 
@@ -110,6 +111,10 @@ void add_header(const ReportInput& input, Spans& spans) {
   }
   if (const std::string clock = clock_line(d); !clock.empty()) {
     spans.push_back(dim("clock: " + clock));
+    spans.push_back(plain("\n"));
+  }
+  if (const std::string counters = counters_line(d); !counters.empty()) {
+    spans.push_back(dim("counters: " + counters));
     spans.push_back(plain("\n"));
   }
   spans.push_back(dim("policy: " + policy_line(input.policy, input.document.kind)));

@@ -3,6 +3,7 @@
 // an overview table with failures first, then one section per scene (html_scene.cpp).
 #include <fmt/format.h>
 
+#include "report/counters_line.h"
 #include "report/html_parts.h"
 #include "report/memory_sections.h"
 #include "report/reporters.h"
@@ -70,6 +71,9 @@ std::string meta_list(const ReportInput& input) {
   }
   if (const std::string clock = clock_line(d); !clock.empty()) {
     rows += meta_row("clock", escape(clock));
+  }
+  if (const std::string counters = counters_line(d); !counters.empty()) {
+    rows += meta_row("counters", escape(counters));
   }
   rows += meta_row("baseline", escape(fmt::format("{} · accel {} · {} timing", d.baseline.version,
                                                   d.baseline.accel, d.baseline.timing)));

@@ -8,6 +8,7 @@
 
 #include "core/sanitize.h"
 #include "report/memory_sections.h"
+#include "report/counters_line.h"
 #include "report/report_model.h"
 #include "report/reporters.h"
 #include "results/settings_json.h"
@@ -108,6 +109,9 @@ std::string details(const ReportInput& input) {
   text += fmt::format("- started {}, finished {}\n", md(d.started_at), md(d.finished_at));
   if (const std::string clock = clock_line(d); !clock.empty()) {
     text += fmt::format("- clock: {}\n", md(clock));
+  }
+  if (const std::string counters = counters_line(d); !counters.empty()) {
+    text += fmt::format("- counters: {}\n", md(counters));
   }
   text += fmt::format("- policy: {}\n", md(policy_line(input.policy, input.document.kind)));
   for (const auto& [id, scene] : input.policy.scenes) {

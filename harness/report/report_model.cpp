@@ -208,11 +208,10 @@ std::string change_text(const SceneView& view) {
   return cell ? cell->text : "";
 }
 
-bool simulated_timing(const ResultsDocument& document) { return document.settings.simulated(); }
-
 std::string cost_text(const ResultsDocument& document, double value) {
-  if (simulated_timing(document)) return fmt::format("{:.4g} cycles", value);
-  return fmt::format("{:.3f} s", value);
+  const std::string unit = document.settings.measure_unit();
+  if (unit == "seconds") return fmt::format("{:.3f} s", value);
+  return fmt::format("{:.4g} {}", value, unit);
 }
 
 std::vector<TableColumn> table_columns(const ResultsDocument& document) {
@@ -258,6 +257,7 @@ std::string clock_line(const ResultsDocument& document) {
   if (const std::string baseline = s.baseline_clock.value_or(""); !baseline.empty()) {
     line += ", baseline " + baseline;
   }
+  line += " (measures in " + s.measure_unit() + ")";
   if (s.round_cpus && !s.round_cpus->empty()) line += "; each round pinned to one CPU";
   if (s.cpu_idle == CpuIdle::poll) line += "; idle CPUs held polling";
   if (s.cpu_idle_refused) line += "; idle CPUs not held polling (" + *s.cpu_idle_refused + ")";

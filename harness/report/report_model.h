@@ -78,9 +78,8 @@ std::string change_text(const SceneView& view);
 // "process CPU seconds (auto: one thread), baseline process CPU": how the runs were timed, from
 // the document's settings; "" when it does not say.
 std::string clock_line(const ResultsDocument& document);
-// Whether the runs were counted in simulated cycles (--timing sim) rather than timed.
-bool simulated_timing(const ResultsDocument& document);
-// A run's median cost with its unit: "0.512 s", or "1.76e+09 cycles" when simulated.
+// A run's median cost in the document's unit (settings.unit): "0.512 s", or "1.76e+09 cycles"
+// when simulated.
 std::string cost_text(const ResultsDocument& document, double value);
 
 // The data columns of the scenes table, in order, between the scene's name and its outcome:

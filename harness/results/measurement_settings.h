@@ -70,6 +70,9 @@ struct MeasurementSettings {
   std::optional<TimingSource> timing_source;
   std::optional<std::string> tracer_clock;    // absent before the clocks were matched (issue 18)
   std::optional<std::string> baseline_clock;
+  // The unit of every run's measure and of the medians (the timing mode's): "seconds",
+  // "cycles". Absent before 2026-11-28; measure_unit() then infers it.
+  std::optional<std::string> unit;
   std::optional<int> threads;
   // Goldens: the folder, and whose they are ("none": the tracer has none yet).
   std::optional<std::string> golden_dir;
@@ -87,8 +90,11 @@ struct MeasurementSettings {
   // Keys this raygate does not know, as read: an object, or null when there are none.
   nlohmann::json unknown;
 
-  // The timing was counted (--timing sim), so a measure is cycles, not seconds.
+  // The timing was simulated (--timing sim), so a measure is cycles, not seconds.
   bool simulated() const;
+  // The unit of a run's measure: `unit`, or in older documents cycles when simulated, else
+  // seconds.
+  std::string measure_unit() const;
 
   bool operator==(const MeasurementSettings&) const = default;
 };

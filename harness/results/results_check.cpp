@@ -13,6 +13,8 @@
 #include "compare/image_check.h"
 #include "measure/change.h"
 #include "core/json_field.h"
+#include "runner/timing/timing_check.h"
+#include "runner/timing/timing_modes.h"
 
 namespace raygate {
 
@@ -365,7 +367,7 @@ void check_scores(const JsonField& scores, const Roles& roles) {
 
 }  // namespace
 
-void check_results_json(const nlohmann::json& document) {
+void check_results_json(const nlohmann::json& document, const TimingModeList& modes) {
   const JsonField d(document, "$");
   object(d);
   word_at(d, "kind", {"run", "compare"});
@@ -380,8 +382,6 @@ void check_results_json(const nlohmann::json& document) {
   check_strings(baseline, {"version", "source_sha256"});
   word_at(baseline, "accel", {"none", "bbox"});
   word_at(baseline, "sampling", {"center", "corners"});
-  word_at(baseline, "timing",
-          {"process-wall", "process-cpu", "in-process", "in-process-cpu", "simulated-cycles"});
   check_revisions(d.member("revisions"));
   const Roles roles{};
   std::set<std::string> ids;
@@ -393,6 +393,12 @@ void check_results_json(const nlohmann::json& document) {
     }
   }
   check_scores(d.member("scores"), roles);
+  // The clock names, the unit and the runs' counters: from the registry the modes come from.
+  check_document_timing(d, modes);
+}
+
+void check_results_json(const nlohmann::json& document) {
+  check_results_json(document, timing_modes());
 }
 
 }  // namespace raygate

@@ -8,11 +8,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "runner/timing/timing_check.h"
+
 namespace raygate {
 
 // Throws FieldError (core/json_field.h) naming the JSON path of the first problem.
 // Unknown members are allowed (a newer raygate of the same schema_version may add some); the
 // schema_version itself is checked by the caller, which words a newer one differently.
 void check_results_json(const nlohmann::json& document);
+// The same against `modes` instead of the registry's (a test's extra mode): the timing parts
+// are checked from the modes (runner/timing/timing_check.h), nothing else depends on them.
+void check_results_json(const nlohmann::json& document, const TimingModeList& modes);
 
 }  // namespace raygate

@@ -41,6 +41,7 @@ void each_field(Settings& s, Visit&& visit) {
   visit("timing_source", s.timing_source);
   visit("tracer_clock", s.tracer_clock);
   visit("baseline_clock", s.baseline_clock);
+  visit("unit", s.unit);
   visit("threads", s.threads);
   visit("golden_dir", s.golden_dir);
   visit("goldens", s.goldens);

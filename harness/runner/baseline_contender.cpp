@@ -1,6 +1,9 @@
 #include "runner/baseline_contender.h"
 
+#include <fmt/core.h>
+
 #include <cmath>
+#include <stdexcept>
 
 #include "core/error.h"
 #include "core/fs.h"
@@ -48,14 +51,19 @@ ProcessSpec BaselineContender::command(const SceneInput& scene,
   spec.stdout_path = run_dir / "log.txt";
   spec.stderr_path = spec.stdout_path;
   spec.timeout = timeout_;
-  if (!clock_->counted()) {
+  // Not for an exact mode: formatting --stats' measured seconds costs a different number of
+  // instructions each run (41 in 1.1e9 on tetra, measured), and would make the count
+  // unrepeatable.
+  if (!clock_->exact()) {
     spec.argv.insert(spec.argv.end(), {"--stats", (run_dir / kStatsName).string()});
-    return spec;
   }
-  // No --stats: formatting its measured seconds costs a different number of instructions each
-  // run (41 in 1.1e9 on tetra, measured), and would make the baseline's count unrepeatable.
-  if (!simulation_) throw std::logic_error("BaselineContender: counted clock without simulate()");
-  return clock_->wrap(std::move(spec), run_dir, simulation_->cachegrind);
+  if (clock_->under_cachegrind() && !simulation_) {
+    throw std::logic_error("BaselineContender: a mode under cachegrind without simulate()");
+  }
+  // The mode starts the process, as it does the tracer's (the process itself for a clock).
+  const std::optional<Cachegrind> simulator =
+      simulation_ ? std::optional(simulation_->cachegrind) : std::nullopt;
+  return clock_->wrap(std::move(spec), run_dir, simulator);
 }
 
 BaselineCostKey BaselineContender::cost_key(const SceneInput& scene) const {
@@ -64,9 +72,7 @@ BaselineCostKey BaselineContender::cost_key(const SceneInput& scene) const {
 }
 
 std::optional<RunRecord> BaselineContender::known_run(const SceneInput& scene) const {
-  if (!clock_->counted() || !simulation_ || !simulation_->cache) {
-    return std::nullopt;
-  }
+  if (!clock_->under_cachegrind() || !simulation_ || !simulation_->cache) return std::nullopt;
   const std::optional<SimulatedCounters> counters = simulation_->cache->find(cost_key(scene));
   if (!counters) return std::nullopt;
   RunRecord run;
@@ -83,24 +89,26 @@ RunRecord BaselineContender::interpret(const SceneInput& scene, const ProcessRes
   RunRecord run = record_process(result, spec);
   run.image = run_dir / kImageName;
   if (!run.ok) return run;
-  if (clock_->counted()) {
-    clock_->collect(run, run_dir);
-    if (run.ok && simulation_->cache) simulation_->cache->observe(cost_key(scene), *run.simulated);
-    return run;
+  if (!clock_->exact()) {  // its own account of its time, as a tracer's regex gives one
+    try {
+      run.reported_seconds = in_process_seconds(run_dir / kStatsName);
+    } catch (const std::exception& e) {
+      run.ok = false;
+      run.failure = "raygate-baseline wrote unusable statistics " +
+                    (run_dir / kStatsName).string() + ": " + e.what();
+      return run;
+    }
   }
-  try {
-    run.reported_seconds = in_process_seconds(run_dir / kStatsName);
-  } catch (const std::exception& e) {
-    run.ok = false;
-    run.failure = "raygate-baseline wrote unusable statistics " +
-                  (run_dir / kStatsName).string() + ": " + e.what();
-    return run;
+  clock_->collect(run, run_dir);  // what the mode reads or derives, as for the tracer
+  if (!run.ok) return run;
+  if (run.simulated && simulation_ && simulation_->cache) {
+    simulation_->cache->observe(cost_key(scene), *run.simulated);
   }
   run.seconds = clock_->seconds(run).value_or(0.0);
   if (!(run.seconds > 0.0)) {  // the denominator of every ratio
     run.ok = false;
-    run.failure = "raygate-baseline took no measurable " + std::string(clock_->baseline_clock()) +
-                  " time";
+    run.failure = fmt::format("raygate-baseline took no measurable {} time (in {})",
+                              clock_->baseline_clock(), clock_->unit());
   }
   return run;
 }

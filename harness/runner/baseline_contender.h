@@ -42,7 +42,7 @@ class BaselineContender final : public Contender {
   // Its clock: the tracer's timing mode (DESIGN.md §11); process wall when none was given.
   const TimingMode& clock() const { return *clock_; }
 
-  // Required before measuring with a counted mode (--timing sim).
+  // Required before measuring with a mode under cachegrind (--timing sim).
   void simulate(BaselineSimulation simulation) { simulation_ = std::move(simulation); }
 
   // The cached simulated cost on this scene, as a run that did not have to happen.

@@ -16,6 +16,10 @@ void to_json(nlohmann::json& json, const RunRecord& run) {
   if (run.reported_seconds) json["reported_seconds"] = *run.reported_seconds;
   if (!run.failure.empty()) json["failure"] = run.failure;
   if (run.simulated) json["cachegrind"] = *run.simulated;
+  // Written only when there are some, so documents without counters hash as before.
+  for (const auto& [name, counter] : run.counters) {
+    json["counters"][name] = {{"value", counter.value}, {"unit", counter.unit}};
+  }
   // Written only when true, so a document from before raygate-meter reads back and hashes the
   // same (the store's duplicate check compares canonical JSON).
   if (run.max_rss_own) json["max_rss_own"] = true;
@@ -36,6 +40,12 @@ void from_json(const nlohmann::json& json, RunRecord& run) {
       reported.is_null() ? std::nullopt : std::optional<double>(reported.get<double>());
   if (const auto found = json.find("cachegrind"); found != json.end()) {
     run.simulated = found->get<SimulatedCounters>();
+  }
+  if (const auto found = json.find("counters"); found != json.end()) {
+    for (const auto& [name, counter] : found->items()) {
+      run.counters[name] = {counter.at("value").get<double>(),
+                            counter.at("unit").get<std::string>()};
+    }
   }
   run.image = json.at("image").get<std::string>();
   run.log = json.at("log").get<std::string>();

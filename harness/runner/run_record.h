@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <string>
 
@@ -12,6 +13,14 @@
 #include "measure/simulated_cost.h"
 
 namespace raygate {
+
+// One reading a timing mode recorded besides the process's own times (runner/timing/
+// timing_mode.h CounterSpec): its value and unit, as the mode registered them.
+struct Counter {
+  double value = 0.0;
+  std::string unit;  // "seconds", "cycles", "instructions"
+  bool operator==(const Counter&) const = default;
+};
 
 struct RunRecord {
   bool ok = false;
@@ -30,6 +39,9 @@ struct RunRecord {
   std::optional<double> reported_seconds;
   // --timing sim: cachegrind's counters of the run (seconds then holds their estimated cycles).
   std::optional<SimulatedCounters> simulated;
+  // Readings the timing mode added (TimingMode::collect), by the counter's name: the reported
+  // mode's startup_seconds, say. Checked against the registry's counters when read.
+  std::map<std::string, Counter> counters;
   std::filesystem::path image;
   std::filesystem::path log;  // stdout and stderr together
 

@@ -44,7 +44,9 @@ class Simulated final : public TimingMode {
   std::string_view tracer_clock() const override { return "simulated-cycles"; }
   std::string_view baseline_clock() const override { return "simulated-cycles"; }
   TimingSource source() const override { return TimingSource::simulated; }
-  bool counted() const override { return true; }
+  bool exact() const override { return true; }
+  bool under_cachegrind() const override { return true; }
+  std::string_view unit() const override { return "cycles"; }
 
   std::optional<double> seconds(const RunRecord& run) const override {
     if (!run.simulated) return std::nullopt;
@@ -54,7 +56,7 @@ class Simulated final : public TimingMode {
   ProcessSpec wrap(ProcessSpec spec, const std::filesystem::path& run_dir,
                    const std::optional<Cachegrind>& simulator) const override {
     if (!simulator) throw std::logic_error("simulated timing without cachegrind");
-    return under_cachegrind(std::move(spec), *simulator, cachegrind_dir(run_dir));
+    return raygate::under_cachegrind(std::move(spec), *simulator, cachegrind_dir(run_dir));
   }
 
   void collect(RunRecord& run, const std::filesystem::path& run_dir) const override {

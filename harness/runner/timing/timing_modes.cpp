@@ -27,6 +27,10 @@ class ClockMode final : public TimingMode {
   // A time the tracer prints needs the adapter's regex: not a command-line choice.
   bool command_line_choice() const override { return spec_.source == TimingSource::process; }
   std::optional<double> seconds(const RunRecord& run) const override { return spec_.seconds(run); }
+  std::vector<CounterSpec> counters() const override { return spec_.counters; }
+  void collect(RunRecord& run, const std::filesystem::path& /*run_dir*/) const override {
+    if (spec_.derive != nullptr) spec_.derive(run);
+  }
 
  private:
   ClockSpec spec_;

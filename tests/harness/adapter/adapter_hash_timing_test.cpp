@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "adapter/adapter.h"
+#include "core/fs.h"
 
 namespace raygate {
 namespace {
@@ -71,6 +72,40 @@ TEST(ReportedTime, PovRayExampleFromTheReadme) {
       "  Trace Time:       0 hours  0 minutes  2 seconds (2.153 seconds)\n"
       "              using 4 thread(s) with 8.339 CPU-seconds total\n";
   EXPECT_EQ(parse_reported_seconds(a, povray_tail), 2.153);
+}
+
+// "h:m:s": a clock time, as Blender prints its render time.
+TEST(ReportedTime, ClockTime) {
+  const Adapter a = reported("^Took ([0-9:.]+)$", "h:m:s");
+  EXPECT_DOUBLE_EQ(*parse_reported_seconds(a, "Took 00:01.23\n"), 1.23);
+  EXPECT_DOUBLE_EQ(*parse_reported_seconds(a, "Took 2.5\n"), 2.5);
+  EXPECT_DOUBLE_EQ(*parse_reported_seconds(a, "Took 01:02:03.5\n"), 3723.5);
+  for (const char* bad : {"Took 1:2:3:4\n", "Took 1.5:00\n", "Took 00:\n", "Took :01\n",
+                          "Took 00::01\n", "Took ..\n"}) {
+    EXPECT_EQ(parse_reported_seconds(a, bad), std::nullopt) << bad;
+  }
+}
+
+// The shipped Cycles adapter reads Blender's own render time from the line Blender 3.4 prints
+// after the frame (the tail of a real log, 48x48, 16 spp), not the progress lines' "Time:".
+TEST(ReportedTime, ShippedBlenderAdapterReadsTheFramesTime) {
+  const std::filesystem::path file =
+      std::filesystem::path(RAYGATE_SOURCE_DIR) / "adapters" / "blender-cycles.json";
+  const Adapter blender = parse_adapter(read_file(file), file.string());
+  ASSERT_EQ(blender.timing.source, TimingSource::reported);
+  const std::string tail =
+      "Fra:1 Mem:10.94M (Peak 11.16M) | Time:00:00.40 | Remaining:00:00.18 | Mem:0.85M, "
+      "Peak:0.85M | Scene, ViewLayer | Sample 1/16\n"
+      "Fra:1 Mem:10.98M (Peak 11.16M) | Time:00:00.51 | Mem:0.85M, Peak:0.85M | Scene, "
+      "ViewLayer | Finished\n"
+      "Saved: '/tmp/run/work/image.exr'\n"
+      " Time: 00:00.52 (Saving: 00:00.00)\n"
+      "\n\nBlender quit\n";
+  EXPECT_DOUBLE_EQ(*parse_reported_seconds(blender, tail), 0.52);
+  EXPECT_DOUBLE_EQ(*parse_reported_seconds(blender, " Time: 01:05.25 (Saving: 00:00.01)\n"),
+                   65.25);
+  // A log cut before the frame finished has no render time: the run fails, not a wrong one.
+  EXPECT_EQ(parse_reported_seconds(blender, tail.substr(0, tail.find("Saved"))), std::nullopt);
 }
 
 TEST(ReportedTime, ProcessTimingHasNoReport) {

@@ -123,11 +123,13 @@ TEST(ConsoleReport, TheClockLineSaysWhetherIdleCpusWereHeldPolling) {
   f.document.settings.round_cpus = std::vector<int>{0, 1};
   f.document.settings.cpu_idle = CpuIdle::poll;
   at(f.render("console"),
-     "clock: process-cpu; each round pinned to one CPU; idle CPUs held polling\n");
+     "clock: process-cpu (measures in seconds); each round pinned to one CPU; idle CPUs held "
+     "polling\n");
   f.document.settings.cpu_idle = CpuIdle::os;
   f.document.settings.cpu_idle_refused = "cannot open /dev/cpu_dma_latency: Permission denied";
-  at(f.render("console"), "clock: process-cpu; each round pinned to one CPU; idle CPUs not held "
-                          "polling (cannot open /dev/cpu_dma_latency: Permission denied)\n");
+  at(f.render("console"), "clock: process-cpu (measures in seconds); each round pinned to one "
+                          "CPU; idle CPUs not held polling (cannot open /dev/cpu_dma_latency: "
+                          "Permission denied)\n");
   // --no-idle-poll, or a document from before: nothing said.
   f.document.settings.cpu_idle_refused.reset();
   EXPECT_EQ(f.render("console").find("idle CPUs"), std::string::npos);
@@ -138,12 +140,42 @@ TEST(Reports, EveryFormatNamesTheClock) {
   f.document.settings.tracer_clock = "process-cpu";
   f.document.settings.baseline_clock = "process-cpu";
   f.document.settings.cpu_idle = CpuIdle::poll;
-  const std::string clock = "process-cpu, baseline process-cpu; idle CPUs held polling";
+  const std::string clock =
+      "process-cpu, baseline process-cpu (measures in seconds); idle CPUs held polling";
   at(f.render("console"), "clock: " + clock + "\n");
   at(f.render("markdown"), "- clock: " + clock + "\n");
   at(f.render("html"), "<dt>clock</dt>");
   at(f.render("html"), clock);
   at(f.render("junit"), "name=\"clock\" value=\"" + clock + "\"");
+}
+
+// The unit is the document's (settings.unit), and a counter a mode recorded is printed beside
+// the clock with its unit, whatever its name: a new mode's counter needs no report code.
+TEST(Reports, EveryFormatPrintsTheUnitAndTheCounters) {
+  Fixture f(true);
+  f.document.settings.tracer_clock = "instructions";
+  f.document.settings.unit = "instructions";
+  Round round;
+  for (const char* role : {"baseline", "head"}) {
+    RunRecord run;
+    run.ok = true;
+    run.wall_seconds = 2.0;
+    run.counters["startup_seconds"] = {0.5, "seconds"};
+    run.counters["instructions"] = {2.5e9, "instructions"};
+    round.order.emplace_back(role);
+    round.runs[role] = run;
+  }
+  f.document.scenes.front().runs.rounds.push_back(round);
+  const std::string console = f.render("console");
+  at(console, "clock: instructions (measures in instructions)");
+  at(console, "counters: instructions (median per run): baseline 2.5e+09 instructions");
+  at(console, "startup_seconds (median per run): baseline 0.500 s");
+  at(console, "(25% of its process wall time)");
+  at(f.render("markdown"), "- counters: instructions (median per run)");
+  at(f.render("html"), "<dt>counters</dt>");
+  // Without counters, no line.
+  const Fixture plain(true);
+  EXPECT_EQ(plain.render("console").find("counters:"), std::string::npos);
 }
 
 TEST(MarkdownReport, HeadlineTableAndDetails) {

@@ -148,6 +148,33 @@ const std::vector<BadDocument>& bad_documents() {
        "missing required key 'revisions'"},
       {"unknown baseline timing", false, [](json& j) { j["baseline"]["timing"] = "sundial"; },
        "$.baseline.timing", "unknown value \"sundial\""},
+      // The timing words and counters come from the timing modes' registry
+      // (runner/timing/timing_check.h): every one a mode writes is read, no other.
+      {"unknown tracer clock", false, [](json& j) { j["settings"]["tracer_clock"] = "sundial"; },
+       "$.settings.tracer_clock", "unknown value \"sundial\" (one of: process-wall"},
+      {"unknown unit", true, [](json& j) { j["settings"]["unit"] = "furlongs"; },
+       "$.settings.unit", "unknown value \"furlongs\" (one of: seconds"},
+      {"unknown counter", false,
+       [](json& j) {
+         json run = j["scenes"][1]["rounds"][0]["runs"]["baseline"];
+         run["counters"]["joules"] = {{"value", 1.0}, {"unit", "joules"}};
+         j["scenes"][1]["warmup"]["baseline"] = json::array({run});
+       },
+       "$.scenes[1].warmup.baseline[0].counters.joules",
+       "unknown counter \"joules\" (known: startup_seconds)"},
+      {"a counter in another unit", true,
+       [](json& j) {
+         j["scenes"][0]["rounds"][0]["runs"]["head"]["counters"]["startup_seconds"] = {
+             {"value", 1.0}, {"unit", "ms"}};
+       },
+       "$.scenes[0].rounds[0].runs.head.counters.startup_seconds.unit",
+       "\"ms\" is not the unit of startup_seconds (\"seconds\")"},
+      {"a counter below zero", false,
+       [](json& j) {
+         j["scenes"][0]["rounds"][0]["runs"]["tracer"]["counters"]["startup_seconds"] = {
+             {"value", -0.5}, {"unit", "seconds"}};
+       },
+       "$.scenes[0].rounds[0].runs.tracer.counters.startup_seconds.value", "out of range"},
       {"unknown build record version", false,
        [](json& j) { j["revisions"][0]["build"]["record_version"] = 9; },
        "$.revisions[0].build.record_version", "out of range"},
@@ -188,6 +215,17 @@ TEST(ResultsCheck, ValidRunAndCompareDocumentsAreRead) {
   sim["scenes"][0]["rounds"][0]["runs"]["tracer"]["seconds"] = 4.2e10;
   sim["scenes"][0]["ratios"]["tracer"]["tracer_median_seconds"] = 4.2e10;
   EXPECT_EQ(results_from_json(sim, "sim.json").scenes.size(), 2u);
+  // Every registered mode's clock names are read (issue 40: `--timing user` documents were
+  // refused), and documents from before the clocks were matched ("in-process-cpu").
+  for (const char* clock : {"process-user", "process-cpu", "reported", "simulated-cycles"}) {
+    json timed = run_document();
+    timed["settings"]["tracer_clock"] = clock;
+    timed["baseline"]["timing"] = clock == std::string("reported") ? "in-process" : clock;
+    EXPECT_NO_THROW(results_from_json(timed, "timed.json")) << clock;
+  }
+  json older = run_document();
+  older["baseline"]["timing"] = "in-process-cpu";
+  EXPECT_NO_THROW(results_from_json(older, "older.json"));
   const ResultsDocument compare = results_from_json(compare_document(), "compare.json");
   ASSERT_TRUE(compare.scenes[0].change.has_value());
   EXPECT_EQ(compare.scenes[0].change_verdict, ChangeVerdict::unchanged);

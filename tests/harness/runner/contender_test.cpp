@@ -4,12 +4,14 @@
 // or garbled one is a failed run.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <csignal>
 
 #include "core/fs.h"
 #include "runner/baseline_contender.h"
 #include "runner/timing/timing_modes.h"
 #include "runner/tracer_contender.h"
+#include "timing/instruction_mode.h"
 
 namespace raygate {
 namespace {
@@ -309,6 +311,27 @@ TEST_F(BaselineContenderTest, InProcessClockTimesByParsePreparePlusRenderSeconds
   const RunRecord r = interpret(exited_with(0, 2.0, 1.9, 0.05), &stats);
   ASSERT_TRUE(r.ok) << r.failure;
   EXPECT_DOUBLE_EQ(r.seconds, 1.875);
+  // The process's seconds are kept too: its start-up, what the in-process time leaves out.
+  ASSERT_EQ(r.counters.count("startup_seconds"), 1u);
+  EXPECT_DOUBLE_EQ(r.counters.at("startup_seconds").value, 0.125);
+}
+
+// A mode raygate does not ship (a perf-stat instruction counter: it wraps the process and reads
+// what perf left, exact): the baseline asks it as the tracer does, knowing nothing of it.
+TEST_F(BaselineContenderTest, AnyModeWrapsAndCollectsTheBaselineAsItDoesTheTracer) {
+  const test::InstructionMode mode;
+  baseline_ = BaselineContender{"/opt/raygate-baseline", "center", std::chrono::seconds(9), "none",
+                                &mode};
+  const ProcessSpec spec = baseline_.command(scene_, run_dir_);
+  EXPECT_EQ(spec.argv.front(), "perf");
+  EXPECT_EQ(spec.argv[8], "/opt/raygate-baseline");
+  // Exact: no --stats, whose formatting would make the count unrepeatable.
+  EXPECT_EQ(std::find(spec.argv.begin(), spec.argv.end(), "--stats"), spec.argv.end());
+  write_file_atomically(run_dir_ / "perf.txt", "12345,,instructions:u,1000,100.00,,\n");
+  const RunRecord r = interpret(exited_with(0, 2.0, 1.9, 0.05), nullptr);
+  ASSERT_TRUE(r.ok) << r.failure;
+  EXPECT_DOUBLE_EQ(r.seconds, 12345.0);
+  EXPECT_FALSE(r.reported_seconds);
 }
 
 // The denominator of every ratio: a zero CPU time (a clock too coarse) is a failed run.

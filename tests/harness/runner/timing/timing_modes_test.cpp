@@ -75,8 +75,42 @@ TEST(TimingModes, ReportedAndSimulatedNeedTheirOwnNumbers) {
   run.simulated = SimulatedCounters{};
   run.simulated->ir = 1000;
   EXPECT_DOUBLE_EQ(*timing_mode("sim").seconds(run), estimated_cycles(*run.simulated));
-  EXPECT_TRUE(timing_mode("sim").counted());
-  EXPECT_FALSE(timing_mode("user").counted());
+}
+
+// "Exact" and "under cachegrind" are two questions: sim answers yes to both, every clock no;
+// the unit is the mode's own.
+TEST(TimingModes, ExactAndUnderCachegrindAreAskedApart) {
+  for (const TimingMode* mode : timing_modes()) {
+    const bool sim = mode->name() == "sim";
+    EXPECT_EQ(mode->exact(), sim) << mode->name();
+    EXPECT_EQ(mode->under_cachegrind(), sim) << mode->name();
+    EXPECT_EQ(mode->unit(), sim ? "cycles" : "seconds") << mode->name();
+  }
+}
+
+// A run timed by the tracer's reported seconds still records the process's: its start-up is
+// the process wall time the reported time leaves out, a counter in seconds.
+TEST(TimingModes, ReportedRecordsTheStartUpItLeavesOut) {
+  const TimingMode& reported = timing_mode("reported");
+  ASSERT_EQ(reported.counters().size(), 1u);
+  EXPECT_EQ(reported.counters()[0].name, "startup_seconds");
+  EXPECT_EQ(reported.counters()[0].unit, "seconds");
+  RunRecord run = run_with(1.5, 1.25, 0.1);
+  run.reported_seconds = 0.375;
+  reported.collect(run, "unused");
+  ASSERT_EQ(run.counters.count("startup_seconds"), 1u);
+  EXPECT_DOUBLE_EQ(run.counters.at("startup_seconds").value, 1.125);
+  EXPECT_EQ(run.counters.at("startup_seconds").unit, "seconds");
+  // A render reported a little longer than its process (two clocks read apart): no start-up,
+  // never a negative one.
+  run.reported_seconds = 1.6;
+  reported.collect(run, "unused");
+  EXPECT_DOUBLE_EQ(run.counters.at("startup_seconds").value, 0.0);
+  // Without a reported time nothing is derived; a process clock records nothing.
+  RunRecord plain = run_with(1.5, 1.25, 0.1);
+  reported.collect(plain, "unused");
+  timing_mode("wall").collect(plain, "unused");
+  EXPECT_TRUE(plain.counters.empty());
 }
 
 TEST(TimingModes, AdapterTimingMapsToItsMode) {
@@ -99,7 +133,7 @@ TEST(TimingModes, ChoiceResolvesAgainstTheAdapter) {
   EXPECT_EQ(resolve_timing_mode(reported, "sim").name(), "sim");
 }
 
-// Only a counted mode changes the measurement; a clock leaves the plan as it was.
+// Only sim changes the measurement; a clock leaves the plan as it was.
 TEST(TimingModes, ProcessClocksPrepareNothing) {
   Suite suite;
   ScheduleOptions schedule;

@@ -14,6 +14,7 @@
 #include "pipeline/compare_family.h"
 #include "pipeline/run_images.h"
 #include "pipeline/explain_stage.h"
+#include "pipeline/image_stop.h"
 #include "pipeline/stop_rules.h"
 #include "pipeline/visit_plan.h"
 #include "runner/baseline_contender.h"
@@ -25,10 +26,11 @@ namespace {
 
 // A Monte Carlo tracer's images: every run of head against every run of base, within noise.
 ImageCheck check_noisy_change(const SceneResult& scene, std::size_t family_size,
-                              const std::filesystem::path& evidence_dir) {
+                              double tolerance, const std::filesystem::path& evidence_dir) {
   return check_noisy_images(Role::head, ImageReference::base, run_images(scene.runs, Role::head),
-                            run_images(scene.runs, Role::base), noisy_thresholds_for(family_size),
-                            evidence_dir, scene.entry.id + ".head-vs-base");
+                            run_images(scene.runs, Role::base),
+                            noisy_thresholds_for(family_size, tolerance), evidence_dir,
+                            scene.entry.id + ".head-vs-base");
 }
 
 // The change head vs base at the scene's share `alpha` of the family, and head's image against
@@ -54,7 +56,8 @@ void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, dou
   const RunRecord* base = scene.runs.first_run(Role::base);
   const RunRecord* head = scene.runs.first_run(Role::head);
   if (base != nullptr && head != nullptr && noisy_family) {
-    scene.images.push_back(check_noisy_change(scene, *noisy_family, evidence_dir));
+    scene.images.push_back(
+        check_noisy_change(scene, *noisy_family, policy.image_tolerance, evidence_dir));
   } else if (base != nullptr && head != nullptr) {
     scene.images.push_back(check_image(Role::head, ImageReference::base, head->image,
                                        base->image, policy.image, evidence_dir,
@@ -126,10 +129,13 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
   const TracerContender head_runs(head.setup);
   SuiteBudget budget(context.stopping, m.scenes.size(), io.clock,
                      revisit_reserve_scenes(m.scenes.size()));
+  // A Monte Carlo image still inconclusive keeps its scene measuring (pipeline/image_stop.h).
+  const std::optional<NoisyImageFamily> noisy_images =
+      m.images == ImageKind::monte_carlo ? std::optional(NoisyImageFamily{family_size}) : std::nullopt;
   m.stop = [&](const SuiteScene& scene) {
     const ScenePolicy& policy = context.policy.for_scene(scene.id);
-    return change_stop_rule(budget.next_scene(), policy, scene_levels(policy, alpha),
-                            simulated(context));
+    return compare_stop_rule(budget.next_scene(), policy, scene_levels(policy, alpha),
+                             simulated(context), noisy_images);
   };
   if (context.repeat_where_it_pays && !simulated(context)) {
     m.repeats = [&](const SuiteScene& entry) -> RepeatChooser {
@@ -150,7 +156,8 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
         const StoppingPolicy again =
             budget.again(scene.runs.seconds_spent, scenes_left, seconds_needed);
         if (again.max_seconds <= scene.runs.seconds_spent) return std::nullopt;
-        return change_stop_rule(again, policy, scene_levels(policy, alpha), simulated(context));
+        return compare_stop_rule(again, policy, scene_levels(policy, alpha), simulated(context),
+                                 noisy_images);
       },
       [&](const SceneResult& scene) {
         return plan_visit(scene, context.policy, context.repeat_where_it_pays);
@@ -159,9 +166,7 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
   m.finish_scene = [&](SceneResult& scene) {
     finish_compare_scene(scene, context.policy, alpha, work_dir / "evidence",
                          simulated(context),
-                         context.adapter.images == ImageKind::monte_carlo
-                             ? std::optional<std::size_t>(family_size)
-                             : std::nullopt);
+                         noisy_images ? std::optional(noisy_images->images) : std::nullopt);
   };
   m.finish_suite = [&](ResultsDocument& document) {
     std::vector<std::string> lines;

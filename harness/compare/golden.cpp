@@ -1,5 +1,6 @@
 #include "compare/golden.h"
 
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include "core/json_reader.h"
 #include "core/path_component.h"
 #include "core/replace_directory.h"
+#include "core/sha256.h"
 
 namespace raygate {
 namespace {
@@ -39,7 +41,49 @@ json write_noise(const GoldenNoise& noise) {
           {"variance_sha256", noise.variance_sha256}, {"inflation", inflation}};
 }
 
+// An inflation factor beyond this is no sampler's: a tile's mean varying 1e8 times more than its
+// pixels say is more than the pixels of any image a tracer writes could make it.
+constexpr double kMaxInflation = 1e8;
+constexpr int kMaxGoldenRuns = 1'000'000;
+
+std::string short_hash(const std::string& hash) {
+  return hash.empty() ? std::string("(none)") : hash.substr(0, 16) + (hash.size() > 16 ? "…" : "");
+}
+
 }  // namespace
+
+std::optional<std::string> golden_file_problem(const std::filesystem::path& golden_dir,
+                                               const std::string& file,
+                                               const std::string& sha256) {
+  const std::filesystem::path path = golden_dir / file;
+  std::string actual;
+  try {
+    actual = sha256_file_hex(path);
+  } catch (const Error& e) {
+    return std::string("golden file cannot be read: ") + e.what();
+  }
+  if (actual == sha256) return std::nullopt;
+  return path.string() + ": its SHA-256 " + short_hash(actual) + " is not the manifest's " +
+         short_hash(sha256) + " (" + (golden_dir / "manifest.json").string() +
+         "): the golden was changed after it was blessed, so it cannot judge anything; restore "
+         "it, or bless it again after looking at it";
+}
+
+std::optional<std::string> golden_noise_problem(const GoldenNoise& noise,
+                                                const std::string& where) {
+  if (noise.runs < 2 || noise.runs > kMaxGoldenRuns) {
+    return fmt::format("{}: noise.runs {} is not a number of runs (2 to {})", where, noise.runs,
+                       kMaxGoldenRuns);
+  }
+  for (const ScaleInflation& s : noise.inflation) {
+    if (!(s.factor >= 1.0 && s.factor <= kMaxInflation)) {
+      return fmt::format("{}: noise.inflation factor {} for tile_px {} must lie in [1, {:g}]: "
+                         "with it no comparison could ever fail",
+                         where, s.factor, s.tile_px, kMaxInflation);
+    }
+  }
+  return std::nullopt;
+}
 
 const GoldenEntry* GoldenManifest::find(const std::string& id) const {
   for (const GoldenEntry& e : entries) {

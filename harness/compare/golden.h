@@ -82,6 +82,21 @@ std::filesystem::path adapter_golden_dir(const std::filesystem::path& golden_roo
 // was blessed from, kBaselineGoldens for the baseline's, "none" for an empty or absent manifest.
 std::string golden_owner(const GoldenManifest& manifest);
 
+// Why the golden file `file` of `golden_dir` cannot be trusted: its bytes' SHA-256 is not
+// `sha256`, the manifest's (edited, truncated or swapped since it was blessed), or it cannot be
+// read. nullopt when it matches. Every golden file (image, Monte Carlo mean and variance) is
+// checked so before it judges anything; a check it fails could not be made (verdict error,
+// exit 3), since the trust anchor, not the tracer, is broken.
+std::optional<std::string> golden_file_problem(const std::filesystem::path& golden_dir,
+                                               const std::string& file,
+                                               const std::string& sha256);
+
+// Why a Monte Carlo golden's manifest values could never let a comparison fail (an inflation
+// factor below 1, not finite or absurdly large; implausibly many runs), naming the manifest
+// entry and the value; nullopt when they make sense.
+std::optional<std::string> golden_noise_problem(const GoldenNoise& noise,
+                                                const std::string& where);
+
 // A missing manifest yields an empty one; a malformed one is a UsageError naming the file.
 GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir);
 // Written atomically, entries sorted by id so diffs stay small.

@@ -29,7 +29,7 @@ bool same_settings(const GoldenEntry& golden, const GoldenEntry& rendered) {
 ImageCheck without_golden(Role role, const std::filesystem::path& actual,
                           const std::filesystem::path& expected, const std::string& why) {
   ImageCheck check{role, ImageReference::golden, actual, expected,
-                   ImageVerdict::missing, why, std::nullopt, {}};
+                   ImageVerdict::missing, why, std::nullopt, {}, std::nullopt};
   if (const std::string problem = unreadable_image(actual); !problem.empty()) {
     check.verdict = ImageVerdict::fail;
     check.error = problem;
@@ -69,6 +69,18 @@ std::optional<ImageReference> parse_image_reference(std::string_view word) {
   return std::nullopt;
 }
 
+std::string check_detail(const ImageCheck& check) {
+  if (check.metrics) {
+    const std::string what = summarize(*check.metrics);
+    return check.error.empty() || check.error == what ? what : what + "; " + check.error;
+  }
+  if (check.noisy) {
+    const std::string what = summarize(*check.noisy);
+    return check.error.empty() ? what : what + "; " + check.error;
+  }
+  return check.error;
+}
+
 std::string check_label(const ImageCheck& check, std::string_view between) {
   std::string label = role_name(check.role);
   if (check.reference == ImageReference::golden) return label;
@@ -79,7 +91,8 @@ ImageCheck check_image(Role role, ImageReference reference,
                        const std::filesystem::path& actual, const std::filesystem::path& expected,
                        const ImageThresholds& thresholds, const std::filesystem::path& evidence_dir,
                        const std::string& stem) {
-  ImageCheck check{role, reference, actual, expected, ImageVerdict::error, {}, std::nullopt, {}};
+  ImageCheck check{role,          reference,    actual, expected, ImageVerdict::error,
+                   {},            std::nullopt, {},     std::nullopt};
   if (std::string problem = unreadable_image(actual); !problem.empty()) {
     check.verdict = ImageVerdict::fail;
     check.error = std::move(problem);
@@ -135,7 +148,15 @@ struct GoldenLookup {
   std::filesystem::path expected;      // the manifest's file, or where one would be
   std::optional<std::string> missing;  // why no golden judges the image; nullopt when one does
   std::string stem;                    // of the evidence files: <scene>.<role>-vs-golden
+  const GoldenEntry* entry = nullptr;  // set when it is not missing
 };
+
+// A golden that does not match its manifest judges nothing: the check could not be made.
+ImageCheck untrusted_golden(Role role, const std::filesystem::path& actual,
+                            const std::filesystem::path& expected, std::string why) {
+  return {role, ImageReference::golden, actual, expected, ImageVerdict::error, std::move(why),
+          std::nullopt, {}, std::nullopt};
+}
 
 // `extension` names the file a scene without an entry would have, so that a report of a missing
 // golden still shows a path.
@@ -145,7 +166,8 @@ GoldenLookup look_up_golden(Role role, const std::filesystem::path& golden_dir,
   const std::string& id = rendered.id;
   const GoldenEntry* entry = manifest.find(id);
   return {golden_dir / (entry != nullptr ? entry->file : id + std::string(extension)),
-          no_golden(golden_dir, manifest, rendered), id + "." + role_name(role) + "-vs-golden"};
+          no_golden(golden_dir, manifest, rendered), id + "." + role_name(role) + "-vs-golden",
+          entry};
 }
 
 }  // namespace
@@ -167,6 +189,17 @@ ImageCheck check_runs_against_golden(Role role,
                               "tracer is judged by; bless it from a run of this adapter (raygate "
                               "golden bless --from-run RESULTS.json)");
   }
+  const GoldenNoise& stats = noise->second;
+  for (const auto& [file, sha] : {std::pair(golden.entry->file, golden.entry->sha256),
+                                  std::pair(stats.variance_file, stats.variance_sha256)}) {
+    if (auto problem = golden_file_problem(golden_dir, file, sha)) {
+      return untrusted_golden(role, first, golden.expected, std::move(*problem));
+    }
+  }
+  const std::string where = (golden_dir / "manifest.json").string() + ": '" + rendered.id + "'";
+  if (auto problem = golden_noise_problem(stats, where)) {
+    return untrusted_golden(role, first, golden.expected, std::move(*problem));
+  }
   return check_noisy_against_stats(role, actual, golden.expected, golden_dir, noise->second,
                                    thresholds, evidence_dir, golden.stem);
 }
@@ -178,6 +211,9 @@ ImageCheck check_against_golden(Role role, const std::filesystem::path& actual,
                                 const std::filesystem::path& evidence_dir) {
   const GoldenLookup golden = look_up_golden(role, golden_dir, manifest, rendered, ".png");
   if (golden.missing) return without_golden(role, actual, golden.expected, *golden.missing);
+  if (auto problem = golden_file_problem(golden_dir, golden.entry->file, golden.entry->sha256)) {
+    return untrusted_golden(role, actual, golden.expected, std::move(*problem));
+  }
   return check_image(role, ImageReference::golden, actual, golden.expected, thresholds,
                      evidence_dir, golden.stem);
 }

@@ -29,16 +29,23 @@ struct ImageCheck {
   ImageReference reference = ImageReference::golden;
   std::filesystem::path actual;
   std::filesystem::path expected;
-  // pass, warn, fail (also: the actual image unreadable or with NaN pixels); missing when
-  // there is no golden to compare with (noted once per report, never failed); error when the
-  // reference could not be read.
+  // pass, warn, fail (also: the actual image unreadable or with NaN pixels); inconclusive (a
+  // Monte Carlo image too noisy to decide); missing when there is no golden to compare with
+  // (noted once per report, never failed); error when the reference could not be read.
   ImageVerdict verdict = ImageVerdict::error;
-  std::string error;  // for missing and error: what went wrong and what to do
-  std::optional<ImageMetrics> metrics;
+  // For missing and error: what went wrong and what to do; beside a Monte Carlo comparison, its
+  // notes (identical runs, evidence not written).
+  std::string error;
+  std::optional<ImageMetrics> metrics;  // the per-pixel check's
   std::vector<std::filesystem::path> evidence;  // actual, expected, |diff| x16 on failure
+  std::optional<NoisyComparison> noisy;  // the Monte Carlo check's (compare/noisy_image_compare.h)
 
   bool failed() const { return verdict == ImageVerdict::fail; }
 };
+
+// What a check found, in the words every report prints: the per-pixel metrics' summary, the
+// Monte Carlo comparison's line (with its notes), or what went wrong.
+std::string check_detail(const ImageCheck& check);
 
 // Whose image against what, as logs name a check: "tracer" against a golden, else
 // "head<between>base" ("head-vs-base", "head vs base").

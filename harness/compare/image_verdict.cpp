@@ -6,9 +6,10 @@ namespace raygate {
 namespace {
 
 // Each verdict's word, spelt once for documents, database rows and printed text.
-constexpr EnumWords<ImageVerdict, 5> kVerdictWords{{
+constexpr EnumWords<ImageVerdict, 6> kVerdictWords{{
     {ImageVerdict::missing, "missing"}, {ImageVerdict::pass, "pass"}, {ImageVerdict::warn, "warn"},
-    {ImageVerdict::error, "error"}, {ImageVerdict::fail, "fail"}}};
+    {ImageVerdict::inconclusive, "inconclusive"}, {ImageVerdict::error, "error"},
+    {ImageVerdict::fail, "fail"}}};
 
 }  // namespace
 

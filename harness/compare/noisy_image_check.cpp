@@ -1,5 +1,7 @@
 #include "compare/noisy_image_check.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -42,8 +44,8 @@ RgbImage tile_map(const NoisyImageStats& actual, const NoisyImageStats& expected
     map.rgb[i] = std::min(1.0f, 16 * std::abs(actual.mean[i] - expected.mean[i]));
   }
   for (const BiasedTile& t : comparison.biased) {
-    const float colour[3] = {t.relative_change > 0 ? 1.0f : 0.0f, 0.0f,
-                             t.relative_change > 0 ? 0.0f : 1.0f};
+    const float colour[3] = {t.change.change > 0 ? 1.0f : 0.0f, 0.0f,
+                             t.change.change > 0 ? 0.0f : 1.0f};
     for (int y = t.rect.y; y < t.rect.y + t.rect.height; ++y) {
       for (int x = t.rect.x; x < t.rect.x + t.rect.width; ++x) {
         const bool border = x == t.rect.x || y == t.rect.y || x == t.rect.x + t.rect.width - 1 ||
@@ -72,7 +74,7 @@ void write_noisy_evidence(ImageCheck& check, const NoisyImageStats& actual,
     write_rgb_image(tile_map(actual, expected, comparison), paths[2]);
     check.evidence.assign(std::begin(paths), std::end(paths));
   } catch (const Error& e) {
-    check.error += std::string("; evidence not written: ") + e.what();
+    check.error += std::string(check.error.empty() ? "" : "; ") + "evidence not written: " + e.what();
   }
 }
 
@@ -115,22 +117,52 @@ ImageCheck judged(ImageCheck check, const std::vector<std::filesystem::path>& ac
   }
   const NoisyComparison comparison = compare_noisy(actual, expected, thresholds);
   check.verdict = to_image_verdict(comparison.verdict);
-  check.error = summarize(comparison);
+  check.noisy = comparison;
   if (identical_runs(actual)) {
-    check.error += "; note: the " + std::to_string(actual.runs) +
-                   " runs' images are identical: is {seed} reaching the tracer's random numbers?";
+    check.error = "note: the " + std::to_string(actual.runs) +
+                  " runs' images are identical: is {seed} reaching the tracer's random numbers?";
   }
-  if (comparison.verdict == NoisyVerdict::fail) {
+  if (comparison.verdict == NoisyVerdict::fail && !evidence_dir.empty()) {
     write_noisy_evidence(check, actual, expected, comparison, evidence_dir, stem);
   }
   return check;
 }
 
+// The first value of `values` that is not finite, or (`non_negative`) below zero: "(x,y) channel
+// value"; nullopt when all are.
+std::optional<std::string> first_bad_value(const std::vector<float>& values, int width,
+                                           bool non_negative) {
+  const auto bad = std::find_if(values.begin(), values.end(), [&](float v) {
+    return !std::isfinite(v) || (non_negative && v < 0.0f);
+  });
+  if (bad == values.end()) return std::nullopt;
+  const auto index = static_cast<std::size_t>(bad - values.begin());
+  const std::size_t pixel = index / 3;
+  return fmt::format("{} at ({},{}) channel {}", *bad, pixel % static_cast<std::size_t>(width),
+                     pixel / static_cast<std::size_t>(width), "RGB"[index % 3]);
+}
+
+// A golden's statistics that could never fail a comparison (a NaN or negative variance makes
+// every test's noise NaN or imaginary), or that hold no picture (a NaN mean).
+std::optional<std::string> nonsense_statistics(const NoisyImageStats& golden,
+                                               const std::filesystem::path& mean_file,
+                                               const std::filesystem::path& variance_file) {
+  if (auto bad = first_bad_value(golden.variance, golden.width, true)) {
+    return variance_file.string() + ": a variance must be a finite number >= 0, found " + *bad +
+           "; with it the golden could never fail a comparison";
+  }
+  if (auto bad = first_bad_value(golden.mean, golden.width, false)) {
+    return mean_file.string() + ": the golden mean must be finite, found " + *bad;
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
-NoisyThresholds noisy_thresholds_for(std::size_t images_in_family) {
+NoisyThresholds noisy_thresholds_for(std::size_t images_in_family, double tolerance) {
   NoisyThresholds thresholds;
   thresholds.alpha = kNoisyFamilyAlpha / static_cast<double>(std::max<std::size_t>(1, images_in_family));
+  thresholds.tolerance = tolerance;
   return thresholds;
 }
 
@@ -138,9 +170,9 @@ ImageVerdict to_image_verdict(NoisyVerdict verdict) {
   switch (verdict) {
     case NoisyVerdict::pass: return ImageVerdict::pass;
     case NoisyVerdict::fail: return ImageVerdict::fail;
-    case NoisyVerdict::inconclusive: return ImageVerdict::warn;
+    case NoisyVerdict::inconclusive: return ImageVerdict::inconclusive;
   }
-  return ImageVerdict::warn;
+  return ImageVerdict::inconclusive;
 }
 
 ImageCheck check_noisy_images(Role role, ImageReference reference,
@@ -150,7 +182,7 @@ ImageCheck check_noisy_images(Role role, ImageReference reference,
                               const std::filesystem::path& evidence_dir, const std::string& stem) {
   ImageCheck check{role, reference, actual.empty() ? std::filesystem::path() : actual.front(),
                    expected.empty() ? std::filesystem::path() : expected.front(),
-                   ImageVerdict::error, {}, std::nullopt, {}};
+                   ImageVerdict::error, {}, std::nullopt, {}, std::nullopt};
   if (auto unusable = unusable_actual(check, actual)) return *unusable;
   if (expected.empty()) {
     check.error =
@@ -176,7 +208,7 @@ ImageCheck check_noisy_against_stats(Role role,
                                      const std::string& stem) {
   ImageCheck check{role, ImageReference::golden,
                    actual.empty() ? std::filesystem::path() : actual.front(), mean_file,
-                   ImageVerdict::error, {}, std::nullopt, {}};
+                   ImageVerdict::error, {}, std::nullopt, {}, std::nullopt};
   if (auto unusable = unusable_actual(check, actual)) return *unusable;
   NoisyImageStats golden;
   try {
@@ -184,6 +216,10 @@ ImageCheck check_noisy_against_stats(Role role,
                                noise.inflation);
   } catch (const Error& e) {
     check.error = e.what();
+    return check;
+  }
+  if (auto problem = nonsense_statistics(golden, mean_file, golden_dir / noise.variance_file)) {
+    check.error = std::move(*problem);  // verdict error: the golden cannot judge
     return check;
   }
   return judged(check, actual, golden, thresholds, evidence_dir, stem);

@@ -1,8 +1,8 @@
 // The Monte Carlo image check as an ImageCheck (compare/image_check.h), so results documents,
 // the gate and every report show it where they show the per-pixel check: a role's runs (each
 // rendered with its own {seed}) against the reference's runs or a golden's statistics. The
-// verdict's words go into ImageCheck::error, metrics stay empty; pass and fail keep their
-// meaning, inconclusive (too noisy to tell) is a warn.
+// comparison itself goes into ImageCheck::noisy (metrics stay empty); its verdict maps to the
+// image verdict of the same name.
 #pragma once
 
 #include <filesystem>
@@ -16,9 +16,11 @@
 namespace raygate {
 
 // The chance that a suite whose images did not change fails any of them, split evenly over the
-// images checked (Bonferroni across scenes; Holm within each image).
+// images checked (Bonferroni across scenes; Holm within each image). `tolerance`: the image
+// tolerance (gate policy `image_tolerance`).
 inline constexpr double kNoisyFamilyAlpha = 0.01;
-NoisyThresholds noisy_thresholds_for(std::size_t images_in_family);
+NoisyThresholds noisy_thresholds_for(std::size_t images_in_family,
+                                     double tolerance = kDefaultImageTolerance);
 
 ImageVerdict to_image_verdict(NoisyVerdict verdict);
 
@@ -26,7 +28,7 @@ ImageVerdict to_image_verdict(NoisyVerdict verdict);
 // be read or has NaN/Inf pixels fails; an expected one makes the check an error. On fail, writes
 // evidence into evidence_dir: <stem>.actual.png and <stem>.expected.png (the runs' means) and
 // <stem>.tiles.png (the mean difference x 16, biased tiles outlined red where actual is brighter
-// and blue where darker).
+// and blue where darker); none with evidence_dir empty.
 ImageCheck check_noisy_images(Role role, ImageReference reference,
                               const std::vector<std::filesystem::path>& actual,
                               const std::vector<std::filesystem::path>& expected,

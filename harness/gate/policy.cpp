@@ -12,7 +12,8 @@ namespace raygate {
 namespace {
 
 const std::vector<std::string> kSceneKeys = {"max_slowdown", "max_memory_increase",
-                                             "significance", "image", "reason"};
+                                             "significance", "image", "image_tolerance",
+                                             "reason"};
 const std::vector<std::string> kImageKeys = {"fail", "failpercent", "hardfail", "warn"};
 
 double fraction(const JsonField& field, double low, double high) {
@@ -39,6 +40,9 @@ void read_scene_keys(const JsonField& field, ScenePolicy& policy) {
   }
   if (field.has("significance")) policy.significance = fraction(field.member("significance"), 0.0001, 0.5);
   if (field.has("image")) read_image(field.member("image"), policy.image);
+  if (field.has("image_tolerance")) {
+    policy.image_tolerance = fraction(field.member("image_tolerance"), 0.0001, 1.0);
+  }
 }
 
 }  // namespace
@@ -55,6 +59,7 @@ GatePolicy parse_policy(std::string_view text, const std::string& origin) {
   try {
     const JsonField root(document, "$");
     root.expect_object({"max_slowdown", "max_memory_increase", "significance", "family_significance", "image",
+                        "image_tolerance",
                         "fail_on_inconclusive", "max_exponent_increase", "scenes"});
     read_scene_keys(root, policy.defaults);
     if (root.has("family_significance")) {
@@ -102,6 +107,8 @@ GatePolicy recorded_policy(const MeasurementSettings& settings, std::string& not
   policy.defaults.significance = settings.significance.value_or(policy.defaults.significance);
   policy.defaults.max_memory_increase =
       settings.max_memory_increase.value_or(policy.defaults.max_memory_increase);
+  policy.defaults.image_tolerance =
+      settings.image_tolerance.value_or(policy.defaults.image_tolerance);
   policy.max_exponent_increase =
       settings.max_exponent_increase.value_or(policy.max_exponent_increase);
   policy.family_significance =

@@ -12,6 +12,7 @@
 #include <string_view>
 
 #include "compare/image_compare.h"
+#include "compare/noisy_image_compare.h"
 #include "measure/family.h"
 #include "measure/memory_change.h"
 #include "results/measurement_settings.h"
@@ -26,6 +27,9 @@ struct ScenePolicy {
   // scene that a change beyond max_slowdown is called UNCHANGED (docs/statistics.md §6).
   double significance = 0.05;
   ImageThresholds image;       // against the golden and against the base revision's image
+  // A Monte Carlo image's tolerance (compare/noisy_image_compare.h): the whole image's change,
+  // per channel, within which it passes and beyond which it fails (docs/monte-carlo-images.md).
+  double image_tolerance = kDefaultImageTolerance;
   std::string reason;          // why this scene differs from the defaults (overrides only)
 };
 

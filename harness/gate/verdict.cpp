@@ -94,14 +94,15 @@ void count_missing(MissingGoldens& missing, const std::string& why) {
   missing.emplace_back(why, 1);
 }
 
-void judge_images(const SceneResult& scene, SceneGate& gate, MissingGoldens& missing) {
+void judge_images(const SceneResult& scene, bool fail_on_inconclusive, SceneGate& gate,
+                  MissingGoldens& missing) {
   for (const ImageCheck& check : scene.images) {
     // The enum's order is the verdicts' rank (compare/image_verdict.h).
     gate.image = std::max(gate.image.value_or(check.verdict), check.verdict);
     const std::string who =
         fmt::format("image {} vs {}", to_string(check.role), to_string(check.reference));
     // A failed image without metrics could not be read, or is broken in a way its error says.
-    const std::string what = check.metrics ? summarize(*check.metrics) : check.error;
+    const std::string what = check_detail(check);
     if (check.failed() && check.role == Role::base) {
       // The base revision is the reference a compare judges head against: a broken base image
       // means the change could not be checked (exit 3), not that the change broke it.
@@ -109,6 +110,11 @@ void judge_images(const SceneResult& scene, SceneGate& gate, MissingGoldens& mis
                   fmt::format("{}: {} (the base revision's image is broken, so the change could "
                               "not be checked)",
                               who, what));
+    } else if (check.verdict == ImageVerdict::inconclusive) {
+      // Like a speed change the budget could not decide: a warning, or with
+      // fail_on_inconclusive a failure.
+      raise_image(gate, fail_on_inconclusive ? GateOutcome::fail : GateOutcome::warn,
+                  fmt::format("{}: {}", who, what));
     } else if (check.verdict == ImageVerdict::fail || check.verdict == ImageVerdict::warn) {
       raise_image(gate, check.failed() ? GateOutcome::fail : GateOutcome::warn,
                   fmt::format("{}: {}", who, what));
@@ -168,7 +174,7 @@ GateResult evaluate_gate(const ResultsDocument& document, const GatePolicy& poli
       judge_speed(scene, policy.for_scene(scene.entry.id), policy.fail_on_inconclusive, gate);
       judge_memory(scene, policy.for_scene(scene.entry.id), policy.fail_on_inconclusive, gate);
     }
-    judge_images(scene, gate, missing);
+    judge_images(scene, policy.fail_on_inconclusive, gate, missing);
     result.scenes.push_back(std::move(gate));
   }
   result.families = judge_growth(document, policy);

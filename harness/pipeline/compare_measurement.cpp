@@ -14,6 +14,7 @@
 #include "pipeline/compare_family.h"
 #include "pipeline/run_images.h"
 #include "pipeline/explain_stage.h"
+#include "pipeline/image_stop.h"
 #include "pipeline/measurement_estimate.h"
 #include "pipeline/stop_rules.h"
 #include "pipeline/visit_plan.h"
@@ -26,10 +27,11 @@ namespace {
 
 // A Monte Carlo tracer's images: every run of head against every run of base, within noise.
 ImageCheck check_noisy_change(const SceneResult& scene, std::size_t family_size,
-                              const std::filesystem::path& evidence_dir) {
+                              double tolerance, const std::filesystem::path& evidence_dir) {
   return check_noisy_images(Role::head, ImageReference::base, run_images(scene.runs, Role::head),
-                            run_images(scene.runs, Role::base), noisy_thresholds_for(family_size),
-                            evidence_dir, scene.entry.id + ".head-vs-base");
+                            run_images(scene.runs, Role::base),
+                            noisy_thresholds_for(family_size, tolerance), evidence_dir,
+                            scene.entry.id + ".head-vs-base");
 }
 
 // The change head vs base at the scene's share `alpha` of the family, and head's image against
@@ -55,7 +57,8 @@ void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, dou
   const RunRecord* base = scene.runs.first_run(Role::base);
   const RunRecord* head = scene.runs.first_run(Role::head);
   if (base != nullptr && head != nullptr && noisy_family) {
-    scene.images.push_back(check_noisy_change(scene, *noisy_family, evidence_dir));
+    scene.images.push_back(
+        check_noisy_change(scene, *noisy_family, policy.image_tolerance, evidence_dir));
   } else if (base != nullptr && head != nullptr) {
     scene.images.push_back(check_image(Role::head, ImageReference::base, head->image,
                                        base->image, policy.image, evidence_dir,
@@ -129,10 +132,15 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
                      revisit_reserve_scenes(m.scenes.size()));
   MeasurementEstimate estimate(estimate_shape(context, m.scenes.size(), "compare"),
                                fewest_compare_rounds(context, alpha), 2, io.progress);
+  // A Monte Carlo image still inconclusive keeps its scene measuring (pipeline/image_stop.h).
+  const std::optional<NoisyImageFamily> noisy_images =
+      m.images == ImageKind::monte_carlo ? std::optional(NoisyImageFamily{family_size})
+                                         : std::nullopt;
   m.stop = [&](const SuiteScene& scene) {
     const ScenePolicy& policy = context.policy.for_scene(scene.id);
-    return estimate.watch(change_stop_rule(budget.next_scene(), policy,
-                                           scene_levels(policy, alpha), exact_timing(context)),
+    return estimate.watch(compare_stop_rule(budget.next_scene(), policy,
+                                            scene_levels(policy, alpha), exact_timing(context),
+                                            noisy_images),
                           scene.id);
   };
   if (context.repeat_where_it_pays && !exact_timing(context)) {
@@ -154,7 +162,8 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
         const StoppingPolicy again =
             budget.again(scene.runs.seconds_spent, scenes_left, seconds_needed);
         if (again.max_seconds <= scene.runs.seconds_spent) return std::nullopt;
-        return change_stop_rule(again, policy, scene_levels(policy, alpha), exact_timing(context));
+        return compare_stop_rule(again, policy, scene_levels(policy, alpha),
+                                 exact_timing(context), noisy_images);
       },
       [&](const SceneResult& scene) {
         return plan_visit(scene, context.policy, context.repeat_where_it_pays);
@@ -165,9 +174,7 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
   m.finish_scene = [&](SceneResult& scene) {
     finish_compare_scene(scene, context.policy, alpha, work_dir / "evidence",
                          exact_timing(context),
-                         context.adapter.images == ImageKind::monte_carlo
-                             ? std::optional<std::size_t>(family_size)
-                             : std::nullopt);
+                         noisy_images ? std::optional(noisy_images->images) : std::nullopt);
   };
   m.finish_suite = [&](ResultsDocument& document) {
     std::vector<std::string> lines;

@@ -32,18 +32,24 @@ BlessFromRun from_run_request(const GoldenOptions& options) {
 }
 
 GoldenOutcome baseline_verification_outcome(const GoldenVerification& v, std::size_t scenes) {
-  const std::string summary = fmt::format("{} scenes: {} identical, {} different, {} missing",
-                                          scenes, v.identical, v.different, v.missing);
-  if (v.missing > 0) return {summary, ExitCode::usage};
-  return {summary, v.different > 0 ? ExitCode::regression : ExitCode::pass};
+  std::string summary = fmt::format("{} scenes: {} identical, {} different, {} missing",
+                                    scenes, v.identical, v.different, v.missing);
+  if (v.unverifiable > 0) summary += fmt::format(", {} golden(s) not to be trusted", v.unverifiable);
+  if (v.missing > 0) return {summary, ExitCode::usage};  // a scene asked for has no golden
+  // A difference found outranks a golden that could not verify (3).
+  if (v.different > 0) return {summary, ExitCode::regression};
+  return {summary, v.unverifiable > 0 ? ExitCode::infrastructure : ExitCode::pass};
 }
 
 GoldenOutcome run_verification_outcome(const GoldenVerification& v) {
-  const std::size_t scenes = v.identical + v.different + v.inconclusive + v.missing;
-  const std::string summary =
+  const std::size_t scenes =
+      v.identical + v.different + v.inconclusive + v.missing + v.unverifiable;
+  std::string summary =
       fmt::format("{} scenes: {} same, {} different, {} too noisy to tell, {} missing", scenes,
                   v.identical, v.different, v.inconclusive, v.missing);
+  if (v.unverifiable > 0) summary += fmt::format(", {} golden(s) not to be trusted", v.unverifiable);
   if (v.different > 0) return {summary, ExitCode::regression};
+  if (v.unverifiable > 0) return {summary, ExitCode::infrastructure};
   return {summary, v.missing > 0 ? ExitCode::usage : ExitCode::pass};
 }
 

@@ -19,6 +19,7 @@
 #include "core/paths.h"
 #include "core/replace_directory.h"
 #include "core/sha256.h"
+#include "gate/policy.h"
 #include "pipeline/run_images.h"
 #include "results/results.h"
 #include "runner/scene_files.h"
@@ -161,9 +162,11 @@ void swap_in_goldens(const std::filesystem::path& golden_dir, GoldenManifest& ma
   manifest = std::move(next);
 }
 
-// How the run's tracer makes images: its adapter file's "images", when that file is still there
-// and is the adapter the run used (same hash); otherwise deterministic.
-ImageKind run_image_kind(const RevisionRecord& revision) {
+// How the run's tracer made images: as the document records it (settings.images, chosen when
+// the run began). A document from before that field: its adapter file's "images", when that
+// file is still there and is the adapter the run used (same hash); otherwise deterministic.
+ImageKind run_image_kind(const ResultsDocument& document, const RevisionRecord& revision) {
+  if (document.settings.images) return *document.settings.images;
   std::error_code ec;
   if (revision.adapter_file.empty() || !std::filesystem::is_regular_file(revision.adapter_file, ec)) {
     return ImageKind::deterministic;
@@ -236,6 +239,11 @@ GoldenVerification verify_baseline_goldens(const BaselineGoldens& goldens,
       ++counts.missing;
       continue;
     }
+    if (auto problem = golden_file_problem(goldens.golden_dir, entry->file, entry->sha256)) {
+      progress.line(fmt::format("ERROR     {:<12} {}", scene.id, *problem));
+      ++counts.unverifiable;
+      continue;
+    }
     const BaselineRender render = render_scene(goldens, scene);
     const ImageMetrics m = compare_images(render.image, goldens.golden_dir / entry->file, {});
     if (m.identical()) {
@@ -305,7 +313,7 @@ void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress)
   manifest.tracer = GoldenProvenance{revision->adapter_name, revision->adapter_hash,
                                      revision->worktree.revision, revision->worktree.sha,
                                      revision->worktree.dirty, results, document.started_at};
-  if (run_image_kind(*revision) == ImageKind::monte_carlo) {
+  if (run_image_kind(document, *revision) == ImageKind::monte_carlo) {
     const TempDir stats_dir("raygate-bless");
     const std::vector<Blessing> blessings =
         monte_carlo_blessings(chosen, request.role, document.baseline.sampling, stats_dir.path());
@@ -343,15 +351,18 @@ namespace {
 // One scene's check as a verify line, counted.
 void report_check(const std::string& id, const ImageCheck& check, GoldenVerification& counts,
                   ProgressSink& progress) {
-  const std::string what = check.metrics ? summarize(*check.metrics) : check.error;
+  const std::string what = check_detail(check);
   const char* word = "ok       ";
-  if (check.verdict == ImageVerdict::missing || check.verdict == ImageVerdict::error) {
+  if (check.verdict == ImageVerdict::missing) {
     word = "MISSING  ";
     ++counts.missing;
+  } else if (check.verdict == ImageVerdict::error) {
+    word = "ERROR    ";  // the golden could not judge: corrupt, nonsense, unreadable
+    ++counts.unverifiable;
   } else if (check.verdict == ImageVerdict::fail) {
     word = "DIFFERENT";
     ++counts.different;
-  } else if (check.verdict == ImageVerdict::warn && !check.metrics) {
+  } else if (check.verdict == ImageVerdict::inconclusive) {
     word = "UNSURE   ";  // a Monte Carlo check too noisy to decide
     ++counts.inconclusive;
   } else {
@@ -379,7 +390,9 @@ GoldenVerification verify_goldens_from_run(const BlessFromRun& request,
                                revision->adapter_name)
           : request.golden_dir;
   const GoldenManifest manifest = load_golden_manifest(golden_dir);
-  const ImageKind kind = run_image_kind(*revision);
+  const ImageKind kind = run_image_kind(document, *revision);
+  std::string policy_note;
+  const GatePolicy policy = recorded_policy(document.settings, policy_note);
   GoldenVerification counts;
   for (const SceneResult& scene : document.scenes) {
     const SuiteScene& e = scene.entry;
@@ -398,7 +411,9 @@ GoldenVerification verify_goldens_from_run(const BlessFromRun& request,
         kind == ImageKind::monte_carlo
             ? check_runs_against_golden(request.role, run_images(scene.runs, request.role),
                                         golden_dir, manifest, rendered,
-                                        noisy_thresholds_for(document.scenes.size()), evidence_dir)
+                                        noisy_thresholds_for(document.scenes.size(),
+                                                             policy.for_scene(e.id).image_tolerance),
+                                        evidence_dir)
             : check_against_golden(request.role, run->image, golden_dir, manifest, rendered, {},
                                    evidence_dir);
     report_check(e.id, check, counts, progress);

@@ -37,6 +37,9 @@ struct GoldenVerification {
   std::size_t different = 0;  // evidence written under work_dir/evidence
   std::size_t missing = 0;
   std::size_t inconclusive = 0;  // Monte Carlo: too noisy to tell
+  // The golden cannot be trusted (its bytes are not its manifest's SHA-256, its statistics could
+  // never fail) or read: nothing was verified, exit 3.
+  std::size_t unverifiable = 0;
 };
 
 // Renders each selected scene that has a golden and compares pixels; a render that fails is an

@@ -108,6 +108,8 @@ MeasurementSettings measure_settings(const MeasureContext& c) {
           .threads = c.adapter.threads,
           .golden_dir = c.golden_dir.string(),
           .goldens = std::nullopt,  // whose they are: new_document reads the golden manifest
+          .images = c.adapter.images,
+          .image_tolerance = c.policy.defaults.image_tolerance,
           .policy_file = c.policy.file.string(),
           .max_slowdown = c.policy.defaults.max_slowdown,
           .significance = c.policy.defaults.significance,

@@ -47,7 +47,8 @@ void check_images(SceneResult& result, const SuiteMeasurement& m, const GoldenMa
     if (m.images == ImageKind::monte_carlo) {
       result.images.push_back(check_runs_against_golden(
           role, run_images(result.runs, role), m.golden_dir, manifest, rendered,
-          noisy_thresholds_for(m.scenes.size()), m.work_dir / "evidence"));
+          noisy_thresholds_for(m.scenes.size(), m.policy.for_scene(e.id).image_tolerance),
+          m.work_dir / "evidence"));
       continue;
     }
     result.images.push_back(check_against_golden(role, run->image, m.golden_dir, manifest,
@@ -398,16 +399,12 @@ std::string scene_line(const SceneResult& scene, const std::vector<Role>& tracer
     // No golden: one note at the end, not per scene.
     if (check.verdict == ImageVerdict::missing) continue;
     const std::string what = check_label(check, "-vs-");
-    std::string detail = check.error;
-    if (check.metrics) {
-      detail = check.metrics->identical() ? "identical" : summarize(*check.metrics);
-    }
-    // The Monte Carlo check's words start with their own verdict ("fail (biased): ...").
-    const std::string verdict(to_string(check.verdict));
-    if (!check.metrics && (detail.starts_with(verdict + " (") || detail.starts_with("inconclusive ("))) {
-      text += fmt::format("  image {} {}", what, detail);
+    if (check.noisy) {  // its line starts with its own verdict ("fail (biased): ...")
+      text += fmt::format("  image {} {}", what, check_detail(check));
       continue;
     }
+    const std::string detail = check.metrics && check.metrics->identical() ? "identical"
+                                                                           : check_detail(check);
     text += fmt::format("  image {} {} ({})", what, to_string(check.verdict), detail);
   }
   return text;

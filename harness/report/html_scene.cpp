@@ -39,9 +39,11 @@ ImageReference reference_of(const SceneResult& scene, Role role) {
   int worst = -1;
   for (const ImageCheck& check : scene.images) {
     if (check.role != role) continue;
-    const int rank = check.verdict == ImageVerdict::fail   ? 2
-                     : check.verdict == ImageVerdict::warn ? 1
-                                                           : 0;
+    const int rank = check.verdict == ImageVerdict::fail ? 2
+                     : check.verdict == ImageVerdict::warn ||
+                             check.verdict == ImageVerdict::inconclusive
+                         ? 1
+                         : 0;
     if (rank > worst) {
       worst = rank;
       reference = check.reference;
@@ -128,7 +130,7 @@ std::string metric_row(const ImageCheck& check) {
                                           escape(image_verdict_text(check.verdict)));
   if (!check.metrics) {
     return fmt::format(R"(<tr><td>{}</td><td>{}</td><td colspan="5" class="muted">{}</td></tr>)",
-                       who, verdict, escape(check.error));
+                       who, verdict, escape(check_detail(check)));
   }
   const ImageMetrics& m = *check.metrics;
   if (m.size_mismatch) {

@@ -51,10 +51,10 @@ text-transform:uppercase;letter-spacing:.06em;white-space:nowrap}
 border:1px solid var(--line);color:var(--muted);background:#f6f8fa}
 .tag.speed-REGRESSED,.tag.v-fail{color:var(--fail);border-color:#ffcecb;background:var(--fail-bg)}
 .tag.speed-IMPROVED{color:var(--pass);border-color:#aceebb;background:var(--pass-bg)}
-.tag.speed-INCONCLUSIVE,.tag.v-warn{color:var(--warn);border-color:#eac54f;background:var(--warn-bg)}
+.tag.speed-INCONCLUSIVE,.tag.v-warn,.tag.v-inconclusive{color:var(--warn);border-color:#eac54f;background:var(--warn-bg)}
 .tag.speed-FAILED,.tag.v-error{color:var(--unm);border-color:#e3c8fb;background:var(--unm-bg)}
 .verdict{font-weight:700;font-size:13px}
-.v-pass{color:var(--pass)}.v-warn{color:var(--warn)}.v-missing{color:var(--muted);font-weight:400}.v-fail{color:var(--fail)}.v-error{color:var(--unm)}
+.v-pass{color:var(--pass)}.v-warn,.v-inconclusive{color:var(--warn)}.v-missing{color:var(--muted);font-weight:400}.v-fail{color:var(--fail)}.v-error{color:var(--unm)}
 table{border-collapse:collapse;width:100%}
 th{text-align:left;font-size:11px;text-transform:uppercase;letter-spacing:.06em;color:var(--muted);
 font-weight:700;border-bottom:1px solid var(--line);padding:6px 10px}

@@ -7,6 +7,7 @@
 #include "report/report_model.h"
 #include "report/reporters.h"
 #include "results/json_number.h"
+#include "results/summary_json.h"
 
 namespace raygate::report {
 namespace {
@@ -70,6 +71,10 @@ json images(const SceneResult& scene) {
       item["rms_error"] = finite_number(m.rms_error);
       item["psnr_db"] = finite_number(m.psnr_db);
       item["summary"] = summarize(m);
+    }
+    if (check.noisy) {
+      item["monte_carlo"] = *check.noisy;
+      item["summary"] = summarize(*check.noisy);
     }
     if (!check.error.empty()) item["error"] = check.error;
     out.push_back(item);

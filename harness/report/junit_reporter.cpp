@@ -93,8 +93,7 @@ std::string image_numbers(const SceneView& view) {
     std::string line =
         fmt::format("{} vs {}: {}", to_string(check.role), to_string(check.reference),
                     image_verdict_text(check.verdict));
-    if (check.metrics) line += ": " + summarize(*check.metrics);
-    if (!check.error.empty()) line += ": " + check.error;
+    if (const std::string detail = check_detail(check); !detail.empty()) line += ": " + detail;
     lines.push_back(line);
   }
   return joined(lines);

@@ -77,6 +77,11 @@ struct MeasurementSettings {
   // Goldens: the folder, and whose they are ("none": the tracer has none yet).
   std::optional<std::string> golden_dir;
   std::optional<std::string> goldens;
+  // How the tracer's images were judged: chosen once, from the adapter, when measuring began;
+  // absent in documents from before it (readers then fall back to deterministic, or to the
+  // adapter file when it is still there and unchanged).
+  std::optional<ImageKind> images;
+  std::optional<double> image_tolerance;  // the Monte Carlo images' (gate/policy.h)
   // The gate's policy as measured: its file and its default limits.
   std::optional<std::string> policy_file;
   std::optional<double> max_slowdown;

@@ -9,8 +9,10 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "compare/image_check.h"
+#include "compare/noisy_image_compare.h"
 #include "measure/change.h"
 #include "core/json_field.h"
 #include "runner/timing/timing_check.h"
@@ -237,6 +239,73 @@ void check_metrics(const JsonField& m) {
   if (const auto first = find(m, "first_nonfinite_pixel")) check_pixel(*first, 2, "[x, y]");
 }
 
+// A relative change: finite (against a black reference it can be huge, never infinite).
+RelativeChange check_relative_change(const JsonField& field) {
+  object(field);
+  constexpr double kMaxRelative = 1e300;
+  const double change = number(field.member("change"), -kMaxRelative, kMaxRelative);
+  const double low = number(field.member("low"), -kMaxRelative, kMaxRelative);
+  const double high = number(field.member("high"), -kMaxRelative, kMaxRelative);
+  if (low > change || change > high) field.fail("expected low <= change <= high");
+  return {change, low, high};
+}
+
+void check_biased_tile(const JsonField& tile) {
+  object(tile);
+  integer(tile.member("tile_px"), 0, kMaxSide);
+  const JsonField rect = array(tile.member("rect"));
+  if (rect.value().size() != 4) rect.fail("expected [x, y, width, height]");
+  for (const JsonField& n : rect.elements()) integer(n, 0, kMaxSide);
+  integer(tile.member("channel"), 0, 2);
+  check_relative_change(tile.member("change"));
+  number(tile.member("min_effect"), 0.0, 1e300);
+  number_or_null(tile.member("z"), -kInf, kInf);
+  number(tile.member("p_value"), 0.0, 1.0);
+}
+
+// A Monte Carlo comparison (images[].monte_carlo): its words, ranges, and that its verdict is
+// what its numbers say: a pass whose interval reaches beyond the tolerance is refused.
+NoisyVerdict check_noisy(const JsonField& mc) {
+  object(mc);
+  const JsonField verdict_field = mc.member("verdict");
+  const std::string word = verdict_field.as_string();
+  const std::optional<NoisyVerdict> verdict = parse_noisy_verdict(word);
+  if (!verdict) require_word(verdict_field, word, {"pass", "fail", "inconclusive"});
+  const double tolerance = number(mc.member("tolerance"), 1e-6, 1.0);
+  number(mc.member("confidence"), 0.5, 1.0 - 1e-12);
+  for (const char* key : {"width", "height"}) integer(mc.member(key), 0, kMaxSide);
+  for (const char* key : {"actual_runs", "expected_runs", "runs_needed"}) {
+    integer(mc.member(key), 0, kMaxCount);
+  }
+  if (const auto mismatch = find_non_null(mc, "size_mismatch")) mismatch->as_string();
+  integer(mc.member("tests"), 0, kMaxCount);
+  const std::int64_t biased = integer(mc.member("biased_count"), 0, kMaxCount);
+  const JsonField tiles = array(mc.member("biased"));
+  if (static_cast<std::int64_t>(tiles.value().size()) > biased) tiles.fail("more tiles than biased_count");
+  for (const JsonField& tile : tiles.elements()) check_biased_tile(tile);
+  std::vector<RelativeChange> intervals{check_relative_change(mc.member("image"))};
+  const JsonField channels = array(mc.member("channels"));
+  if (channels.value().size() != 3) channels.fail("expected 3 channels (R, G, B)");
+  for (const JsonField& c : channels.elements()) intervals.push_back(check_relative_change(c));
+  for (const JsonField& s : array(mc.member("scales")).elements()) {
+    integer(s.member("tile_px"), 0, kMaxSide);
+    integer(s.member("tiles"), 0, kMaxCount);
+    number_or_null(s.member("detectable"), 0.0, kInf);
+  }
+  number_or_null(mc.member("samples_factor"), 1.0, kInf);  // null: no number of runs decides
+  mc.member("why_inconclusive").as_string();
+  if (*verdict == NoisyVerdict::pass) {
+    for (const RelativeChange& c : intervals) {
+      if (c.low < -tolerance || c.high > tolerance) {
+        verdict_field.fail(fmt::format("\"pass\" with an interval [{}, {}] beyond the tolerance "
+                                       "±{}", c.low, c.high, tolerance));
+      }
+    }
+    if (biased > 0) verdict_field.fail("\"pass\" with biased tiles");
+  }
+  return *verdict;
+}
+
 void check_image(const JsonField& image, const std::set<std::string>& roles) {
   object(image);
   const JsonField role = image.member("role");
@@ -244,7 +313,15 @@ void check_image(const JsonField& image, const std::set<std::string>& roles) {
   check_strings(image, {"reference", "actual", "expected"});
   const JsonField verdict = image.member("verdict");
   if (!parse_image_verdict(verdict.as_string())) {
-    require_word(verdict, verdict.as_string(), {"pass", "warn", "fail", "missing", "error"});
+    require_word(verdict, verdict.as_string(),
+                 {"pass", "warn", "inconclusive", "fail", "missing", "error"});
+  }
+  if (const auto mc = find(image, "monte_carlo")) {
+    const NoisyVerdict noisy = check_noisy(*mc);
+    if (to_string(noisy) != verdict.as_string()) {
+      verdict.fail(fmt::format("\"{}\", but monte_carlo.verdict is \"{}\"", verdict.as_string(),
+                               to_string(noisy)));
+    }
   }
   if (const auto error = find(image, "error")) error->as_string();
   image.member("metrics");  // required, even when null

@@ -87,6 +87,7 @@ void to_json(json& j, const ImageCheck& c) {
            {"metrics", nullptr},
            {"evidence", path_list(c.evidence)}};
   if (c.metrics) j["metrics"] = *c.metrics;
+  if (c.noisy) j["monte_carlo"] = *c.noisy;
   if (!c.error.empty()) j["error"] = c.error;
 }
 void from_json(const json& j, ImageCheck& c) {
@@ -98,11 +99,13 @@ void from_json(const json& j, ImageCheck& c) {
   const std::optional<ImageVerdict> parsed = parse_image_verdict(verdict);
   if (!parsed) {
     throw std::invalid_argument("images.verdict: unknown image verdict \"" + verdict +
-                                "\" (pass, warn, fail, missing or error)");
+                                "\" (pass, warn, inconclusive, fail, missing or error)");
   }
   c.verdict = *parsed;
   c.error = j.value("error", std::string());
   if (!j.at("metrics").is_null()) c.metrics = j.at("metrics").get<ImageMetrics>();
+  // Absent in documents from before it: their Monte Carlo verdicts are words in `error`.
+  if (j.contains("monte_carlo")) c.noisy = j.at("monte_carlo").get<NoisyComparison>();
   for (const json& path : j.at("evidence")) c.evidence.emplace_back(path.get<std::string>());
 }
 

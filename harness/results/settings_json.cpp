@@ -45,6 +45,8 @@ void each_field(Settings& s, Visit&& visit) {
   visit("threads", s.threads);
   visit("golden_dir", s.golden_dir);
   visit("goldens", s.goldens);
+  visit("images", s.images);
+  visit("image_tolerance", s.image_tolerance);
   visit("policy_file", s.policy_file);
   visit("max_slowdown", s.max_slowdown);
   visit("significance", s.significance);
@@ -72,6 +74,7 @@ constexpr std::array<TimingSource, 3> kSources{TimingSource::process, TimingSour
                                                TimingSource::simulated};
 constexpr std::array<PinnedBy, 3> kPinners{PinnedBy::none, PinnedBy::adapter, PinnedBy::option};
 constexpr std::array<CpuIdle, 2> kIdles{CpuIdle::os, CpuIdle::poll};
+constexpr std::array<ImageKind, 2> kImageKinds{ImageKind::deterministic, ImageKind::monte_carlo};
 
 json shard_json(const ShardRecord& record) {
   return {{"index", record.spec.index},
@@ -124,6 +127,7 @@ json value_json(ScheduleKind kind) { return std::string(to_string(kind)); }
 json value_json(TimingSource source) { return std::string(to_string(source)); }
 json value_json(PinnedBy pinned_by) { return std::string(to_string(pinned_by)); }
 json value_json(CpuIdle idle) { return std::string(to_string(idle)); }
+json value_json(ImageKind kind) { return std::string(to_string(kind)); }
 json value_json(const ShardRecord& record) { return shard_json(record); }
 json value_json(const std::vector<MergedShard>& shards) {
   json list = json::array();
@@ -150,6 +154,9 @@ void read_value(const JsonField& f, std::optional<PinnedBy>& out) {
 }
 void read_value(const JsonField& f, std::optional<CpuIdle>& out) {
   out = word_from(f, kIdles, "cpu idle");
+}
+void read_value(const JsonField& f, std::optional<ImageKind>& out) {
+  out = word_from(f, kImageKinds, "image kind");
 }
 void read_value(const JsonField& f, std::optional<ShardRecord>& out) { out = shard_from(f); }
 void read_value(const JsonField& f, std::optional<std::vector<MergedShard>>& out) {

@@ -1,5 +1,6 @@
 #include "results/summary_json.h"
 
+#include <cmath>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -157,6 +158,90 @@ void from_json(const json& j, ImageMetrics& m) {
   m.nonfinite_x = first.at(0).get<int>();
   m.nonfinite_y = first.at(1).get<int>();
   m.expected_nonfinite_pixels = j.value("expected_nonfinite_pixels", 0L);
+}
+
+namespace {
+
+json change_json(const RelativeChange& c) {
+  return finite_numbers({{"change", c.change}, {"low", c.low}, {"high", c.high}});
+}
+RelativeChange change_from(const json& j) {
+  return {number_at(j, "change"), number_at(j, "low"), number_at(j, "high")};
+}
+
+json biased_json(const BiasedTile& t) {
+  json j = finite_numbers({{"min_effect", t.min_effect}, {"z", t.z}, {"p_value", t.p_value}});
+  j["tile_px"] = t.tile_px;  // 0: the whole image
+  j["rect"] = {t.rect.x, t.rect.y, t.rect.width, t.rect.height};
+  j["channel"] = t.channel;
+  j["change"] = change_json(t.change);
+  return j;
+}
+BiasedTile biased_from(const json& j) {
+  const json& r = j.at("rect");
+  // z is infinite (null) when neither side had noise and still they differ: the change's sign.
+  const RelativeChange change = change_from(j.at("change"));
+  const double z = j.at("z").is_null()
+                       ? std::copysign(std::numeric_limits<double>::infinity(), change.change)
+                       : j.at("z").get<double>();
+  return {j.at("tile_px").get<int>(),
+          {r.at(0).get<int>(), r.at(1).get<int>(), r.at(2).get<int>(), r.at(3).get<int>()},
+          j.at("channel").get<int>(),
+          change,
+          number_at(j, "min_effect"),
+          z,
+          number_at(j, "p_value")};
+}
+
+}  // namespace
+
+void to_json(json& j, const NoisyComparison& c) {
+  j = finite_numbers({{"tolerance", c.tolerance}, {"confidence", c.confidence},
+                      {"samples_factor", c.samples_factor}});  // null: no number of runs
+  j["verdict"] = std::string(to_string(c.verdict));
+  j["width"] = c.width;
+  j["height"] = c.height;
+  j["actual_runs"] = c.actual_runs;
+  j["expected_runs"] = c.expected_runs;
+  j["size_mismatch"] = c.size_mismatch ? json(*c.size_mismatch) : json(nullptr);
+  j["tests"] = c.tests;
+  j["biased_count"] = c.biased_count;
+  j["biased"] = json::array();
+  for (const BiasedTile& t : c.biased) j["biased"].push_back(biased_json(t));
+  j["image"] = change_json(c.image);
+  j["channels"] = json::array();
+  for (const RelativeChange& channel : c.channels) j["channels"].push_back(change_json(channel));
+  j["scales"] = json::array();
+  for (const ScaleReport& s : c.scales) {
+    j["scales"].push_back({{"tile_px", s.tile_px}, {"tiles", s.tiles},
+                           {"detectable", finite_number(s.detectable)}});
+  }
+  j["runs_needed"] = c.runs_needed;
+  j["why_inconclusive"] = c.why_inconclusive;
+}
+
+void from_json(const json& j, NoisyComparison& c) {
+  c.verdict = parse_noisy_verdict(j.at("verdict").get<std::string>())
+                  .value_or(NoisyVerdict::inconclusive);
+  c.tolerance = number_at(j, "tolerance");
+  c.confidence = number_at(j, "confidence");
+  c.samples_factor = number_at(j, "samples_factor", std::numeric_limits<double>::infinity());
+  c.width = j.at("width").get<int>();
+  c.height = j.at("height").get<int>();
+  c.actual_runs = j.at("actual_runs").get<int>();
+  c.expected_runs = j.at("expected_runs").get<int>();
+  if (!j.at("size_mismatch").is_null()) c.size_mismatch = j.at("size_mismatch").get<std::string>();
+  c.tests = j.at("tests").get<std::size_t>();
+  c.biased_count = j.at("biased_count").get<std::size_t>();
+  for (const json& t : j.at("biased")) c.biased.push_back(biased_from(t));
+  c.image = change_from(j.at("image"));
+  for (std::size_t i = 0; i < c.channels.size(); ++i) c.channels[i] = change_from(j.at("channels").at(i));
+  for (const json& s : j.at("scales")) {
+    c.scales.push_back({s.at("tile_px").get<int>(), s.at("tiles").get<std::size_t>(),
+                        number_at(s, "detectable")});
+  }
+  c.runs_needed = j.at("runs_needed").get<int>();
+  c.why_inconclusive = j.at("why_inconclusive").get<std::string>();
 }
 
 }  // namespace raygate

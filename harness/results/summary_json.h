@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "compare/image_compare.h"
+#include "compare/noisy_image_compare.h"
 #include "measure/bootstrap.h"
 #include "measure/change.h"
 #include "measure/ratio.h"
@@ -23,5 +24,9 @@ void to_json(nlohmann::json& j, const ChangeSummary& c);
 void from_json(const nlohmann::json& j, ChangeSummary& c);
 void to_json(nlohmann::json& j, const ImageMetrics& m);
 void from_json(const nlohmann::json& j, ImageMetrics& m);
+// A Monte Carlo image comparison (images[].monte_carlo): verdict, tolerance, intervals, biased
+// tiles, what more samples would decide. Read after results_check.cpp checked it.
+void to_json(nlohmann::json& j, const NoisyComparison& c);
+void from_json(const nlohmann::json& j, NoisyComparison& c);
 
 }  // namespace raygate

@@ -70,6 +70,21 @@ TEST_F(ImageCheckTest, ChangedPixelsFailWithEvidence) {
   for (const fs::path& evidence : c.evidence) EXPECT_TRUE(fs::exists(evidence)) << evidence;
 }
 
+// A manifest whose hashes are all zeros (or any golden edited after blessing) judges nothing:
+// the check could not be made (error, exit 3), naming the file, not "identical".
+TEST_F(ImageCheckTest, AGoldenThatIsNotItsManifestsHashIsAnError) {
+  GoldenManifest zeros = manifest_;
+  for (GoldenEntry& e : zeros.entries) e.sha256 = std::string(64, '0');
+  const ImageCheck c = check_against_golden(Role::tracer, kGolden / "tetra.png", kGolden, zeros,
+                                            ci_tetra(), {}, dir_.path() / "evidence");
+  EXPECT_EQ(c.verdict, ImageVerdict::error);
+  EXPECT_FALSE(c.metrics);
+  EXPECT_NE(c.error.find((kGolden / "tetra.png").string() + ": its SHA-256 "), std::string::npos)
+      << c.error;
+  EXPECT_NE(c.error.find("changed after it was blessed"), std::string::npos) << c.error;
+  EXPECT_EQ(check_detail(c), c.error);
+}
+
 TEST_F(ImageCheckTest, NoGoldenForTheIdIsMissing) {
   GoldenEntry rendered = ci_tetra();
   rendered.id = "tetra-s2";

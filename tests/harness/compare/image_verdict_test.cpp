@@ -7,8 +7,9 @@
 namespace raygate {
 namespace {
 
-constexpr ImageVerdict kAll[] = {ImageVerdict::missing, ImageVerdict::pass, ImageVerdict::warn,
-                                 ImageVerdict::error, ImageVerdict::fail};
+constexpr ImageVerdict kAll[] = {ImageVerdict::missing, ImageVerdict::pass,
+                                 ImageVerdict::warn,    ImageVerdict::inconclusive,
+                                 ImageVerdict::error,   ImageVerdict::fail};
 
 TEST(ImageVerdict, EveryVerdictReadsBackFromItsWord) {
   for (const ImageVerdict verdict : kAll) {
@@ -16,6 +17,7 @@ TEST(ImageVerdict, EveryVerdictReadsBackFromItsWord) {
   }
   EXPECT_EQ(to_string(ImageVerdict::missing), "missing");
   EXPECT_EQ(to_string(ImageVerdict::fail), "fail");
+  EXPECT_EQ(to_string(ImageVerdict::inconclusive), "inconclusive");
 }
 
 TEST(ImageVerdict, AnUnknownWordIsNoVerdict) {

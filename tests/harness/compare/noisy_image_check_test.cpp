@@ -1,7 +1,9 @@
 // The Monte Carlo check as an ImageCheck: verdicts map onto the image verdicts the gate and
-// reports know (inconclusive is a warn), a broken image of the tracer fails, a broken reference
-// is an error, evidence (the runs' means and the tile map) is written on failure, and a tracer
-// whose runs are all the same image is told so.
+// reports know (inconclusive its own), the comparison is kept typed in ImageCheck::noisy, a
+// broken image of the tracer fails, a broken reference is an error, evidence (the runs' means
+// and the tile map) is written on failure, and a tracer whose runs are all the same image is
+// told so. A golden that does not match its manifest's SHA-256, or whose statistics could never
+// fail (negative or NaN variance, an inflation factor of -1 or 1e308), judges nothing: error.
 #include "compare/noisy_image_check.h"
 
 #include <gtest/gtest.h>
@@ -11,6 +13,8 @@
 
 #include "compare/noisy_image_files.h"
 #include "core/fs.h"
+#include "core/sha256.h"
+#include "compare/image_check.h"
 
 namespace raygate {
 namespace {
@@ -34,7 +38,8 @@ std::vector<fs::path> renders(const fs::path& dir, const std::string& stem, int 
 TEST(NoisyImageCheck, VerdictsMapOntoImageVerdicts) {
   EXPECT_EQ(to_image_verdict(NoisyVerdict::pass), ImageVerdict::pass);
   EXPECT_EQ(to_image_verdict(NoisyVerdict::fail), ImageVerdict::fail);
-  EXPECT_EQ(to_image_verdict(NoisyVerdict::inconclusive), ImageVerdict::warn);
+  EXPECT_EQ(to_image_verdict(NoisyVerdict::inconclusive), ImageVerdict::inconclusive);
+  EXPECT_DOUBLE_EQ(noisy_thresholds_for(4, 0.02).tolerance, 0.02);
   EXPECT_DOUBLE_EQ(noisy_thresholds_for(4).alpha, kNoisyFamilyAlpha / 4);
   EXPECT_DOUBLE_EQ(noisy_thresholds_for(0).alpha, kNoisyFamilyAlpha);
 }
@@ -45,9 +50,12 @@ TEST(NoisyImageCheck, ABiasedHeadFailsWithEvidence) {
   const ImageCheck check = check_noisy_images(
       Role::head, ImageReference::base, renders(dir.path(), "head", 6, 0.9, rng), renders(dir.path(), "base", 6, 1.0, rng),
       noisy_thresholds_for(1), dir.path() / "evidence", "s.head-vs-base");
-  EXPECT_EQ(check.verdict, ImageVerdict::fail) << check.error;
+  EXPECT_EQ(check.verdict, ImageVerdict::fail) << check_detail(check);
   EXPECT_FALSE(check.metrics.has_value());
-  EXPECT_EQ(check.error.rfind("fail (biased): ", 0), 0u) << check.error;
+  ASSERT_TRUE(check.noisy.has_value());
+  EXPECT_EQ(check.noisy->verdict, NoisyVerdict::fail);
+  EXPECT_NEAR(check.noisy->image.change, -0.1, 0.02);
+  EXPECT_EQ(check_detail(check).rfind("fail (", 0), 0u) << check_detail(check);
   ASSERT_EQ(check.evidence.size(), 3u);
   EXPECT_EQ(check.evidence[2].filename(), "s.head-vs-base.tiles.png");
   for (const fs::path& file : check.evidence) EXPECT_TRUE(fs::exists(file)) << file;
@@ -57,10 +65,12 @@ TEST(NoisyImageCheck, SameImageOtherSeedsPasses) {
   const TempDir dir;
   std::mt19937_64 rng(43);
   const ImageCheck check = check_noisy_images(
-      Role::head, ImageReference::base, renders(dir.path(), "head", 6, 1.0, rng), renders(dir.path(), "base", 6, 1.0, rng),
+      Role::head, ImageReference::base, renders(dir.path(), "head", 40, 1.0, rng), renders(dir.path(), "base", 40, 1.0, rng),
       noisy_thresholds_for(1), dir.path() / "evidence", "s");
-  EXPECT_EQ(check.verdict, ImageVerdict::pass) << check.error;
+  EXPECT_EQ(check.verdict, ImageVerdict::pass) << check_detail(check);
   EXPECT_TRUE(check.evidence.empty());
+  ASSERT_TRUE(check.noisy.has_value());
+  EXPECT_EQ(check.noisy->actual_runs, 40);
 }
 
 TEST(NoisyImageCheck, ANaNInOneOfTheTracersRunsFails) {
@@ -98,6 +108,85 @@ TEST(NoisyImageCheck, RunsThatAreAllTheSameImageAreNoted) {
                                               noisy_thresholds_for(1), dir.path(), "s");
   EXPECT_NE(check.error.find("runs' images are identical: is {seed} reaching"), std::string::npos)
       << check.error;
+}
+
+// A Monte Carlo golden blessed from 4 runs of flat grey, its manifest written as bless writes it.
+class NoisyGoldenTest : public ::testing::Test {
+ protected:
+  NoisyGoldenTest() {
+    std::mt19937_64 rng(71);
+    const NoisyImageStats stats = stats_of_images(renders(dir_.path(), "bless", 4, 1.0, rng));
+    write_stats_images(stats, golden() / "s.mean.exr", golden() / "s.variance.exr");
+    manifest_.suite = "ci";
+    manifest_.entries.push_back({"s", "s", 1, 32, 32, "", "", "s.mean.exr",
+                                 sha256_file_hex(golden() / "s.mean.exr")});
+    manifest_.noise["s"] = {4, "s.variance.exr", sha256_file_hex(golden() / "s.variance.exr"),
+                            stats.inflation};
+    actual_ = renders(dir_.path(), "run", 4, 1.0, rng);
+  }
+  fs::path golden() const {
+    fs::create_directories(dir_.path() / "golden");
+    return dir_.path() / "golden";
+  }
+  ImageCheck check() const {
+    return check_runs_against_golden(Role::tracer, actual_, golden(), manifest_,
+                                     {"s", "s", 1, 32, 32, "", {}, {}, {}}, noisy_thresholds_for(1),
+                                     dir_.path() / "evidence");
+  }
+  // Rewrites the variance file with `value` at one pixel and the manifest's hash to match, so
+  // that only the value's sense is left to refuse it.
+  void plant_variance(float value) {
+    RgbImage variance = read_rgb_image(golden() / "s.variance.exr");
+    variance.rgb[(3 * 32 + 4) * 3 + 1] = value;
+    write_rgb_image(variance, golden() / "s.variance.exr");
+    manifest_.noise["s"].variance_sha256 = sha256_file_hex(golden() / "s.variance.exr");
+  }
+  TempDir dir_;
+  GoldenManifest manifest_;
+  std::vector<fs::path> actual_;
+};
+
+TEST_F(NoisyGoldenTest, AnIntactGoldenJudges) {
+  const ImageCheck c = check();
+  EXPECT_NE(c.verdict, ImageVerdict::error) << check_detail(c);
+  EXPECT_TRUE(c.noisy.has_value());
+}
+
+TEST_F(NoisyGoldenTest, HashesOfZerosAreRefusedNamingTheFile) {
+  manifest_.entries[0].sha256 = std::string(64, '0');
+  ImageCheck c = check();
+  EXPECT_EQ(c.verdict, ImageVerdict::error);
+  EXPECT_NE(c.error.find("s.mean.exr: its SHA-256 "), std::string::npos) << c.error;
+  EXPECT_NE(c.error.find("is not the manifest's 0000000000000000"), std::string::npos) << c.error;
+  manifest_.entries[0].sha256 = sha256_file_hex(golden() / "s.mean.exr");
+  manifest_.noise["s"].variance_sha256 = std::string(64, '0');
+  c = check();
+  EXPECT_EQ(c.verdict, ImageVerdict::error);
+  EXPECT_NE(c.error.find("s.variance.exr: its SHA-256 "), std::string::npos) << c.error;
+}
+
+TEST_F(NoisyGoldenTest, ANegativeOrNaNVarianceIsRefusedNamingTheFileAndTheValue) {
+  plant_variance(-0.5f);
+  ImageCheck c = check();
+  EXPECT_EQ(c.verdict, ImageVerdict::error);
+  EXPECT_NE(c.error.find("s.variance.exr: a variance must be a finite number >= 0, found -0.5 at "
+                         "(4,3) channel G"),
+            std::string::npos)
+      << c.error;
+  plant_variance(std::numeric_limits<float>::quiet_NaN());
+  c = check();
+  EXPECT_EQ(c.verdict, ImageVerdict::error);
+  EXPECT_NE(c.error.find("found nan at (4,3)"), std::string::npos) << c.error;
+}
+
+TEST_F(NoisyGoldenTest, AnInflationThatCouldNeverFailIsRefused) {
+  for (const double factor : {-1.0, 1e308, 0.5}) {
+    manifest_.noise["s"].inflation = {{8, 1.0}, {kWholeImage, factor}};
+    const ImageCheck c = check();
+    EXPECT_EQ(c.verdict, ImageVerdict::error) << factor;
+    EXPECT_NE(c.error.find("'s': noise.inflation factor "), std::string::npos) << c.error;
+    EXPECT_NE(c.error.find("must lie in [1, 1e+08]"), std::string::npos) << c.error;
+  }
 }
 
 }  // namespace

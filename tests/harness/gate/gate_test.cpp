@@ -216,6 +216,41 @@ TEST(GateVerdict, ARegressionOutranksAnUnmeasuredScene) {
   EXPECT_EQ(gate.count(GateOutcome::fail), 1u);
 }
 
+// A Monte Carlo image neither shown within its tolerance nor beyond it is inconclusive, like a
+// speed change the budget could not decide: a warning (exit 0), a failure with
+// fail_on_inconclusive; the report says the comparison's line.
+TEST(GateVerdict, AnInconclusiveMonteCarloImageWarnsOrFailsAsPolicySays) {
+  SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
+  ImageCheck check{Role::head, ImageReference::base, "a.exr", "b.exr",
+                   ImageVerdict::inconclusive, "", std::nullopt, {}, NoisyComparison{}};
+  check.noisy->tests = 123;
+  check.noisy->image = {-0.0203, -0.0342, -0.0064};
+  check.noisy->samples_factor = 2.0;
+  check.noisy->runs_needed = 60;
+  check.noisy->why_inconclusive = "the whole image is shown neither within nor beyond";
+  scene.images = {check};
+  GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
+  EXPECT_EQ(gate.scenes[0].image, ImageVerdict::inconclusive);
+  EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::warn);
+  EXPECT_EQ(gate.exit_code, 0);
+  GatePolicy strict;
+  strict.fail_on_inconclusive = true;
+  gate = evaluate_gate(compare_document({scene}), strict);
+  EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::fail);
+  EXPECT_EQ(gate.exit_code, 1);
+}
+
+TEST(GatePolicyFile, TheImageToleranceIsReadAndChecked) {
+  const GatePolicy policy = parse_policy(
+      R"({"image_tolerance": 0.02, "scenes": {"gears": {"image_tolerance": 0.03, "reason": "caustics"}}})",
+      "p.json");
+  EXPECT_DOUBLE_EQ(policy.defaults.image_tolerance, 0.02);
+  EXPECT_DOUBLE_EQ(policy.for_scene("gears").image_tolerance, 0.03);
+  EXPECT_DOUBLE_EQ(GatePolicy{}.defaults.image_tolerance, 0.01);
+  EXPECT_THROW(parse_policy(R"({"image_tolerance": 0})", "p.json"), UsageError);
+  EXPECT_THROW(parse_policy(R"({"image_tolerance": -0.01})", "p.json"), UsageError);
+}
+
 TEST(GateVerdict, ImagesFailWarnOrCannotBeChecked) {
   SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
   ImageMetrics metrics;

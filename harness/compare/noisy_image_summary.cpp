@@ -33,8 +33,12 @@ std::string evidence_text(const NoisyComparison& c) {
                      100 * c.confidence, c.actual_runs, c.expected_runs);
 }
 
+// The whole image's failure when it has one (a global change reads as one, even where a small
+// tile's test happens to be surer), else the surest tile's.
 std::string failed_text(const NoisyComparison& c) {
-  const BiasedTile& w = c.biased.front();
+  const auto whole = std::find_if(c.biased.begin(), c.biased.end(),
+                                  [](const BiasedTile& t) { return t.tile_px == kWholeImage; });
+  const BiasedTile& w = whole != c.biased.end() ? *whole : c.biased.front();
   if (w.tile_px == kWholeImage) {
     return fmt::format("fail (beyond the {}): the whole image {} {}; {}; {} of {} tests failed",
                        tolerance_text(c), kChannelNames[w.channel], interval_text(w.change),

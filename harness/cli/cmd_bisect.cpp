@@ -66,8 +66,9 @@ void add_bisect_command(CLI::App& command, int& exit_code) {
       ->check(CLI::IsMember({"ratio", "image"}))
       ->capture_default_str();
   command.add_flag("--explain", args.explain,
-                   "profile each REGRESSED step's two revisions once under cachegrind and end "
-                   "with where the culprit's time went (sim mode explains without it)");
+                   "profile each REGRESSED step's two revisions once under valgrind's callgrind "
+                   "and end with where the culprit's time went (sim mode explains from its own "
+                   "cachegrind files without it)");
   add_format_option(command, args.format, {"text", "json"});
 }
 

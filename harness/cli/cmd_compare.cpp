@@ -57,8 +57,9 @@ void add_compare_command(CLI::App& command, int& exit_code) {
   command.add_flag("--fail-on-inconclusive", args.fail_on_inconclusive,
                    "an INCONCLUSIVE change fails the gate instead of warning");
   command.add_flag("--explain", args.explain,
-                   "run each REGRESSED scene's base and head once more under cachegrind and "
-                   "show the functions whose cost grew most (sim mode explains without it)");
+                   "run each REGRESSED scene's base and head once more under valgrind's "
+                   "callgrind and show the functions whose instructions grew most (sim mode "
+                   "explains from its own cachegrind files without it)");
   add_publish_options(
       command, args.out,
       "results document (default: <cache-dir>/runs/<time>-<base>-<head>/results.json)",

@@ -106,15 +106,19 @@ struct MeterReport {
   long long system_us = 0;
   long max_rss_kib = 0;
   long long wall_ns = 0;
+  bool joined_cgroup = false;  // the program ran inside the cgroup raygate made for it
 };
 
 MeterReport parse_meter_report(const std::string& text) {
   MeterReport report;
   if (std::sscanf(text.c_str(), "spawn_failed %d", &report.spawn_errno) == 1) {
     report.spawn_failed = true;
-  } else if (std::sscanf(text.c_str(), "rusage %lld %lld %ld %lld", &report.user_us,
-                         &report.system_us, &report.max_rss_kib, &report.wall_ns) == 4) {
-    report.has_usage = true;
+  } else {
+    int joined = 0;
+    const int fields = std::sscanf(text.c_str(), "rusage %lld %lld %ld %lld %d", &report.user_us,
+                                   &report.system_us, &report.max_rss_kib, &report.wall_ns, &joined);
+    report.has_usage = fields >= 4;
+    report.joined_cgroup = fields == 5 && joined == 1;
   }
   return report;
 }
@@ -200,6 +204,11 @@ Process Process::start(const ProcessSpec& spec) {
   std::vector<std::string> argv_strings = spec.argv;
   if (spec.metered) {
     argv_strings.insert(argv_strings.begin(), {meter.string(), std::to_string(kMeterReportFd)});
+    p.cgroup_ = MemoryCgroup::create();
+    if (p.cgroup_) {
+      argv_strings.insert(argv_strings.begin() + 1,
+                          {"--cgroup", p.cgroup_->procs_file().string()});
+    }
   }
   std::vector<std::string> env_strings = build_environment(spec);
   std::vector<char*> argv = c_strings(argv_strings);
@@ -244,6 +253,7 @@ Process::Process(Process&& other) noexcept
       stdout_log_(std::exchange(other.stdout_log_, -1)),
       stderr_log_(std::exchange(other.stderr_log_, -1)),
       meter_fd_(std::exchange(other.meter_fd_, -1)),
+      cgroup_(std::move(other.cgroup_)),
       started_(other.started_),
       early_result_(std::move(other.early_result_)),
       reaped_(std::exchange(other.reaped_, true)),
@@ -340,6 +350,13 @@ void Process::read_meter_report(ProcessResult& result) {
   result.system_seconds = static_cast<double>(report.system_us) * 1e-6;
   result.max_rss_kib = report.max_rss_kib;
   result.rss_own = true;
+  result.peak_method = PeakMethod::largest_process;
+  const std::optional<long> tree_kib =
+      cgroup_ && report.joined_cgroup ? cgroup_->peak_kib() : std::nullopt;
+  if (tree_kib) {
+    result.max_rss_kib = *tree_kib;
+    result.peak_method = cgroup_->method();
+  }
   if (result.outcome != ProcessOutcome::timed_out) {
     result.wall_seconds = static_cast<double>(report.wall_ns) * 1e-9;  // without the meter's start
   }
@@ -352,6 +369,7 @@ void Process::finish(ProcessResult& result, Clock::time_point exited_at) {
   kill_group(SIGKILL);
   reap(result, exited_at);
   read_meter_report(result);
+  cgroup_.reset();  // what is still in it is killed, and it is removed
   release_child_group(std::exchange(group_slot_, -1));
   sweep_stray_children();
   scope_.reset();

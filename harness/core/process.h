@@ -18,6 +18,8 @@
 #include <string>
 #include <vector>
 
+#include "core/memory_cgroup.h"
+
 namespace raygate {
 
 class InterruptScope;
@@ -37,6 +39,8 @@ struct ProcessSpec {
   // Start it through raygate-meter (core/process_meter_main.cpp), so that max_rss_kib and the
   // times are the program's own (and its waited-for children's), not raygate's seen through
   // fork. pid() is then the meter's, which forwards single-process signals to the program.
+  // Where a memory cgroup can be made (core/memory_cgroup.h), the peak is the whole process
+  // tree's at once; else its largest process's (ProcessResult::peak_method says which).
   bool metered = false;
 };
 
@@ -56,6 +60,7 @@ struct ProcessResult {
   double system_seconds = 0.0;
   long max_rss_kib = 0;  // peak resident memory; raygate's own unless the spec was metered
   bool rss_own = false;  // max_rss_kib is the program's own (metered, and the meter reported)
+  PeakMethod peak_method = PeakMethod::raygate_process;  // how max_rss_kib was measured
   bool stdout_truncated = false;
   bool stderr_truncated = false;
   std::string spawn_error;
@@ -101,6 +106,7 @@ class Process {
   int stdout_log_ = -1;
   int stderr_log_ = -1;
   int meter_fd_ = -1;  // read end of raygate-meter's report, when metered
+  std::optional<MemoryCgroup> cgroup_;  // the metered tree's own, where one can be made
   std::chrono::steady_clock::time_point started_;
   std::optional<ProcessResult> early_result_;  // set when spawning failed
   bool reaped_ = false;

@@ -5,11 +5,16 @@
 // directly therefore reports raygate's own peak (~130 MB), whatever it uses itself. This program
 // is tiny, so the peak it hands on to the program it starts is ~1 MB.
 //
-// Usage: raygate-meter REPORT_FD PROGRAM [ARG...]
+// Usage: raygate-meter [--cgroup PROCS_FILE] REPORT_FD PROGRAM [ARG...]
+// With --cgroup it first joins that cgroup (writes its pid to PROCS_FILE, a memory cgroup's
+// cgroup.procs that raygate made: core/memory_cgroup.h), so PROGRAM and all it starts are
+// counted there together; raygate reads the cgroup's peak after this process ended.
 // It runs PROGRAM in its own process group (raygate's), with its stdio, environment and CPU
 // mask, forwards the signals one sends to a single process, and ends as PROGRAM ended (the same
 // exit status, or the same signal). On REPORT_FD it writes one line:
-//   "rusage <user_us> <system_us> <max_rss_kib> <wall_ns>"   after PROGRAM was reaped, or
+//   "rusage <user_us> <system_us> <max_rss_kib> <wall_ns> <joined>"   after PROGRAM was reaped
+//     (joined: 1 when it ran inside the --cgroup, else 0; max_rss_kib is the largest single
+//     process's peak, wait4's), or
 //   "spawn_failed <errno>"                                   when PROGRAM could not start.
 // It uses only the C library: a C++ runtime would raise the very floor it is there to keep low.
 #include <errno.h>
@@ -101,11 +106,29 @@ void install_forwarding(sigset_t& blocked) {
   _exit(128 + sig);
 }
 
+// Moves this process into the cgroup whose cgroup.procs is `procs_file`; 1 when it did.
+int join_cgroup(const char* procs_file) {
+  const int fd = open(procs_file, O_WRONLY | O_CLOEXEC);
+  if (fd < 0) return 0;
+  char pid[32];
+  snprintf(pid, sizeof pid, "%d\n", static_cast<int>(getpid()));
+  const ssize_t n = write(fd, pid, strlen(pid));
+  close(fd);
+  return n == static_cast<ssize_t>(strlen(pid)) ? 1 : 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  int joined = 0;
+  if (argc >= 3 && strcmp(argv[1], "--cgroup") == 0) {
+    joined = join_cgroup(argv[2]);
+    argc -= 2;
+    argv += 2;
+  }
   if (argc < 3) {
-    static constexpr char kUsage[] = "usage: raygate-meter REPORT_FD PROGRAM [ARG...]\n";
+    static constexpr char kUsage[] =
+        "usage: raygate-meter [--cgroup PROCS_FILE] REPORT_FD PROGRAM [ARG...]\n";
     report(2, kUsage);
     return 2;
   }
@@ -133,8 +156,8 @@ int main(int argc, char** argv) {
   const long long wall = now_ns() - started;
   g_child = 0;
   if (reaped != pid) return 126;
-  snprintf(line, sizeof line, "rusage %lld %lld %ld %lld\n", micros(usage.ru_utime),
-           micros(usage.ru_stime), usage.ru_maxrss, wall);
+  snprintf(line, sizeof line, "rusage %lld %lld %ld %lld %d\n", micros(usage.ru_utime),
+           micros(usage.ru_stime), usage.ru_maxrss, wall, joined);
   report(report_fd, line);
   end_like(status);
 }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 
 #include "core/format.h"
 
@@ -39,6 +40,21 @@ std::optional<MemoryJudgement> judge_scene_memory(const SceneResult& scene,
   if (!summary) return std::nullopt;
   return MemoryJudgement{*summary, classify_memory(*summary, policy.max_memory_increase),
                          policy.max_memory_increase};
+}
+
+std::vector<PeakMethod> peak_methods(const ResultsDocument& document) {
+  std::set<PeakMethod> methods;
+  for (const SceneResult& scene : document.scenes) {
+    for (const Round& round : scene.runs.rounds) {
+      for (const Role role : revision_roles(document.kind)) {
+        const auto found = round.runs.find(role_name(role));
+        if (found != round.runs.end() && found->second.max_rss_own) {
+          methods.insert(found->second.peak_method);
+        }
+      }
+    }
+  }
+  return {methods.begin(), methods.end()};
 }
 
 std::string memory_text(double kib) {

@@ -31,6 +31,10 @@ struct MemoryJudgement {
 std::optional<MemoryJudgement> judge_scene_memory(const SceneResult& scene,
                                                   const ScenePolicy& policy);
 
+// How the own peaks of the document's revisions were measured (core/memory_cgroup.h), each
+// method once, in the order of PeakMethod; empty when there are none.
+std::vector<PeakMethod> peak_methods(const ResultsDocument& document);
+
 // "12.3 MiB" (KiB in, binary units as the kernel counts them).
 std::string memory_text(double kib);
 

@@ -7,6 +7,7 @@
 #include "adapter/adapter.h"
 #include "adapter/packages.h"
 #include "core/error.h"
+#include "core/paths.h"
 #include "pipeline/adapter_summary.h"
 
 namespace raygate {
@@ -27,10 +28,20 @@ std::string packages_warning(const Adapter& adapter) {
 
 }  // namespace
 
+std::filesystem::path find_adapter(const std::string& name, const std::filesystem::path& data_root) {
+  const std::filesystem::path direct(name);
+  if (std::filesystem::exists(direct)) return direct;
+  const std::filesystem::path shipped = data_root / "adapters" / (name + ".json");
+  if (name.find('/') == std::string::npos && std::filesystem::exists(shipped)) return shipped;
+  throw UsageError(fmt::format("adapter '{}' not found: not a file, and not a shipped adapter "
+                               "(see {}/adapters/)",
+                               name, data_root.string()));
+}
+
 AdapterCheck check_adapter_file(const std::string& file) {
   AdapterCheck check;
   try {
-    const Adapter adapter = load_adapter(file);
+    const Adapter adapter = load_adapter(find_adapter(file, locate_tools().data_root));
     check.summary = adapter_summary(adapter);
     check.warning = packages_warning(adapter);
   } catch (const UsageError& e) {

@@ -2,6 +2,11 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
+#include <vector>
+
+#include "adapter/placeholders.h"
+
 #include "runner/timing/timing_modes.h"
 
 namespace raygate {
@@ -83,7 +88,35 @@ std::string run_lines(const Adapter& a) {
   return out;
 }
 
+// Every template of the adapter: build steps, run, stdin, cwd, image and env values.
+std::vector<std::string> templates_of(const Adapter& a) {
+  std::vector<std::string> all;
+  for (const std::vector<std::string>& step : a.build) all.insert(all.end(), step.begin(), step.end());
+  all.insert(all.end(), a.run.begin(), a.run.end());
+  if (a.stdin_template) all.push_back(*a.stdin_template);
+  all.push_back(a.cwd);
+  all.push_back(a.image);
+  for (const auto& [key, value] : a.env) all.push_back(value);
+  return all;
+}
+
 }  // namespace
+
+std::string repository_unused_note(const Adapter& a) {
+  for (const std::string& text : templates_of(a)) {
+    for (const char* name : {"src", "repo_root", "build"}) {
+      if (uses_placeholder(text, name)) return "";
+    }
+  }
+  const bool own_files = std::ranges::any_of(
+      templates_of(a), [](const std::string& text) { return uses_placeholder(text, "raygate_source"); });
+  return fmt::format(
+      "adapter {} uses nothing from the repository (no {{src}}, {{repo_root}} or {{build}} in "
+      "its commands){}: every revision runs the same program, so a compare measures no change "
+      "of the repository's",
+      a.name, own_files ? "; its script is raygate's own ({raygate_source}), not the repository's"
+                        : "");
+}
 
 std::string adapter_summary(const Adapter& a) {
   std::string out = fmt::format("{}: ok\n", a.file.string());
@@ -100,6 +133,9 @@ std::string adapter_summary(const Adapter& a) {
   }
   out += build_lines(a);
   out += run_lines(a);
+  if (const std::string note = repository_unused_note(a); !note.empty()) {
+    out += fmt::format("  repository  {}\n", note);
+  }
   return out + fmt::format("  hash        {}\n", adapter_hash(a));
 }
 

@@ -9,6 +9,11 @@
 
 namespace raygate {
 
+// "" when the adapter builds or runs something of the repository under test; else why every
+// revision runs the same program (issue 40: blender-cycles runs raygate's own script and
+// Blender from PATH, and nothing told the user). Said by adapter check and by run/compare.
+std::string repository_unused_note(const Adapter& adapter);
+
 // "FILE: ok" and one indented line per field, each ending in a newline.
 std::string adapter_summary(const Adapter& adapter);
 

@@ -8,20 +8,12 @@
 #include "core/error.h"
 #include "core/process.h"
 #include "core/sha256.h"
+#include "pipeline/adapter_check.h"
+#include "pipeline/adapter_summary.h"
 
 namespace raygate {
 
 namespace {
-
-std::filesystem::path find_adapter(const std::string& name, const std::filesystem::path& data_root) {
-  const std::filesystem::path direct(name);
-  if (std::filesystem::exists(direct)) return direct;
-  const std::filesystem::path shipped = data_root / "adapters" / (name + ".json");
-  if (name.find('/') == std::string::npos && std::filesystem::exists(shipped)) return shipped;
-  throw UsageError(fmt::format("adapter '{}' not found: not a file, and not a shipped adapter "
-                               "(see {}/adapters/)",
-                               name, data_root.string()));
-}
 
 std::filesystem::path pick_golden_dir(const MeasureOptions& args, const ToolPaths& tools,
                                       const Adapter& adapter) {
@@ -113,6 +105,9 @@ MeasureContext load_measure_context(const MeasureOptions& args,
   if (!args.policy.empty()) c.policy = load_policy(args.policy);
   c.jobs = args.jobs;
   warnings = choose_timing(c, args.metric, !args.policy.empty());
+  if (const std::string note = repository_unused_note(c.adapter); !note.empty()) {
+    warnings.push_back(note);
+  }
   return c;
 }
 

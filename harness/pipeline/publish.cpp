@@ -74,29 +74,42 @@ void publish_reports(const ResultsDocument& document, const GateResult& gate,
                      OutputFailures& failures, std::vector<TrendSeries> trends) {
   ReportInput input{document, gate, request.policy, std::move(trends),
                     request.document_path.parent_path()};
+  input.outputs_failed = failures.summary();  // -o, when it could not be written
+  input.exit_code_with_outputs = failures.exit_code(gate.exit_code);
+  ReportOptions options;
+  options.colour = request.report_colour;
+  // Report files first, so the table's closing line knows the real exit code; their "written"
+  // lines still follow the table, as before.
+  std::vector<std::string> written_lines;
+  for (const ReportTarget& target : request.reports) {
+    if (target.path == "-") continue;
+    const std::string output =
+        fmt::format("--report {}:{}", to_string(target.format), target.path.string());
+    if (failures.attempt(output, [&] { write_reports(input, {target}, options); })) {
+      written_lines.push_back(
+          fmt::format("{} report: {}", to_string(target.format), target.path.string()));
+    }
+  }
   if (request.table != nullptr) {
+    input.outputs_failed = failures.summary();
+    input.exit_code_with_outputs = failures.exit_code(gate.exit_code);
     ReportOptions table;
     table.colour = request.table_colour;
     std::fflush(stderr);  // C stdio chatter before it, when the table goes to std::cerr
     make_reporter(ReportFormat::console, table)->write(input, *request.table);
     request.table->flush();
   }
-  ReportOptions options;
-  options.colour = request.report_colour;
+  for (const std::string& line : written_lines) sink.info(line);
   for (const ReportTarget& target : request.reports) {
-    const std::string output =
-        fmt::format("--report {}:{}", to_string(target.format), target.path.string());
+    if (target.path != "-") continue;
+    const std::string output = fmt::format("--report {}:-", to_string(target.format));
     int error_number = 0;  // why standard output failed, before anything else sets errno
-    const bool written = failures.attempt(output, [&] {
+    failures.attempt(output, [&] {
       errno = 0;
       write_reports(input, {target}, options);
       error_number = errno;
     });
-    if (target.path == "-") {
-      check_standard_output(failures, output, error_number);
-    } else if (written) {
-      sink.info(fmt::format("{} report: {}", to_string(target.format), target.path.string()));
-    }
+    check_standard_output(failures, output, error_number);
   }
 }
 

@@ -102,7 +102,7 @@ ResultsDocument new_document(DocumentKind kind, const MeasureContext& context,
                              const BaselineTool& baseline) {
   ResultsDocument document;
   document.kind = kind;
-  document.raygate_version = RAYGATE_VERSION;
+  document.raygate_version = RAYGATE_VERSION " (git " RAYGATE_GIT_COMMIT ")";  // as --version
   document.started_at = utc_timestamp();
   document.machine = probe_machine_context();
   document.baseline.version = baseline.version_line();

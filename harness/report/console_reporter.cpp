@@ -147,19 +147,22 @@ void add_table(const ReportInput& input, const std::vector<SceneView>& views, Sp
 
 void add_footer(const ReportInput& input, const std::vector<SceneView>& views, Spans& spans) {
   // Said once for the document, however many scenes share them (a tracer without goldens).
-  if (!input.gate.notes.empty() || !input.gate.problems.empty()) spans.push_back(plain("\n"));
-  for (const std::string& problem : input.gate.problems) {
+  std::vector<std::string> problems = input.gate.problems;
+  if (!input.outputs_failed.empty()) problems.push_back(input.outputs_failed);
+  if (!input.gate.notes.empty() || !problems.empty()) spans.push_back(plain("\n"));
+  for (const std::string& problem : problems) {
     spans.push_back(painted("problem: " + problem, GateOutcome::unmeasured));
     spans.push_back(plain("\n"));
   }
   for (const std::string& note : input.gate.notes) spans.push_back(plain("note: " + note + "\n"));
   const Headline line = headline(input, views);
-  const GateOutcome overall = input.gate.exit_code == 0   ? GateOutcome::pass
-                              : input.gate.exit_code == 1 ? GateOutcome::fail
-                                                          : GateOutcome::unmeasured;
+  const int exit_code = input.exit_code();
+  const GateOutcome overall = exit_code == 0   ? GateOutcome::pass
+                              : exit_code == 1 ? GateOutcome::fail
+                                               : GateOutcome::unmeasured;
   spans.push_back(plain("\n"));
-  spans.push_back(painted(
-      fmt::format("{} ({}), exit {}", line.title, line.detail, input.gate.exit_code), overall));
+  spans.push_back(painted(fmt::format("{} ({}), exit {}", line.title, line.detail, exit_code),
+                          overall));
   spans.push_back(plain("\n"));
 }
 

@@ -91,7 +91,7 @@ std::string banner(const ReportInput& input, const std::vector<SceneView>& views
       R"(<div class="banner {}"><span class="big-badge">{}</span><div><div class="headline">{}</div>)"
       R"(<div class="detail">{} · exit code {}</div></div></div>)",
       outcome_class(outcome), escape(verdict_word(input.gate.exit_code)), escape(line.title),
-      escape(line.detail), input.gate.exit_code);
+      escape(line.detail), input.exit_code());
 }
 
 // What the gate says of the whole document (a problem that keeps it from passing; notes such as

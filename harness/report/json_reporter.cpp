@@ -135,7 +135,7 @@ class JsonReporter final : public Reporter {
                    {"kind", to_string(d.kind)},
                    {"suite", d.suite},
                    {"verdict", verdict_word(input.gate.exit_code)},
-                   {"exit_code", input.gate.exit_code},
+                   {"exit_code", input.exit_code()},
                    {"headline", line.title + " (" + line.detail + ")"},
                    {"counts", counts(input.gate)},
                    {"complete", d.complete},

@@ -29,7 +29,7 @@ void add_properties(pugi::xml_node suite, const ReportInput& input) {
   pugi::xml_node properties = suite.append_child("properties");
   add_property(properties, "kind", std::string(to_string(d.kind)));
   add_property(properties, "suite", d.suite);
-  add_property(properties, "exit_code", std::to_string(input.gate.exit_code));
+  add_property(properties, "exit_code", std::to_string(input.exit_code()));
   add_property(properties, "raygate_version", d.raygate_version);
   add_property(properties, "baseline", d.baseline.version);
   for (const RevisionRecord& revision : d.revisions) {

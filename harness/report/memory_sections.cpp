@@ -1,6 +1,8 @@
 #include "report/memory_sections.h"
 
 #include <fmt/core.h>
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -44,6 +46,16 @@ std::vector<MemoryRow> memory_rows(const ReportInput& input) {
     }
   }
   return rows;
+}
+
+// "the whole process tree at once (cgroup v2 memory.peak)": what the peaks are (issue 40).
+std::string method_note(const ReportInput& input) {
+  std::vector<std::string> parts;
+  for (const PeakMethod method : peak_methods(input.document)) {
+    parts.push_back(describe_peak_method(method));
+  }
+  if (parts.empty()) return "the tracer's own";
+  return "the tracer's " + fmt::format("{}", fmt::join(parts, " and "));
 }
 
 std::string limit_note(const ReportInput& input) {
@@ -156,7 +168,7 @@ std::string code_safe(std::string text) {
 std::string memory_console(const ReportInput& input) {
   const std::vector<MemoryRow> rows = memory_rows(input);
   if (rows.empty()) return "";
-  return fmt::format("\nmemory (peak resident, the tracer's own; {}):\n{}", limit_note(input),
+  return fmt::format("\nmemory (peak of {}; {}):\n{}", method_note(input), limit_note(input),
                      memory_table_text(rows, is_compare(input.document.kind)));
 }
 
@@ -172,7 +184,7 @@ std::string explanation_console(const ReportInput& input) {
 std::string memory_markdown(const ReportInput& input) {
   const std::vector<MemoryRow> rows = memory_rows(input);
   if (rows.empty()) return "";
-  return fmt::format("\n**Memory** (peak resident, the tracer's own; {})\n\n```\n{}```\n",
+  return fmt::format("\n**Memory** (peak of {}; {})\n\n```\n{}```\n", method_note(input),
                      limit_note(input),
                      code_safe(memory_table_text(rows, is_compare(input.document.kind))));
 }
@@ -193,9 +205,9 @@ std::string memory_html(const ReportInput& input) {
   if (rows.empty()) return "";
   const bool compare = is_compare(input.document.kind);
   std::string out = fmt::format(
-      "<section class=\"card memory\"><h2>Memory</h2><p>Peak resident memory, the tracer's own; "
+      "<section class=\"card memory\"><h2>Memory</h2><p>Peak memory of {}; "
       "{}.</p><table><thead><tr><th>scene</th><th>{}</th>{}</tr></thead><tbody>",
-      escape(limit_note(input)), compare ? "peak base → head" : "peak",
+      escape(method_note(input)), escape(limit_note(input)), compare ? "peak base → head" : "peak",
       compare ? "<th>change</th><th>memory</th>" : "");
   for (const MemoryRow& r : rows) {
     out += fmt::format("<tr><td>{}</td><td class=\"num\">{}</td>", escape(r.scene), escape(r.peak));
@@ -266,11 +278,25 @@ std::string explanation_html(const ReportInput& input) {
   return out;
 }
 
+namespace {
+
+// ["cgroup-v2"]: the same words as the document's runs.
+nlohmann::json method_words(const ReportInput& input) {
+  nlohmann::json words = nlohmann::json::array();
+  for (const PeakMethod method : peak_methods(input.document)) {
+    words.push_back(std::string(to_string(method)));
+  }
+  return words;
+}
+
+}  // namespace
+
 nlohmann::json memory_json(const ReportInput& input, const SceneResult& scene) {
   const ResultsDocument& d = input.document;
   if (!is_compare(d.kind)) {
     const auto peak = median_peak_kib(scene.runs, Role::tracer);
-    return peak ? nlohmann::json{{"peak_kib", *peak}} : nlohmann::json(nullptr);
+    return peak ? nlohmann::json{{"peak_kib", *peak}, {"peak_method", method_words(input)}}
+                : nlohmann::json(nullptr);
   }
   const auto judged = judge_scene_memory(scene, input.policy.for_scene(scene.entry.id));
   if (!judged) return nullptr;
@@ -281,6 +307,7 @@ nlohmann::json memory_json(const ReportInput& input, const SceneResult& scene) {
           {"change", s.change},
           {"noise_kib", s.noise_kib()},
           {"limit", judged->limit},
+          {"peak_method", method_words(input)},
           {"verdict", std::string(to_string(judged->verdict))}};
 }
 

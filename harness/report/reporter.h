@@ -45,7 +45,12 @@ struct ReportInput {
   std::vector<TrendSeries> trends;
   // Relative image paths in the document are resolved against this (the document's folder).
   std::filesystem::path base_dir;
+  // Outputs that could not be written before the table (issue 40: its closing line said "exit 0"
+  // while raygate exited 3): what failed, and the exit code raygate will really end with.
+  std::string outputs_failed;
+  int exit_code_with_outputs = 0;
 
+  int exit_code() const { return outputs_failed.empty() ? gate.exit_code : exit_code_with_outputs; }
   const TrendSeries* trend(const std::string& scene) const;
 };
 

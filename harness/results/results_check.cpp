@@ -143,6 +143,9 @@ void check_run(const JsonField& run) {
   number(run.member("seconds"), 0.0, kMaxMeasure);
   check_seconds(run, {"wall_seconds", "user_seconds", "system_seconds"});
   integer(run.member("max_rss_kib"), 0, kMaxCount);
+  if (const auto method = find(run, "peak_method")) {
+    require_word(*method, method->as_string(), {"largest-process", "cgroup-v1", "cgroup-v2"});
+  }
   number_or_null(run.member("reported_seconds"), 0.0, kMaxMeasure);
   if (const auto counters = find(run, "cachegrind")) {
     object(*counters);

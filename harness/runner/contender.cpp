@@ -21,6 +21,7 @@ RunRecord record_process(const ProcessResult& result, const ProcessSpec& spec) {
   run.system_seconds = result.system_seconds;
   run.max_rss_kib = result.max_rss_kib;
   run.max_rss_own = result.rss_own;
+  run.peak_method = result.peak_method;
   run.log = spec.stdout_path;
   run.ok = result.succeeded();
   if (!run.ok) {

@@ -1,5 +1,7 @@
 #include "runner/run_record.h"
 
+#include <stdexcept>
+
 namespace raygate {
 
 void to_json(nlohmann::json& json, const RunRecord& run) {
@@ -23,6 +25,7 @@ void to_json(nlohmann::json& json, const RunRecord& run) {
   // Written only when true, so a document from before raygate-meter reads back and hashes the
   // same (the store's duplicate check compares canonical JSON).
   if (run.max_rss_own) json["max_rss_own"] = true;
+  if (run.max_rss_own) json["peak_method"] = std::string(to_string(run.peak_method));
 }
 
 void from_json(const nlohmann::json& json, RunRecord& run) {
@@ -35,6 +38,12 @@ void from_json(const nlohmann::json& json, RunRecord& run) {
   run.system_seconds = json.at("system_seconds").get<double>();
   run.max_rss_kib = json.at("max_rss_kib").get<long>();
   run.max_rss_own = json.value("max_rss_own", false);  // absent in documents from before it
+  run.peak_method = run.max_rss_own ? PeakMethod::largest_process : PeakMethod::raygate_process;
+  if (const auto method = json.find("peak_method"); method != json.end()) {  // from issue 40 on
+    const auto parsed = parse_peak_method(method->get<std::string>());
+    if (!parsed) throw std::invalid_argument("unknown peak_method " + method->dump());
+    run.peak_method = *parsed;
+  }
   const nlohmann::json& reported = json.at("reported_seconds");
   run.reported_seconds =
       reported.is_null() ? std::nullopt : std::optional<double>(reported.get<double>());

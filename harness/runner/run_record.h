@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/memory_cgroup.h"
 #include "measure/simulated_cost.h"
 
 namespace raygate {
@@ -30,10 +31,13 @@ struct RunRecord {
   double wall_seconds = 0.0;
   double user_seconds = 0.0;
   double system_seconds = 0.0;
-  long max_rss_kib = 0;  // peak resident memory (wait4's ru_maxrss)
+  long max_rss_kib = 0;  // peak memory (KiB), measured as peak_method says
   // Whether max_rss_kib is the contender's own (started through raygate-meter). Documents older
   // than that hold raygate's peak seen through fork: memory is judged only on own peaks.
   bool max_rss_own = false;
+  // Own peaks: its whole process tree at once (a memory cgroup), or its largest single process
+  // (where no cgroup could be made, and in documents from before issue 40).
+  PeakMethod peak_method = PeakMethod::raygate_process;
   // The contender's own account of its time, when it gives one: the baseline's parse + prepare +
   // render seconds from --stats, or a tracer's time parsed with the adapter's regex.
   std::optional<double> reported_seconds;

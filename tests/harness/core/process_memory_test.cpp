@@ -6,7 +6,11 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <cstring>
+#include <filesystem>
 #include <memory>
 
 #include "core/fs.h"
@@ -44,6 +48,7 @@ ProcessSpec allocator_spec(const std::vector<std::string>& argv, const TempDir& 
 void expect_peak_near(const ProcessResult& r, long mib) {
   ASSERT_TRUE(r.succeeded()) << r.describe() << " " << r.spawn_error;
   EXPECT_TRUE(r.rss_own);
+  EXPECT_NE(r.peak_method, PeakMethod::raygate_process);
   EXPECT_GE(r.max_rss_kib, mib << 10) << "peak below what the program made resident";
   EXPECT_LE(r.max_rss_kib, (mib + kOverheadMib) << 10) << "peak not the program's own";
 }
@@ -122,6 +127,63 @@ TEST(ProcessMemory, MeterForwardsASignalToTheProgram) {
   EXPECT_EQ(r.outcome, ProcessOutcome::signaled);
   EXPECT_EQ(r.signal, SIGTERM);
   EXPECT_TRUE(r.rss_own);
+}
+
+// Issue 40: four workers of 100 MiB side by side. Where a memory cgroup can be made (root, a
+// kernel with cgroup v2 memory.peak or a v1 memory hierarchy) the peak is the tree's at once,
+// >= 400 MiB; elsewhere the record names the fallback, the largest single process (~100 MiB).
+TEST(ProcessMemory, FourWorkersAtOnceAreMeasuredTogetherOrTheFallbackIsNamed) {
+  TempDir dir;
+  const std::string worker = "\"" + kAllocator + "\" 100 1.5 & ";
+  const std::string script = worker + worker + worker + worker + "wait";
+  std::string why_not;
+  const bool cgroups = MemoryCgroup::create(&why_not).has_value();
+  const ProcessResult r = run_process(allocator_spec({"/bin/sh", "-c", script}, dir));
+  ASSERT_TRUE(r.succeeded()) << r.describe();
+  if (!cgroups) {
+    EXPECT_EQ(r.peak_method, PeakMethod::largest_process);
+    EXPECT_LT(r.max_rss_kib, 200L << 10);
+    GTEST_SKIP() << "no memory cgroup here (" << why_not << "): the fallback is named "
+                 << to_string(r.peak_method);
+  }
+  EXPECT_TRUE(r.peak_method == PeakMethod::cgroup_v2 || r.peak_method == PeakMethod::cgroup_v1);
+  EXPECT_GE(r.max_rss_kib, 400L << 10) << to_string(r.peak_method);
+  EXPECT_LE(r.max_rss_kib, (400L + 4 * kOverheadMib) << 10);
+}
+
+bool any_cgroup_of(pid_t owner, const std::filesystem::path& parent) {
+  const std::string prefix = "raygate-meter-" + std::to_string(owner) + "-";
+  for (const auto& entry : std::filesystem::directory_iterator(parent)) {
+    if (entry.path().filename().string().rfind(prefix, 0) == 0) return true;
+  }
+  return false;
+}
+
+// The cgroup is removed on every path: a run that ended, a run timed out (its tree killed), a
+// Process destroyed mid-run (raygate unwinding), and one a SIGKILLed raygate left (its owner's
+// pid is dead): the next cgroup made in the same place removes it.
+TEST(ProcessMemory, TheCgroupIsRemovedOnEveryPath) {
+  std::optional<MemoryCgroup> probe = MemoryCgroup::create();
+  if (!probe) GTEST_SKIP() << "no memory cgroup can be made here";
+  const std::filesystem::path parent = probe->directory().parent_path();
+  probe.reset();
+  TempDir dir;
+  ASSERT_TRUE(run_process(allocator_spec({kAllocator, "1"}, dir)).succeeded());
+  ProcessSpec slow = allocator_spec({"/bin/sh", "-c", "\"" + kAllocator + "\" 1 30 & wait"}, dir);
+  slow.timeout = std::chrono::milliseconds(300);
+  EXPECT_EQ(run_process(slow).outcome, ProcessOutcome::timed_out);
+  {
+    Process abandoned = Process::start(allocator_spec({kAllocator, "1", "30"}, dir));
+    ::usleep(100000);
+  }
+  EXPECT_FALSE(any_cgroup_of(::getpid(), parent));
+  const pid_t dead = ::fork();
+  if (dead == 0) ::_exit(0);
+  ::waitpid(dead, nullptr, 0);
+  const std::filesystem::path stale = parent / ("raygate-meter-" + std::to_string(dead) + "-0");
+  ASSERT_TRUE(std::filesystem::create_directory(stale));
+  const std::optional<MemoryCgroup> next = MemoryCgroup::create();
+  EXPECT_FALSE(std::filesystem::exists(stale));
 }
 
 }  // namespace

@@ -41,8 +41,9 @@ class PublishPipelineTest : public PipelineTest {
     request_.document_path = measured_.path;
     request_.store = store_;
     request_.policy = context_.policy;
-    request_.reports = parse_report_targets({"json:" + json_.string(), "markdown:" +
-                                             markdown_.string()});
+    // As parse_report_targets makes them, without its early check of the paths (a report that
+    // fails when written must reach publish).
+    request_.reports = {{ReportFormat::json, json_}, {ReportFormat::markdown, markdown_}};
     request_.table = &table_;
     return publish(measured_.document, request_, sink_, failures_);
   }
@@ -117,6 +118,24 @@ TEST_F(PublishPipelineTest, AStoreThatCannotBeWrittenIsSaidAndTheReportsStillGoO
             std::string::npos)
       << sink_.problems[0];
   EXPECT_EQ(json_report().at("exit_code"), to_int(ExitCode::regression));
+}
+
+// Issue 40: a report that cannot be written makes raygate exit 3, and the table's closing line
+// says so, with the problem, instead of "pass (...), exit 0".
+TEST_F(PublishPipelineTest, AReportThatCannotBeWrittenEndsTheTableWithTheRealExitCode) {
+  const std::string base = commit_tracer("2.0", "base");
+  const std::string head = commit_tracer("2.0", "head: a comment");
+  write_file_atomically(dir_.path() / "a-file", "not a folder\n");
+  markdown_ = dir_.path() / "a-file" / "report.md";
+  EXPECT_EQ(compare_and_publish(base, head), to_int(ExitCode::infrastructure));
+  const std::string table = table_.str();
+  EXPECT_NE(table.find("problem: 1 output could not be written (--report markdown:" +
+                       markdown_.string()),
+            std::string::npos)
+      << table;
+  EXPECT_NE(table.find("), exit 3\n"), std::string::npos) << table;
+  EXPECT_EQ(table.find("exit 0"), std::string::npos) << table;
+  EXPECT_EQ(json_report().at("exit_code"), 0);  // written before the markdown failed
 }
 
 TEST_F(PublishPipelineTest, ABadReportSpecIsAUsageError) {

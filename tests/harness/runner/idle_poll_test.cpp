@@ -75,6 +75,23 @@ TEST_F(IdlePollTest, AMachineThatRefusesLeavesItUnheldWithTheReason) {
       << on_directory.why_not();
 }
 
+// Issue 40: the kernel's device (here /dev/null, a character device that takes the write) holds
+// idle CPUs polling only with a cpuidle driver; with "none" (many VMs) the record must not say
+// "poll", so the hold is not taken, with the reason.
+TEST_F(IdlePollTest, TheKernelsRequestIsHeldOnlyWithACpuidleDriver) {
+  const fs::path driver = dir_ / "current_driver";
+  std::ofstream(driver) << "none\n";
+  const IdlePollHold without(fs::path("/dev/null"), driver);
+  EXPECT_FALSE(without.held());
+  EXPECT_EQ(without.why_not(), "no cpuidle driver (" + driver.string() +
+                                   ": none): idle CPUs halt whatever latency is asked");
+  const IdlePollHold unreadable(fs::path("/dev/null"), dir_ / "missing");
+  EXPECT_FALSE(unreadable.held());
+  std::ofstream(driver) << "intel_idle\n";
+  const IdlePollHold with(fs::path("/dev/null"), driver);
+  EXPECT_TRUE(with.held()) << with.why_not();
+}
+
 TEST_F(IdlePollTest, AMovedHoldIsReleasedOnceByItsNewOwner) {
   const std::size_t before = open_descriptors();
   {

@@ -48,11 +48,30 @@ int revparse(ObjectPtr& object, ReferencePtr& ref, git_repository* repo, const s
   return git_revparse_ext(object.out(), ref.out(), repo, spec.c_str());
 }
 
+// Past any name git gives a commit (a ref is a file path; PATH_MAX is 4096): such a revision is
+// refused before libgit2 sees it, which otherwise fails on the path it makes of it, an error
+// that is not the user's own ("exit 3") and that echoed all of it back, twice.
+constexpr std::size_t kMaxRevisionChars = 4096;
+
+void check_revision_text(const std::string& revspec, std::string_view where) {
+  const bool control = std::any_of(revspec.begin(), revspec.end(), [](char c) {
+    return static_cast<unsigned char>(c) < 0x20 || c == 0x7f;
+  });
+  if (revspec.size() <= kMaxRevisionChars && !control) return;
+  const std::string shown = repaired_utf8(revspec.substr(0, 60));
+  throw UsageError(fmt::format(
+      "revision '{}{}' ({} characters) cannot name anything in {}: {}; give a branch, tag or "
+      "commit sha",
+      shown, revspec.size() > 60 ? "..." : "", revspec.size(), where,
+      control ? "it holds a control character" : "a revision is at most 4096 characters"));
+}
+
 }  // namespace
 
 ResolvedCommit resolve_commit(git_repository* repo, const std::string& revspec,
                               std::string_view where, std::string_view fallback_prefix) {
   if (revspec.empty()) throw_unknown(repo, revspec, where);
+  check_revision_text(revspec, where);
   ObjectPtr object;
   ReferencePtr ref;
   int rc = revparse(object, ref, repo, revspec);

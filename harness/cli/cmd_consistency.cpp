@@ -36,15 +36,11 @@ void add_consistency_command(CLI::App& command, int& exit_code) {
   ConsistencyArgs& args = bind_command<ConsistencyArgs>(command, consistency_command, exit_code);
   command.add_option("documents", args.documents,
                      "results documents (raygate run/compare --out), one per machine or run");
-  command
-      .add_option("--min-r2", args.options.min_r2,
-                  "every pair of documents needs at least this r² of per-scene ratios")
-      ->capture_default_str();
-  command
-      .add_option("--max-deviation", args.options.max_deviation,
-                  "a scene whose ratio strays further than this fraction from its mean "
-                  "over documents is not machine-stable")
-      ->capture_default_str();
+  add_bounded_option(command, "--min-r2", args.options.min_r2, 0.0, 1.0,
+                     "every pair of documents needs at least this r² of per-scene ratios");
+  add_bounded_option(command, "--max-deviation", args.options.max_deviation, 0.0, 100.0,
+                     "a scene whose ratio strays further than this fraction from its mean "
+                     "over documents is not machine-stable");
   command.add_flag("--allow-mixed", args.options.allow_mixed,
                    "compare documents of different baselines or tracer revisions anyway");
   add_format_option(command, args.format, {"text", "json"}, true);

@@ -36,10 +36,8 @@ int doctor_command(const DoctorArgs& args) {
 void add_doctor_command(CLI::App& command, int& exit_code) {
   DoctorArgs& args = bind_command<DoctorArgs>(command, doctor_command, exit_code);
   add_format_option(command, args.format, {"text", "json"}, true);
-  command
-      .add_option("--rounds", args.rounds,
-                  "A/A pairs of raygate-baseline runs for the noise score")
-      ->capture_default_str();
+  add_bounded_option(command, "--rounds", args.rounds, 2, 100000,
+                     "A/A pairs of raygate-baseline runs for the noise score");
   command.add_option("--baseline", args.baseline,
                      "raygate-baseline executable (default: beside raygate)");
 }

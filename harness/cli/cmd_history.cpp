@@ -46,9 +46,8 @@ void add_history_command(CLI::App& command, int& exit_code) {
   HistoryArgs& args = bind_command<HistoryArgs>(command, history_command, exit_code);
   add_store_option(command, args.store, kDefaultStorePath);
   add_history_filters(command, args.query);
-  command.add_option("--last", args.query.last_commits,
-                     "the newest N commits of each table (0: all)")
-      ->capture_default_str();
+  add_bounded_option(command, "--last", args.query.last_commits, std::size_t{0},
+                     std::size_t{1000000}, "the newest N commits of each table (0: all)");
   command.add_option("--series", args.query.series,
                      "only this series (an id from --format json, or its first digits)");
   command.add_flag("--include-dirty", args.query.include_dirty,

@@ -44,7 +44,10 @@ void add_export_command(CLI::App& command, int& exit_code) {
   add_store_option(command, args.store, kDefaultStorePath);
   CLI::Option* sha =
       command.add_option("--sha", args.sha, "documents that measured a commit (sha or prefix)");
-  command.add_option("--last", args.last, "the N most recently stored documents")->excludes(sha);
+  // Bounded: CLI11 reads "-5" into a std::size_t as 2^64 - 5, which would mean "all".
+  add_bounded_option(command, "--last", args.last, std::size_t{0}, std::size_t{1000000},
+                     "the N most recently stored documents (0: all)")
+      ->excludes(sha);
   command.add_option("--branch", args.branch, "only documents recorded under this branch");
   add_deprecated_alias(command, "--out",
                        command.add_option("-o,--output", args.out,

@@ -6,11 +6,13 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <filesystem>
 #include <string>
 #include <vector>
 
 #include "cli/commands.h"
 #include "cli/console.h"
+#include "cli/finite_numbers.h"
 #include "cli/project_config.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
@@ -81,10 +83,21 @@ std::vector<Command> commands() {
        cli::add_scaling_command}};
 }
 
+// A message as long as what a user pasted (a 100,000-character --rev, a value for a number) is
+// cut: what the user gave is echoed back only as far as it helps, and a CI log stays readable.
+// Long enough for any message raygate itself composes (a build's log tail included).
+std::string bounded(std::string text) {
+  constexpr std::size_t kMaxChars = 16 * 1024;
+  if (text.size() <= kMaxChars) return text;
+  const std::size_t cut = text.size() - kMaxChars;
+  text.resize(kMaxChars);
+  return text + fmt::format("... ({} more characters not shown)", cut);
+}
+
 // The last words, on standard error. Never throws: after a hang-up the terminal is gone and
 // every write fails (EIO), and the exit code must still say what happened.
 void say(const std::string& line) {
-  std::fputs((line + "\n").c_str(), stderr);
+  std::fputs((bounded(line) + "\n").c_str(), stderr);
   std::fflush(stderr);
 }
 
@@ -106,6 +119,10 @@ int main(int argc, char** argv) {
   for (const Command& command : commands()) {
     command.add(*app.add_subcommand(command.name, command.help), exit_code);
   }
+  cli::refuse_non_finite_numbers(app);
+  app.failure_message([](const CLI::App* command, const CLI::Error& e) {
+    return bounded(CLI::FailureMessage::simple(command, e));
+  });
   try {
     // Before parsing: the command line overrides these (cli/project_config.h).
     cli::apply_project_defaults(
@@ -124,6 +141,12 @@ int main(int argc, char** argv) {
   } catch (const raygate::Error& e) {
     say(fmt::format("raygate: error: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(e.code());
+  } catch (const std::filesystem::filesystem_error& e) {
+    // The system refused a path (permissions, a symlink loop, a full disk): raygate could not
+    // do its work, and says on what, rather than calling it a bug of its own.
+    // ("filesystem error: cannot create directories: Permission denied [/srv/cache]")
+    say(fmt::format("raygate: error: {}", raygate::terminal_text(e.what())));
+    return raygate::to_int(raygate::ExitCode::infrastructure);
   } catch (const std::exception& e) {
     say(fmt::format("raygate: internal error: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(raygate::ExitCode::infrastructure);

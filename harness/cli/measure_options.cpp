@@ -64,7 +64,8 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
                   "one, and a scene whose rounds show that the fastest of two gets there sooner "
                   "takes it (from the scene's 11th round on, in run and in compare)")
       ->check(CLI::Range(1, 10));
-  command.add_option("--jobs", args.jobs, "parallel build jobs (default: all allowed CPUs)");
+  add_bounded_option(command, "--jobs", args.jobs, 0, 4096,
+                     "parallel build jobs; 0 = all allowed CPUs");
   command.add_option("--policy", args.policy,
                      "gate policy file: slowdown limit, significance, image thresholds "
                      "(docs/gate.md)");

@@ -24,24 +24,50 @@ bool same_settings(const GoldenEntry& golden, const GoldenEntry& rendered) {
          same_sampling;
 }
 
+// An image whose run folder is not there any more: raygate made that folder for the run, so it
+// was deleted while raygate ran (a cleanup job, a full disk's rescue). Nobody can tell what the
+// tracer wrote: the check could not be made (verdict error, exit 3), not a broken image (exit 1).
+std::optional<std::string> vanished_run_folder(const std::filesystem::path& actual) {
+  std::error_code ec;
+  if (actual.empty() || std::filesystem::exists(actual, ec) ||
+      std::filesystem::exists(actual.parent_path(), ec)) {
+    return std::nullopt;
+  }
+  return fmt::format("{}: the run's folder is gone (deleted while raygate ran?), so its image "
+                     "could not be checked",
+                     actual.parent_path().string());
+}
+
 // With nothing to compare against, the image is still read: a tracer that exited 0 but wrote
-// an unreadable image, or one with NaN pixels, has failed on it, golden or not.
+// an unreadable image, one with NaN pixels, or one of another size than the scene's, has failed
+// on it, golden or not.
 ImageCheck without_golden(Role role, const std::filesystem::path& actual,
-                          const std::filesystem::path& expected, const std::string& why) {
+                          const std::filesystem::path& expected, const std::string& why,
+                          const GoldenEntry& rendered) {
   ImageCheck check{role, ImageReference::golden, actual, expected,
                    ImageVerdict::missing, why, std::nullopt, {}, std::nullopt};
+  if (auto gone = vanished_run_folder(actual)) {
+    check.verdict = ImageVerdict::error;
+    check.error = std::move(*gone);
+    return check;
+  }
   if (const std::string problem = unreadable_image(actual); !problem.empty()) {
     check.verdict = ImageVerdict::fail;
     check.error = problem;
     return check;
   }
   // The image against itself: every metric zero, but its NaN pixels counted.
-  check.metrics = compare_images(actual, actual, {});
-  if (check.metrics->nonfinite_pixels > 0) {
+  const ImageMetrics self = compare_images(actual, actual, {});
+  if (self.nonfinite_pixels > 0) {
     check.verdict = ImageVerdict::fail;
-    check.error = summarize(*check.metrics);
-  } else {
-    check.metrics.reset();  // compared with nothing: no metrics to show
+    check.error = summarize(self);
+    check.metrics = self;
+  } else if (rendered.width > 0 && rendered.height > 0 &&
+             (self.width != rendered.width || self.height != rendered.height)) {
+    check.verdict = ImageVerdict::fail;
+    check.error = fmt::format("{}: the image is {}x{}, but the scene renders at {}x{}",
+                              actual.string(), self.width, self.height, rendered.width,
+                              rendered.height);
   }
   return check;
 }
@@ -93,6 +119,10 @@ ImageCheck check_image(Role role, ImageReference reference,
                        const std::string& stem) {
   ImageCheck check{role,          reference,    actual, expected, ImageVerdict::error,
                    {},            std::nullopt, {},     std::nullopt};
+  if (auto gone = vanished_run_folder(actual)) {
+    check.error = std::move(*gone);
+    return check;
+  }
   if (std::string problem = unreadable_image(actual); !problem.empty()) {
     check.verdict = ImageVerdict::fail;
     check.error = std::move(problem);
@@ -106,6 +136,7 @@ ImageCheck check_image(Role role, ImageReference reference,
   }
   if (auto problem = broken_reference(*check.metrics, expected)) {
     check.error = std::move(*problem);
+    check.metrics.reset();  // no comparison happened: no numbers that look like one
     return check;
   }
   check.verdict = judge(*check.metrics, thresholds);
@@ -180,14 +211,17 @@ ImageCheck check_runs_against_golden(Role role,
                                      const std::filesystem::path& evidence_dir) {
   const GoldenLookup golden = look_up_golden(role, golden_dir, manifest, rendered, ".exr");
   const std::filesystem::path first = actual.empty() ? std::filesystem::path() : actual.front();
-  if (golden.missing) return without_golden(role, first, golden.expected, *golden.missing);
+  if (golden.missing) {
+    return without_golden(role, first, golden.expected, *golden.missing, rendered);
+  }
   const auto noise = manifest.noise.find(rendered.id);
   if (noise == manifest.noise.end()) {
     return without_golden(role, first, golden.expected,
                           "the golden of '" + rendered.id + "' in " + golden_dir.string() +
                               " is one image, not the statistics of several runs a Monte Carlo "
                               "tracer is judged by; bless it from a run of this adapter (raygate "
-                              "golden bless --from-run RESULTS.json)");
+                              "golden bless --from-run RESULTS.json)",
+                          rendered);
   }
   const GoldenNoise& stats = noise->second;
   for (const auto& [file, sha] : {std::pair(golden.entry->file, golden.entry->sha256),
@@ -210,7 +244,9 @@ ImageCheck check_against_golden(Role role, const std::filesystem::path& actual,
                                 const ImageThresholds& thresholds,
                                 const std::filesystem::path& evidence_dir) {
   const GoldenLookup golden = look_up_golden(role, golden_dir, manifest, rendered, ".png");
-  if (golden.missing) return without_golden(role, actual, golden.expected, *golden.missing);
+  if (golden.missing) {
+    return without_golden(role, actual, golden.expected, *golden.missing, rendered);
+  }
   if (auto problem = golden_file_problem(golden_dir, golden.entry->file, golden.entry->sha256)) {
     return untrusted_golden(role, actual, golden.expected, std::move(*problem));
   }

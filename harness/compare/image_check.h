@@ -63,7 +63,9 @@ ImageCheck check_image(Role role, ImageReference reference,
 // suite's scene under the same id, is no golden for it. A missing golden, or one of other
 // settings, gives verdict missing, saying why; an empty golden set says the same words for
 // every scene ("no goldens in DIR"), so a report says it once. The image is still read: one
-// that is unreadable or has NaN pixels fails all the same.
+// that is unreadable, has NaN pixels or is not `rendered`'s width x height (when given) fails
+// all the same. An image whose run folder is gone (deleted while raygate ran) is verdict error:
+// the check could not be made.
 ImageCheck check_against_golden(Role role, const std::filesystem::path& actual,
                                 const std::filesystem::path& golden_dir,
                                 const GoldenManifest& manifest, const GoldenEntry& rendered,

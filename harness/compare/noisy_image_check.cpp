@@ -189,6 +189,15 @@ ImageCheck check_noisy_images(Role role, ImageReference reference,
         "the " + std::string(to_string(reference)) + " revision has no image to compare with";
     return check;
   }
+  // A reference image with NaN is no reference: the check could not be made, and no
+  // comparison of means is printed as if it had been.
+  for (const std::filesystem::path& image : expected) {
+    if (auto broken = broken_image(image)) {
+      check.error = *broken + " (the " + std::string(to_string(reference)) +
+                    " revision's image); nothing to compare with";
+      return check;
+    }
+  }
   NoisyImageStats expected_stats;
   try {
     expected_stats = stats_of_images(expected);

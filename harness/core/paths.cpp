@@ -1,5 +1,7 @@
 #include "core/paths.h"
 
+#include <unistd.h>
+
 #include <cstdlib>
 
 #include "core/error.h"
@@ -27,7 +29,18 @@ ToolPaths locate_tools(const std::filesystem::path& baseline_override) {
   } else {
     paths.data_root = RAYGATE_SOURCE_DIR;
   }
-  paths.baseline = baseline_override.empty() ? bin / "raygate-baseline" : baseline_override;
+  if (!baseline_override.empty()) {
+    // The user named it: one that is not there is a usage error (exit 2), not a broken install.
+    paths.baseline = baseline_override;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(paths.baseline, ec) ||
+        ::access(paths.baseline.c_str(), X_OK) != 0) {
+      throw UsageError("--baseline " + paths.baseline.string() +
+                       ": not an executable file (give the path of a raygate-baseline)");
+    }
+    return paths;
+  }
+  paths.baseline = bin / "raygate-baseline";
   if (!std::filesystem::exists(paths.baseline)) {
     throw InfraError("raygate-baseline not found at " + paths.baseline.string() +
                      " (build it, or pass --baseline PATH)");

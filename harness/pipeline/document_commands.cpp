@@ -11,6 +11,7 @@
 #include "gate/growth_gate.h"
 #include "runner/baseline_tool.h"
 #include "scaling/scaling_stage.h"
+#include "spd.h"
 
 namespace raygate {
 
@@ -29,10 +30,36 @@ JudgedDocument judge_document(const std::string& results, const std::string& pol
   return j;
 }
 
+namespace {
+
+// The fits count each scene's primitives by generating it again at its size: a document whose
+// scene names no SPD generator, or a size that one does not make, cannot be placed on the size
+// axis. The document is the user's argument (edited, or of a newer raygate): exit 2, its path.
+void check_scaling_scenes(const ResultsDocument& document, const std::string& results) {
+  for (std::size_t i = 0; i < document.scenes.size(); ++i) {
+    const SuiteScene& entry = document.scenes[i].entry;
+    const std::string where = fmt::format("{}: $.scenes[{}].scene", results, i);
+    const scenes::SceneGenerator* generator = scenes::find_generator(entry.scene);
+    if (generator == nullptr) {
+      throw UsageError(fmt::format("{}.scene: \"{}\" is not an SPD scene (raygate scenes list); "
+                                   "scaling fits the SPD generators' families",
+                                   where, entry.scene.substr(0, 80)));
+    }
+    if (entry.size < 0 || entry.size > scenes::max_size(*generator)) {
+      throw UsageError(fmt::format("{}.size: {} is out of range for {} (0, its default, or 1 to "
+                                   "{})",
+                                   where, entry.size, entry.scene, scenes::max_size(*generator)));
+    }
+  }
+}
+
+}  // namespace
+
 ScalingJudgement judge_scaling(const std::string& results, const std::string& policy_file,
                                bool no_write, OutputFailures& failures) {
   ScalingJudgement j;
   j.document = read_results(results);
+  check_scaling_scenes(j.document, results);
   std::string note;
   j.policy = policy_file.empty() ? recorded_policy(j.document.settings, note)
                                  : load_policy(policy_file);
@@ -59,8 +86,8 @@ namespace {
 ResultsDocument read_document(const std::string& path) {
   try {
     return read_results(path);
-  } catch (const UsageError& e) {
-    throw InfraError(std::string(e.what()) +
+  } catch (const UsageError& e) {  // the user's argument: still exit 2, with what is wanted
+    throw UsageError(std::string(e.what()) +
                      " (consistency needs results documents written by "
                      "raygate run or compare --out)");
   }
@@ -88,6 +115,9 @@ DoctorReport examine_machine(int rounds, const std::string& baseline,
   if (rounds < 2) {
     throw UsageError(fmt::format("--rounds {}: a noise score needs at least 2 rounds", rounds));
   }
+  // A --baseline that is not there is the user's to fix (exit 2), before anything is probed;
+  // one that is there but cannot run is what the noise line reports.
+  if (!baseline.empty()) locate_tools(baseline);
   DoctorReport report;
   report.facts = probe_system_facts();  // before measuring: the load must not be our own
   report.findings = diagnose(report.facts);

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <map>
 
 #include "compare/golden.h"
@@ -62,6 +63,25 @@ std::vector<int> default_round_cpus(const MeasureOptions& args, const MeasureCon
   return allowed_cpu_list();
 }
 
+// CPUs named on the command line must be ones raygate may run on: another number fails every
+// run's sched_setaffinity, which would read as the tracer not running (exit 3), not as the
+// option's mistake.
+void check_named_cpus(const MeasureOptions& args, ScheduleKind kind) {
+  const std::vector<int> allowed = allowed_cpu_list();
+  if (allowed.empty()) return;  // not known here: the runs say
+  const auto check = [&](const char* option, const std::vector<int>& cpus) {
+    for (const int cpu : cpus) {
+      if (std::find(allowed.begin(), allowed.end(), cpu) != allowed.end()) continue;
+      std::string list;
+      for (const int a : allowed) list += (list.empty() ? "" : ",") + std::to_string(a);
+      throw UsageError(
+          fmt::format("{} {}: not a CPU raygate may run on (allowed: {})", option, cpu, list));
+    }
+  };
+  check("--pin", args.pin_cpus);
+  if (kind == ScheduleKind::duet) check("--duet-cpus", args.duet_cpus);
+}
+
 }  // namespace
 
 MeasureContext load_measure_context(const MeasureOptions& args,
@@ -99,6 +119,7 @@ MeasureContext load_measure_context(const MeasureOptions& args,
       (args.duet_cpus.size() != 2 || args.duet_cpus[0] == args.duet_cpus[1])) {
     throw UsageError("--duet-cpus needs two different CPUs, e.g. --duet-cpus 0,1");
   }
+  check_named_cpus(args, c.schedule.kind);
   c.stopping = args.stopping;
   c.stopping.max_rounds = std::max(c.stopping.max_rounds, std::size_t{1});
   if (c.stopping.max_rounds < c.stopping.min_rounds) c.stopping.min_rounds = c.stopping.max_rounds;

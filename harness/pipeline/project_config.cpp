@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <system_error>
 
 #include "core/error.h"
 #include "core/fs.h"
@@ -36,9 +37,22 @@ std::string resolve(const std::string& key, const std::string& value,
   std::filesystem::path beside = (folder / value).lexically_normal();
   if (!beside.has_filename()) beside = beside.parent_path();  // "dir/.." is "/tmp/", not "/tmp"
   if (key == "adapter" || key == "suite") {  // the name of a shipped one, or a file (not a folder)
-    return std::filesystem::is_regular_file(beside) ? beside.string() : value;
+    std::error_code ec;  // one that cannot be followed is not a file here: the name stands
+    return std::filesystem::is_regular_file(beside, ec) ? beside.string() : value;
   }
   return beside.string();
+}
+
+// Whether `file` is a config file to read. A path the system cannot follow (a symlink loop, a
+// folder without permission) is the user's to fix: said with its reason and who named it, not
+// left to escape as an internal error.
+bool is_config_file(const std::filesystem::path& file, const std::string& named_by) {
+  std::error_code ec;
+  const bool regular = std::filesystem::is_regular_file(file, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory) {
+    throw UsageError(fmt::format("{}{}: cannot read: {}", named_by, file.string(), ec.message()));
+  }
+  return regular;
 }
 
 }  // namespace
@@ -93,16 +107,16 @@ ProjectDefaults load_project_defaults(const std::string& config_argument,
   ProjectDefaults defaults;
   const char* from_env = getenv("RAYGATE_CONFIG");
   if (!config_argument.empty()) {
-    if (!std::filesystem::is_regular_file(config_argument)) {
+    if (!is_config_file(config_argument, "--config ")) {
       throw UsageError(fmt::format("--config {}: no such file", config_argument));
     }
     defaults = read_project_config(config_argument);
   } else if (from_env != nullptr && *from_env != '\0') {
-    if (!std::filesystem::is_regular_file(from_env)) {
+    if (!is_config_file(from_env, "RAYGATE_CONFIG=")) {
       throw UsageError(fmt::format("RAYGATE_CONFIG={}: no such file", from_env));
     }
     defaults = read_project_config(from_env);
-  } else if (std::filesystem::is_regular_file(kProjectConfigFile)) {
+  } else if (is_config_file(kProjectConfigFile, "")) {
     defaults = read_project_config(kProjectConfigFile);
   }
   for (const std::string& key : project_keys()) {

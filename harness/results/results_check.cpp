@@ -445,6 +445,35 @@ void check_scores(const JsonField& scores, const Roles& roles) {
   }
 }
 
+// The machine the document says it ran on (measure/machine_context.h): the reports, the store's
+// drift rule and consistency read its words and counts. null: not probed (documents built in
+// memory); an absent key: a raygate from before it; an unknown key: a newer raygate's.
+void check_machine(const JsonField& machine) {
+  if (machine.value().is_null()) return;
+  object(machine);
+  for (const char* key : {"cpu_model", "kernel", "compiler", "perf_error", "hostname"}) {
+    if (const auto text = find_non_null(machine, key)) text->as_string();
+  }
+  for (const char* key : {"logical_cores", "online_cpus", "allowed_cpus"}) {
+    if (const auto count = find_non_null(machine, key)) integer(*count, 0, kMaxCount);
+  }
+  if (const auto paranoid = find_non_null(machine, "perf_event_paranoid")) {
+    integer(*paranoid, -1000, 1000);
+  }
+  if (const auto bytes = find_non_null(machine, "total_memory_bytes")) counter(*bytes);
+  for (const char* key : {"turbo_enabled", "perf_instructions_available", "ci"}) {
+    if (const auto flag = find_non_null(machine, key)) flag->as_bool();
+  }
+  if (const auto governors = find(machine, "scaling_governors")) {
+    for (const JsonField& governor : array(*governors).elements()) governor.as_string();
+  }
+  if (const auto load = find_non_null(machine, "load_average")) {
+    const std::vector<JsonField> minutes = array(*load).elements();
+    if (minutes.size() != 3) load->fail("expected [1, 5, 15] minutes' load");
+    for (const JsonField& value : minutes) number(value, 0.0, 1e6);
+  }
+}
+
 }  // namespace
 
 void check_results_json(const nlohmann::json& document, const TimingModeList& modes) {
@@ -453,7 +482,7 @@ void check_results_json(const nlohmann::json& document, const TimingModeList& mo
   word_at(d, "kind", {"run", "compare"});
   check_strings(d, {"raygate_version", "started_at", "finished_at", "suite"});
   d.member("complete").as_bool();
-  d.member("machine");
+  check_machine(d.member("machine"));
   // null: what a document built in memory without settings (tests, tools) wrote before the
   // settings were typed; read as none. The fields are checked as they are read (settings_json).
   if (const JsonField settings = d.member("settings"); !settings.value().is_null()) object(settings);

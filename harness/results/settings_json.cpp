@@ -2,6 +2,8 @@
 // kept as it came, so a newer raygate's settings survive a read and write by this one.
 #include "results/settings_json.h"
 
+#include <fmt/core.h>
+
 #include <array>
 #include <set>
 #include <string>
@@ -55,6 +57,45 @@ void each_field(Settings& s, Visit&& visit) {
   visit("max_memory_increase", s.max_memory_increase);
   visit("shard", s.shard);
   visit("merged_shards", s.merged_shards);
+}
+
+// The range each number of the settings may hold, as the options and the policy file that set it
+// bound it (cli/measure_options.cpp, gate/policy.cpp) with room for older raygates: a document
+// edited to `max_minutes: -5`, or one whose NaN was written null, is refused where it is read,
+// with the setting's path, rather than judged or stored.
+struct SettingRange {
+  std::string_view key;
+  double lowest;
+  double highest;
+};
+constexpr std::array<SettingRange, 14> kSettingRanges{{{"warmup_runs", 0, 1000},
+                                                       {"baseline_rounds", 0, 1e6},
+                                                       {"repeats", 1, 100},
+                                                       {"target_relative_half_width", 0, 1},
+                                                       {"min_rounds", 0, 1e6},
+                                                       {"max_rounds", 0, 1e6},
+                                                       {"max_seconds_per_scene", 0, 1e7},
+                                                       {"max_minutes", 0, 1e6},
+                                                       {"threads", 0, 1e6},
+                                                       {"max_slowdown", 0, 10},
+                                                       {"significance", 0, 0.5},
+                                                       {"family_significance", 0, 0.5},
+                                                       {"max_exponent_increase", 0, 10},
+                                                       {"max_memory_increase", 0, 100}}};
+
+void check_setting_ranges(const JsonField& settings) {
+  for (const SettingRange& range : kSettingRanges) {
+    if (!settings.has(range.key)) continue;
+    const JsonField field = settings.member(range.key);
+    if (field.value().is_null()) {
+      field.fail("expected a number, found null (a value that was not finite when written)");
+    }
+    const double value = field.as_number();
+    if (!(value >= range.lowest && value <= range.highest)) {
+      field.fail(fmt::format("{} is out of range (from {} to {})", field.value().dump(),
+                             range.lowest, range.highest));
+    }
+  }
 }
 
 // An enum read by its word: the words are the enum's own to_string, so one table spells them.
@@ -198,6 +239,7 @@ MeasurementSettings settings_from_json(const JsonField& field) {
     known.insert(key);
     if (field.has(key)) read_value(field.member(key), out);
   });
+  check_setting_ranges(field);
   for (const std::string& key : keys) {
     if (!known.contains(key)) s.unknown[key] = field.member(key).value();
   }

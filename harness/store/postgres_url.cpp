@@ -6,7 +6,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <map>
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "core/error.h"
 
@@ -127,6 +130,45 @@ std::string port_problem(PQconninfoOption* options) {
   return {};
 }
 
+// At most 80 characters of what the user wrote, so a pasted blob does not flood the message.
+std::string clipped(const std::string& text) {
+  return text.size() > 80 ? text.substr(0, 80) + "..." : text;
+}
+
+// Likewise the settings libpq takes from a fixed list of words, which it checks only when it
+// connects ("invalid sslmode value"), and the numbers it reads then: the URL's fault, said before
+// anything is opened. Returns the problem.
+std::string setting_problem(PQconninfoOption* options) {
+  static const std::map<std::string, std::vector<std::string>> kWords{
+      {"sslmode", {"disable", "allow", "prefer", "require", "verify-ca", "verify-full"}},
+      {"gssencmode", {"disable", "prefer", "require"}},
+      {"channel_binding", {"disable", "prefer", "require"}},
+      {"target_session_attrs",
+       {"any", "read-write", "read-only", "primary", "standby", "prefer-standby"}},
+      {"load_balance_hosts", {"disable", "random"}}};
+  for (PQconninfoOption* option = options; option && option->keyword; ++option) {
+    if (!option->val) continue;
+    const std::string keyword = option->keyword;
+    const std::string value = option->val;
+    if (const auto words = kWords.find(keyword); words != kWords.end()) {
+      if (std::find(words->second.begin(), words->second.end(), value) != words->second.end()) {
+        continue;
+      }
+      std::string list;
+      for (const std::string& word : words->second) list += (list.empty() ? "" : ", ") + word;
+      return fmt::format("{} \"{}\" is not one of {}", keyword, clipped(value), list);
+    }
+    const bool number = keyword == "connect_timeout" || keyword.starts_with("keepalives");
+    if (number && (value.empty() || value.size() > 9 ||
+                   !std::all_of(value.begin(), value.end(),
+                                [](unsigned char c) { return std::isdigit(c) != 0; }))) {
+      return fmt::format("{} \"{}\" is not a whole number of seconds", keyword,
+                         clipped(value));
+    }
+  }
+  return {};
+}
+
 // The password libpq decoded from the URL ("" when none or when the URL does not parse).
 std::string parsed_password(PQconninfoOption* options) {
   for (PQconninfoOption* option = options; option && option->keyword; ++option) {
@@ -168,6 +210,7 @@ PostgresUrl parse_postgresql_url(const std::string& url) {
   const std::unique_ptr<PQconninfoOption, decltype(&PQconninfoFree)> options(
       PQconninfoParse(url.c_str(), &error), &PQconninfoFree);
   std::string problem = options ? port_problem(options.get()) : std::string(error ? error : "");
+  if (options && problem.empty()) problem = setting_problem(options.get());
   PQfreemem(error);
   while (!problem.empty() && (problem.back() == '\n' || problem.back() == ' ')) problem.pop_back();
   if (!options || !problem.empty()) {

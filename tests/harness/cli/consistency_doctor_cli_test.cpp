@@ -73,13 +73,17 @@ TEST_F(ConsistencyCli, UsageErrorsExitTwo) {
   EXPECT_EQ(run_raygate({"consistency", a, b, "--allow-mixed"}, dir).exit_code, 0);
 }
 
-TEST_F(ConsistencyCli, UnreadableDocumentExitsThree) {
+// A document argument that is not there or not a results document is the user's to fix, as in
+// gate and report: exit 2, naming it.
+TEST_F(ConsistencyCli, UnreadableDocumentIsAUsageError) {
   const std::string a = write("a.json", machine("straylight", 1.2));
   const CliRun missing = run_raygate({"consistency", a, "nowhere.json"}, dir);
-  EXPECT_EQ(missing.exit_code, 3) << missing.out;
+  EXPECT_EQ(missing.exit_code, 2) << missing.out;
   EXPECT_THAT(missing.out, HasSubstr("nowhere.json"));
   write_file_atomically(dir.path() / "text.json", "not json");
-  EXPECT_EQ(run_raygate({"consistency", a, "text.json"}, dir).exit_code, 3);
+  const CliRun text = run_raygate({"consistency", a, "text.json"}, dir);
+  EXPECT_EQ(text.exit_code, 2) << text.out;
+  EXPECT_THAT(text.out, HasSubstr("consistency needs results documents"));
 }
 
 TEST(DoctorCli, JsonWithAMeasuredNoiseScore) {
@@ -99,9 +103,19 @@ TEST(DoctorCli, JsonWithAMeasuredNoiseScore) {
 TEST(DoctorCli, BadRoundsAndMissingBaseline) {
   TempDir dir;
   EXPECT_EQ(run_raygate({"doctor", "--rounds", "1"}, dir).exit_code, 2);
-  const CliRun r = run_raygate({"doctor", "--baseline", "/nonexistent/raygate-baseline"}, dir);
+  EXPECT_EQ(run_raygate({"doctor", "--rounds", "nan"}, dir).exit_code, 2);
+  // A --baseline the user named that is not there is a usage error, said before any probing.
+  const CliRun missing =
+      run_raygate({"doctor", "--baseline", "/nonexistent/raygate-baseline"}, dir);
+  EXPECT_EQ(missing.exit_code, 2) << missing.out;
+  EXPECT_THAT(missing.out, HasSubstr("--baseline /nonexistent/raygate-baseline: not an "
+                                     "executable file"));
+  // One that is there but cannot run is what the noise line reports, the checks still given.
+  write_file_atomically(dir.path() / "broken-baseline", "#!/bin/sh\nexit 7\n");
+  std::filesystem::permissions(dir.path() / "broken-baseline", std::filesystem::perms::owner_all);
+  const CliRun r = run_raygate({"doctor", "--baseline", "./broken-baseline"}, dir);
   EXPECT_EQ(r.exit_code, 3) << r.out;
-  EXPECT_THAT(r.out, HasSubstr("noise: not measured: raygate-baseline not found"));
+  EXPECT_THAT(r.out, HasSubstr("noise: not measured"));
   EXPECT_THAT(r.out, HasSubstr("governor"));  // the checks are still reported
 }
 

@@ -197,6 +197,7 @@ TEST_F(ImageCheckTest, NanInTheReferenceIsAnError) {
                                    "tetra.head-vs-base");
   EXPECT_EQ(c.verdict, ImageVerdict::error);
   EXPECT_NE(c.error.find("the reference has 3 NaN/Inf pixels"), std::string::npos) << c.error;
+  EXPECT_FALSE(c.metrics) << "no comparison happened, so no numbers that look like one";
 }
 
 // A tracer with no goldens: the same words for every scene, so a report can say them once, and
@@ -207,6 +208,7 @@ TEST_F(ImageCheckTest, NoGoldensAtAllSaysTheSameForEveryScene) {
   balls.id = balls.scene = "balls";
   const ImageCheck a = check_against_golden(Role::tracer, kGolden / "tetra.png", empty,
                                             GoldenManifest{}, ci_tetra(), {}, dir_.path());
+  balls.width = balls.height = 128;  // balls.png's size
   const ImageCheck b = check_against_golden(Role::tracer, kGolden / "balls.png", empty,
                                             GoldenManifest{}, balls, {}, dir_.path());
   EXPECT_EQ(a.verdict, ImageVerdict::missing);
@@ -229,13 +231,61 @@ TEST_F(ImageCheckTest, GoldenOfAnotherSizeFactorIsNotCompared) {
   EXPECT_NE(c.error.find("raygate golden bless --suite"), std::string::npos) << c.error;
 }
 
+// A grey `width` x `height` PNG, written as `name`.
+fs::path grey_png(const TempDir& dir, const std::string& name, int width, int height) {
+  OIIO::ImageBuf image(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8));
+  const float grey[3] = {0.5f, 0.5f, 0.5f};
+  OIIO::ImageBufAlgo::fill(image, grey);
+  const fs::path path = dir.path() / name;
+  EXPECT_TRUE(image.write(path.string())) << image.geterror();
+  return path;
+}
+
 TEST_F(ImageCheckTest, GoldenOfAnotherResolutionOrSamplingIsNotCompared) {
   GoldenEntry smaller = ci_tetra();
   smaller.width = smaller.height = 64;
-  EXPECT_EQ(check(kGolden / "tetra.png", smaller).verdict, ImageVerdict::missing);
+  EXPECT_EQ(check(grey_png(dir_, "small.png", 64, 64), smaller).verdict, ImageVerdict::missing);
   GoldenEntry corners = ci_tetra();
   corners.sampling = "corners";
   EXPECT_EQ(check(kGolden / "tetra.png", corners).verdict, ImageVerdict::missing);
+}
+
+// An image of another size than the scene renders is the tracer's failure even with nothing to
+// compare it with (issue 40: a 10x10 image for a 48x48 scene passed a run without goldens).
+TEST_F(ImageCheckTest, ImageOfAnotherSizeThanTheSceneFailsWithoutAGolden) {
+  const fs::path tiny = grey_png(dir_, "tiny.png", 10, 10);
+  GoldenEntry rendered = ci_tetra();
+  rendered.id = "tetra-s2";  // no golden of that id
+  rendered.width = rendered.height = 48;
+  for (const ImageCheck& c :
+       {check(tiny, rendered), check_against_golden(Role::tracer, tiny, dir_.path() / "none",
+                                                    GoldenManifest{}, rendered, {}, dir_.path())}) {
+    EXPECT_EQ(c.verdict, ImageVerdict::fail) << c.error;
+    EXPECT_NE(c.error.find("tiny.png: the image is 10x10, but the scene renders at 48x48"),
+              std::string::npos)
+        << c.error;
+  }
+  rendered.width = rendered.height = 10;
+  EXPECT_EQ(check(tiny, rendered).verdict, ImageVerdict::missing);
+  rendered.width = rendered.height = 0;  // the scene's own resolution, not known here
+  EXPECT_EQ(check(tiny, rendered).verdict, ImageVerdict::missing);
+}
+
+// A run folder deleted while raygate ran: nobody can tell what the tracer wrote, so the check
+// could not be made (error, exit 3), where a tracer that wrote no image in its folder fails.
+TEST_F(ImageCheckTest, AnImageWhoseRunFolderIsGoneIsAnErrorNotAFailure) {
+  const fs::path gone = dir_.path() / "runs" / "r1" / "tetra" / "tracer" / "image.png";
+  GoldenEntry other = ci_tetra();
+  other.id = "tetra-s2";
+  for (const ImageCheck& c :
+       {check(gone, ci_tetra()), check(gone, other),
+        check_image(Role::head, ImageReference::base, gone, kGolden / "tetra.png", {},
+                    dir_.path() / "evidence", "tetra.head-vs-base")}) {
+    EXPECT_EQ(c.verdict, ImageVerdict::error) << c.error;
+    EXPECT_NE(c.error.find("the run's folder is gone"), std::string::npos) << c.error;
+  }
+  fs::create_directories(gone.parent_path());  // the folder is there, the image is not
+  EXPECT_EQ(check(gone, ci_tetra()).verdict, ImageVerdict::fail);
 }
 
 // Goldens belong to an adapter: the baseline's judge the baseline and its bbox control, never

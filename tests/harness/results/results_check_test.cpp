@@ -204,6 +204,29 @@ const std::vector<BadDocument>& bad_documents() {
          j["scenes"][0]["rounds"][0]["runs"]["tracer"]["cachegrind"] = counters;
        },
        "$.scenes[0].rounds[0].runs.tracer.cachegrind.Dw", "must not be negative"},
+      // The machine the reports, the drift rule and consistency read (issue 40).
+      {"machine of the wrong type", false, [](json& j) { j["machine"] = 5; }, "$.machine",
+       "expected an object, found number 5"},
+      {"machine hostname a number", false, [](json& j) { j["machine"]["hostname"] = 7; },
+       "$.machine.hostname", "expected a string, found number 7"},
+      {"machine load of two minutes", false,
+       [](json& j) { j["machine"]["load_average"] = {1.0, 2.0}; }, "$.machine.load_average",
+       "expected [1, 5, 15] minutes' load"},
+      {"machine cores negative", false, [](json& j) { j["machine"]["online_cpus"] = -2; },
+       "$.machine.online_cpus", "out of range"},
+      // The settings a gate and a report trust: in range, and a number where one is required
+      // (null is how a NaN was written).
+      {"negative time budget", false, [](json& j) { j["settings"]["max_minutes"] = -5; },
+       "$.settings.max_minutes", "-5 is out of range (from 0 to 1000000)"},
+      {"time budget written null", false, [](json& j) { j["settings"]["max_minutes"] = nullptr; },
+       "$.settings.max_minutes", "expected a number, found null"},
+      {"target above one", true,
+       [](json& j) { j["settings"]["target_relative_half_width"] = 2.5; },
+       "$.settings.target_relative_half_width", "out of range"},
+      {"significance NaN", true, [](json& j) { j["settings"]["significance"] = kNaN; },
+       "$.settings.significance", "out of range"},
+      {"max slowdown negative", true, [](json& j) { j["settings"]["max_slowdown"] = -0.1; },
+       "$.settings.max_slowdown", "out of range"},
   };
   return rows;
 }

@@ -1,0 +1,188 @@
+// Hostile values on the command line and in the files it names (issue 40), as a user or a script
+// gives them: every number is finite and in range, every bad flag, argument and document is a
+// usage error (exit 2) naming the option or the JSON path, nothing ends in "internal error", and
+// what the user gave is echoed back only as far as it helps.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli_support.h"
+#include "results/results.h"
+#include "results_fixture.h"
+#include "tracer_fixture.h"
+
+namespace raygate::test {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using ::testing::Not;
+using nlohmann::json;
+
+// A usage error naming `what`, and nothing raygate could not handle.
+void expect_usage_error(const CliRun& r, const std::string& what) {
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_THAT(r.out, HasSubstr(what));
+  EXPECT_THAT(r.out, Not(HasSubstr("internal error")));
+}
+
+// Every FLOAT option of every command, with every spelling strtod takes for a value that is not
+// a finite number: CLI11's range checks let NaN through (a NaN --max-minutes stopped a run after
+// one round, passed it and stored null).
+TEST(HostileInput, EveryNumberOptionRefusesWhatIsNotAFiniteNumber) {
+  TempDir dir;
+  const std::vector<std::vector<std::string>> commands = {
+      {"run", "--adapter", "make-nff", "--max-minutes"},
+      {"run", "--adapter", "make-nff", "--max-seconds"},
+      {"run", "--adapter", "make-nff", "--target"},
+      {"compare", "--adapter", "make-nff", "--max-minutes"},
+      {"bisect", "--adapter", "make-nff", "--good", "a", "--bad", "b", "--max-seconds"},
+      {"alert", "--significance"},
+      {"consistency", "a.json", "b.json", "--min-r2"},
+      {"consistency", "a.json", "b.json", "--max-deviation"},
+  };
+  for (const std::vector<std::string>& command : commands) {
+    for (const char* value : {"nan", "NaN", "-nan", "inf", "-Infinity", "1e999"}) {
+      std::vector<std::string> args = command;
+      args.emplace_back(value);
+      SCOPED_TRACE(args.front() + " " + args.at(args.size() - 2) + " " + value);
+      expect_usage_error(run_raygate(args, dir), args.at(args.size() - 2));
+    }
+  }
+  // Whole numbers: NaN is not one either, and doctor's rounds are bounded like the rest.
+  expect_usage_error(run_raygate({"doctor", "--rounds", "nan"}, dir), "--rounds");
+  expect_usage_error(run_raygate({"doctor", "--rounds", "99999999999"}, dir), "--rounds");
+  expect_usage_error(run_raygate({"run", "--adapter", "make-nff", "--warmup", "inf"}, dir),
+                     "--warmup");
+}
+
+class HostileDocuments : public ::testing::Test {
+ protected:
+  // A stored-looking run document, changed by `mutate`, written as `name`.
+  template <typename Mutate>
+  std::string document(const std::string& name, Mutate mutate) {
+    DocumentSpec spec;
+    spec.sha = fake_sha(1);
+    spec.scenes = {{"balls", 1.5}, {"gears", 2.0}};
+    json j = to_json(make_document(spec));
+    mutate(j);
+    write_file_atomically(dir.path() / name, j.dump(1));
+    return name;
+  }
+  TempDir dir;
+};
+
+// gate and import read every field they trust with its JSON path: a machine of the wrong type,
+// a negative budget and a number written null (how a NaN was stored) passed both before.
+TEST_F(HostileDocuments, FieldsAReaderTrustsAreCheckedWithTheirPath) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {document("machine.json", [](json& j) { j["machine"] = "a laptop"; }), "$.machine"},
+      {document("minutes.json", [](json& j) { j["settings"]["max_minutes"] = -5; }),
+       "$.settings.max_minutes: -5 is out of range"},
+      {document("null.json", [](json& j) { j["settings"]["max_minutes"] = nullptr; }),
+       "$.settings.max_minutes: expected a number, found null"},
+      {document("target.json",
+                [](json& j) { j["settings"]["target_relative_half_width"] = nullptr; }),
+       "$.settings.target_relative_half_width"},
+  };
+  for (const auto& [file, what] : cases) {
+    SCOPED_TRACE(file);
+    expect_usage_error(run_raygate({"gate", file}, dir), what);
+    expect_usage_error(run_raygate({"import", "--store", "store.db", file}, dir), what);
+    expect_usage_error(run_raygate({"report", file}, dir), what);
+  }
+  EXPECT_EQ(run_raygate({"gate", document("fine.json", [](json&) {})}, dir).exit_code, 0);
+}
+
+// scaling counts primitives by generating each scene again: a document naming a scene no SPD
+// generator makes was an "internal error".
+TEST_F(HostileDocuments, ScalingOfASceneNoGeneratorMakesIsAUsageError) {
+  const std::string file =
+      document("unknown.json", [](json& j) { j["scenes"][1]["scene"]["scene"] = "nosuch"; });
+  expect_usage_error(run_raygate({"scaling", file}, dir),
+                     "$.scenes[1].scene.scene: \"nosuch\" is not an SPD scene");
+  const std::string huge =
+      document("huge.json", [](json& j) { j["scenes"][0]["scene"]["size"] = 100000000; });
+  expect_usage_error(run_raygate({"scaling", huge}, dir), "$.scenes[0].scene.size");
+}
+
+TEST_F(HostileDocuments, ADocumentArgumentOfConsistencyThatIsNotThereIsAUsageError) {
+  const std::string a = document("a.json", [](json&) {});
+  expect_usage_error(run_raygate({"consistency", a, "nowhere.json"}, dir), "nowhere.json");
+}
+
+TEST(HostileInput, BadFlagsAndFilesAreUsageErrors) {
+  TempDir dir;
+  // A --baseline the user named that is not there is not a broken installation.
+  expect_usage_error(run_raygate({"run", "--adapter", "make-nff", "--baseline", "nope"}, dir),
+                     "--baseline nope: not an executable file");
+  fs::create_directories(dir.path() / "a-folder");
+  expect_usage_error(
+      run_raygate({"compare", "--adapter", "make-nff", "--baseline", "a-folder"}, dir),
+      "--baseline a-folder");
+  // libpq checks sslmode only when it connects, and calls a bad one a connection failure.
+  const CliRun ssl =
+      run_raygate({"history", "--store", "postgresql://ci@localhost/raygate?sslmode=sometimes"},
+                  dir);
+  expect_usage_error(ssl, "sslmode \"sometimes\" is not one of disable, allow, prefer");
+  expect_usage_error(
+      run_raygate({"history", "--store", "postgresql://ci@localhost/raygate?connect_timeout=x"},
+                  dir),
+      "connect_timeout");
+}
+
+// The project file is read before any command: a symlink loop, or one that points into a folder
+// without permission, is the user's to fix, said with its reason.
+TEST(HostileInput, AProjectFileThatCannotBeFollowedIsAUsageError) {
+  TempDir dir;
+  fs::create_symlink("raygate.toml", dir.path() / "raygate.toml");
+  expect_usage_error(run_raygate({"history"}, dir), "raygate.toml: cannot read");
+  const CliRun named = run_raygate({"--config", "raygate.toml", "history"}, dir);
+  expect_usage_error(named, "--config raygate.toml: cannot read");
+}
+
+class LongRevision : public TracerRepoTest {};
+
+// A 100,000-character --rev exited 3 and printed 200 KB: it is a usage error, and what is echoed
+// back of it is a few dozen characters.
+TEST_F(LongRevision, IsAUsageErrorThatEchoesLittleOfIt) {
+  commit(sources_.fast, "the tracer");
+  for (const std::string& rev : {std::string(100000, 'a'), std::string("main\x1b[2J")}) {
+    const CliRun r = run_raygate({"run", "--repo", repo_.path().string(), "--rev", rev,
+                                  "--adapter", "make-nff", "--suite", suite_.string(),
+                                  "--cache-dir", cache_.string()},
+                                 dir_);
+    expect_usage_error(r, "cannot name anything in");
+    EXPECT_LT(r.out.size(), 2000u) << r.out.substr(0, 2000);
+  }
+  // Through CLI11's own messages too: a value for a number as long as a paste.
+  const CliRun number = run_raygate(
+      {"run", "--adapter", "make-nff", "--max-minutes", std::string(100000, '9')}, dir_);
+  expect_usage_error(number, "--max-minutes");
+  EXPECT_LT(number.out.size(), 20000u);
+}
+
+class WrongSizeImage : public TracerRepoTest {};
+
+// A tracer that renders 10x10 whatever the scene asks: with no goldens to compare with, the
+// image's size is still checked against the scene's (it passed without a word before).
+TEST_F(WrongSizeImage, FailsARunWithoutGoldens) {
+  const std::string source =
+      patched(sources_.fast, "else if (word == \"resolution\") in >> s.width >> s.height;",
+              "else if (word == \"resolution\") { in >> s.width >> s.height; s.width = "
+              "s.height = 10; }");
+  commit(source, "a tracer that renders 10x10");
+  const CliRun r = run_raygate({"run", "--repo", repo_.path().string(), "--adapter", "make-nff",
+                                "--suite", suite_.string(), "--cache-dir", cache_.string(),
+                                "--golden-dir", (dir_.path() / "no-goldens").string(), "--scene",
+                                "tetra", "--max-rounds", "1", "--warmup", "0", "--no-store"},
+                               dir_);
+  EXPECT_EQ(r.exit_code, 1) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("the image is 10x10, but the scene renders at 128x128"));
+}
+
+}  // namespace
+}  // namespace raygate::test

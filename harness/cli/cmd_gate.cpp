@@ -27,7 +27,7 @@ int gate_command(const GateArgs& args, const Console& console) {
       judge_document(args.results, args.policy, true, args.fail_on_inconclusive, note);
   if (!note.empty()) console.info(fmt::format("gate policy: {}", note));
   if (args.format == "json") {
-    write_reports({j.document, j.gate, j.policy, {}, j.path.parent_path()},
+    write_reports({j.document, j.gate, j.policy, {}, j.path.parent_path(), {}, 0},
                   {{ReportFormat::json, "-"}}, {});
   } else {
     print_gate_summary(j.gate, stdout);

@@ -25,7 +25,7 @@ int report_command(const ReportArgs& args, const Console& console) {
   const JudgedDocument j = judge_document(args.results, args.policy, false, false, note);
   ReportOptions options;
   options.colour = console.colour(args.output.empty() || args.output == "-" ? stdout : nullptr);
-  write_reports({j.document, j.gate, j.policy, {}, j.path.parent_path()},
+  write_reports({j.document, j.gate, j.policy, {}, j.path.parent_path(), {}, 0},
                 {{format, args.output}}, options);
   return args.exit_code ? j.gate.exit_code : 0;
 }

@@ -73,7 +73,10 @@ void check_named_cpus(const MeasureOptions& args, ScheduleKind kind) {
     for (const int cpu : cpus) {
       if (std::find(allowed.begin(), allowed.end(), cpu) != allowed.end()) continue;
       std::string list;
-      for (const int a : allowed) list += (list.empty() ? "" : ",") + std::to_string(a);
+      for (const int a : allowed) {
+        if (!list.empty()) list += ',';
+        list += std::to_string(a);
+      }
       throw UsageError(
           fmt::format("{} {}: not a CPU raygate may run on (allowed: {})", option, cpu, list));
     }

@@ -72,10 +72,14 @@ int publish(const ResultsDocument& document, const PublishRequest& request,
 void publish_reports(const ResultsDocument& document, const GateResult& gate,
                      const PublishRequest& request, const PublishSink& sink,
                      OutputFailures& failures, std::vector<TrendSeries> trends) {
-  ReportInput input{document, gate, request.policy, std::move(trends),
-                    request.document_path.parent_path()};
-  input.outputs_failed = failures.summary();  // -o, when it could not be written
-  input.exit_code_with_outputs = failures.exit_code(gate.exit_code);
+  // The outputs that failed so far (-o, when it could not be written), and the real exit code.
+  ReportInput input{document,
+                    gate,
+                    request.policy,
+                    std::move(trends),
+                    request.document_path.parent_path(),
+                    failures.summary(),
+                    failures.exit_code(gate.exit_code)};
   ReportOptions options;
   options.colour = request.report_colour;
   // Report files first, so the table's closing line knows the real exit code; their "written"

@@ -225,7 +225,7 @@ void expect_same(const Expected& e, const Printed& p, const std::string& where) 
 void check_every_format(const ResultsDocument& document) {
   const GatePolicy policy;
   const GateResult gate = evaluate_gate(document, policy);
-  const ReportInput input{document, gate, policy, {}, {}};
+  const ReportInput input{document, gate, policy, {}, {}, {}, 0};
   const std::string console = render(input, ReportFormat::console);
   const std::string markdown = render(input, ReportFormat::markdown);
   const std::string html = render(input, ReportFormat::html);
@@ -273,7 +273,7 @@ TEST(ReportAgreement, ACountedChangeIsExactEverywhereWithoutATestOrSeconds) {
   check_every_format(document);
   const GatePolicy policy;
   const GateResult gate = evaluate_gate(document, policy);
-  const ReportInput input{document, gate, policy, {}, {}};
+  const ReportInput input{document, gate, policy, {}, {}, {}, 0};
   const std::string html = render(input, ReportFormat::html);
   EXPECT_EQ(html.find("Mann–Whitney"), std::string::npos);  // no p beside an exact change
   EXPECT_NE(html.find(" cycles"), std::string::npos);

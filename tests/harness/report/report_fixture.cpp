@@ -170,7 +170,7 @@ ResultsDocument make_compare_document(const std::filesystem::path& dir) {
 Fixture::Fixture(bool compare) {
   document = compare ? make_compare_document(dir.path()) : make_run_document(dir.path());
   gate = evaluate_gate(document, policy);
-  input = std::make_unique<ReportInput>(ReportInput{document, gate, policy, {}, dir.path()});
+  input = std::make_unique<ReportInput>(ReportInput{document, gate, policy, {}, dir.path(), {}, 0});
 }
 
 std::string Fixture::render(std::string_view format, const ReportOptions& options) const {

@@ -30,8 +30,7 @@ constexpr std::array<SceneGenerator, 13> kGenerators{{
      generate_shells},
     {"jacks", "recursive jacks of cylinders and spheres (transform stack), 1 light", 1, true,
      generate_jacks},
-    {"sombrero", "damped-cosine height field as triangles, 1 light", 1, true,
-     generate_sombrero},
+    {"sombrero", "damped-cosine height field as triangles, 1 light", 1, true, generate_sombrero},
     {"sample", "three tessellated tori, a cone and a disc (size ignored)", 1, false,
      generate_sample},
     {"nurbtst", "one tessellated NURBS patch (size ignored)", 1, false, generate_nurbtst},
@@ -75,9 +74,8 @@ void generate(std::string_view name, const GenerateOptions& options, std::ostrea
   const int size = options.size.value_or(generator->default_size);
   const int limit = max_size(*generator);
   if (size < 1 || size > limit) {
-    throw std::invalid_argument("scene '" + std::string(name) + "': size " +
-                                std::to_string(size) + " is out of range 1.." +
-                                std::to_string(limit));
+    throw std::invalid_argument("scene '" + std::string(name) + "': size " + std::to_string(size) +
+                                " is out of range 1.." + std::to_string(limit));
   }
   if (options.tessellation_resolution < 1 || options.tessellation_resolution > 64) {
     throw std::invalid_argument("tessellation resolution " +

@@ -16,7 +16,7 @@ struct GenerateOptions {
   std::optional<int> size;  // empty: the scene's SPD default
   OutputMode mode = OutputMode::curves;
   int tessellation_resolution = 3;
-  int width = 0;   // 0: the scene's own resolution
+  int width = 0;  // 0: the scene's own resolution
   int height = 0;
 };
 

@@ -44,8 +44,8 @@ inline SlabRay make_slab_ray(const Ray& ray) {
 
 // One axis of the slab test. A zero direction component gives an infinite inverse; the
 // origin is then tested against the slab directly, avoiding 0 * inf = NaN.
-inline bool clip_slab(double origin, double inverse_direction, double lo, double hi,
-                      double& t_near, double& t_far) {
+inline bool clip_slab(double origin, double inverse_direction, double lo, double hi, double& t_near,
+                      double& t_far) {
   if (std::isinf(inverse_direction)) return origin >= lo && origin <= hi;
   double t0 = (lo - origin) * inverse_direction;
   double t1 = (hi - origin) * inverse_direction;

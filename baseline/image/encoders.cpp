@@ -23,7 +23,8 @@ void append_le16(std::string& out, int value) {
 // keeps the bytes the same on every machine.
 void append_le_float(std::string& out, float value) {
   const auto bits = std::bit_cast<std::uint32_t>(value);
-  for (int shift = 0; shift < 32; shift += 8) out.push_back(static_cast<char>((bits >> shift) & 0xFF));
+  for (int shift = 0; shift < 32; shift += 8)
+    out.push_back(static_cast<char>((bits >> shift) & 0xFF));
 }
 
 }  // namespace
@@ -58,14 +59,14 @@ std::string encode_tga(const Image& image) {
   }
   std::string out;
   out.reserve(18 + image.rgb.size());
-  out.append({0, 0, 2});        // no id, no colour map, uncompressed true-colour
-  out.append(5, '\0');          // colour map specification (unused)
-  append_le16(out, 0);          // x origin
-  append_le16(out, 0);          // y origin
+  out.append({0, 0, 2});  // no id, no colour map, uncompressed true-colour
+  out.append(5, '\0');    // colour map specification (unused)
+  append_le16(out, 0);    // x origin
+  append_le16(out, 0);    // y origin
   append_le16(out, image.width);
   append_le16(out, image.height);
-  out.push_back(24);            // bits per pixel
-  out.push_back(0x20);          // first row is the top row, no alpha bits
+  out.push_back(24);    // bits per pixel
+  out.push_back(0x20);  // first row is the top row, no alpha bits
   for (std::size_t i = 0; i < image.rgb.size(); i += 3) {
     out.push_back(static_cast<char>(to_8bit(image.rgb[i + 2])));
     out.push_back(static_cast<char>(to_8bit(image.rgb[i + 1])));

@@ -18,7 +18,8 @@ using Bytes = std::vector<unsigned char>;
 constexpr std::size_t kBytesPerPixel = 3;
 
 void append_be32(std::string& out, std::uint32_t value) {
-  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<char>((value >> shift) & 0xFF));
+  for (int shift = 24; shift >= 0; shift -= 8)
+    out.push_back(static_cast<char>((value >> shift) & 0xFF));
 }
 
 // length, type, data, CRC of type and data.
@@ -28,8 +29,8 @@ void append_chunk(std::string& out, std::string_view type, std::string_view data
   out.append(type);
   out.append(data);
   const auto* covered = reinterpret_cast<const Bytef*>(out.data() + crc_from);
-  append_be32(out, static_cast<std::uint32_t>(
-                       crc32(0, covered, static_cast<uInt>(out.size() - crc_from))));
+  append_be32(
+      out, static_cast<std::uint32_t>(crc32(0, covered, static_cast<uInt>(out.size() - crc_from))));
 }
 
 unsigned char paeth(unsigned char a, unsigned char b, unsigned char c) {
@@ -111,7 +112,8 @@ std::string deflate(const Bytes& data) {
 }  // namespace
 
 std::string encode_png(const Image& image) {
-  if (image.width <= 0 || image.height <= 0) throw std::length_error("PNG needs at least 1 x 1 pixels");
+  if (image.width <= 0 || image.height <= 0)
+    throw std::length_error("PNG needs at least 1 x 1 pixels");
   std::string out = "\x89PNG\r\n\x1a\n";
   std::string header;
   append_be32(header, static_cast<std::uint32_t>(image.width));

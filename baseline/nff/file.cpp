@@ -25,19 +25,15 @@ void check_kind(const std::string& path) {
   std::error_code error;
   const std::filesystem::file_status status = std::filesystem::status(path, error);
   switch (status.type()) {
-    case std::filesystem::file_type::regular:
-      return;
+    case std::filesystem::file_type::regular: return;
     case std::filesystem::file_type::fifo:
       fail_file(path, "a FIFO (named pipe), not a regular file; pipe a scene in as '-'");
-    case std::filesystem::file_type::not_found:
-      fail_file(path, "no such file");
-    case std::filesystem::file_type::directory:
-      fail_file(path, "a directory");
+    case std::filesystem::file_type::not_found: fail_file(path, "no such file");
+    case std::filesystem::file_type::directory: fail_file(path, "a directory");
     case std::filesystem::file_type::none:
     case std::filesystem::file_type::unknown:
       fail_file(path, "a path it cannot inspect (" + system_message(error.value()) + ")");
-    default:
-      fail_file(path, "a device or socket, not a regular file");
+    default: fail_file(path, "a device or socket, not a regular file");
   }
 }
 

@@ -128,15 +128,9 @@ void Reader::read_view_keyword(int index) {
   View& view = scene_.view;
   Token value;
   switch (index) {
-    case 0:
-      view.from = vector({.entity = "'from' in view (v)"});
-      break;
-    case 1:
-      view.at = vector({.entity = "'at' in view (v)"});
-      break;
-    case 2:
-      view.up = vector({.entity = "'up' in view (v)"});
-      break;
+    case 0: view.from = vector({.entity = "'from' in view (v)"}); break;
+    case 1: view.at = vector({.entity = "'at' in view (v)"}); break;
+    case 2: view.up = vector({.entity = "'up' in view (v)"}); break;
     case 3:
       view.angle_degrees = number({.entity = "view (v)", .part = "angle"}, &value);
       if (view.angle_degrees <= 0.0 || view.angle_degrees >= 180.0) {
@@ -148,8 +142,8 @@ void Reader::read_view_keyword(int index) {
       if (view.hither < 0.0) fail(value, "the hither of view (v) as 0 or more");
       break;
     default:
-      view.width = integer({.entity = "view (v)", .part = "width of the resolution"}, 1,
-                           kMaxResolutionSide);
+      view.width =
+          integer({.entity = "view (v)", .part = "width of the resolution"}, 1, kMaxResolutionSide);
       view.height = integer({.entity = "view (v)", .part = "height of the resolution"}, 1,
                             kMaxResolutionSide);
       break;
@@ -160,12 +154,9 @@ double Reader::number(const Field& field, Token* where) {
   const Token token = lexer_.next();
   double value = 0.0;
   switch (parse_double(token.text, value)) {
-    case NumberStatus::ok:
-      break;
-    case NumberStatus::not_a_number:
-      fail(token, field.words());
-    case NumberStatus::not_finite:
-      fail(token, field.words() + " as a finite number");
+    case NumberStatus::ok: break;
+    case NumberStatus::not_a_number: fail(token, field.words());
+    case NumberStatus::not_finite: fail(token, field.words() + " as a finite number");
   }
   if (where != nullptr) *where = token;
   return value;

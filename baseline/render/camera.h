@@ -10,11 +10,11 @@ namespace raygate::render {
 
 struct Camera {
   Vec3 eye;
-  Vec3 forward;      // unit
-  Vec3 right;        // unit, forward x up (right-handed)
-  Vec3 up;           // unit, `up` made perpendicular to forward
-  Vec3 right_span;   // right * tan(angle/2): from the image centre to the right edge
-  Vec3 up_span;      // up * tan(angle/2) * H/W: from the centre to the top edge
+  Vec3 forward;     // unit
+  Vec3 right;       // unit, forward x up (right-handed)
+  Vec3 up;          // unit, `up` made perpendicular to forward
+  Vec3 right_span;  // right * tan(angle/2): from the image centre to the right edge
+  Vec3 up_span;     // up * tan(angle/2) * H/W: from the centre to the top edge
   double hither = 0.0;
   int width = 0;
   int height = 0;

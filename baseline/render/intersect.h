@@ -55,8 +55,7 @@ inline bool intersect(const SpherePrim& s, const Ray& ray, double t_min, double 
 // Open cone or cylinder: |w_perp + t d_perp|^2 = (r0 + k (w.a + t d.a))^2, a quadratic
 // A t^2 + 2 B t + C = 0, solved with the stable q form; A == 0 (a ray parallel to a side
 // line) then leaves the single linear root C/q. Roots outside the height range are rejected.
-inline bool intersect(const ConePrim& c, const Ray& ray, double t_min, double t_max,
-                      PrimHit& hit) {
+inline bool intersect(const ConePrim& c, const Ray& ray, double t_min, double t_max, PrimHit& hit) {
   const Vec3 w = ray.origin - c.base;
   const double w_axial = dot(w, c.axis);
   const double d_axial = dot(ray.direction, c.axis);

@@ -105,9 +105,9 @@ bool make_triangle(const Vec3 (&vertices)[3], const Vec3 (&normals)[3], int mate
   out.n0 = normals[0];
   out.n1 = normals[1];
   out.n2 = normals[2];
-  out.magnitude = std::fmax(max_abs_component(vertices[0]),
-                            std::fmax(max_abs_component(vertices[1]),
-                                      max_abs_component(vertices[2])));
+  out.magnitude =
+      std::fmax(max_abs_component(vertices[0]),
+                std::fmax(max_abs_component(vertices[1]), max_abs_component(vertices[2])));
   out.material = material;
   return true;
 }

@@ -13,9 +13,9 @@ namespace raygate::render {
 
 struct SpherePrim {
   Vec3 center;
-  double radius = 0.0;          // |r| from the file
+  double radius = 0.0;  // |r| from the file
   double radius_squared = 0.0;
-  double orientation = 1.0;     // -1 for NFF's negative (inside-visible) radius: normal inward
+  double orientation = 1.0;  // -1 for NFF's negative (inside-visible) radius: normal inward
   int material = 0;
 };
 
@@ -23,23 +23,23 @@ struct SpherePrim {
 // along the unit axis from the base centre.
 struct ConePrim {
   Vec3 base;
-  Vec3 axis;                    // unit, base -> apex
+  Vec3 axis;  // unit, base -> apex
   double height = 0.0;
-  double base_radius = 0.0;     // |r| from the file
-  double slope = 0.0;           // (apex_radius - base_radius) / height
-  double orientation = 1.0;     // -1 when the file's radii are negative: normal inward
-  double magnitude = 0.0;       // coordinate scale of its data, for hit-point offsets
+  double base_radius = 0.0;  // |r| from the file
+  double slope = 0.0;        // (apex_radius - base_radius) / height
+  double orientation = 1.0;  // -1 when the file's radii are negative: normal inward
+  double magnitude = 0.0;    // coordinate scale of its data, for hit-point offsets
   int material = 0;
 };
 
 // A planar, possibly concave polygon, tested by a plane hit and an even-odd crossing test on
 // its outline projected onto the coordinate plane that drops the normal's largest component.
 struct PolygonPrim {
-  Vec3 normal;                  // unit, front side per the vertex winding (Newell's method)
-  double plane_offset = 0.0;    // dot(normal, any vertex)
-  std::uint8_t u_axis = 0;      // projection axes
+  Vec3 normal;                // unit, front side per the vertex winding (Newell's method)
+  double plane_offset = 0.0;  // dot(normal, any vertex)
+  std::uint8_t u_axis = 0;    // projection axes
   std::uint8_t v_axis = 1;
-  int first_point = 0;          // into World::polygon_points
+  int first_point = 0;  // into World::polygon_points
   int point_count = 0;
   double magnitude = 0.0;
   int material = 0;
@@ -53,10 +53,10 @@ struct Point2 {
 // A triangle of a `pp` patch, with vertex normals for smooth shading.
 struct TrianglePrim {
   Vec3 v0;
-  Vec3 edge1;                   // v1 - v0
-  Vec3 edge2;                   // v2 - v0
-  Vec3 normal;                  // unit geometric normal, cross(edge1, edge2)
-  Vec3 n0, n1, n2;              // vertex normals as written
+  Vec3 edge1;       // v1 - v0
+  Vec3 edge2;       // v2 - v0
+  Vec3 normal;      // unit geometric normal, cross(edge1, edge2)
+  Vec3 n0, n1, n2;  // vertex normals as written
   double magnitude = 0.0;
   int material = 0;
 };

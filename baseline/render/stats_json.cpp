@@ -27,14 +27,12 @@ nlohmann::json to_json(const RunReport& r) {
       {"total", rays.eye + rays.shadow + rays.reflection + rays.refraction},
   };
   doc["total_internal_reflections"] = rays.total_internal_reflections;
-  doc["tests"] = {{"primitive", r.stats.tests.primitive_tests},
-                  {"bbox", r.stats.tests.bbox_tests}};
+  doc["tests"] = {{"primitive", r.stats.tests.primitive_tests}, {"bbox", r.stats.tests.bbox_tests}};
   doc["parse_seconds"] = r.parse_seconds;
   doc["prepare_seconds"] = r.prepare_seconds;
   doc["render_seconds"] = r.render_seconds;
   doc["cpu_seconds"] = r.cpu_seconds;
-  const double rays_total =
-      double(rays.eye + rays.shadow + rays.reflection + rays.refraction);
+  const double rays_total = double(rays.eye + rays.shadow + rays.reflection + rays.refraction);
   doc["rays_per_second"] = r.render_seconds > 0.0 ? rays_total / r.render_seconds : 0.0;
   return doc;
 }

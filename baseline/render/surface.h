@@ -10,9 +10,9 @@ namespace raygate::render {
 
 struct SurfacePoint {
   Vec3 point;
-  Vec3 geometric_normal;  // unit, the primitive's front side
-  Vec3 shading_normal;    // unit, same hemisphere as geometric_normal
-  double magnitude = 0.0; // largest coordinate magnitude involved in computing `point`
+  Vec3 geometric_normal;   // unit, the primitive's front side
+  Vec3 shading_normal;     // unit, same hemisphere as geometric_normal
+  double magnitude = 0.0;  // largest coordinate magnitude involved in computing `point`
   int material = 0;
 };
 

@@ -33,7 +33,7 @@ struct TraceSettings {
 // The secondary rays a hit spawns (before the depth limit is applied). A pure function of the
 // hit, shared by the tracer and the tests that follow a ray through glass.
 struct SecondaryRays {
-  bool reflects = false;           // Ks > 0 or T > 0
+  bool reflects = false;  // Ks > 0 or T > 0
   Ray reflected;
   double reflection_weight = 0.0;  // Ks, plus T on total internal reflection
   bool refracts = false;           // T > 0 and no total internal reflection
@@ -45,8 +45,7 @@ SecondaryRays spawn_secondary(const Ray& incoming, const SurfacePoint& surface,
 
 class Tracer {
  public:
-  Tracer(const World& world, const TraceSettings& settings, RayCounts& rays,
-         TestCounters& tests)
+  Tracer(const World& world, const TraceSettings& settings, RayCounts& rays, TestCounters& tests)
       : world_(world), settings_(settings), rays_(rays), tests_(tests) {}
 
   // Radiance along an eye ray (depth 1); t_min comes from the hither plane.

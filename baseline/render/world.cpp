@@ -52,9 +52,8 @@ void check_materials(const nff::Scene& scene) {
   const int count = static_cast<int>(scene.materials.size());
   auto check = [count](int material, const nff::FileLoc& loc) {
     if (material < 0 || material >= count) {
-      throw SceneError("the object at line " + std::to_string(loc.line) +
-                       " refers to material " + std::to_string(material) +
-                       ", but the scene has " + std::to_string(count));
+      throw SceneError("the object at line " + std::to_string(loc.line) + " refers to material " +
+                       std::to_string(material) + ", but the scene has " + std::to_string(count));
     }
   };
   for (const auto& s : scene.spheres) check(s.material, s.loc);
@@ -138,20 +137,20 @@ bool nearest_in(const World& w, const Ray& ray, double t_min, double t_max, Hit&
   auto test_polygon = [&](const PolygonPrim& prim, double t_limit, PrimHit& out) {
     return intersect(prim, w.polygon_points, ray, t_min, t_limit, out);
   };
-  scan_nearest<kBoxes>(w.spheres, w.sphere_boxes, slab, t_min, t_best, PrimKind::sphere, hit,
-                       found, counters, test);
+  scan_nearest<kBoxes>(w.spheres, w.sphere_boxes, slab, t_min, t_best, PrimKind::sphere, hit, found,
+                       counters, test);
   scan_nearest<kBoxes>(w.cones, w.cone_boxes, slab, t_min, t_best, PrimKind::cone, hit, found,
                        counters, test);
-  scan_nearest<kBoxes>(w.polygons, w.polygon_boxes, slab, t_min, t_best, PrimKind::polygon,
-                       hit, found, counters, test_polygon);
-  scan_nearest<kBoxes>(w.triangles, w.triangle_boxes, slab, t_min, t_best, PrimKind::triangle,
-                       hit, found, counters, test);
+  scan_nearest<kBoxes>(w.polygons, w.polygon_boxes, slab, t_min, t_best, PrimKind::polygon, hit,
+                       found, counters, test_polygon);
+  scan_nearest<kBoxes>(w.triangles, w.triangle_boxes, slab, t_min, t_best, PrimKind::triangle, hit,
+                       found, counters, test);
   return found;
 }
 
 template <bool kBoxes, class Prim, class Test>
-bool scan_any(const std::vector<Prim>& prims, const std::vector<Aabb>& boxes,
-              const SlabRay& slab, double t_max, TestCounters& counters, Test&& test) {
+bool scan_any(const std::vector<Prim>& prims, const std::vector<Aabb>& boxes, const SlabRay& slab,
+              double t_max, TestCounters& counters, Test&& test) {
   for (std::size_t i = 0; i < prims.size(); ++i) {
     if constexpr (kBoxes) {
       ++counters.bbox_tests;
@@ -167,9 +166,7 @@ bool scan_any(const std::vector<Prim>& prims, const std::vector<Aabb>& boxes,
 template <bool kBoxes>
 bool occluded_in(const World& w, const Ray& ray, double t_max, TestCounters& counters) {
   const SlabRay slab = make_slab_ray(ray);
-  auto test = [&](const auto& prim, PrimHit& out) {
-    return intersect(prim, ray, 0.0, t_max, out);
-  };
+  auto test = [&](const auto& prim, PrimHit& out) { return intersect(prim, ray, 0.0, t_max, out); };
   auto test_polygon = [&](const PolygonPrim& prim, PrimHit& out) {
     return intersect(prim, w.polygon_points, ray, 0.0, t_max, out);
   };
@@ -186,7 +183,8 @@ World build_world(const nff::Scene& scene) {
   world.background = scene.background;
   for (const nff::Material& m : scene.materials) world.materials.push_back(make_material(m));
   // The SPD exporters' convention: each of n lights has intensity 1/sqrt(n).
-  const double per_light = scene.lights.empty() ? 0.0 : 1.0 / std::sqrt(double(scene.lights.size()));
+  const double per_light =
+      scene.lights.empty() ? 0.0 : 1.0 / std::sqrt(double(scene.lights.size()));
   for (const nff::Light& l : scene.lights) {
     world.lights.push_back({l.position, l.color * per_light});
   }

@@ -23,8 +23,8 @@ enum class PrimKind : std::uint8_t { sphere, cone, polygon, triangle };
 struct Hit {
   double t = 0.0;
   PrimKind kind = PrimKind::sphere;
-  int index = 0;     // within its kind's array
-  double b1 = 0.0;   // triangle barycentrics (weights of vertices 1 and 2)
+  int index = 0;    // within its kind's array
+  double b1 = 0.0;  // triangle barycentrics (weights of vertices 1 and 2)
   double b2 = 0.0;
 };
 
@@ -39,14 +39,14 @@ struct ShadingMaterial {
   Vec3 color;
   double kd = 0.0;
   double ks = 0.0;
-  double shine = 1.0;           // Phong exponent, at least 1 (as SPD's readnff clamps)
+  double shine = 1.0;  // Phong exponent, at least 1 (as SPD's readnff clamps)
   double transmittance = 0.0;
-  double ior = 1.0;             // 1 when the file gives a non-positive or non-finite value
+  double ior = 1.0;  // 1 when the file gives a non-positive or non-finite value
 };
 
 struct PointLight {
   Vec3 position;
-  Vec3 intensity;               // colour / sqrt(light count)
+  Vec3 intensity;  // colour / sqrt(light count)
 };
 
 struct World {

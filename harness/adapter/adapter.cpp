@@ -22,24 +22,25 @@ namespace raygate {
 namespace {
 
 // The file's words for its enums, spelt once: read_enum offers them, to_string writes them.
-constexpr EnumWords<SceneFormat, 4> kSceneFormatWords{{
-    {SceneFormat::nff, "nff"}, {SceneFormat::pov, "pov"}, {SceneFormat::obj, "obj"},
-    {SceneFormat::pbrt, "pbrt"}}};
-constexpr EnumWords<TimingSource, 3> kTimingSourceWords{{
-    {TimingSource::process, "process"}, {TimingSource::reported, "reported"},
-    {TimingSource::simulated, "simulated"}}};
-constexpr EnumWords<TimeUnit, 3> kTimeUnitWords{{
-    {TimeUnit::seconds, "s"}, {TimeUnit::milliseconds, "ms"}, {TimeUnit::clock, "h:m:s"}}};
-constexpr EnumWords<ImageKind, 2> kImageKindWords{{
-    {ImageKind::deterministic, "deterministic"}, {ImageKind::monte_carlo, "monte-carlo"}}};
+constexpr EnumWords<SceneFormat, 4> kSceneFormatWords{{{SceneFormat::nff, "nff"},
+                                                       {SceneFormat::pov, "pov"},
+                                                       {SceneFormat::obj, "obj"},
+                                                       {SceneFormat::pbrt, "pbrt"}}};
+constexpr EnumWords<TimingSource, 3> kTimingSourceWords{{{TimingSource::process, "process"},
+                                                         {TimingSource::reported, "reported"},
+                                                         {TimingSource::simulated, "simulated"}}};
+constexpr EnumWords<TimeUnit, 3> kTimeUnitWords{
+    {{TimeUnit::seconds, "s"}, {TimeUnit::milliseconds, "ms"}, {TimeUnit::clock, "h:m:s"}}};
+constexpr EnumWords<ImageKind, 2> kImageKindWords{
+    {{ImageKind::deterministic, "deterministic"}, {ImageKind::monte_carlo, "monte-carlo"}}};
 
 using nlohmann::json;
 
 const std::vector<std::string>& top_level_keys() {
   static const std::vector<std::string> keys{
-      "name",  "description", "scene_format", "source_dir", "requires", "build",
-      "run",   "stdin",       "cwd",          "image",      "env",      "timing",
-      "threads", "pin_cpus",  "submodules",   "timeout_s",  "images"};
+      "name",    "description", "scene_format", "source_dir", "requires", "build",
+      "run",     "stdin",       "cwd",          "image",      "env",      "timing",
+      "threads", "pin_cpus",    "submodules",   "timeout_s",  "images"};
   return keys;
 }
 
@@ -79,10 +80,11 @@ Enum read_enum(const JsonField& field, const EnumWords<Enum, N>& words) {
 std::string read_process_string(const JsonField& field) {
   std::string text = field.as_string();
   if (const std::size_t at = text.find('\0'); at != std::string::npos) {
-    field.fail(fmt::format("contains a NUL character (\\u0000) at byte {}; a process argument, "
-                           "environment value or path ends at the first one, so the rest "
-                           "would be lost",
-                           at));
+    field.fail(
+        fmt::format("contains a NUL character (\\u0000) at byte {}; a process argument, "
+                    "environment value or path ends at the first one, so the rest "
+                    "would be lost",
+                    at));
   }
   return text;
 }
@@ -113,9 +115,10 @@ std::string read_name(const JsonField& field) {
   // Build folders are "<name>-<sha>-<hash>" (builder/build_cache.h), so the name gets less
   // than the 128 bytes core/path_component.h allows any one file name.
   if (name.size() > kMaxAdapterName) {
-    field.fail(fmt::format("'{}...' is {} bytes long, more than the {} allowed (it is part of "
-                           "cache folder names)",
-                           name.substr(0, 20), name.size(), kMaxAdapterName));
+    field.fail(
+        fmt::format("'{}...' is {} bytes long, more than the {} allowed (it is part of "
+                    "cache folder names)",
+                    name.substr(0, 20), name.size(), kMaxAdapterName));
   }
   return name;
 }
@@ -141,8 +144,10 @@ std::string read_cwd(const JsonField& field) {
     if (cwd.rfind(folder, 0) == 0) return cwd;
   }
   if (cwd.empty() || cwd[0] != '/') {
-    field.fail("must start with {workdir}, {build}, {src}, {repo_root}, {raygate_source} or "
-               "'/', found " + json(cwd).dump());
+    field.fail(
+        "must start with {workdir}, {build}, {src}, {repo_root}, {raygate_source} or "
+        "'/', found " +
+        json(cwd).dump());
   }
   return cwd;
 }
@@ -194,8 +199,9 @@ Timing read_timing(const JsonField& field) {
       if (field.has(key)) field.member(key).fail("only used with \"source\": \"reported\"");
     }
     if (field.has("metric") && timing.source == TimingSource::simulated) {
-      field.member("metric").fail("only used with \"source\": \"process\" (a simulated cost "
-                                  "is counted, not timed)");
+      field.member("metric").fail(
+          "only used with \"source\": \"process\" (a simulated cost "
+          "is counted, not timed)");
     }
     timing.metric_by_threads = true;
     if (field.has("metric")) {
@@ -206,8 +212,9 @@ Timing read_timing(const JsonField& field) {
     return timing;
   }
   if (field.has("metric")) {
-    field.member("metric").fail("only used with \"source\": \"process\" (a reported time is "
-                                "whatever the tracer printed)");
+    field.member("metric").fail(
+        "only used with \"source\": \"process\" (a reported time is "
+        "whatever the tracer printed)");
   }
   const JsonField regex = field.member("regex");
   timing.regex = regex.as_string();
@@ -271,8 +278,9 @@ void check_scene_reaches_tracer(const JsonField& root, const Adapter& adapter) {
   const bool via_stdin =
       adapter.stdin_template && uses_placeholder(*adapter.stdin_template, "scene");
   if (via_stdin || any_uses(invocation(adapter), "scene")) return;
-  root.member("run").fail("the scene never reaches the tracer: put '{scene}' in run (or "
-                          "\"stdin\": \"{scene}\" for a tracer that reads standard input)");
+  root.member("run").fail(
+      "the scene never reaches the tracer: put '{scene}' in run (or "
+      "\"stdin\": \"{scene}\" for a tracer that reads standard input)");
 }
 
 // The image must be found where this run wrote it and nowhere an earlier run could have left
@@ -285,24 +293,25 @@ void check_image(const JsonField& root, const Adapter& adapter) {
   bool climbs = false;
   for (const auto& part : std::filesystem::path(image)) climbs = climbs || part == "..";
   if ((!at_image && !in_workdir) || climbs) {
-    field.fail("must be '{image}' or a path under '{workdir}/' (both are fresh for every run, so "
-               "an image left by an earlier run is never taken for this one), found " +
-               json(image).dump());
+    field.fail(
+        "must be '{image}' or a path under '{workdir}/' (both are fresh for every run, so "
+        "an image left by an earlier run is never taken for this one), found " +
+        json(image).dump());
   }
   if (at_image && !any_uses(invocation(adapter), "image")) {
-    field.fail("'{image}' is never given to the tracer: put '{image}' in run or env, or name "
-               "the file the tracer writes, e.g. \"{workdir}/trace.ppm\"");
+    field.fail(
+        "'{image}' is never given to the tracer: put '{image}' in run or env, or name "
+        "the file the tracer writes, e.g. \"{workdir}/trace.ppm\"");
   }
   if (in_workdir && !uses_placeholder(adapter.cwd, "workdir") &&
       !any_uses(invocation(adapter), "workdir")) {
-    field.fail("the tracer cannot know '{workdir}': run it there (\"cwd\": \"{workdir}\", the "
-               "default) or pass '{workdir}' in run or env");
+    field.fail(
+        "the tracer cannot know '{workdir}': run it there (\"cwd\": \"{workdir}\", the "
+        "default) or pass '{workdir}' in run or env");
   }
 }
 
-ImageKind read_image_kind(const JsonField& field) {
-  return read_enum(field, kImageKindWords);
-}
+ImageKind read_image_kind(const JsonField& field) { return read_enum(field, kImageKindWords); }
 
 // A Monte Carlo tracer must get a different seed for every run, or its runs are one sample
 // repeated and their noise cannot be measured; a deterministic one has no use for a seed.
@@ -310,12 +319,14 @@ void check_seed(const JsonField& root, const Adapter& adapter) {
   const bool seeded = any_uses(invocation(adapter), "seed") ||
                       (adapter.stdin_template && uses_placeholder(*adapter.stdin_template, "seed"));
   if (adapter.images == ImageKind::monte_carlo && !seeded) {
-    root.member("run").fail("\"images\": \"monte-carlo\" needs '{seed}' in run or env (e.g. "
-                            "\"--seed\", \"{seed}\"): every run must render with its own seed");
+    root.member("run").fail(
+        "\"images\": \"monte-carlo\" needs '{seed}' in run or env (e.g. "
+        "\"--seed\", \"{seed}\"): every run must render with its own seed");
   }
   if (adapter.images == ImageKind::deterministic && seeded) {
-    root.member("run").fail("'{seed}' is only given to \"images\": \"monte-carlo\" tracers; "
-                            "add that, or drop '{seed}'");
+    root.member("run").fail(
+        "'{seed}' is only given to \"images\": \"monte-carlo\" tracers; "
+        "add that, or drop '{seed}'");
   }
 }
 

@@ -16,8 +16,8 @@ namespace raygate {
 enum class SceneFormat { nff, pov, obj, pbrt };
 
 enum class TimingSource {
-  process,   // measured by raygate from wait4 (wall or user+sys CPU)
-  reported,  // parsed from the tracer's own output with a regex
+  process,    // measured by raygate from wait4 (wall or user+sys CPU)
+  reported,   // parsed from the tracer's own output with a regex
   simulated,  // estimated cycles counted by Valgrind's cachegrind (docs/simulated-timing.md)
 };
 enum class TimingMetric { wall, cpu };  // for TimingSource::process
@@ -55,19 +55,19 @@ struct Adapter {
   std::string name;
   std::string description;
   SceneFormat scene_format = SceneFormat::nff;
-  std::string source_dir;                     // relative to the repository root; "" = root
-  std::vector<std::string> packages;          // "requires": Debian packages the build needs
+  std::string source_dir;                       // relative to the repository root; "" = root
+  std::vector<std::string> packages;            // "requires": Debian packages the build needs
   std::vector<std::vector<std::string>> build;  // argv per step, in order
-  std::vector<std::string> run;               // argv of one run
-  std::optional<std::string> stdin_template;  // "stdin": file fed on standard input
-  std::string cwd = "{workdir}";              // working directory of the run
-  std::string image;                          // where the image appears after a run
+  std::vector<std::string> run;                 // argv of one run
+  std::optional<std::string> stdin_template;    // "stdin": file fed on standard input
+  std::string cwd = "{workdir}";                // working directory of the run
+  std::string image;                            // where the image appears after a run
   ImageKind images = ImageKind::deterministic;
-  std::map<std::string, std::string> env;     // extra environment of the run
+  std::map<std::string, std::string> env;  // extra environment of the run
   Timing timing;
-  int threads = 1;                            // passed as {threads}
-  bool pin_cpus = false;                      // raygate pins the run to `threads` CPUs
-  bool submodules = true;                     // re-sync submodules for every commit
+  int threads = 1;         // passed as {threads}
+  bool pin_cpus = false;   // raygate pins the run to `threads` CPUs
+  bool submodules = true;  // re-sync submodules for every commit
   Timeouts timeouts;
   std::string canonical;  // the document with sorted keys and no whitespace (adapter_hash)
 

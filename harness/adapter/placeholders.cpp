@@ -115,10 +115,9 @@ const std::vector<std::string>& placeholders_allowed_in(TemplateField field) {
   static const std::vector<std::string> build{"src", "repo_root", "build", "jobs",
                                               "raygate_source"};
   // Runs happen per scene; {jobs} is a build setting, {threads} is its run-time counterpart.
-  static const std::vector<std::string> run{"src",     "repo_root",      "build",     "threads",
-                                            "scene",   "image",          "workdir",
-                                            "raygate_source", "scene_stem", "width",
-                                            "height",  "seed"};
+  static const std::vector<std::string> run{"src",        "repo_root", "build",   "threads",
+                                            "scene",      "image",     "workdir", "raygate_source",
+                                            "scene_stem", "width",     "height",  "seed"};
   return field == TemplateField::build ? build : run;
 }
 
@@ -137,9 +136,8 @@ std::optional<std::string> template_error(std::string_view text, TemplateField f
       return message;
     }
     if (!contains(placeholders_allowed_in(field), piece.text)) {
-      return "placeholder '" + braced(piece.text) + "' is not available in " +
-             field_words(field) + " (available: " +
-             braced_list(placeholders_allowed_in(field)) + ")";
+      return "placeholder '" + braced(piece.text) + "' is not available in " + field_words(field) +
+             " (available: " + braced_list(placeholders_allowed_in(field)) + ")";
     }
   }
   return std::nullopt;

@@ -59,7 +59,9 @@ Split best_split(const std::vector<double>& values, std::size_t begin, std::size
                  std::size_t min_segment) {
   const std::size_t least = std::max<std::size_t>(min_segment, 1);
   if (end < begin + 2 * least) return {};
-  const auto distance = [&](std::size_t a, std::size_t b) { return std::abs(values[a] - values[b]); };
+  const auto distance = [&](std::size_t a, std::size_t b) {
+    return std::abs(values[a] - values[b]);
+  };
   // As Matteson and James: [begin, tau) against [tau, kappa) for every kappa, not only the
   // segment's end, so a change that is undone later (slower for a while, then fixed) still
   // stands out against what follows it. The sums grow one point at a time: O(m^3) for m points.
@@ -91,8 +93,8 @@ std::vector<ChangePoint> e_divisive(const std::vector<double>& values,
     pending.pop_back();
     const Split split = best_split(values, segment.begin, segment.end, options.min_segment);
     if (split.index == 0 || split.statistic <= 0.0) continue;
-    const double p = permutation_p_value(values, segment.begin, segment.end, split.statistic,
-                                         options, random);
+    const double p =
+        permutation_p_value(values, segment.begin, segment.end, split.statistic, options, random);
     if (p >= options.significance) continue;
     found.push_back({split.index, split.statistic, p, 0.0, 0.0});
     // Right side first onto the stack, so the left is split first: the order the random draws

@@ -209,13 +209,13 @@ std::string alert_text(const AlertJudgement& judgement) {
   for (const SeriesJudgement& s : judgement.series) {
     changes += s.changes.size() + (s.memory ? s.memory->changes.size() : 0);
   }
-  out += fmt::format("alert: {}: {} series, {} in alert, {} change points{}\n",
-                     alerts == 0 ? "OK" : judgement.action == AlertAction::fail ? "FAIL"
-                                                                                : "ANNOTATE",
-                     judgement.series.size(), alerts, changes,
-                     alerts > 0 && judgement.action == AlertAction::annotate
-                         ? " (annotate: not failing)"
-                         : "");
+  out += fmt::format(
+      "alert: {}: {} series, {} in alert, {} change points{}\n",
+      alerts == 0                             ? "OK"
+      : judgement.action == AlertAction::fail ? "FAIL"
+                                              : "ANNOTATE",
+      judgement.series.size(), alerts, changes,
+      alerts > 0 && judgement.action == AlertAction::annotate ? " (annotate: not failing)" : "");
   return out;
 }
 

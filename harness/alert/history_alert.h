@@ -29,9 +29,9 @@ struct CommitRef {
 
 // A change point placed between two commits of the series.
 struct SeriesChange {
-  CommitRef last_before;  // the newest commit measured before the change
-  CommitRef first_after;  // the first commit measured after it: the suspect, or the end of
-                          // the range when commits between them were not measured
+  CommitRef last_before;          // the newest commit measured before the change
+  CommitRef first_after;          // the first commit measured after it: the suspect, or the end of
+                                  // the range when commits between them were not measured
   std::size_t commits_after = 0;  // measured commits from first_after to the newest
   ChangePoint change;
 };
@@ -48,7 +48,7 @@ struct MemoryTrack {
 struct SeriesJudgement {
   SeriesColumn column;  // the series: id, scene, label and a row with its parts
   std::size_t points = 0;
-  double limit = 0.0;  // the scene's max_slowdown
+  double limit = 0.0;                 // the scene's max_slowdown
   std::vector<SeriesChange> changes;  // oldest first
   std::optional<SeriesChange> alert;  // the newest change, when it is a slowdown over the limit
   std::optional<MemoryTrack> memory;  // nullopt when no commit of the series has a peak

@@ -32,9 +32,9 @@ std::vector<std::pair<int, fs::path>> failed_builds(const BuildCacheEntry& entry
     const std::string name = item.path().filename().string();
     if (name.rfind(prefix, 0) != 0) continue;
     const std::string digits = name.substr(prefix.size());
-    const bool number = !digits.empty() && digits.size() <= 9 &&
-                        std::all_of(digits.begin(), digits.end(),
-                                    [](char c) { return c >= '0' && c <= '9'; });
+    const bool number =
+        !digits.empty() && digits.size() <= 9 &&
+        std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
     if (!number) continue;  // not one of ours
     found.emplace_back(std::stoi(digits), item.path());
   }
@@ -77,11 +77,25 @@ std::string joined_argv(const std::vector<std::string>& argv) {
 }  // namespace
 
 std::map<std::string, std::string> build_environment() {
-  static constexpr const char* kNames[] = {
-      "CC",          "CXX",           "CFLAGS",           "CXXFLAGS",        "CPPFLAGS",
-      "LDFLAGS",     "LIBS",          "CMAKE_GENERATOR",  "CMAKE_BUILD_TYPE", "CMAKE_PREFIX_PATH",
-      "CMAKE_TOOLCHAIN_FILE",         "CMAKE_ARGS",       "PKG_CONFIG_PATH", "CARGO_BUILD_TARGET",
-      "RUSTFLAGS",   "GOFLAGS",       "CUDAFLAGS",        "FC",              "FFLAGS"};
+  static constexpr const char* kNames[] = {"CC",
+                                           "CXX",
+                                           "CFLAGS",
+                                           "CXXFLAGS",
+                                           "CPPFLAGS",
+                                           "LDFLAGS",
+                                           "LIBS",
+                                           "CMAKE_GENERATOR",
+                                           "CMAKE_BUILD_TYPE",
+                                           "CMAKE_PREFIX_PATH",
+                                           "CMAKE_TOOLCHAIN_FILE",
+                                           "CMAKE_ARGS",
+                                           "PKG_CONFIG_PATH",
+                                           "CARGO_BUILD_TARGET",
+                                           "RUSTFLAGS",
+                                           "GOFLAGS",
+                                           "CUDAFLAGS",
+                                           "FC",
+                                           "FFLAGS"};
   std::map<std::string, std::string> found;
   for (const char* name : kNames) {
     if (const char* value = std::getenv(name)) found[name] = value;
@@ -92,7 +106,8 @@ std::map<std::string, std::string> build_environment() {
 std::string build_inputs_hash(const Adapter& adapter,
                               const std::map<std::string, std::string>& environment) {
   std::string text = "raygate build inputs 1\n";
-  for (const std::vector<std::string>& step : adapter.build) add_line(text, "step", joined_argv(step));
+  for (const std::vector<std::string>& step : adapter.build)
+    add_line(text, "step", joined_argv(step));
   add_line(text, "source_dir", adapter.source_dir);
   add_line(text, "requires", joined_argv(adapter.packages));
   text += adapter.submodules ? "submodules\n" : "no-submodules\n";

@@ -46,8 +46,8 @@ struct BuildKeyInputs {
   bool dirty = false;  // gets its own key, so a dirty build never replaces a clean one
   std::string adapter_name;
   std::string adapter_hash;  // build_inputs_hash(), not the whole adapter
-  std::string compiler;  // detect_compiler_identity()
-  std::string extra;     // anything else the caller knows the build depends on
+  std::string compiler;      // detect_compiler_identity()
+  std::string extra;         // anything else the caller knows the build depends on
 };
 
 // "<adapter name>-<12 sha digits>[-dirty]-<16 hex digits of SHA-256 over all inputs>": readable

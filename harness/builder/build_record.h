@@ -18,27 +18,27 @@ struct BuildStepRecord {
   std::string outcome;            // ProcessResult::describe(): "exited with status 0", ...
   bool succeeded = false;
   double wall_seconds = 0.0;
-  double cpu_seconds = 0.0;       // user + system, children included
-  std::filesystem::path log;      // stdout and stderr together
+  double cpu_seconds = 0.0;   // user + system, children included
+  std::filesystem::path log;  // stdout and stderr together
 
   bool operator==(const BuildStepRecord&) const = default;
 };
 
 struct BuildRecord {
-  std::string sha;           // the worktree's commit ("uncommitted" outside git)
-  bool dirty = false;        // local changes: never cached
+  std::string sha;     // the worktree's commit ("uncommitted" outside git)
+  bool dirty = false;  // local changes: never cached
   std::string adapter_name;
   std::string adapter_hash;
-  std::string compiler;      // compiler identity text (compiler_identity.h)
-  std::string key;           // cache key: names <cache>/builds/<key>/
-  std::filesystem::path build_dir;  // {build}
-  std::filesystem::path src_dir;    // {src} of the worktree this record was handed out for
+  std::string compiler;                  // compiler identity text (compiler_identity.h)
+  std::string key;                       // cache key: names <cache>/builds/<key>/
+  std::filesystem::path build_dir;       // {build}
+  std::filesystem::path src_dir;         // {src} of the worktree this record was handed out for
   std::vector<BuildStepRecord> steps{};  // those that ran; on failure the last one failed
   double total_seconds = 0.0;
-  bool cached = false;       // reused from an earlier successful build; no step ran now
+  bool cached = false;  // reused from an earlier successful build; no step ran now
   bool success = false;
-  std::string failure{};     // on failure: what went wrong, one line
-  std::string log_tail{};    // on failure: the last lines of the failed step's log
+  std::string failure{};   // on failure: what went wrong, one line
+  std::string log_tail{};  // on failure: the last lines of the failed step's log
 
   bool operator==(const BuildRecord&) const = default;
 };

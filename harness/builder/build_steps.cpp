@@ -20,8 +20,8 @@ std::string step_label(std::size_t index, std::size_t count, const std::vector<s
 BuildStepRecord not_started(const std::vector<std::string>& argv, double timeout_seconds) {
   BuildStepRecord step;
   step.argv = argv;
-  step.outcome = fmt::format(
-      "not started: the steps before it used up the build timeout of {} s", timeout_seconds);
+  step.outcome = fmt::format("not started: the steps before it used up the build timeout of {} s",
+                             timeout_seconds);
   return step;
 }
 
@@ -33,8 +33,8 @@ BuildStepRecord run_one(const std::vector<std::string>& argv, const std::filesys
   spec.stdout_path = log;
   spec.stderr_path = log;  // one log, in the order the tool wrote it
   // At least 1 ms: a zero timeout would mean none at all.
-  spec.timeout = std::max(std::chrono::milliseconds(1),
-                          std::chrono::ceil<std::chrono::milliseconds>(left));
+  spec.timeout =
+      std::max(std::chrono::milliseconds(1), std::chrono::ceil<std::chrono::milliseconds>(left));
   const ProcessResult result = run_process(spec);
 
   BuildStepRecord step;

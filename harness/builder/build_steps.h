@@ -13,8 +13,8 @@
 namespace raygate {
 
 struct StepSettings {
-  std::filesystem::path working_directory;  // {src}
-  std::filesystem::path logs_dir;           // step-N.log go here, N from 1
+  std::filesystem::path working_directory;         // {src}
+  std::filesystem::path logs_dir;                  // step-N.log go here, N from 1
   std::chrono::steady_clock::time_point deadline;  // the whole build's
   double timeout_seconds = 0.0;                    // the same, for messages
 };

@@ -51,17 +51,22 @@ BuildKeyInputs key_inputs(const Worktree& worktree, const Adapter& adapter,
   inputs.adapter_name = adapter.name;
   // What the build depends on, not the whole adapter: a new run line reuses the build.
   inputs.adapter_hash = build_inputs_hash(adapter, build_environment());
-  inputs.compiler = options.compiler_identity ? *options.compiler_identity
-                                              : detect_compiler_identity();
+  inputs.compiler =
+      options.compiler_identity ? *options.compiler_identity : detect_compiler_identity();
   inputs.extra = options.key_extra;
   return inputs;
 }
 
 BuildRecord new_record(const BuildKeyInputs& inputs, const BuildCacheEntry& entry,
                        const fs::path& src) {
-  return {.sha = inputs.sha, .dirty = inputs.dirty, .adapter_name = inputs.adapter_name,
-          .adapter_hash = inputs.adapter_hash, .compiler = inputs.compiler, .key = entry.key,
-          .build_dir = entry.build_dir, .src_dir = src};
+  return {.sha = inputs.sha,
+          .dirty = inputs.dirty,
+          .adapter_name = inputs.adapter_name,
+          .adapter_hash = inputs.adapter_hash,
+          .compiler = inputs.compiler,
+          .key = entry.key,
+          .build_dir = entry.build_dir,
+          .src_dir = src};
 }
 
 std::vector<std::vector<std::string>> expanded_steps(const Adapter& adapter,
@@ -91,8 +96,8 @@ void run_steps(BuildRecord& record, const Worktree& worktree, const Adapter& ada
                const BuildOptions& options, const BuildCacheEntry& entry) {
   const auto started = Clock::now();
   if (!fs::is_directory(record.src_dir)) {
-    record.failure = fmt::format("the source folder {} does not exist in this commit",
-                                 record.src_dir.string());
+    record.failure =
+        fmt::format("the source folder {} does not exist in this commit", record.src_dir.string());
     return;
   }
   StepSettings settings;
@@ -157,7 +162,9 @@ BuildRecord build(const Worktree& worktree, const Adapter& adapter, const BuildO
 namespace {
 
 bool contains_word(std::string_view line, std::string_view word) {
-  const auto lower = [](char c) { return static_cast<char>(std::tolower(static_cast<unsigned char>(c))); };
+  const auto lower = [](char c) {
+    return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  };
   std::string text(line);
   std::transform(text.begin(), text.end(), text.begin(), lower);
   return text.find(word) != std::string::npos;
@@ -207,7 +214,8 @@ std::vector<fs::path> built_executables(const fs::path& build_dir, std::size_t l
   fs::recursive_directory_iterator it(build_dir, fs::directory_options::skip_permission_denied, ec);
   for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
     const std::string name = it->path().filename().string();
-    if (it->is_directory(ec) && (name == "CMakeFiles" || name == "_deps" || name.starts_with("."))) {
+    if (it->is_directory(ec) &&
+        (name == "CMakeFiles" || name == "_deps" || name.starts_with("."))) {
       it.disable_recursion_pending();
       continue;
     }
@@ -226,16 +234,16 @@ std::vector<fs::path> built_executables(const fs::path& build_dir, std::size_t l
 
 std::string failure_message(const BuildRecord& record) {
   if (record.success) return "";
-  std::string message = fmt::format("build failed: adapter '{}', commit {}{}: {}",
-                                    record.adapter_name, record.sha.substr(0, 12),
-                                    record.dirty ? " (dirty)" : "", record.failure);
+  std::string message =
+      fmt::format("build failed: adapter '{}', commit {}{}: {}", record.adapter_name,
+                  record.sha.substr(0, 12), record.dirty ? " (dirty)" : "", record.failure);
   message += fmt::format("\n  source: {}", record.src_dir.string());
   if (!record.steps.empty() && !record.steps.back().log.empty()) {
     const fs::path& log = record.steps.back().log;
     message += fmt::format("\n  log: {}", log.string());
     if (const std::optional<LogLine> first = first_error_line(log)) {
-      message += fmt::format("\n  first error (line {} of the log): {}", first->number,
-                             first->text);
+      message +=
+          fmt::format("\n  first error (line {} of the log): {}", first->number, first->text);
       message += download_hint(first->text);
     }
     if (record.log_tail.empty()) {

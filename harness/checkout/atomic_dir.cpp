@@ -27,9 +27,7 @@ std::string hidden_name(const fs::path& entry, std::string_view suffix) {
   return name;
 }
 
-std::string temp_prefix(const fs::path& final_path) {
-  return hidden_name(final_path, ".tmp-");
-}
+std::string temp_prefix(const fs::path& final_path) { return hidden_name(final_path, ".tmp-"); }
 
 void remove_leftovers(const fs::path& final_path) {
   const std::string prefix = temp_prefix(final_path);

@@ -13,15 +13,9 @@ void init_or_throw() {
 
 }  // namespace
 
-Library::Library() {
-  init_or_throw();
-}
-Library::Library(const Library&) {
-  init_or_throw();
-}
-Library::~Library() {
-  git_libgit2_shutdown();
-}
+Library::Library() { init_or_throw(); }
+Library::Library(const Library&) { init_or_throw(); }
+Library::~Library() { git_libgit2_shutdown(); }
 
 std::string last_error_message() {
   const git_error* error = git_error_last();

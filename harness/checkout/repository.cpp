@@ -214,10 +214,10 @@ std::vector<Revision> Repository::first_parent_history(const std::string& good,
   const std::string doing =
       fmt::format("walking history from '{}' to '{}' in {}", good, bad, where_);
   if (git::check(git_graph_descendant_of(repo_.get(), &to_id, &from_id), doing) != 1) {
-    throw UsageError(fmt::format("'{}' ({}) is not an ancestor of '{}' ({}) in {}: {}; the good "
-                                 "revision must be older than the bad one, on its history",
-                                 good, from.short_sha, bad, to.short_sha, where_,
-                                 how_unordered(from, to)));
+    throw UsageError(
+        fmt::format("'{}' ({}) is not an ancestor of '{}' ({}) in {}: {}; the good "
+                    "revision must be older than the bad one, on its history",
+                    good, from.short_sha, bad, to.short_sha, where_, how_unordered(from, to)));
   }
   git::RevwalkPtr walk;
   git::check(git_revwalk_new(walk.out(), repo_.get()), doing);

@@ -23,8 +23,8 @@ git::RepositoryPtr open_repository(const std::string& location,
                                    const std::filesystem::path& cache_dir) {
   git::RepositoryPtr repo;
   if (is_url(location)) {
-    const std::filesystem::path clone = clone_cache_path(std::filesystem::absolute(cache_dir),
-                                                         location);
+    const std::filesystem::path clone =
+        clone_cache_path(std::filesystem::absolute(cache_dir), location);
     if (git_repository_open_bare(repo.out(), clone.c_str()) < 0) repo.reset();
   } else if (open_repository_as_git_does(repo, location) < 0) {
     repo.reset();

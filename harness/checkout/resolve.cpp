@@ -12,9 +12,7 @@ namespace {
 
 constexpr std::size_t kNamesShown = 10;
 
-bool names_nothing(int rc) {
-  return rc == GIT_ENOTFOUND || rc == GIT_EINVALIDSPEC;
-}
+bool names_nothing(int rc) { return rc == GIT_ENOTFOUND || rc == GIT_EINVALIDSPEC; }
 
 // "main, dev, v1" or "none"; long lists end with "and 12 more".
 std::string list_for_message(const std::vector<std::string>& names) {
@@ -101,8 +99,8 @@ CommitPtr lookup_commit(git_repository* repo, const git_oid& id, std::string_vie
   CommitPtr commit;
   const int rc = git_commit_lookup(commit.out(), repo, &id);
   if (rc == GIT_ENOTFOUND && git_repository_is_shallow(repo) == 1) {
-    throw UsageError(fmt::format("commit {} is not in {}{}", to_hex(id), where,
-                                 shallow_note(repo)));
+    throw UsageError(
+        fmt::format("commit {} is not in {}{}", to_hex(id), where, shallow_note(repo)));
   }
   check(rc, fmt::format("looking up commit {} in {}", to_hex(id), where));
   return commit;

@@ -125,8 +125,7 @@ struct TreeWriter {
       default:
         throw InfraError(fmt::format("unsupported file mode {:o} of '{}' in commit {} of {}",
                                      static_cast<unsigned>(git_tree_entry_filemode(entry)),
-                                     shown(rel),
-                                     to_hex(commit_id), where));
+                                     shown(rel), to_hex(commit_id), where));
     }
   }
 };

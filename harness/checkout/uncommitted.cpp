@@ -35,9 +35,14 @@ Worktree unknown_tree(const fs::path& path) {
 }  // namespace
 
 Worktree worktree_of(const fs::path& path, const Revision& revision) {
-  return {.path = path, .revision = revision.revision, .ref_name = revision.ref_name,
-          .sha = revision.sha, .short_sha = revision.short_sha, .subject = revision.subject,
-          .author = revision.author, .commit_time = revision.commit_time};
+  return {.path = path,
+          .revision = revision.revision,
+          .ref_name = revision.ref_name,
+          .sha = revision.sha,
+          .short_sha = revision.short_sha,
+          .subject = revision.subject,
+          .author = revision.author,
+          .commit_time = revision.commit_time};
 }
 
 Worktree describe_uncommitted_worktree(const fs::path& path) {
@@ -48,8 +53,7 @@ Worktree describe_uncommitted_worktree(const fs::path& path) {
   }
   git::Library library;
   git::RepositoryPtr repo;
-  if (open_repository_as_git_does(repo, absolute) < 0 ||
-      git_repository_is_bare(repo.get())) {
+  if (open_repository_as_git_does(repo, absolute) < 0 || git_repository_is_bare(repo.get())) {
     git_error_clear();
     return unknown_tree(absolute);
   }

@@ -28,8 +28,9 @@ int alert_command(const AlertArgs& args, const Console& console) {
   request.action = parse_alert_action(args.on_regression);
   const AlertJudgement judgement =
       judge_store_history(request, [&console](const std::string& line) { console.info(line); });
-  print_result(args.format, [&] { return alert_json(judgement, request.detection); },
-               [&] { return alert_text(judgement); });
+  print_result(
+      args.format, [&] { return alert_json(judgement, request.detection); },
+      [&] { return alert_text(judgement); });
   return judgement.exit_code();
 }
 
@@ -41,19 +42,21 @@ void add_alert_command(CLI::App& command, int& exit_code) {
   add_history_filters(command, args.request.query);
   add_bounded_option(command, "--last", args.request.query.last_commits, 2, 100000,
                      "the newest N commits are the history judged");
-  command.add_option("--policy", args.request.policy,
-                     "gate policy file: each scene's max_slowdown is its alert limit")
+  command
+      .add_option("--policy", args.request.policy,
+                  "gate policy file: each scene's max_slowdown is its alert limit")
       ->check(CLI::ExistingFile);
-  command.add_option("--on-regression", args.on_regression,
-                     "fail: exit 1 when a series is in alert; annotate: report it, exit 0")
+  command
+      .add_option("--on-regression", args.on_regression,
+                  "fail: exit 1 when a series is in alert; annotate: report it, exit 0")
       ->check(CLI::IsMember({"fail", "annotate"}))
       ->capture_default_str();
   add_bounded_option(command, "--min-segment", args.request.detection.min_segment, 1, 1000,
                      "commits needed on each side of a change point");
   add_bounded_option(command, "--permutations", args.request.detection.permutations, 9, 100000,
                      "random orders of the series for the significance test");
-  add_bounded_option(command, "--significance", args.request.detection.significance, 0.0001,
-                     0.5, "a change point needs a permutation p-value below this");
+  add_bounded_option(command, "--significance", args.request.detection.significance, 0.0001, 0.5,
+                     "a change point needs a permutation p-value below this");
   command.add_option("--seed", args.request.detection.seed, "seed of the permutations")
       ->capture_default_str();
   add_format_option(command, args.format, {"text", "json"});

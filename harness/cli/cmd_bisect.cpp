@@ -48,8 +48,9 @@ int bisect_command(const BisectArgs& args, const Console& console) {
   context.explain = args.explain;
   const BaselineTool baseline(context.tools.baseline);
   const Repository repository = Repository::open(args.measure.repo, context.cache_dir);
-  const BisectRequest request{context, baseline, repository, args.good, args.bad,
-                              args.metric == "image" ? BisectMetric::image : BisectMetric::ratio};
+  const BisectRequest request{
+      context,   baseline, repository,
+      args.good, args.bad, args.metric == "image" ? BisectMetric::image : BisectMetric::ratio};
   TerminalIo terminal(console.quiet(), is_terminal(stderr));
   return answer(args, context.scenes.front().id, bisect(request, terminal.io));
 }
@@ -61,8 +62,10 @@ void add_bisect_command(CLI::App& command, int& exit_code) {
   add_change_measure_options(command, args.measure);
   command.add_option("--good", args.good, "a revision without the problem")->required();
   command.add_option("--bad", args.bad, "a later revision with it")->required();
-  command.add_option("--metric", args.metric, "ratio: a slowdown beyond the policy; image: an "
-                     "image that differs from the good commit's")
+  command
+      .add_option("--metric", args.metric,
+                  "ratio: a slowdown beyond the policy; image: an "
+                  "image that differs from the good commit's")
       ->check(CLI::IsMember({"ratio", "image"}))
       ->capture_default_str();
   command.add_flag("--explain", args.explain,

@@ -32,11 +32,11 @@ struct CalibrateArgs {
 int calibrate_command(const CalibrateArgs& args, const Console& console) {
   const MeasureContext context = load_measure_context(args.measure);
   const BaselineTool baseline(context.tools.baseline);
-  const RunTree tree = locate_run_tree(args.measure.repo, args.rev, args.worktree,
-                                       context.cache_dir);
-  const CalibrateRequest request{context,         baseline,      tree.repository,
-                                 tree.worktree,   args.target_seconds, args.runs,
-                                 args.min_side,   args.name,     args.out};
+  const RunTree tree =
+      locate_run_tree(args.measure.repo, args.rev, args.worktree, context.cache_dir);
+  const CalibrateRequest request{
+      context,   baseline,      tree.repository, tree.worktree, args.target_seconds,
+      args.runs, args.min_side, args.name,       args.out};
   check_calibrate_request(request);  // before the build
   TerminalIo terminal(console.quiet(), is_terminal(stderr));
   const Calibration calibration = calibrate_suite(request, terminal.io);
@@ -57,18 +57,19 @@ void add_calibrate_command(CLI::App& command, int& exit_code) {
   MeasureOptions& m = args.measure;
   command.add_option("--repo", m.repo, "the tracer's git repository: a path or a URL")
       ->capture_default_str();
-  command.add_option("--adapter", m.adapter,
-                     "adapter file, or the name of a shipped adapter (povray, ...)")
+  command
+      .add_option("--adapter", m.adapter,
+                  "adapter file, or the name of a shipped adapter (povray, ...)")
       ->required();
   command.add_option("--rev", args.rev, "revision to time")->capture_default_str();
   command.add_option("--worktree", args.worktree, "time this directory as it is");
-  command.add_option("--suite", m.suite, "the suite to size (name or file)")
-      ->capture_default_str();
+  command.add_option("--suite", m.suite, "the suite to size (name or file)")->capture_default_str();
   command.add_option("--scene", m.scenes, "only these suite scene ids (repeatable)");
   command.add_option("--cache-dir", m.cache_dir, "worktrees, builds, scenes and run files")
       ->capture_default_str();
-  command.add_option("--baseline", m.baseline, "raygate-baseline executable (its hash keys "
-                                                "the build cache)");
+  command.add_option("--baseline", m.baseline,
+                     "raygate-baseline executable (its hash keys "
+                     "the build cache)");
   command.add_option("--jobs", m.jobs, "parallel build jobs (default: all allowed CPUs)");
   add_bounded_option(command, "--target-seconds", args.target_seconds, 0.001, 3600.0,
                      "wall seconds one render of each scene should take")
@@ -78,8 +79,9 @@ void add_calibrate_command(CLI::App& command, int& exit_code) {
   add_bounded_option(command, "--min-side", args.min_side, 1, 4096,
                      "no calibrated picture side below this many pixels");
   command.add_option("--name", args.name, "the written suite's name (default: <suite>-<adapter>)");
-  command.add_option("-o,--output", args.out,
-                     "the suite file to write (.json), e.g. beside the adapter")
+  command
+      .add_option("-o,--output", args.out,
+                  "the suite file to write (.json), e.g. beside the adapter")
       ->required();
 }
 

@@ -25,8 +25,9 @@ struct ConsistencyArgs {
 int consistency_command(const ConsistencyArgs& args) {
   const ConsistencyResult result = check_consistency(args.documents, args.options);
   if (!args.markdown.empty()) write_file_atomically(args.markdown, consistency_markdown(result));
-  print_result(args.format, [&] { return consistency_json(result); },
-               [&] { return consistency_table(result); });
+  print_result(
+      args.format, [&] { return consistency_json(result); },
+      [&] { return consistency_table(result); });
   return result.exit_code();
 }
 

@@ -26,8 +26,8 @@ int doctor_command(const DoctorArgs& args) {
       examine_machine(args.rounds, args.baseline, [chatty](const std::string& line) {
         if (chatty) fmt::print(stderr, "{}\n", line);
       });
-  print_result(args.format, [&] { return doctor_json(report); },
-               [&] { return doctor_text(report); });
+  print_result(
+      args.format, [&] { return doctor_json(report); }, [&] { return doctor_text(report); });
   return report.noise ? to_int(ExitCode::pass) : to_int(ExitCode::infrastructure);
 }
 

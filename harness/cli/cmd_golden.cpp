@@ -40,7 +40,8 @@ void add_golden_subcommand(CLI::App& golden, const std::string& name, const std:
                   "Golden directory (default: golden/raygate-baseline/, the baseline's)");
   cmd->add_option("--work-dir", args->work_dir, "Where scenes, renders and evidence go")
       ->capture_default_str();
-  cmd->add_option("--baseline", args->baseline, "raygate-baseline to use (default: beside raygate)");
+  cmd->add_option("--baseline", args->baseline,
+                  "raygate-baseline to use (default: beside raygate)");
   cmd->add_option("scenes", args->scenes, "Suite scene ids (default: all)");
   cmd->add_option("--from-run", args->from_run, from_run_help);
   cmd->add_option("--role", args->role, "With --from-run: whose images (tracer, head, base)")

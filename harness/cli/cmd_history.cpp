@@ -35,8 +35,8 @@ void write_html(const HistoryView& view, const std::string& dir) {
 int history_command(const HistoryArgs& args) {
   const HistoryView view = store_history_view(args.store, args.query);
   if (!args.html_dir.empty()) write_html(view, args.html_dir);
-  print_result(args.format, [&] { return history_json(view); },
-               [&] { return history_table(view); });
+  print_result(
+      args.format, [&] { return history_json(view); }, [&] { return history_table(view); });
   return 0;
 }
 

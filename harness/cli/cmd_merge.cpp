@@ -15,7 +15,7 @@ namespace {
 struct MergeArgs {
   MergeRequest request;
   std::string cache_dir = ".raygate";  // where the default store is, as for run
-  PublishOptions publish;  // --store, --no-store, --branch, --report, --format
+  PublishOptions publish;              // --store, --no-store, --branch, --report, --format
 };
 
 int merge_command(const MergeArgs& args, const Console& console) {
@@ -28,8 +28,9 @@ void add_merge_command(CLI::App& command, int& exit_code) {
   MergeArgs& args = bind_command<MergeArgs>(command, merge_command, exit_code);
   command.add_option("documents", args.request.documents, "the shards' results documents")
       ->required();
-  command.add_option("--cache-dir", args.cache_dir,
-                     "the default store is <cache-dir>/results.db, as for run")
+  command
+      .add_option("--cache-dir", args.cache_dir,
+                  "the default store is <cache-dir>/results.db, as for run")
       ->capture_default_str();
   command.add_option("--policy", args.request.policy, "gate policy file (docs/gate.md)");
   command.add_flag("--fail-on-inconclusive", args.request.fail_on_inconclusive,

@@ -29,18 +29,19 @@ int run_command(const RunArgs& args, const Console& console) {
   const MeasureContext context = load_measure_context(args.measure);
   check_publish_targets(args.publish, args.out, "--output");
   const BaselineTool baseline(context.tools.baseline);
-  const RunTree tree = locate_run_tree(args.measure.repo, args.rev, args.worktree,
-                                       context.cache_dir);
+  const RunTree tree =
+      locate_run_tree(args.measure.repo, args.rev, args.worktree, context.cache_dir);
   TerminalIo terminal(console.quiet(), is_terminal(stderr));
   const MeasuredDocument measured =
       measure_run({context, baseline, tree.repository, tree.worktree, args.out}, terminal.io);
   const ResultsDocument& document = measured.document;
   if (const auto score = document.scores.find(role_name(Role::tracer));
       score != document.scores.end()) {
-    console.info(fmt::format("suite score (geometric mean of normalized ratios): {:.3f} [{:.3f}, "
-                             "{:.3f}] over {} scenes",
-                             score->second.score, score->second.interval.lower,
-                             score->second.interval.upper, score->second.scenes));
+    console.info(
+        fmt::format("suite score (geometric mean of normalized ratios): {:.3f} [{:.3f}, "
+                    "{:.3f}] over {} scenes",
+                    score->second.score, score->second.interval.lower, score->second.interval.upper,
+                    score->second.scenes));
   }
   return publish_measured(measured, args.publish, context.cache_dir, context.policy, console);
 }

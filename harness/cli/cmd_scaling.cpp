@@ -46,8 +46,10 @@ int scaling_command(const ScalingArgs& args, const Console& console) {
 
 void add_scaling_command(CLI::App& command, int& exit_code) {
   ScalingArgs& args = bind_command<ScalingArgs>(command, scaling_command, exit_code);
-  command.add_option("results", args.results, "results document (run or compare of a suite "
-                                                 "with 3+ sizes per scene, e.g. --suite scaling)")
+  command
+      .add_option("results", args.results,
+                  "results document (run or compare of a suite "
+                  "with 3+ sizes per scene, e.g. --suite scaling)")
       ->required();
   command.add_option("--policy", args.policy,
                      "gate policy file (max_exponent_increase, max_slowdown; docs/gate.md)");

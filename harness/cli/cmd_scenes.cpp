@@ -43,8 +43,9 @@ void add_convert_command(CLI::App& scenes, int& exit_code) {
   convert->add_option("--to", args->format, "Output format: pov, obj or pbrt")->required();
   convert->add_option("-o,--output", args->output, "Output file (OBJ also writes OUT.mtl)")
       ->required();
-  convert->add_option("--segments", args->segments,
-                      "Facets around tessellated spheres and cones (OBJ; pbrt cones)")
+  convert
+      ->add_option("--segments", args->segments,
+                   "Facets around tessellated spheres and cones (OBJ; pbrt cones)")
       ->default_val(args->segments)
       ->check(CLI::Range(3, 1024));
 }
@@ -64,8 +65,9 @@ void add_scenes_command(CLI::App& scenes, int& exit_code) {
   CLI::App* generate = scenes.add_subcommand("generate", "Write one SPD scene as NFF");
   generate->add_option("name", args->name, "Scene name (see 'raygate scenes list')")->required();
   generate->add_option("-s,--size", args->size, "SPD size factor (default: the scene's own)");
-  generate->add_option("-t,--tessellate", args->tessellate,
-                       "Tessellate curved primitives into triangles at this resolution (SPD: 3)")
+  generate
+      ->add_option("-t,--tessellate", args->tessellate,
+                   "Tessellate curved primitives into triangles at this resolution (SPD: 3)")
       ->expected(0, 1)
       ->default_str("3");
   generate->add_option("--resolution", args->resolution, "Image size written into the view, WxH");

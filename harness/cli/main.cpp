@@ -44,7 +44,8 @@ std::vector<Command> commands() {
       {"validate", "Compare the baseline's SPD ray counts with the published SPD statistics",
        cli::add_validate_command},
       {"adapter", "Work with adapter files (adapters/README.md)", cli::add_adapter_command},
-      {"calibrate", "size a suite to a tracer: resolutions at which each render takes a target time",
+      {"calibrate",
+       "size a suite to a tracer: resolutions at which each render takes a target time",
        cli::add_calibrate_command},
       {"run", "measure one revision against the baseline on a suite; writes a results document",
        cli::add_run_command},
@@ -107,8 +108,8 @@ int main(int argc, char** argv) {
   CLI::App app{"raygate: ray tracer regression harness, normalized against a baseline tracer"};
   app.require_subcommand(1);
   // The commit tells two builds of one version apart (cmake/RaygateGitCommit.cmake).
-  app.set_version_flag("--version", std::string("raygate ") + RAYGATE_VERSION + " (git " +
-                                        RAYGATE_GIT_COMMIT + ")");
+  app.set_version_flag(
+      "--version", std::string("raygate ") + RAYGATE_VERSION + " (git " + RAYGATE_GIT_COMMIT + ")");
   // Before any child starts: Ctrl-C, SIGTERM and SIGHUP stop children and write what was
   // measured, and orphans of children re-parent to raygate, to be swept (core/interrupt.h,
   // core/strays.h).

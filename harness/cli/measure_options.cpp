@@ -10,23 +10,25 @@ namespace raygate::cli {
 void add_measure_options(CLI::App& command, MeasureArgs& args) {
   command.add_option("--repo", args.repo, "the tracer's git repository: a path or a URL")
       ->capture_default_str();
-  command.add_option("--adapter", args.adapter,
-                     "adapter file, or the name of a shipped adapter (raygate-baseline-bbox, ...)")
+  command
+      .add_option("--adapter", args.adapter,
+                  "adapter file, or the name of a shipped adapter (raygate-baseline-bbox, ...)")
       ->required();
   command.add_option("--suite", args.suite, "suite name or file")->capture_default_str();
   command.add_option("--scene", args.scenes, "measure only these suite scene ids (repeatable)");
-  command.add_option("--cache-dir", args.cache_dir,
-                     "worktrees, builds, scenes and run files go here")
+  command
+      .add_option("--cache-dir", args.cache_dir, "worktrees, builds, scenes and run files go here")
       ->capture_default_str();
   command.add_option("--golden-dir", args.golden_dir,
                      "golden images (default: golden/<adapter name>/, or the set whose manifest "
                      "shares it with the adapter; a tracer without goldens is checked against "
                      "none)");
   command.add_option("--baseline", args.baseline, "raygate-baseline executable to use");
-  command.add_option("--schedule", args.schedule,
-                     "alternate: one program at a time, order alternating per round; duet: "
-                     "baseline and tracer at once, each on its own CPU (compare: the baseline "
-                     "alone, then base and head at once)")
+  command
+      .add_option("--schedule", args.schedule,
+                  "alternate: one program at a time, order alternating per round; duet: "
+                  "baseline and tracer at once, each on its own CPU (compare: the baseline "
+                  "alone, then base and head at once)")
       ->check(CLI::IsMember({"alternate", "duet"}))
       ->capture_default_str();
   command.add_option("--pin", args.pin_cpus, "pin every run to these CPUs (alternate schedule)")

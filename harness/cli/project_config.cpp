@@ -16,7 +16,6 @@ bool is_filter(const std::string& subcommand, const std::string& key) {
   return (subcommand == "history" || subcommand == "alert") && (key == "adapter" || key == "suite");
 }
 
-
 // A default an option's check refused (a policy file that does not exist): an error only for the
 // command that would use it, so `raygate --version` or `adapter check` still work.
 struct RefusedDefault {
@@ -35,9 +34,9 @@ void apply_to_subcommands(CLI::App& app, const ProjectDefaults& defaults,
       try {
         option->run_callback_for_default()->default_val(value.value);
       } catch (const CLI::Error& e) {
-        refused.push_back({command, option,
-                           fmt::format("{}: {} {}: {}", value.origin, command->get_name(), key,
-                                       e.what())});
+        refused.push_back(
+            {command, option,
+             fmt::format("{}: {} {}: {}", value.origin, command->get_name(), key, e.what())});
       }
       option->required(false);
     }

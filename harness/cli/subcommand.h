@@ -40,8 +40,8 @@ struct Subcommand {
 };
 
 template <typename Args, typename Run>
-Subcommand<Args> add_subcommand(CLI::App& parent, const std::string& name,
-                                const std::string& help, Run run, int& exit_code) {
+Subcommand<Args> add_subcommand(CLI::App& parent, const std::string& name, const std::string& help,
+                                Run run, int& exit_code) {
   CLI::App* command = parent.add_subcommand(name, help);
   return {command, &bind_command<Args>(*command, run, exit_code)};
 }
@@ -49,11 +49,9 @@ Subcommand<Args> add_subcommand(CLI::App& parent, const std::string& name,
 // A number held to [low, high], its default shown in --help. The bounds' type is the one
 // --help names (INT or FLOAT), so pass them as the option's own kind of number.
 template <typename Value, typename Bound>
-CLI::Option* add_bounded_option(CLI::App& command, const std::string& name, Value& value,
-                                Bound low, Bound high, const std::string& help) {
-  return command.add_option(name, value, help)
-      ->check(CLI::Range(low, high))
-      ->capture_default_str();
+CLI::Option* add_bounded_option(CLI::App& command, const std::string& name, Value& value, Bound low,
+                                Bound high, const std::string& help) {
+  return command.add_option(name, value, help)->check(CLI::Range(low, high))->capture_default_str();
 }
 
 }  // namespace raygate::cli

@@ -32,8 +32,8 @@ void Progress::clear() {
 
 void Progress::update(const ProgressState& s) {
   if (stream_ == nullptr || !interactive_) return;  // CI logs get the per-scene lines only
-  std::string text = fmt::format("[{}/{}] {:<10} round {:>2}", s.scene_index, s.scene_count,
-                                 s.scene_id, s.round);
+  std::string text =
+      fmt::format("[{}/{}] {:<10} round {:>2}", s.scene_index, s.scene_count, s.scene_id, s.round);
   if (s.ratio > 0.0) {
     text += fmt::format("  ratio {:.3f} ±{:.1f}%", s.ratio, 100.0 * s.relative_half_width);
   }

@@ -37,8 +37,10 @@ json write_noise(const GoldenNoise& noise) {
   for (const ScaleInflation& s : noise.inflation) {
     inflation.push_back({{"tile_px", s.tile_px}, {"factor", s.factor}});
   }
-  return {{"runs", noise.runs}, {"variance", noise.variance_file},
-          {"variance_sha256", noise.variance_sha256}, {"inflation", inflation}};
+  return {{"runs", noise.runs},
+          {"variance", noise.variance_file},
+          {"variance_sha256", noise.variance_sha256},
+          {"inflation", inflation}};
 }
 
 // An inflation factor beyond this is no sampler's: a tile's mean varying 1e8 times more than its
@@ -53,8 +55,7 @@ std::string short_hash(const std::string& hash) {
 }  // namespace
 
 std::optional<std::string> golden_file_problem(const std::filesystem::path& golden_dir,
-                                               const std::string& file,
-                                               const std::string& sha256) {
+                                               const std::string& file, const std::string& sha256) {
   const std::filesystem::path path = golden_dir / file;
   std::string actual;
   try {
@@ -77,9 +78,10 @@ std::optional<std::string> golden_noise_problem(const GoldenNoise& noise,
   }
   for (const ScaleInflation& s : noise.inflation) {
     if (!(s.factor >= 1.0 && s.factor <= kMaxInflation)) {
-      return fmt::format("{}: noise.inflation factor {} for tile_px {} must lie in [1, {:g}]: "
-                         "with it no comparison could ever fail",
-                         where, s.factor, s.tile_px, kMaxInflation);
+      return fmt::format(
+          "{}: noise.inflation factor {} for tile_px {} must lie in [1, {:g}]: "
+          "with it no comparison could ever fail",
+          where, s.factor, s.tile_px, kMaxInflation);
     }
   }
   return std::nullopt;
@@ -122,8 +124,8 @@ GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir) {
                                   e.at("height"), e.at("sampling"), e.at("accel"), e.at("file"),
                                   e.at("sha256")});
       // The file is read, compared and overwritten by bless: it must stay in the golden folder.
-      const std::string where = path.string() + ": $.images[" +
-                                std::to_string(manifest.entries.size() - 1) + "]";
+      const std::string where =
+          path.string() + ": $.images[" + std::to_string(manifest.entries.size() - 1) + "]";
       checked_component(manifest.entries.back().id, where + ".id");
       checked_component(manifest.entries.back().file, where + ".file");
       if (e.contains("noise")) manifest.noise[e.at("id")] = read_noise(e.at("noise"), where);
@@ -133,10 +135,9 @@ GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir) {
     }
     if (doc.contains("tracer")) {
       const json& t = doc.at("tracer");
-      manifest.tracer = GoldenProvenance{t.at("adapter"),    t.at("adapter_sha256"),
-                                         t.at("revision"),   t.at("sha"),
-                                         t.at("dirty"),      t.at("results"),
-                                         t.at("started_at")};
+      manifest.tracer =
+          GoldenProvenance{t.at("adapter"), t.at("adapter_sha256"), t.at("revision"),  t.at("sha"),
+                           t.at("dirty"),   t.at("results"),        t.at("started_at")};
     }
   } catch (const json::exception& e) {
     throw UsageError(path.string() + ": malformed golden manifest: " + e.what());
@@ -144,32 +145,37 @@ GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir) {
   return manifest;
 }
 
-void save_golden_manifest(const GoldenManifest& manifest,
-                          const std::filesystem::path& golden_dir) {
+void save_golden_manifest(const GoldenManifest& manifest, const std::filesystem::path& golden_dir) {
   std::vector<GoldenEntry> entries = manifest.entries;
   std::sort(entries.begin(), entries.end(),
             [](const GoldenEntry& a, const GoldenEntry& b) { return a.id < b.id; });
   json images = json::array();
   for (const GoldenEntry& e : entries) {
-    images.push_back({{"id", e.id}, {"scene", e.scene}, {"size", e.size}, {"width", e.width},
-                      {"height", e.height}, {"sampling", e.sampling}, {"accel", e.accel},
-                      {"file", e.file}, {"sha256", e.sha256}});
+    images.push_back({{"id", e.id},
+                      {"scene", e.scene},
+                      {"size", e.size},
+                      {"width", e.width},
+                      {"height", e.height},
+                      {"sampling", e.sampling},
+                      {"accel", e.accel},
+                      {"file", e.file},
+                      {"sha256", e.sha256}});
     if (const auto noise = manifest.noise.find(e.id); noise != manifest.noise.end()) {
       images.back()["noise"] = write_noise(noise->second);
     }
   }
   json doc = {{"schema_version", GoldenManifest::kSchemaVersion},
-                    {"suite", manifest.suite},
-                    {"baseline",
-                     {{"version", manifest.baseline_version},
-                      {"source_sha256", manifest.baseline_source_sha256}}},
-                    {"images", images}};
+              {"suite", manifest.suite},
+              {"baseline",
+               {{"version", manifest.baseline_version},
+                {"source_sha256", manifest.baseline_source_sha256}}},
+              {"images", images}};
   if (!manifest.shared_with.empty()) doc["shared_with"] = manifest.shared_with;
   if (manifest.tracer) {
     const GoldenProvenance& t = *manifest.tracer;
-    doc["tracer"] = {{"adapter", t.adapter},   {"adapter_sha256", t.adapter_hash},
-                     {"revision", t.revision}, {"sha", t.sha},
-                     {"dirty", t.dirty},       {"results", t.results},
+    doc["tracer"] = {{"adapter", t.adapter},      {"adapter_sha256", t.adapter_hash},
+                     {"revision", t.revision},    {"sha", t.sha},
+                     {"dirty", t.dirty},          {"results", t.results},
                      {"started_at", t.started_at}};
   }
   write_file_atomically(golden_dir / kManifestName, doc.dump(2) + "\n");

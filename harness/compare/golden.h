@@ -45,7 +45,7 @@ struct GoldenProvenance {
   std::string revision;      // as asked for ("HEAD", "v1.2", "--worktree PATH")
   std::string sha;           // the commit measured
   bool dirty = false;
-  std::string results;    // the results document the images were taken from
+  std::string results;     // the results document the images were taken from
   std::string started_at;  // when that run started
 
   bool operator==(const GoldenProvenance&) const = default;
@@ -88,14 +88,12 @@ std::string golden_owner(const GoldenManifest& manifest);
 // checked so before it judges anything; a check it fails could not be made (verdict error,
 // exit 3), since the trust anchor, not the tracer, is broken.
 std::optional<std::string> golden_file_problem(const std::filesystem::path& golden_dir,
-                                               const std::string& file,
-                                               const std::string& sha256);
+                                               const std::string& file, const std::string& sha256);
 
 // Why a Monte Carlo golden's manifest values could never let a comparison fail (an inflation
 // factor below 1, not finite or absurdly large; implausibly many runs), naming the manifest
 // entry and the value; nullopt when they make sense.
-std::optional<std::string> golden_noise_problem(const GoldenNoise& noise,
-                                                const std::string& where);
+std::optional<std::string> golden_noise_problem(const GoldenNoise& noise, const std::string& where);
 
 // A missing manifest yields an empty one; a malformed one is a UsageError naming the file.
 GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir);

@@ -17,8 +17,8 @@ std::string describe_settings(const GoldenEntry& e) {
 }
 
 bool same_settings(const GoldenEntry& golden, const GoldenEntry& rendered) {
-  const bool same_resolution = rendered.width == 0 ||
-                               (golden.width == rendered.width && golden.height == rendered.height);
+  const bool same_resolution =
+      rendered.width == 0 || (golden.width == rendered.width && golden.height == rendered.height);
   const bool same_sampling = rendered.sampling.empty() || golden.sampling == rendered.sampling;
   return golden.scene == rendered.scene && golden.size == rendered.size && same_resolution &&
          same_sampling;
@@ -33,9 +33,10 @@ std::optional<std::string> vanished_run_folder(const std::filesystem::path& actu
       std::filesystem::exists(actual.parent_path(), ec)) {
     return std::nullopt;
   }
-  return fmt::format("{}: the run's folder is gone (deleted while raygate ran?), so its image "
-                     "could not be checked",
-                     actual.parent_path().string());
+  return fmt::format(
+      "{}: the run's folder is gone (deleted while raygate ran?), so its image "
+      "could not be checked",
+      actual.parent_path().string());
 }
 
 // With nothing to compare against, the image is still read: a tracer that exited 0 but wrote
@@ -44,8 +45,8 @@ std::optional<std::string> vanished_run_folder(const std::filesystem::path& actu
 ImageCheck without_golden(Role role, const std::filesystem::path& actual,
                           const std::filesystem::path& expected, const std::string& why,
                           const GoldenEntry& rendered) {
-  ImageCheck check{role, ImageReference::golden, actual, expected,
-                   ImageVerdict::missing, why, std::nullopt, {}, std::nullopt};
+  ImageCheck check{role, ImageReference::golden, actual, expected,    ImageVerdict::missing,
+                   why,  std::nullopt,           {},     std::nullopt};
   if (auto gone = vanished_run_folder(actual)) {
     check.verdict = ImageVerdict::error;
     check.error = std::move(*gone);
@@ -65,9 +66,9 @@ ImageCheck without_golden(Role role, const std::filesystem::path& actual,
   } else if (rendered.width > 0 && rendered.height > 0 &&
              (self.width != rendered.width || self.height != rendered.height)) {
     check.verdict = ImageVerdict::fail;
-    check.error = fmt::format("{}: the image is {}x{}, but the scene renders at {}x{}",
-                              actual.string(), self.width, self.height, rendered.width,
-                              rendered.height);
+    check.error =
+        fmt::format("{}: the image is {}x{}, but the scene renders at {}x{}", actual.string(),
+                    self.width, self.height, rendered.width, rendered.height);
   }
   return check;
 }
@@ -113,12 +114,11 @@ std::string check_label(const ImageCheck& check, std::string_view between) {
   return label.append(between).append(to_string(check.reference));
 }
 
-ImageCheck check_image(Role role, ImageReference reference,
-                       const std::filesystem::path& actual, const std::filesystem::path& expected,
-                       const ImageThresholds& thresholds, const std::filesystem::path& evidence_dir,
-                       const std::string& stem) {
-  ImageCheck check{role,          reference,    actual, expected, ImageVerdict::error,
-                   {},            std::nullopt, {},     std::nullopt};
+ImageCheck check_image(Role role, ImageReference reference, const std::filesystem::path& actual,
+                       const std::filesystem::path& expected, const ImageThresholds& thresholds,
+                       const std::filesystem::path& evidence_dir, const std::string& stem) {
+  ImageCheck check{role, reference,    actual, expected,    ImageVerdict::error,
+                   {},   std::nullopt, {},     std::nullopt};
   if (auto gone = vanished_run_folder(actual)) {
     check.error = std::move(*gone);
     return check;
@@ -161,7 +161,8 @@ std::optional<std::string> no_golden(const std::filesystem::path& golden_dir,
                                      const GoldenManifest& manifest, const GoldenEntry& rendered) {
   const std::string& id = rendered.id;
   const GoldenEntry* entry = manifest.find(id);
-  if (manifest.entries.empty()) return "no goldens in " + golden_dir.string() + " (none blessed yet)";
+  if (manifest.entries.empty())
+    return "no goldens in " + golden_dir.string() + " (none blessed yet)";
   if (entry == nullptr || !std::filesystem::exists(golden_dir / entry->file)) {
     return "no golden image for '" + id + "' in " + golden_dir.string();
   }
@@ -185,8 +186,8 @@ struct GoldenLookup {
 // A golden that does not match its manifest judges nothing: the check could not be made.
 ImageCheck untrusted_golden(Role role, const std::filesystem::path& actual,
                             const std::filesystem::path& expected, std::string why) {
-  return {role, ImageReference::golden, actual, expected, ImageVerdict::error, std::move(why),
-          std::nullopt, {}, std::nullopt};
+  return {role,           ImageReference::golden, actual, expected,    ImageVerdict::error,
+          std::move(why), std::nullopt,           {},     std::nullopt};
 }
 
 // `extension` names the file a scene without an entry would have, so that a report of a missing
@@ -203,8 +204,7 @@ GoldenLookup look_up_golden(Role role, const std::filesystem::path& golden_dir,
 
 }  // namespace
 
-ImageCheck check_runs_against_golden(Role role,
-                                     const std::vector<std::filesystem::path>& actual,
+ImageCheck check_runs_against_golden(Role role, const std::vector<std::filesystem::path>& actual,
                                      const std::filesystem::path& golden_dir,
                                      const GoldenManifest& manifest, const GoldenEntry& rendered,
                                      const NoisyThresholds& thresholds,

@@ -36,7 +36,7 @@ struct ImageCheck {
   // For missing and error: what went wrong and what to do; beside a Monte Carlo comparison, its
   // notes (identical runs, evidence not written).
   std::string error;
-  std::optional<ImageMetrics> metrics;  // the per-pixel check's
+  std::optional<ImageMetrics> metrics;          // the per-pixel check's
   std::vector<std::filesystem::path> evidence;  // actual, expected, |diff| x16 on failure
   std::optional<NoisyComparison> noisy;  // the Monte Carlo check's (compare/noisy_image_compare.h)
 
@@ -52,10 +52,9 @@ std::string check_detail(const ImageCheck& check);
 std::string check_label(const ImageCheck& check, std::string_view between);
 
 // Compares `actual` with `expected`; on fail writes evidence into evidence_dir as <stem>.*.png.
-ImageCheck check_image(Role role, ImageReference reference,
-                       const std::filesystem::path& actual, const std::filesystem::path& expected,
-                       const ImageThresholds& thresholds, const std::filesystem::path& evidence_dir,
-                       const std::string& stem);
+ImageCheck check_image(Role role, ImageReference reference, const std::filesystem::path& actual,
+                       const std::filesystem::path& expected, const ImageThresholds& thresholds,
+                       const std::filesystem::path& evidence_dir, const std::string& stem);
 
 // The golden of suite scene `rendered.id` in `golden_dir` (per its manifest), checked as above.
 // `rendered` says what `actual` is a picture of (scene, size; width and height unless 0, the
@@ -75,8 +74,7 @@ ImageCheck check_against_golden(Role role, const std::filesystem::path& actual,
 // The same for a Monte Carlo tracer (compare/noisy_image_check.h): every run's image of the
 // scene against the golden's statistics. A golden blessed from a single image (no "noise" in
 // the manifest) cannot judge noisy renders: verdict missing, saying how to bless one.
-ImageCheck check_runs_against_golden(Role role,
-                                     const std::vector<std::filesystem::path>& actual,
+ImageCheck check_runs_against_golden(Role role, const std::vector<std::filesystem::path>& actual,
                                      const std::filesystem::path& golden_dir,
                                      const GoldenManifest& manifest, const GoldenEntry& rendered,
                                      const NoisyThresholds& thresholds,

@@ -6,10 +6,12 @@ namespace raygate {
 namespace {
 
 // Each verdict's word, spelt once for documents, database rows and printed text.
-constexpr EnumWords<ImageVerdict, 6> kVerdictWords{{
-    {ImageVerdict::missing, "missing"}, {ImageVerdict::pass, "pass"}, {ImageVerdict::warn, "warn"},
-    {ImageVerdict::inconclusive, "inconclusive"}, {ImageVerdict::error, "error"},
-    {ImageVerdict::fail, "fail"}}};
+constexpr EnumWords<ImageVerdict, 6> kVerdictWords{{{ImageVerdict::missing, "missing"},
+                                                    {ImageVerdict::pass, "pass"},
+                                                    {ImageVerdict::warn, "warn"},
+                                                    {ImageVerdict::inconclusive, "inconclusive"},
+                                                    {ImageVerdict::error, "error"},
+                                                    {ImageVerdict::fail, "fail"}}};
 
 }  // namespace
 

@@ -18,8 +18,8 @@ namespace {
 std::optional<std::string> broken_image(const std::filesystem::path& image) {
   if (std::string problem = unreadable_image(image); !problem.empty()) return problem;
   const RgbImage pixels = read_rgb_image(image);
-  const auto bad = std::find_if(pixels.rgb.begin(), pixels.rgb.end(),
-                                [](float v) { return !std::isfinite(v); });
+  const auto bad =
+      std::find_if(pixels.rgb.begin(), pixels.rgb.end(), [](float v) { return !std::isfinite(v); });
   if (bad == pixels.rgb.end()) return std::nullopt;
   const auto pixel = static_cast<std::size_t>(bad - pixels.rgb.begin()) / 3;
   return image.string() + ": NaN/Inf pixels, first at (" +
@@ -66,15 +66,15 @@ void write_noisy_evidence(ImageCheck& check, const NoisyImageStats& actual,
   if (comparison.size_mismatch) return;
   try {
     std::filesystem::create_directories(dir);
-    const std::filesystem::path paths[3] = {dir / (stem + ".actual.png"),
-                                            dir / (stem + ".expected.png"),
-                                            dir / (stem + ".tiles.png")};
+    const std::filesystem::path paths[3] = {
+        dir / (stem + ".actual.png"), dir / (stem + ".expected.png"), dir / (stem + ".tiles.png")};
     write_rgb_image(mean_image(actual), paths[0]);
     write_rgb_image(mean_image(expected), paths[1]);
     write_rgb_image(tile_map(actual, expected, comparison), paths[2]);
     check.evidence.assign(std::begin(paths), std::end(paths));
   } catch (const Error& e) {
-    check.error += std::string(check.error.empty() ? "" : "; ") + "evidence not written: " + e.what();
+    check.error +=
+        std::string(check.error.empty() ? "" : "; ") + "evidence not written: " + e.what();
   }
 }
 
@@ -161,7 +161,8 @@ std::optional<std::string> nonsense_statistics(const NoisyImageStats& golden,
 
 NoisyThresholds noisy_thresholds_for(std::size_t images_in_family, double tolerance) {
   NoisyThresholds thresholds;
-  thresholds.alpha = kNoisyFamilyAlpha / static_cast<double>(std::max<std::size_t>(1, images_in_family));
+  thresholds.alpha =
+      kNoisyFamilyAlpha / static_cast<double>(std::max<std::size_t>(1, images_in_family));
   thresholds.tolerance = tolerance;
   return thresholds;
 }
@@ -180,9 +181,15 @@ ImageCheck check_noisy_images(Role role, ImageReference reference,
                               const std::vector<std::filesystem::path>& expected,
                               const NoisyThresholds& thresholds,
                               const std::filesystem::path& evidence_dir, const std::string& stem) {
-  ImageCheck check{role, reference, actual.empty() ? std::filesystem::path() : actual.front(),
+  ImageCheck check{role,
+                   reference,
+                   actual.empty() ? std::filesystem::path() : actual.front(),
                    expected.empty() ? std::filesystem::path() : expected.front(),
-                   ImageVerdict::error, {}, std::nullopt, {}, std::nullopt};
+                   ImageVerdict::error,
+                   {},
+                   std::nullopt,
+                   {},
+                   std::nullopt};
   if (auto unusable = unusable_actual(check, actual)) return *unusable;
   if (expected.empty()) {
     check.error =
@@ -208,21 +215,26 @@ ImageCheck check_noisy_images(Role role, ImageReference reference,
   return judged(check, actual, expected_stats, thresholds, evidence_dir, stem);
 }
 
-ImageCheck check_noisy_against_stats(Role role,
-                                     const std::vector<std::filesystem::path>& actual,
+ImageCheck check_noisy_against_stats(Role role, const std::vector<std::filesystem::path>& actual,
                                      const std::filesystem::path& mean_file,
                                      const std::filesystem::path& golden_dir,
                                      const GoldenNoise& noise, const NoisyThresholds& thresholds,
                                      const std::filesystem::path& evidence_dir,
                                      const std::string& stem) {
-  ImageCheck check{role, ImageReference::golden,
-                   actual.empty() ? std::filesystem::path() : actual.front(), mean_file,
-                   ImageVerdict::error, {}, std::nullopt, {}, std::nullopt};
+  ImageCheck check{role,
+                   ImageReference::golden,
+                   actual.empty() ? std::filesystem::path() : actual.front(),
+                   mean_file,
+                   ImageVerdict::error,
+                   {},
+                   std::nullopt,
+                   {},
+                   std::nullopt};
   if (auto unusable = unusable_actual(check, actual)) return *unusable;
   NoisyImageStats golden;
   try {
-    golden = read_stats_images(mean_file, golden_dir / noise.variance_file, noise.runs,
-                               noise.inflation);
+    golden =
+        read_stats_images(mean_file, golden_dir / noise.variance_file, noise.runs, noise.inflation);
   } catch (const Error& e) {
     check.error = e.what();
     return check;

@@ -36,8 +36,7 @@ ImageCheck check_noisy_images(Role role, ImageReference reference,
                               const std::filesystem::path& evidence_dir, const std::string& stem);
 
 // Against the golden statistics `noise` (whose mean image is `mean_file`).
-ImageCheck check_noisy_against_stats(Role role,
-                                     const std::vector<std::filesystem::path>& actual,
+ImageCheck check_noisy_against_stats(Role role, const std::vector<std::filesystem::path>& actual,
                                      const std::filesystem::path& mean_file,
                                      const std::filesystem::path& golden_dir,
                                      const GoldenNoise& noise, const NoisyThresholds& thresholds,

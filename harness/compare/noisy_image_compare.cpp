@@ -22,7 +22,7 @@ struct TileTest {
   int channel = 0;
   double difference = 0.0;  // actual - expected
   double standard_error = 0.0;
-  double reference = 1.0;  // what the difference is relative to
+  double reference = 1.0;   // what the difference is relative to
   double min_effect = 0.0;  // relative: a rejected test fails the image only from here on
   double z = 0.0;
   double p = 1.0;
@@ -42,13 +42,17 @@ double image_mean(const NoisyImageStats& stats) {
 
 // The tile's channel on both sides, tested against "no change at all" (the local-bias test).
 TileTest make_test(const NoisyImageStats& actual, const NoisyImageStats& expected,
-                   std::size_t scale, int tile_px, const TileRect& rect, int channel,
-                   double dark) {
+                   std::size_t scale, int tile_px, const TileRect& rect, int channel, double dark) {
   const TileEstimate a = estimate_tile(actual, rect, channel, tile_px);
   const TileEstimate b = estimate_tile(expected, rect, channel, tile_px);
   // The floor of 1e-30 keeps a black reference's relative change a number (huge), not NaN.
-  TileTest t{scale, tile_px, rect, channel, a.mean - b.mean,
-             std::sqrt(a.variance_of_mean + b.variance_of_mean), std::max({b.mean, dark, 1e-30})};
+  TileTest t{scale,
+             tile_px,
+             rect,
+             channel,
+             a.mean - b.mean,
+             std::sqrt(a.variance_of_mean + b.variance_of_mean),
+             std::max({b.mean, dark, 1e-30})};
   if (t.standard_error > 0) {
     t.z = t.difference / t.standard_error;
   } else if (std::abs(t.difference) > 1e-7 * t.reference) {
@@ -99,8 +103,8 @@ RelativeChange interval(double change, double error, double z) {
 }
 
 BiasedTile biased_tile(const TileTest& t, double z_interval) {
-  return {t.tile_px, t.rect,        t.channel, interval(t.relative(), t.relative_error(), z_interval),
-          t.min_effect, t.z, t.p};
+  return {t.tile_px,    t.rect, t.channel, interval(t.relative(), t.relative_error(), z_interval),
+          t.min_effect, t.z,    t.p};
 }
 
 double median(std::vector<double> values) {
@@ -125,8 +129,8 @@ std::vector<ScaleReport> scale_reports(const std::vector<TileTest>& tests, std::
       weight = t.weight;
       tile_px = t.tile_px;
     }
-    const double z_needed = normal_quantile(1 - thresholds.alpha * weight / 2) +
-                            normal_quantile(thresholds.power);
+    const double z_needed =
+        normal_quantile(1 - thresholds.alpha * weight / 2) + normal_quantile(thresholds.power);
     reports.push_back({tile_px, relative_errors.size() / 3, z_needed * median(relative_errors)});
   }
   return reports;
@@ -205,9 +209,9 @@ void project_samples(const std::vector<TileTest>& whole, const NoisyThresholds& 
   out.runs_needed = std::isfinite(out.samples_factor)
                         ? static_cast<int>(std::ceil(out.samples_factor * runs))
                         : 0;
-  out.why_inconclusive = to_fail < to_pass ? "the whole image is shown neither within nor beyond"
-                                           : std::string("channel ") + "RGB"[deciding] +
-                                                 " is not shown within";
+  out.why_inconclusive = to_fail < to_pass
+                             ? "the whole image is shown neither within nor beyond"
+                             : std::string("channel ") + "RGB"[deciding] + " is not shown within";
   if (!std::isfinite(std::min(to_pass, to_fail))) {
     out.why_inconclusive = "the whole image's change is estimated right at";
   }
@@ -234,20 +238,19 @@ void judge(const std::vector<TileTest>& tests, const NoisyThresholds& thresholds
         interval(t.relative(), t.relative_error(), z_interval);
   }
   out.image = luminance_change(whole, z_interval);
-  const bool all_within = within(out.image, thresholds.tolerance) &&
-                          std::all_of(out.channels.begin(), out.channels.end(),
-                                      [&](const RelativeChange& c) {
-                                        return within(c, thresholds.tolerance);
-                                      });
+  const bool all_within =
+      within(out.image, thresholds.tolerance) &&
+      std::all_of(out.channels.begin(), out.channels.end(),
+                  [&](const RelativeChange& c) { return within(c, thresholds.tolerance); });
   if (out.biased_count > 0) out.verdict = NoisyVerdict::fail;
   else if (all_within) out.verdict = NoisyVerdict::pass;
   else project_samples(whole, thresholds, out);
 }
 
 // The verdicts' words, as documents and reports write them.
-constexpr EnumWords<NoisyVerdict, 3> kVerdictWords{{
-    {NoisyVerdict::pass, "pass"}, {NoisyVerdict::fail, "fail"},
-    {NoisyVerdict::inconclusive, "inconclusive"}}};
+constexpr EnumWords<NoisyVerdict, 3> kVerdictWords{{{NoisyVerdict::pass, "pass"},
+                                                    {NoisyVerdict::fail, "fail"},
+                                                    {NoisyVerdict::inconclusive, "inconclusive"}}};
 
 }  // namespace
 

@@ -69,10 +69,10 @@ struct RelativeChange {
 struct BiasedTile {
   int tile_px = kWholeImage;
   TileRect rect;
-  int channel = 0;  // 0 R, 1 G, 2 B
-  RelativeChange change;  // (actual - expected) / reference
+  int channel = 0;          // 0 R, 1 G, 2 B
+  RelativeChange change;    // (actual - expected) / reference
   double min_effect = 0.0;  // the smallest change that fails it (its scale's, or the tolerance)
-  double z = 0.0;        // the test's statistic (whole image: against the tolerance)
+  double z = 0.0;           // the test's statistic (whole image: against the tolerance)
   double p_value = 1.0;
   bool operator==(const BiasedTile&) const = default;
 };
@@ -103,7 +103,7 @@ struct NoisyComparison {
   // Inconclusive: about this many times the samples (runs x spp, both sides) would decide it,
   // projected from the estimate (infinite: the estimate sits on the tolerance); 1 otherwise.
   double samples_factor = 1.0;
-  int runs_needed = 0;  // a side, for that; 0 when decided
+  int runs_needed = 0;           // a side, for that; 0 when decided
   std::string why_inconclusive;  // too few runs, or which interval reaches past the tolerance
 
   bool operator==(const NoisyComparison&) const = default;

@@ -48,8 +48,8 @@ std::string failed_text(const NoisyComparison& c) {
       "fail (biased): {} tile at ({},{}) {}x{} {} {}, beyond its {:.3g}% minimum; {} of {} tests "
       "failed; {}; {}",
       tile_name(w.tile_px), w.rect.x, w.rect.y, w.rect.width, w.rect.height,
-      kChannelNames[w.channel], interval_text(w.change), 100 * w.min_effect, c.biased_count, c.tests,
-      evidence_text(c), tolerance_text(c));
+      kChannelNames[w.channel], interval_text(w.change), 100 * w.min_effect, c.biased_count,
+      c.tests, evidence_text(c), tolerance_text(c));
 }
 
 std::string resolves_text(const NoisyComparison& c) {

@@ -12,9 +12,7 @@ namespace {
 
 using nlohmann::json;
 
-
 std::string r2_text(double r2) { return std::isfinite(r2) ? fmt::format("{:.4f}", r2) : "n/a"; }
-
 
 std::string labels(const ConsistencyResult& result, const std::vector<std::size_t>& indices) {
   std::string text;
@@ -118,15 +116,15 @@ json consistency_json(const ConsistencyResult& result) {
   }
   json pairs = json::array();
   for (const PairFit& p : result.pairs) {
-    pairs.push_back({{"a", result.documents[p.a].label},
-                     {"b", result.documents[p.b].label},
-                     {"scenes", p.scenes},
-                     {"r2", finite_number(p.r2)},
-                     {"slope", finite_number(p.slope)},
-                     {"intercept", finite_number(p.intercept)},
-                     {"mean_abs_relative_difference",
-                      finite_number(p.mean_abs_relative_difference)},
-                     {"passes", p.passes}});
+    pairs.push_back(
+        {{"a", result.documents[p.a].label},
+         {"b", result.documents[p.b].label},
+         {"scenes", p.scenes},
+         {"r2", finite_number(p.r2)},
+         {"slope", finite_number(p.slope)},
+         {"intercept", finite_number(p.intercept)},
+         {"mean_abs_relative_difference", finite_number(p.mean_abs_relative_difference)},
+         {"passes", p.passes}});
   }
   json scenes = json::array();
   json unstable = json::array();

@@ -7,12 +7,14 @@ namespace raygate {
 namespace {
 
 // One table per enum: its values and their words, the only place each word is spelt.
-constexpr EnumWords<Role, 4> kRoleWords{{
-    {Role::baseline, "baseline"}, {Role::tracer, "tracer"}, {Role::base, "base"}, {Role::head, "head"}}};
-constexpr EnumWords<DocumentKind, 2> kKindWords{{
-    {DocumentKind::run, "run"}, {DocumentKind::compare, "compare"}}};
-constexpr EnumWords<SceneStatus, 2> kStatusWords{{
-    {SceneStatus::measured, "measured"}, {SceneStatus::failed, "failed"}}};
+constexpr EnumWords<Role, 4> kRoleWords{{{Role::baseline, "baseline"},
+                                         {Role::tracer, "tracer"},
+                                         {Role::base, "base"},
+                                         {Role::head, "head"}}};
+constexpr EnumWords<DocumentKind, 2> kKindWords{
+    {{DocumentKind::run, "run"}, {DocumentKind::compare, "compare"}}};
+constexpr EnumWords<SceneStatus, 2> kStatusWords{
+    {{SceneStatus::measured, "measured"}, {SceneStatus::failed, "failed"}}};
 
 }  // namespace
 

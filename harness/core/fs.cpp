@@ -84,15 +84,14 @@ std::string read_file(const std::filesystem::path& path) {
   }
   // A FIFO with no writer blocks the open forever, a device may never end: only regular files
   // (issue 25, class 12). A missing file falls through to the open's own message.
-  const bool special = type == std::filesystem::file_type::fifo ||
-                       type == std::filesystem::file_type::socket ||
-                       type == std::filesystem::file_type::block ||
-                       type == std::filesystem::file_type::character;
+  const bool special =
+      type == std::filesystem::file_type::fifo || type == std::filesystem::file_type::socket ||
+      type == std::filesystem::file_type::block || type == std::filesystem::file_type::character;
   if (special) {
-    throw UsageError(path.string() + ": is a " +
-                     (type == std::filesystem::file_type::fifo ? "FIFO (named pipe)"
-                                                               : "device or socket") +
-                     ", expected a regular file");
+    throw UsageError(
+        path.string() + ": is a " +
+        (type == std::filesystem::file_type::fifo ? "FIFO (named pipe)" : "device or socket") +
+        ", expected a regular file");
   }
   std::ifstream in(path, std::ios::binary);
   if (!in) throw UsageError(path.string() + ": cannot open: " + system_reason());

@@ -39,7 +39,7 @@ class JsonField {
   // Checks this is an object whose keys are all in `known`; an unknown key fails with the
   // closest known one as a suggestion.
   void expect_object(const std::vector<std::string>& known) const;
-  bool has(std::string_view key) const;  // for an object
+  bool has(std::string_view key) const;          // for an object
   JsonField member(std::string_view key) const;  // fails "missing required key" if absent
   std::vector<std::string> keys() const;         // for an object, sorted
   std::vector<JsonField> elements() const;       // fails unless an array

@@ -57,8 +57,8 @@ struct OpenContainer {
 bool is_identifier(const std::string& key) {
   if (key.empty() || (key[0] >= '0' && key[0] <= '9')) return false;
   for (const char c : key) {
-    const bool word = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') ||
-                      (c >= '0' && c <= '9') || c == '_';
+    const bool word =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
     if (!word) return false;
   }
   return true;
@@ -146,16 +146,14 @@ Json parse_json_input(std::string_view text, const std::string& origin) {
   const auto track = [&](int /*depth*/, Event event, Json& parsed) {
     switch (event) {
       case Event::object_start:
-      case Event::array_start:
-        open.push_back({event == Event::object_start, {}, {}, 0});
-        break;
+      case Event::array_start: open.push_back({event == Event::object_start, {}, {}, 0}); break;
       case Event::key: {
         std::string key = parsed.get<std::string>();
         if (!open.back().keys.insert(key).second) {
           const auto [line, column] = line_and_column(text, string_start(text, read));
-          throw JsonInputError(origin, line, column, path_through(open, open.size() - 1),
-                               "duplicate key '" + key +
-                                   "' (JSON keeps only one of them; remove the other)");
+          throw JsonInputError(
+              origin, line, column, path_through(open, open.size() - 1),
+              "duplicate key '" + key + "' (JSON keeps only one of them; remove the other)");
         }
         open.back().key = std::move(key);
         break;
@@ -185,9 +183,9 @@ Json parse_json_input(std::string_view text, const std::string& origin) {
     std::string number(text.substr(start, std::min(end - start, kShown)));
     if (end - start > kShown) number += "...";
     const auto [line, column] = line_and_column(text, start);
-    throw JsonInputError(origin, line, column, path_through(open, open.size()),
-                         "number " + number +
-                             " is out of range (a double holds magnitudes up to about 1.8e308)");
+    throw JsonInputError(
+        origin, line, column, path_through(open, open.size()),
+        "number " + number + " is out of range (a double holds magnitudes up to about 1.8e308)");
   }
 }
 

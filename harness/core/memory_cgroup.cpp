@@ -78,8 +78,8 @@ std::optional<Hierarchy> find_hierarchy(bool v2) {
     const std::vector<std::string> left = split(line.substr(0, dash), ' ');
     const std::vector<std::string> right = split(line.substr(dash + 3), ' ');
     if (left.size() < 5 || right.size() < 3) continue;
-    const bool wanted = v2 ? right[0] == "cgroup2"
-                           : right[0] == "cgroup" && has_token(right[2], ',', "memory");
+    const bool wanted =
+        v2 ? right[0] == "cgroup2" : right[0] == "cgroup" && has_token(right[2], ',', "memory");
     if (wanted) return Hierarchy{left[4], left[3]};
   }
   return std::nullopt;
@@ -203,14 +203,12 @@ std::optional<PeakMethod> parse_peak_method(std::string_view word) {
 
 std::string describe_peak_method(PeakMethod method) {
   switch (method) {
-    case PeakMethod::cgroup_v2:
-      return "the whole process tree at once (cgroup v2 memory.peak)";
+    case PeakMethod::cgroup_v2: return "the whole process tree at once (cgroup v2 memory.peak)";
     case PeakMethod::cgroup_v1:
       return "the whole process tree at once (cgroup v1 memory.max_usage_in_bytes)";
     case PeakMethod::largest_process:
       return "its largest single process (no memory cgroup could be made here)";
-    case PeakMethod::raygate_process:
-      break;
+    case PeakMethod::raygate_process: break;
   }
   return "raygate's own process (not the tracer's)";
 }

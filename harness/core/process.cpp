@@ -115,8 +115,9 @@ MeterReport parse_meter_report(const std::string& text) {
     report.spawn_failed = true;
   } else {
     int joined = 0;
-    const int fields = std::sscanf(text.c_str(), "rusage %lld %lld %ld %lld %d", &report.user_us,
-                                   &report.system_us, &report.max_rss_kib, &report.wall_ns, &joined);
+    const int fields =
+        std::sscanf(text.c_str(), "rusage %lld %lld %ld %lld %d", &report.user_us,
+                    &report.system_us, &report.max_rss_kib, &report.wall_ns, &joined);
     report.has_usage = fields >= 4;
     report.joined_cgroup = fields == 5 && joined == 1;
   }
@@ -137,18 +138,14 @@ std::filesystem::path meter_executable() {
 std::string ProcessResult::describe() const {
   std::ostringstream out;
   switch (outcome) {
-    case ProcessOutcome::exited:
-      out << "exited with status " << exit_code;
-      break;
+    case ProcessOutcome::exited: out << "exited with status " << exit_code; break;
     case ProcessOutcome::signaled:
       out << "killed by signal " << signal << " (" << sigabbrev_np(signal) << ")";
       break;
     case ProcessOutcome::timed_out:
       out << "timed out after " << std::fixed << std::setprecision(1) << wall_seconds << " s";
       break;
-    case ProcessOutcome::spawn_failed:
-      out << "could not start: " << spawn_error;
-      break;
+    case ProcessOutcome::spawn_failed: out << "could not start: " << spawn_error; break;
   }
   return out.str();
 }
@@ -198,16 +195,15 @@ Process Process::start(const ProcessSpec& spec) {
   posix_spawnattr_setsigmask(&attr, &no_signals);
   posix_spawnattr_setsigdefault(&attr, &default_signals);
   posix_spawnattr_setpgroup(&attr, 0);  // own group: a timeout kills the tracer's children too
-  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK |
-                                      POSIX_SPAWN_SETSIGDEF);
+  posix_spawnattr_setflags(&attr,
+                           POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
 
   std::vector<std::string> argv_strings = spec.argv;
   if (spec.metered) {
     argv_strings.insert(argv_strings.begin(), {meter.string(), std::to_string(kMeterReportFd)});
     p.cgroup_ = MemoryCgroup::create();
     if (p.cgroup_) {
-      argv_strings.insert(argv_strings.begin() + 1,
-                          {"--cgroup", p.cgroup_->procs_file().string()});
+      argv_strings.insert(argv_strings.begin() + 1, {"--cgroup", p.cgroup_->procs_file().string()});
     }
   }
   std::vector<std::string> env_strings = build_environment(spec);
@@ -392,7 +388,8 @@ ProcessResult Process::wait() {
   bool exited = false;  // the child has ended (a zombie until finish() reaps it)
   Clock::time_point exited_at;
   std::optional<Clock::time_point> kill_at;
-  std::optional<Clock::time_point> pipes_deadline;  // after exit, how long grandchildren may hold pipes
+  std::optional<Clock::time_point>
+      pipes_deadline;  // after exit, how long grandchildren may hold pipes
 
   while (!exited || stdout_fd_ >= 0 || stderr_fd_ >= 0) {
     const auto now = Clock::now();

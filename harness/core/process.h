@@ -25,17 +25,17 @@ namespace raygate {
 class InterruptScope;
 
 struct ProcessSpec {
-  std::vector<std::string> argv;  // argv[0] is looked up in PATH when it has no '/'
+  std::vector<std::string> argv;            // argv[0] is looked up in PATH when it has no '/'
   std::filesystem::path working_directory;  // empty: the caller's
   bool inherit_environment = true;
   std::map<std::string, std::string> environment;  // set (or override) these variables
-  std::filesystem::path stdin_path;   // empty: /dev/null
-  std::filesystem::path stdout_path;  // empty: discarded
-  std::filesystem::path stderr_path;  // empty: discarded; may equal stdout_path (merged)
-  std::uint64_t log_limit_bytes = 8u << 20;  // per stream; the rest is drained and dropped
-  std::chrono::milliseconds timeout{0};      // 0: none
+  std::filesystem::path stdin_path;                // empty: /dev/null
+  std::filesystem::path stdout_path;               // empty: discarded
+  std::filesystem::path stderr_path;           // empty: discarded; may equal stdout_path (merged)
+  std::uint64_t log_limit_bytes = 8u << 20;    // per stream; the rest is drained and dropped
+  std::chrono::milliseconds timeout{0};        // 0: none
   std::chrono::milliseconds kill_grace{2000};  // SIGTERM to SIGKILL (at most 2 s when interrupted)
-  std::vector<int> cpu_affinity;  // CPUs to pin to; empty: inherit
+  std::vector<int> cpu_affinity;               // CPUs to pin to; empty: inherit
   // Start it through raygate-meter (core/process_meter_main.cpp), so that max_rss_kib and the
   // times are the program's own (and its waited-for children's), not raygate's seen through
   // fork. pid() is then the meter's, which forwards single-process signals to the program.
@@ -105,12 +105,12 @@ class Process {
   int stderr_fd_ = -1;
   int stdout_log_ = -1;
   int stderr_log_ = -1;
-  int meter_fd_ = -1;  // read end of raygate-meter's report, when metered
+  int meter_fd_ = -1;                   // read end of raygate-meter's report, when metered
   std::optional<MemoryCgroup> cgroup_;  // the metered tree's own, where one can be made
   std::chrono::steady_clock::time_point started_;
   std::optional<ProcessResult> early_result_;  // set when spawning failed
   bool reaped_ = false;
-  int group_slot_ = -1;                   // in the table of live children (core/interrupt.h)
+  int group_slot_ = -1;                    // in the table of live children (core/interrupt.h)
   std::unique_ptr<InterruptScope> scope_;  // a signal is acted on while the child lives
 };
 

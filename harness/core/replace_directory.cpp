@@ -86,8 +86,8 @@ std::filesystem::path swap_in(const std::filesystem::path& fresh,
                               const std::filesystem::path& target) {
   if (!std::filesystem::exists(target)) {
     if (std::rename(fresh.c_str(), target.c_str()) != 0) {
-      throw WriteError(target, "cannot rename " + fresh.string() + " into place: " +
-                                   system_reason());
+      throw WriteError(target,
+                       "cannot rename " + fresh.string() + " into place: " + system_reason());
     }
     return {};
   }

@@ -70,8 +70,6 @@ std::string terminal_text(std::string_view text) {
   return escaped_where(text, is_terminal_control);
 }
 
-std::string markup_text(std::string_view text) {
-  return escaped_where(text, is_markup_control);
-}
+std::string markup_text(std::string_view text) { return escaped_where(text, is_markup_control); }
 
 }  // namespace raygate

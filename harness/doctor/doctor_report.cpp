@@ -19,7 +19,6 @@ std::string machine_line(const SystemFacts& facts) {
                      m.online_cpus ? std::to_string(*m.online_cpus) : "?", m.kernel);
 }
 
-
 void noise_text(const DoctorReport& report, std::string& out) {
   if (!report.noise) {
     out += "\nnoise: not measured: " + report.noise_error + "\n";

@@ -218,15 +218,15 @@ Finding idle(const SystemFacts& facts) {
 }
 
 // The levels' words, as the report prints them and its JSON writes them.
-constexpr EnumWords<FindingLevel, 3> kLevelWords{{
-    {FindingLevel::ok, "ok"}, {FindingLevel::info, "info"}, {FindingLevel::warn, "warn"}}};
+constexpr EnumWords<FindingLevel, 3> kLevelWords{
+    {{FindingLevel::ok, "ok"}, {FindingLevel::info, "info"}, {FindingLevel::warn, "warn"}}};
 
 }  // namespace
 
 std::string to_string(FindingLevel level) { return std::string(word_of(kLevelWords, level, "?")); }
 
 std::vector<Finding> diagnose(const SystemFacts& facts) {
-  return {governor(facts), turbo(facts), load(facts), cpus(facts),          smt(facts),
+  return {governor(facts), turbo(facts), load(facts), cpus(facts),           smt(facts),
           perf(facts),     aslr(facts),  swap(facts), virtualization(facts), idle(facts)};
 }
 

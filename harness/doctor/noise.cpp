@@ -57,8 +57,8 @@ std::optional<double> steal_between(const std::optional<CpuTimes>& before,
 }
 
 // The grades' words, as the report prints them and its JSON writes them.
-constexpr EnumWords<NoiseGrade, 3> kGradeWords{{
-    {NoiseGrade::good, "good"}, {NoiseGrade::fair, "fair"}, {NoiseGrade::noisy, "noisy"}}};
+constexpr EnumWords<NoiseGrade, 3> kGradeWords{
+    {{NoiseGrade::good, "good"}, {NoiseGrade::fair, "fair"}, {NoiseGrade::noisy, "noisy"}}};
 
 }  // namespace
 

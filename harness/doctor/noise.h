@@ -65,8 +65,8 @@ NoiseScore summarize_noise(std::span<const NoiseRound> rounds);
 struct NoiseOptions {
   std::filesystem::path baseline;  // raygate-baseline
   int rounds = kDefaultNoiseRounds;
-  std::filesystem::path work_dir;    // scene and run files go here
-  std::filesystem::path root = "/";  // for /proc/stat (steal time)
+  std::filesystem::path work_dir;                             // scene and run files go here
+  std::filesystem::path root = "/";                           // for /proc/stat (steal time)
   std::filesystem::path idle_poll_device{kCpuLatencyDevice};  // runner/idle_poll.h
 };
 

@@ -332,7 +332,8 @@ SystemFacts probe_system_facts(const ProbeOptions& options) {
   facts.machine = probe_machine_context(options.root);
   probe_cpus(options.root, facts);
   if (options.live) facts.allowed_cpus = allowed_cpu_list();
-  if (auto text = read_pseudo_file(under_root(options.root, "/proc/sys/kernel/randomize_va_space"))) {
+  if (auto text =
+          read_pseudo_file(under_root(options.root, "/proc/sys/kernel/randomize_va_space"))) {
     if (auto value = parse_int(*text)) facts.aslr = static_cast<int>(*value);
   }
   if (auto text = read_pseudo_file(under_root(options.root, "/proc/meminfo")))

@@ -83,8 +83,10 @@ Explanation explain_by_profiling(const SceneInput& scene, const Contender& base,
                                  const std::filesystem::path& dir, Executor& executor,
                                  double native_seconds) {
   const auto started = std::chrono::steady_clock::now();
-  const FunctionProfile base_profile = profile_once(scene, base, valgrind, dir / base.name(), executor);
-  const FunctionProfile head_profile = profile_once(scene, head, valgrind, dir / head.name(), executor);
+  const FunctionProfile base_profile =
+      profile_once(scene, base, valgrind, dir / base.name(), executor);
+  const FunctionProfile head_profile =
+      profile_once(scene, head, valgrind, dir / head.name(), executor);
   Explanation e =
       explain_change(base_profile, head_profile, kExplainedFunctions, ExplainCost::instructions);
   e.source = ExplainSource::explain_runs;

@@ -14,12 +14,12 @@ namespace raygate {
 namespace {
 
 // The words of the document's "explain" section, each spelt once.
-constexpr EnumWords<ExplainSource, 2> kSourceWords{{
-    {ExplainSource::explain_runs, "explain-runs"},
-    {ExplainSource::simulated_runs, "simulated-runs"}}};
-constexpr EnumWords<ExplainCost, 2> kCostWords{{
-    {ExplainCost::instructions, "instructions"},
-    {ExplainCost::estimated_cycles, "estimated-cycles"}}};
+constexpr EnumWords<ExplainSource, 2> kSourceWords{
+    {{ExplainSource::explain_runs, "explain-runs"},
+     {ExplainSource::simulated_runs, "simulated-runs"}}};
+constexpr EnumWords<ExplainCost, 2> kCostWords{
+    {{ExplainCost::instructions, "instructions"},
+     {ExplainCost::estimated_cycles, "estimated-cycles"}}};
 
 }  // namespace
 

@@ -31,8 +31,8 @@ std::vector<SceneGate> judge_growth(const ResultsDocument& document, const GateP
     }
     gate.speed_outcome = gate.outcome;
     if (gate.outcome != GateOutcome::pass) {
-      gate.reasons.push_back(fmt::format("{} growth: {}", family.family,
-                                         describe_change(family.family, change)));
+      gate.reasons.push_back(
+          fmt::format("{} growth: {}", family.family, describe_change(family.family, change)));
     }
     gates.push_back(std::move(gate));
   }

@@ -11,9 +11,8 @@ namespace raygate {
 
 namespace {
 
-const std::vector<std::string> kSceneKeys = {"max_slowdown", "max_memory_increase",
-                                             "significance", "image", "image_tolerance",
-                                             "reason"};
+const std::vector<std::string> kSceneKeys = {"max_slowdown", "max_memory_increase", "significance",
+                                             "image",        "image_tolerance",     "reason"};
 const std::vector<std::string> kImageKeys = {"fail", "failpercent", "hardfail", "warn"};
 
 double fraction(const JsonField& field, double low, double high) {
@@ -27,18 +26,21 @@ double fraction(const JsonField& field, double low, double high) {
 void read_image(const JsonField& field, ImageThresholds& image) {
   field.expect_object(kImageKeys);
   if (field.has("fail")) image.fail_threshold = fraction(field.member("fail"), 0.0, 1e30);
-  if (field.has("failpercent")) image.fail_percent = fraction(field.member("failpercent"), 0.0, 100.0);
+  if (field.has("failpercent"))
+    image.fail_percent = fraction(field.member("failpercent"), 0.0, 100.0);
   if (field.has("hardfail")) image.hard_fail = fraction(field.member("hardfail"), 0.0, 1e30);
   if (field.has("warn")) image.warn_threshold = fraction(field.member("warn"), 0.0, 1e30);
 }
 
 // Reads the keys a scene override and the defaults share into `policy`.
 void read_scene_keys(const JsonField& field, ScenePolicy& policy) {
-  if (field.has("max_slowdown")) policy.max_slowdown = fraction(field.member("max_slowdown"), 0.0, 10.0);
+  if (field.has("max_slowdown"))
+    policy.max_slowdown = fraction(field.member("max_slowdown"), 0.0, 10.0);
   if (field.has("max_memory_increase")) {
     policy.max_memory_increase = fraction(field.member("max_memory_increase"), 0.0, 100.0);
   }
-  if (field.has("significance")) policy.significance = fraction(field.member("significance"), 0.0001, 0.5);
+  if (field.has("significance"))
+    policy.significance = fraction(field.member("significance"), 0.0001, 0.5);
   if (field.has("image")) read_image(field.member("image"), policy.image);
   if (field.has("image_tolerance")) {
     policy.image_tolerance = fraction(field.member("image_tolerance"), 0.0001, 1.0);
@@ -58,9 +60,9 @@ GatePolicy parse_policy(std::string_view text, const std::string& origin) {
   GatePolicy policy;
   try {
     const JsonField root(document, "$");
-    root.expect_object({"max_slowdown", "max_memory_increase", "significance", "family_significance", "image",
-                        "image_tolerance",
-                        "fail_on_inconclusive", "max_exponent_increase", "scenes"});
+    root.expect_object({"max_slowdown", "max_memory_increase", "significance",
+                        "family_significance", "image", "image_tolerance", "fail_on_inconclusive",
+                        "max_exponent_increase", "scenes"});
     read_scene_keys(root, policy.defaults);
     if (root.has("family_significance")) {
       policy.family_significance = fraction(root.member("family_significance"), 0.0001, 0.5);
@@ -111,12 +113,12 @@ GatePolicy recorded_policy(const MeasurementSettings& settings, std::string& not
       settings.image_tolerance.value_or(policy.defaults.image_tolerance);
   policy.max_exponent_increase =
       settings.max_exponent_increase.value_or(policy.max_exponent_increase);
-  policy.family_significance =
-      settings.family_significance.value_or(policy.family_significance);
+  policy.family_significance = settings.family_significance.value_or(policy.family_significance);
   note = fmt::format("the limits it was measured under (max_slowdown {}, significance {}){}",
                      policy.defaults.max_slowdown, policy.defaults.significance,
-                     file.empty() ? "" : "; its policy file " + file +
-                                             " is not here, so per-scene overrides are not applied");
+                     file.empty() ? ""
+                                  : "; its policy file " + file +
+                                        " is not here, so per-scene overrides are not applied");
   return policy;
 }
 

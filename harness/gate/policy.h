@@ -26,11 +26,11 @@ struct ScenePolicy {
   // The reported ratios' CIs are at 1 - significance; in a compare it is also the chance per
   // scene that a change beyond max_slowdown is called UNCHANGED (docs/statistics.md §6).
   double significance = 0.05;
-  ImageThresholds image;       // against the golden and against the base revision's image
+  ImageThresholds image;  // against the golden and against the base revision's image
   // A Monte Carlo image's tolerance (compare/noisy_image_compare.h): the whole image's change,
   // per channel, within which it passes and beyond which it fails (docs/monte-carlo-images.md).
   double image_tolerance = kDefaultImageTolerance;
-  std::string reason;          // why this scene differs from the defaults (overrides only)
+  std::string reason;  // why this scene differs from the defaults (overrides only)
 };
 
 struct GatePolicy {

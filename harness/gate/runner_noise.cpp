@@ -43,14 +43,16 @@ std::optional<std::string> runner_noise_note(const ResultsDocument& document,
                                           undecided->equivalence_confidence)
                 : std::nullopt;
   if (decides_below) {
-    note += fmt::format("; in the {} rounds a scene typically got, an unchanged scene is decided "
-                        "within the {:.1f}% limit below about {:.1f}%",
-                        typical_rounds, 100 * thresholds.front(), 100 * *decides_below);
+    note += fmt::format(
+        "; in the {} rounds a scene typically got, an unchanged scene is decided "
+        "within the {:.1f}% limit below about {:.1f}%",
+        typical_rounds, 100 * thresholds.front(), 100 * *decides_below);
   }
   // Not "--repeats 2": compare already gives the fastest of two to the scenes it pays for, and
   // repeating every round doubles the floor every scene pays (docs/statistics.md §6d).
-  return note + ". A quieter runner or a longer --max-minutes decides more; raygate doctor "
-                "measures a runner's noise.";
+  return note +
+         ". A quieter runner or a longer --max-minutes decides more; raygate doctor "
+         "measures a runner's noise.";
 }
 
 }  // namespace raygate

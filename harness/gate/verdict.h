@@ -14,11 +14,11 @@
 namespace raygate {
 
 enum class GateOutcome {
-  pass,          // measured; nothing wrong
-  warn,          // an image over the warn threshold, an inconclusive change
-  unmeasured,    // raygate could not measure it (the baseline or base failed, a run crashed): exit 3
-  fail,          // slower beyond the policy, an image over the fail thresholds, or head crashing
-                 // where base ran: exit 1 (a found regression outranks what could not be measured)
+  pass,        // measured; nothing wrong
+  warn,        // an image over the warn threshold, an inconclusive change
+  unmeasured,  // raygate could not measure it (the baseline or base failed, a run crashed): exit 3
+  fail,        // slower beyond the policy, an image over the fail thresholds, or head crashing
+               // where base ran: exit 1 (a found regression outranks what could not be measured)
 };
 
 // What the gate made of a scene's time: the change's verdict under the policy (compare), measured

@@ -67,9 +67,9 @@ std::string commit_table(const HistoryTable& table) {
 }
 
 std::string table_section(const HistoryTable& table) {
-  std::string out = fmt::format("<h2>repository <code>{}</code>, adapter {}</h2>\n",
-                                escape(short_repository(table.repository_key)),
-                                escape(table.adapter_name));
+  std::string out =
+      fmt::format("<h2>repository <code>{}</code>, adapter {}</h2>\n",
+                  escape(short_repository(table.repository_key)), escape(table.adapter_name));
   for (const SeriesColumn& column : table.columns) out += series_section(table, column);
   return out + "<h3>commits, newest first</h3>\n" + commit_table(table);
 }

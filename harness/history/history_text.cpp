@@ -231,9 +231,12 @@ nlohmann::json trend_json(const SceneTrend& t) {
 
 nlohmann::json series_json(const SeriesColumn& column) {
   const HistoryRow& r = column.sample;
-  return {{"id", column.series_id},         {"scene", column.scene_id},
-          {"suite", r.suite},               {"scene_settings", r.scene_settings},
-          {"timing", r.timing},             {"baseline_sha256", r.baseline_sha256},
+  return {{"id", column.series_id},
+          {"scene", column.scene_id},
+          {"suite", r.suite},
+          {"scene_settings", r.scene_settings},
+          {"timing", r.timing},
+          {"baseline_sha256", r.baseline_sha256},
           {"baseline_accel", r.baseline_accel}};
 }
 

@@ -13,8 +13,7 @@
 
 namespace raygate {
 
-HistoryView make_history_view(const std::vector<HistoryRow>& measurements,
-                              std::size_t last_commits,
+HistoryView make_history_view(const std::vector<HistoryRow>& measurements, std::size_t last_commits,
                               const std::vector<HistoryRow>& machine_rows) {
   HistoryView view;
   for (HistoryGroup& group : group_by_repository_and_adapter(measurements)) {
@@ -64,8 +63,8 @@ TrendPoint trend_point(const HistoryRow& row) {
   point.lower = row.ratio_lower.value_or(*row.ratio);
   point.upper = row.ratio_upper.value_or(*row.ratio);
   if (row.image_max_error) {
-    point.note = fmt::format("image max error {:.4f} ({})", *row.image_max_error,
-                             row.image_verdict);
+    point.note =
+        fmt::format("image max error {:.4f} ({})", *row.image_max_error, row.image_verdict);
   }
   point.flagged = parse_image_verdict(row.image_verdict) == ImageVerdict::fail;
   return point;

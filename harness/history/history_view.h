@@ -34,8 +34,7 @@ struct HistoryView {
 
 // `measurements` as ResultsStore::measurements gives them; each table keeps the latest
 // measurement of each commit and series, at most `last_commits` commits (0: all).
-HistoryView make_history_view(const std::vector<HistoryRow>& measurements,
-                              std::size_t last_commits,
+HistoryView make_history_view(const std::vector<HistoryRow>& measurements, std::size_t last_commits,
                               const std::vector<HistoryRow>& machine_rows);
 
 // "root:" and the first 12 digits of a root commit; other repository keys as they are.

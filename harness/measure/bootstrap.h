@@ -23,8 +23,8 @@ struct Interval {
 };
 
 struct BootstrapOptions {
-  int resamples = 2000;       // B
-  double confidence = 0.95;   // two-sided level of the interval
+  int resamples = 2000;      // B
+  double confidence = 0.95;  // two-sided level of the interval
   std::uint64_t seed = kBootstrapSeed;
 };
 

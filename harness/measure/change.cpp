@@ -101,10 +101,9 @@ class RoundsProjection {
   std::optional<std::size_t> beyond_max_rounds() const {
     const double alpha = towards_unchanged_ ? equivalence_alpha_ : decision_alpha_;
     const double half = half_width(kMaxRounds, alpha);
-    const double room = towards_unchanged_
-                            ? std::min(std::log1p(threshold_) - log_change_,
-                                       log_change_ - std::log1p(-threshold_))
-                            : std::abs(log_change_);
+    const double room = towards_unchanged_ ? std::min(std::log1p(threshold_) - log_change_,
+                                                      log_change_ - std::log1p(-threshold_))
+                                           : std::abs(log_change_);
     if (!(room > 0.0)) return std::nullopt;
     const double rounds = static_cast<double>(kMaxRounds) * (half / room) * (half / room);
     if (!(rounds <= 1e7)) return std::nullopt;
@@ -159,8 +158,10 @@ ChangeSummary summarize_change(std::span<const CompareRound> rounds,
                                const BootstrapOptions& options,
                                const std::optional<SequenceLevels>& sequence) {
   if (rounds.empty()) throw std::invalid_argument("summarize_change: no rounds");
-  const std::vector<RoundSample> base_rounds = against_baseline(rounds, &CompareRound::base_seconds);
-  const std::vector<RoundSample> head_rounds = against_baseline(rounds, &CompareRound::head_seconds);
+  const std::vector<RoundSample> base_rounds =
+      against_baseline(rounds, &CompareRound::base_seconds);
+  const std::vector<RoundSample> head_rounds =
+      against_baseline(rounds, &CompareRound::head_seconds);
   // log_ratios validates the rounds with a baseline, log_changes every round.
   const std::vector<double> base_logs = log_ratios(base_rounds);
   const std::vector<double> head_logs = log_ratios(head_rounds);
@@ -185,7 +186,8 @@ ChangeSummary summarize_change(std::span<const CompareRound> rounds,
     summary.one_look_confidence = sequence->one_look_confidence;
     summary.one_look_interval = s.one_look.value_or(observed);
   } else {
-    summary.change_interval = to_change(median_interval(log_changes, options.confidence)).value_or(observed);
+    summary.change_interval =
+        to_change(median_interval(log_changes, options.confidence)).value_or(observed);
   }
   summary.log_change_mad_scaled = mad_scaled(log_changes);
   if (!base_rounds.empty()) {
@@ -216,9 +218,10 @@ std::vector<double> compare_log_changes(std::span<const CompareRound> rounds) {
     const CompareRound& r = rounds[i];
     for (const double seconds : {r.base_seconds, r.head_seconds}) {
       if (!(seconds > 0.0 && std::isfinite(seconds))) {
-        throw InfraError(fmt::format("round {}: a time of {} s cannot be compared; a change needs "
-                                     "positive times",
-                                     i + 1, seconds));
+        throw InfraError(
+            fmt::format("round {}: a time of {} s cannot be compared; a change needs "
+                        "positive times",
+                        i + 1, seconds));
       }
     }
     log_changes.push_back(std::log(r.head_seconds / r.base_seconds));
@@ -227,12 +230,14 @@ std::vector<double> compare_log_changes(std::span<const CompareRound> rounds) {
 }
 
 // The verdicts' words, each spelt once: documents, store rows and the console print them.
-constexpr EnumWords<ChangeVerdict, 4> kVerdictWords{{
-    {ChangeVerdict::unchanged, "UNCHANGED"}, {ChangeVerdict::improved, "IMPROVED"},
-    {ChangeVerdict::regressed, "REGRESSED"}, {ChangeVerdict::inconclusive, "INCONCLUSIVE"}}};
-constexpr EnumWords<ChangeIntervalKind, 2> kIntervalKindWords{{
-    {ChangeIntervalKind::order_statistic, "order-statistic"},
-    {ChangeIntervalKind::confidence_sequence, "confidence-sequence"}}};
+constexpr EnumWords<ChangeVerdict, 4> kVerdictWords{
+    {{ChangeVerdict::unchanged, "UNCHANGED"},
+     {ChangeVerdict::improved, "IMPROVED"},
+     {ChangeVerdict::regressed, "REGRESSED"},
+     {ChangeVerdict::inconclusive, "INCONCLUSIVE"}}};
+constexpr EnumWords<ChangeIntervalKind, 2> kIntervalKindWords{
+    {{ChangeIntervalKind::order_statistic, "order-statistic"},
+     {ChangeIntervalKind::confidence_sequence, "confidence-sequence"}}};
 
 std::string_view to_string(ChangeVerdict verdict) {
   return word_of(kVerdictWords, verdict, "UNKNOWN");
@@ -419,8 +424,8 @@ std::string change_with_interval(const ChangeSummary& summary, ChangeVerdict ver
                        needed);
   }
   return fmt::format("{} [{}, {}] {}", signed_percent(summary.change),
-                     signed_percent(decided.interval.lower),
-                     signed_percent(decided.interval.upper), interval_name(decided));
+                     signed_percent(decided.interval.lower), signed_percent(decided.interval.upper),
+                     interval_name(decided));
 }
 
 }  // namespace raygate

@@ -67,8 +67,8 @@ struct ChangeSummary {
 
 // The levels of the sequential rule, each alpha the chance of one side's error at any round.
 struct SequenceLevels {
-  double decision_alpha = 0.01;     // REGRESSED / IMPROVED: the scene's share of the family's
-  double equivalence_alpha = 0.05;  // UNCHANGED: the chance a change beyond the limit is missed
+  double decision_alpha = 0.01;       // REGRESSED / IMPROVED: the scene's share of the family's
+  double equivalence_alpha = 0.05;    // UNCHANGED: the chance a change beyond the limit is missed
   double one_look_confidence = 0.95;  // precision of the point estimate (not an error rate)
 };
 

@@ -31,16 +31,16 @@ double log_scaled_beta(std::size_t n, std::size_t count) {
 std::size_t scan_rejecting_count(std::size_t n, double alpha_each_side) {
   const double threshold = std::log(1.0 / alpha_each_side);
   const double log_half_power = -static_cast<double>(n + 1) * std::log(2.0);
-  double log_cdf = log_half_power;                // P(Bin(n+1, 1/2) <= 0)
-  double log_term = log_half_power;               // ln P(Bin(n+1, 1/2) = count)
-  double log_beta = log_scaled_beta(n, 0);        // ln 2^(n+1) B(count + 1, n - count + 1)
+  double log_cdf = log_half_power;          // P(Bin(n+1, 1/2) <= 0)
+  double log_term = log_half_power;         // ln P(Bin(n+1, 1/2) = count)
+  double log_beta = log_scaled_beta(n, 0);  // ln 2^(n+1) B(count + 1, n - count + 1)
   for (std::size_t count = 0; count <= n; ++count) {
     if (count > 0) {
       const auto c = static_cast<double>(count);
       const auto n1 = static_cast<double>(n + 1);
-      log_term += std::log((n1 - c + 1.0) / c);    // C(n+1, c) / C(n+1, c-1)
+      log_term += std::log((n1 - c + 1.0) / c);  // C(n+1, c) / C(n+1, c-1)
       log_cdf = log_add(log_cdf, log_term);
-      log_beta -= std::log((n1 - c) / c);          // C(n, c) / C(n, c-1)
+      log_beta -= std::log((n1 - c) / c);  // C(n, c) / C(n, c-1)
     }
     if (log_beta + log_cdf >= threshold) return count;
   }

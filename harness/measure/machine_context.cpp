@@ -68,7 +68,8 @@ std::vector<std::string> probe_governors(const fs::path& root) {
 
 std::optional<bool> probe_turbo(const fs::path& root) {
   // intel_pstate says "no turbo"; acpi-cpufreq and amd-pstate say "boost".
-  if (auto text = read_pseudo_file(under_root(root, "/sys/devices/system/cpu/intel_pstate/no_turbo"))) {
+  if (auto text =
+          read_pseudo_file(under_root(root, "/sys/devices/system/cpu/intel_pstate/no_turbo"))) {
     if (auto value = parse_integer(*text)) return *value == 0;
   }
   if (auto text = read_pseudo_file(under_root(root, "/sys/devices/system/cpu/cpufreq/boost"))) {
@@ -106,12 +107,11 @@ std::string describe_perf_errno(int error) {
       return reason + ": no hardware instruction counter (virtual machine or unsupported PMU)";
     case EACCES:
     case EPERM:
-      return reason + ": not permitted (see /proc/sys/kernel/perf_event_paranoid, or a seccomp "
-                      "profile of the container)";
-    case ENOSYS:
-      return reason + ": kernel without perf_event_open";
-    default:
-      return reason;
+      return reason +
+             ": not permitted (see /proc/sys/kernel/perf_event_paranoid, or a seccomp "
+             "profile of the container)";
+    case ENOSYS: return reason + ": kernel without perf_event_open";
+    default: return reason;
   }
 }
 
@@ -175,7 +175,8 @@ std::optional<int> count_cpu_list(std::string_view list) {
     const std::string_view range = list.substr(start, end - start);
     const auto dash = range.find('-');
     const auto first = parse_integer(range.substr(0, dash));
-    const auto last = dash == std::string_view::npos ? first : parse_integer(range.substr(dash + 1));
+    const auto last =
+        dash == std::string_view::npos ? first : parse_integer(range.substr(dash + 1));
     if (!first || !last || *last < *first || *first < 0) return std::nullopt;
     count += *last - *first + 1;
     start = end + 1;
@@ -257,7 +258,8 @@ MachineContext probe_machine_context(const fs::path& root) {
   context.perf_error = probe_perf_instructions();
   context.perf_instructions_available = context.perf_error.empty();
   if (auto paranoid = read_pseudo_file(under_root(root, "/proc/sys/kernel/perf_event_paranoid"))) {
-    if (auto value = parse_integer(*paranoid)) context.perf_event_paranoid = static_cast<int>(*value);
+    if (auto value = parse_integer(*paranoid))
+      context.perf_event_paranoid = static_cast<int>(*value);
   }
   context.hostname = probe_hostname();
   context.ci = is_ci_value(std::getenv("CI"));

@@ -18,14 +18,14 @@
 namespace raygate {
 
 struct MachineContext {
-  std::string cpu_model;                  // "model name" from /proc/cpuinfo
-  std::optional<int> logical_cores;       // "processor" entries in /proc/cpuinfo
-  std::optional<int> online_cpus;         // /sys/devices/system/cpu/online
-  std::optional<int> allowed_cpus;        // this process's affinity mask (containers, taskset)
+  std::string cpu_model;                       // "model name" from /proc/cpuinfo
+  std::optional<int> logical_cores;            // "processor" entries in /proc/cpuinfo
+  std::optional<int> online_cpus;              // /sys/devices/system/cpu/online
+  std::optional<int> allowed_cpus;             // this process's affinity mask (containers, taskset)
   std::vector<std::string> scaling_governors;  // distinct values over all CPUs, sorted
-  std::optional<bool> turbo_enabled;      // intel_pstate/no_turbo, else cpufreq/boost
-  std::string kernel;                     // uname: sysname release version machine
-  std::string compiler;                   // the compiler that built raygate
+  std::optional<bool> turbo_enabled;           // intel_pstate/no_turbo, else cpufreq/boost
+  std::string kernel;                          // uname: sysname release version machine
+  std::string compiler;                        // the compiler that built raygate
   std::optional<std::array<double, 3>> load_average;  // 1, 5, 15 minutes
   std::optional<std::uint64_t> total_memory_bytes;    // MemTotal in /proc/meminfo
   bool perf_instructions_available = false;  // perf_event_open(HW_INSTRUCTIONS) on self works

@@ -5,9 +5,7 @@
 namespace raygate {
 namespace {
 
-constexpr std::uint64_t rotate_left(std::uint64_t x, int k) {
-  return (x << k) | (x >> (64 - k));
-}
+constexpr std::uint64_t rotate_left(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
 
 }  // namespace
 
@@ -47,8 +45,6 @@ std::uint64_t Xoshiro256::uniform_below(std::uint64_t bound) {
   }
 }
 
-double Xoshiro256::uniform_unit() {
-  return static_cast<double>(next() >> 11) * 0x1.0p-53;
-}
+double Xoshiro256::uniform_unit() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
 
 }  // namespace raygate

@@ -16,9 +16,10 @@ namespace {
 
 void require_time(double seconds, std::size_t round, const char* which) {
   if (!(seconds > 0.0) || !std::isfinite(seconds)) {
-    throw InfraError(fmt::format("round {}: {} time {} s is not a positive number; cannot "
-                                 "normalize (check the timing source of the adapter)",
-                                 round + 1, which, seconds));
+    throw InfraError(
+        fmt::format("round {}: {} time {} s is not a positive number; cannot "
+                    "normalize (check the timing source of the adapter)",
+                    round + 1, which, seconds));
   }
 }
 
@@ -90,7 +91,8 @@ SuiteScore suite_score(std::span<const std::vector<RoundSample>> scenes,
   std::vector<double> replicate_scores;
   replicate_scores.reserve(replicate_count);
   for (double log_sum : replicate_log_sums) replicate_scores.push_back(log_sum / scene_count);
-  const Interval log_interval = percentile_interval(std::move(replicate_scores), options.confidence);
+  const Interval log_interval =
+      percentile_interval(std::move(replicate_scores), options.confidence);
 
   SuiteScore score;
   score.scenes = scenes.size();

@@ -35,8 +35,7 @@ SimulatedCounters& SimulatedCounters::operator+=(const SimulatedCounters& other)
 double estimated_cycles(const SimulatedCounters& c) {
   const double l1_misses = static_cast<double>(c.i1mr + c.d1mr + c.d1mw);
   const double ll_misses = static_cast<double>(c.ilmr + c.dlmr + c.dlmw);
-  return static_cast<double>(c.ir) + kL1MissCycles * l1_misses +
-         kLastLevelMissCycles * ll_misses;
+  return static_cast<double>(c.ir) + kL1MissCycles * l1_misses + kLastLevelMissCycles * ll_misses;
 }
 
 void to_json(nlohmann::json& json, const SimulatedCounters& counters) {

@@ -28,8 +28,8 @@ struct StoppingPolicy {
   // bootstrap "95% CI" of 3 rounds is their range: an identity tracer's ratio stopped
   // "converged" at 1.025 [1.024, 1.036] after 3 rounds.
   std::size_t min_rounds = 6;
-  std::size_t max_rounds = 30;   // per scene
-  double max_seconds = 300.0;    // per scene, wall time of all its runs so far
+  std::size_t max_rounds = 30;  // per scene
+  double max_seconds = 300.0;   // per scene, wall time of all its runs so far
   // The whole measurement, shared by the scenes in order (measure/compare_budget.h); 0 = none.
   double max_minutes = 0.0;
 };
@@ -61,9 +61,9 @@ std::string_view to_string(StopDecision decision);
 
 // What the rule knows after a round.
 struct StoppingState {
-  std::size_t rounds = 0;       // complete rounds of the scene
-  double seconds_spent = 0.0;   // wall time of all its runs so far
-  bool decided = false;         // the verdict function's answer on those rounds
+  std::size_t rounds = 0;      // complete rounds of the scene
+  double seconds_spent = 0.0;  // wall time of all its runs so far
+  bool decided = false;        // the verdict function's answer on those rounds
 };
 
 // The rule: decided wins over a budget that ran out in the same round (the result is good

@@ -28,14 +28,16 @@ std::string packages_warning(const Adapter& adapter) {
 
 }  // namespace
 
-std::filesystem::path find_adapter(const std::string& name, const std::filesystem::path& data_root) {
+std::filesystem::path find_adapter(const std::string& name,
+                                   const std::filesystem::path& data_root) {
   const std::filesystem::path direct(name);
   if (std::filesystem::exists(direct)) return direct;
   const std::filesystem::path shipped = data_root / "adapters" / (name + ".json");
   if (name.find('/') == std::string::npos && std::filesystem::exists(shipped)) return shipped;
-  throw UsageError(fmt::format("adapter '{}' not found: not a file, and not a shipped adapter "
-                               "(see {}/adapters/)",
-                               name, data_root.string()));
+  throw UsageError(
+      fmt::format("adapter '{}' not found: not a file, and not a shipped adapter "
+                  "(see {}/adapters/)",
+                  name, data_root.string()));
 }
 
 AdapterCheck check_adapter_file(const std::string& file) {

@@ -15,8 +15,8 @@ namespace {
 // Shell-style quoting for display only (nothing is ever run through a shell): an element with
 // spaces or shell syntax is shown quoted, so the argv boundaries are visible.
 std::string quoted(const std::string& arg) {
-  const bool plain = !arg.empty() && arg.find_first_of(" \t\n'\"\\$`;&|<>()*?![]#~") ==
-                                         std::string::npos;
+  const bool plain =
+      !arg.empty() && arg.find_first_of(" \t\n'\"\\$`;&|<>()*?![]#~") == std::string::npos;
   if (plain) return arg;
   std::string out = "'";
   for (const char c : arg) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -38,8 +38,8 @@ std::string timing_line(const Timing& timing) {
     const char* unit = timing.unit == TimeUnit::seconds        ? "seconds"
                        : timing.unit == TimeUnit::milliseconds ? "milliseconds"
                                                                : "[[hours:]minutes:]seconds";
-    return fmt::format("{}: last line matching /{}/, group in {}", mode.description(),
-                       timing.regex, unit);
+    return fmt::format("{}: last line matching /{}/, group in {}", mode.description(), timing.regex,
+                       unit);
   }
   if (!timing.metric_by_threads || mode.exact()) return std::string(mode.description());
   return fmt::format("{} (metric auto: {})", mode.description(),
@@ -81,17 +81,17 @@ std::string run_lines(const Adapter& a) {
   out += fmt::format("  image       {}\n", a.image);
   out += fmt::format("  images      {}\n", images_line(a.images));
   out += fmt::format("  timing      {}\n", timing_line(a.timing));
-  out += fmt::format("  threads     {}{}\n", a.threads,
-                     a.pin_cpus ? fmt::format(" (pinned to {} CPU{})", a.threads,
-                                              a.threads == 1 ? "" : "s")
-                                : "");
+  out += fmt::format(
+      "  threads     {}{}\n", a.threads,
+      a.pin_cpus ? fmt::format(" (pinned to {} CPU{})", a.threads, a.threads == 1 ? "" : "s") : "");
   return out;
 }
 
 // Every template of the adapter: build steps, run, stdin, cwd, image and env values.
 std::vector<std::string> templates_of(const Adapter& a) {
   std::vector<std::string> all;
-  for (const std::vector<std::string>& step : a.build) all.insert(all.end(), step.begin(), step.end());
+  for (const std::vector<std::string>& step : a.build)
+    all.insert(all.end(), step.begin(), step.end());
   all.insert(all.end(), a.run.begin(), a.run.end());
   if (a.stdin_template) all.push_back(*a.stdin_template);
   all.push_back(a.cwd);
@@ -108,14 +108,15 @@ std::string repository_unused_note(const Adapter& a) {
       if (uses_placeholder(text, name)) return "";
     }
   }
-  const bool own_files = std::ranges::any_of(
-      templates_of(a), [](const std::string& text) { return uses_placeholder(text, "raygate_source"); });
+  const bool own_files = std::ranges::any_of(templates_of(a), [](const std::string& text) {
+    return uses_placeholder(text, "raygate_source");
+  });
   return fmt::format(
       "adapter {} uses nothing from the repository (no {{src}}, {{repo_root}} or {{build}} in "
       "its commands){}: every revision runs the same program, so a compare measures no change "
       "of the repository's",
-      a.name, own_files ? "; its script is raygate's own ({raygate_source}), not the repository's"
-                        : "");
+      a.name,
+      own_files ? "; its script is raygate's own ({raygate_source}), not the repository's" : "");
 }
 
 std::string adapter_summary(const Adapter& a) {
@@ -124,8 +125,8 @@ std::string adapter_summary(const Adapter& a) {
   if (!a.description.empty()) out += fmt::format("  description {}\n", a.description);
   out += fmt::format("  format      {} scenes\n", to_string(a.scene_format));
   out += fmt::format("  source      {}\n", a.source_dir.empty() ? "repository root" : a.source_dir);
-  out += fmt::format("  submodules  {}\n",
-                     a.submodules ? "re-synced for every commit" : "left alone");
+  out +=
+      fmt::format("  submodules  {}\n", a.submodules ? "re-synced for every commit" : "left alone");
   if (!a.packages.empty()) {
     std::string list;
     for (const std::string& p : a.packages) list += (list.empty() ? "" : " ") + p;
@@ -138,6 +139,5 @@ std::string adapter_summary(const Adapter& a) {
   }
   return out + fmt::format("  hash        {}\n", adapter_hash(a));
 }
-
 
 }  // namespace raygate

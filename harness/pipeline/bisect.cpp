@@ -37,8 +37,8 @@ struct Bisector {
   BisectStepRecord judge_step(const Revision& candidate) {
     const MeasureContext& context = request.context;
     const Worktree tree = request.repository.materialize(candidate);
-    const BuildRecord build = build_revision(tree, context, request.baseline.source_hash(),
-                                             context.jobs, io.progress);
+    const BuildRecord build =
+        build_revision(tree, context, request.baseline.source_hash(), context.jobs, io.progress);
     if (!build.success) {
       io.progress.line(fmt::format("  {} {}: does not build ({}), skipped", candidate.short_sha,
                                    candidate.subject, build.failure));
@@ -57,9 +57,12 @@ struct Bisector {
       io.progress.line(fmt::format("  {} {}: could not be measured ({}), skipped",
                                    candidate.short_sha, candidate.subject,
                                    scene.runs.failed_run->failure));
-      return {candidate, BisectStep::skipped,
-              "could not be measured: " + scene.runs.failed_run->failure, scene.change,
-              verdict_of(scene), {}};
+      return {candidate,
+              BisectStep::skipped,
+              "could not be measured: " + scene.runs.failed_run->failure,
+              scene.change,
+              verdict_of(scene),
+              {}};
     }
     const bool bad =
         request.metric == BisectMetric::image ? image_failed(scene) : speed_regressed(scene);
@@ -69,13 +72,18 @@ struct Bisector {
       const double limit = context.policy.for_scene(scene.entry.id).max_slowdown;
       split = std::max(limit, scene.change->change_interval.lower / 2);
       if (request.metric == BisectMetric::ratio) {
-        io.progress.line(fmt::format("  later steps are bad above {:+.1f}% (half the lower end "
-                                     "of this one's CI, or the limit)",
-                                     100 * *split));
+        io.progress.line(
+            fmt::format("  later steps are bad above {:+.1f}% (half the lower end "
+                        "of this one's CI, or the limit)",
+                        100 * *split));
       }
     }
-    return {candidate, bad ? BisectStep::bad : BisectStep::good, {}, scene.change,
-            verdict_of(scene), scene.explanation};
+    return {candidate,
+            bad ? BisectStep::bad : BisectStep::good,
+            {},
+            scene.change,
+            verdict_of(scene),
+            scene.explanation};
   }
 
   bool speed_regressed(const SceneResult& scene) const {
@@ -132,18 +140,20 @@ std::string merge_note(const Repository& repository, const Revision& first_bad) 
   const std::optional<Revision> base = repository.merge_base(parents[0], parents[1]);
   if (base && base->sha == side.sha) return "";  // the merged side was already in: nothing new
   if (!base) {
-    return fmt::format("{} is a merge of a history unrelated to the good one ({}); its commits "
-                       "were not searched one by one",
-                       first_bad.short_sha, side.short_sha);
+    return fmt::format(
+        "{} is a merge of a history unrelated to the good one ({}); its commits "
+        "were not searched one by one",
+        first_bad.short_sha, side.short_sha);
   }
-  return fmt::format("{} is a merge: the commits it merged were not searched one by one; to "
-                     "search them, bisect again with --good {} --bad {}",
-                     first_bad.short_sha, base->short_sha, side.short_sha);
+  return fmt::format(
+      "{} is a merge: the commits it merged were not searched one by one; to "
+      "search them, bisect again with --good {} --bad {}",
+      first_bad.short_sha, base->short_sha, side.short_sha);
 }
 
 // The untested index in (low, high) nearest the middle, or nullopt.
-std::optional<std::size_t> next_probe(const std::vector<std::optional<BisectStep>>& steps,
-                                      long low, long high) {
+std::optional<std::size_t> next_probe(const std::vector<std::optional<BisectStep>>& steps, long low,
+                                      long high) {
   const long middle = low + (high - low) / 2;
   for (long offset = 0; offset < high - low; ++offset) {
     for (const long index : {middle - offset, middle + offset}) {
@@ -175,7 +185,12 @@ BisectResult bisect_search(const std::vector<Revision>& candidates, const Bisect
   if (steps[last] != BisectStep::bad) {
     return {steps[last] == BisectStep::skipped ? BisectOutcome::bad_unmeasurable
                                                : BisectOutcome::bad_not_worse,
-            candidates[last], 0, {}, candidates.size(), {}, {}};
+            candidates[last],
+            0,
+            {},
+            candidates.size(),
+            {},
+            {}};
   }
   long low = -1;  // index of the last known good (-1: the good revision itself)
   long high = static_cast<long>(last);  // index of the first known bad
@@ -186,19 +201,23 @@ BisectResult bisect_search(const std::vector<Revision>& candidates, const Bisect
   }
   const Revision& first_bad = candidates[static_cast<std::size_t>(high)];
   if (high - low > 1) {
-    return {BisectOutcome::hidden_by_skips, first_bad, static_cast<std::size_t>(high - low - 1),
-            {}, candidates.size(), {}, {}};
+    return {BisectOutcome::hidden_by_skips,
+            first_bad,
+            static_cast<std::size_t>(high - low - 1),
+            {},
+            candidates.size(),
+            {},
+            {}};
   }
   return {BisectOutcome::found, first_bad, 0, {}, candidates.size(), {}, {}};
 }
 
 BisectResult bisect(const BisectRequest& request, PipelineIo& io) {
   const std::vector<Revision> candidates = candidates_of(request);
-  Bisector bisector{request, io, request.repository.checkout(request.good), std::nullopt,
-                    std::nullopt, {}};
-  io.progress.line(fmt::format("bisecting {} commits after {} on scene {} by {}",
-                               candidates.size(), bisector.good.short_sha,
-                               request.context.scenes.front().id,
+  Bisector bisector{request,      io,           request.repository.checkout(request.good),
+                    std::nullopt, std::nullopt, {}};
+  io.progress.line(fmt::format("bisecting {} commits after {} on scene {} by {}", candidates.size(),
+                               bisector.good.short_sha, request.context.scenes.front().id,
                                request.metric == BisectMetric::image ? "image" : "ratio"));
   BisectResult result = bisect_search(
       candidates, [&](const Revision& candidate) { return bisector.judge(candidate); });

@@ -41,8 +41,8 @@ std::string_view to_string(BisectStep step);
 struct BisectStepRecord {
   Revision candidate;
   BisectStep step = BisectStep::skipped;
-  std::string reason;                  // skipped: why
-  std::optional<ChangeSummary> change;  // measured: head (the candidate) against the good end
+  std::string reason;                    // skipped: why
+  std::optional<ChangeSummary> change;   // measured: head (the candidate) against the good end
   std::optional<ChangeVerdict> verdict;  // of that change
   // Where that change's time went (sim mode, or --explain; explain/explanation.h), when the
   // step REGRESSED: the culprit's is what bisect ends with.
@@ -58,7 +58,7 @@ enum class BisectOutcome {
 
 struct BisectResult {
   BisectOutcome outcome = BisectOutcome::found;
-  Revision first_bad;        // the bad end itself unless found or hidden_by_skips
+  Revision first_bad;          // the bad end itself unless found or hidden_by_skips
   std::size_t unmeasured = 0;  // hidden_by_skips: commits before first_bad that were skipped
   Worktree good;               // the good end, as the steps named it
   std::size_t candidates = 0;  // commits after the good end, up to the bad one

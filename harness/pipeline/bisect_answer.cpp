@@ -6,8 +6,11 @@ namespace raygate {
 namespace {
 
 nlohmann::json revision_json(const Revision& r) {
-  return {{"sha", r.sha}, {"short_sha", r.short_sha}, {"subject", r.subject},
-          {"author", r.author}, {"commit_time", r.commit_time}};
+  return {{"sha", r.sha},
+          {"short_sha", r.short_sha},
+          {"subject", r.subject},
+          {"author", r.author},
+          {"commit_time", r.commit_time}};
 }
 
 nlohmann::json step_json(const BisectStepRecord& step) {
@@ -16,8 +19,7 @@ nlohmann::json step_json(const BisectStepRecord& step) {
   if (!step.reason.empty()) j["reason"] = step.reason;
   if (step.change) {
     j["change"] = step.change->change;
-    j["change_interval"] = {step.change->change_interval.lower,
-                            step.change->change_interval.upper};
+    j["change_interval"] = {step.change->change_interval.lower, step.change->change_interval.upper};
     j["verdict"] = step.verdict ? std::string(to_string(*step.verdict)) : std::string();
     j["rounds"] = step.change->rounds;
   }
@@ -46,9 +48,10 @@ std::string answer_text(const BisectResult& result) {
       return fmt::format("{} is not worse than {} on this scene; nothing to bisect",
                          first_bad.short_sha, result.good.short_sha);
     case BisectOutcome::hidden_by_skips:
-      return fmt::format("the first bad commit is {} or one of the {} commits before it that "
-                         "could not be measured",
-                         first_bad.short_sha, result.unmeasured);
+      return fmt::format(
+          "the first bad commit is {} or one of the {} commits before it that "
+          "could not be measured",
+          first_bad.short_sha, result.unmeasured);
     case BisectOutcome::found: break;
   }
   return fmt::format("first bad commit: {} {} ({}, {})", first_bad.sha, first_bad.subject,
@@ -90,11 +93,11 @@ const Explanation* culprit_explanation(const BisectResult& result) {
 nlohmann::json bisect_json(const BisectResult& result, const BisectAnswerContext& context) {
   nlohmann::json steps = nlohmann::json::array();
   for (const BisectStepRecord& step : result.steps) steps.push_back(step_json(step));
-  nlohmann::json j = {{"scene", context.scene},     {"metric", context.metric},
-                      {"good", result.good.sha},    {"bad", context.bad},
-                      {"candidates", result.candidates}, {"steps", steps},
-                      {"result", result_json(result)},
-                      {"exit_code", to_int(bisect_exit_code(result))}};
+  nlohmann::json j = {
+      {"scene", context.scene},          {"metric", context.metric},
+      {"good", result.good.sha},         {"bad", context.bad},
+      {"candidates", result.candidates}, {"steps", steps},
+      {"result", result_json(result)},   {"exit_code", to_int(bisect_exit_code(result))}};
   if (const Explanation* why = culprit_explanation(result)) j["result"]["explanation"] = *why;
   return j;
 }

@@ -119,8 +119,8 @@ std::string default_suite_name(const CalibrateRequest& request) {
 void check_calibrate_request(const CalibrateRequest& request) {
   if (!(request.target_seconds > 0.0) || !std::isfinite(request.target_seconds) ||
       request.target_seconds > 3600.0) {
-    throw UsageError(fmt::format("--target-seconds {}: expected seconds in (0, 3600]",
-                                 request.target_seconds));
+    throw UsageError(
+        fmt::format("--target-seconds {}: expected seconds in (0, 3600]", request.target_seconds));
   }
   if (request.runs < 1 || request.runs > 20) {
     throw UsageError(fmt::format("--runs {}: expected 1..20", request.runs));
@@ -154,11 +154,15 @@ std::string calibration_line(const SceneCalibration& s, double target_seconds) {
                         s.larger.height, s.larger.timed_seconds);
   }
   if (!s.chosen.reached && s.model.fixed_seconds >= target_seconds) {
-    line += fmt::format("  NOT REACHED: the fixed part alone is over {:g} s (a smaller --size, "
-                        "or a longer target)", target_seconds);
+    line += fmt::format(
+        "  NOT REACHED: the fixed part alone is over {:g} s (a smaller --size, "
+        "or a longer target)",
+        target_seconds);
   } else if (!s.chosen.reached && s.chosen.predicted_seconds < target_seconds) {
-    line += fmt::format("  NOT REACHED: under {:g} s at the suite's own resolution, the largest "
-                        "calibrate chooses (the baseline renders it too)", target_seconds);
+    line += fmt::format(
+        "  NOT REACHED: under {:g} s at the suite's own resolution, the largest "
+        "calibrate chooses (the baseline renders it too)",
+        target_seconds);
   } else if (!s.chosen.reached) {
     line += fmt::format("  NOT REACHED: a side limit stops it short of {:g} s", target_seconds);
   } else if (s.model.fixed_seconds > 0.5 * s.chosen.predicted_seconds) {
@@ -180,7 +184,8 @@ std::string calibrated_suite_text(const Suite& source, const std::string& name,
   text += "  \"scenes\": [\n";
   for (std::size_t i = 0; i < scenes.size(); ++i) {
     const SuiteScene& e = scenes[i].entry;
-    text += fmt::format("    {{\"id\": {}, \"scene\": {}, ", json(e.id).dump(), json(e.scene).dump());
+    text +=
+        fmt::format("    {{\"id\": {}, \"scene\": {}, ", json(e.id).dump(), json(e.scene).dump());
     if (e.size > 0) text += fmt::format("\"size\": {}, ", e.size);
     text += fmt::format("\"resolution\": [{}, {}]}}{}\n", scenes[i].chosen.width,
                         scenes[i].chosen.height, i + 1 < scenes.size() ? "," : "");
@@ -218,8 +223,8 @@ Calibration calibrate_suite(const CalibrateRequest& request, PipelineIo& io) {
       "{:g} s of wall time on that machine",
       context.suite.name, context.adapter.name, request.worktree.short_sha, request.repository,
       utc_timestamp(), request.target_seconds);
-  write_file_atomically(request.out,
-                        calibrated_suite_text(context.suite, name, description, calibration.scenes));
+  write_file_atomically(
+      request.out, calibrated_suite_text(context.suite, name, description, calibration.scenes));
   calibration.path = request.out;
   calibration.suite = load_suite(request.out.string(), context.tools.data_root);
   return calibration;

@@ -37,9 +37,9 @@ struct CalibrateRequest {
 void check_calibrate_request(const CalibrateRequest& request);
 
 struct SceneCalibration {
-  SuiteScene entry;       // as the suite has it
-  TimedRender smaller;    // half each side
-  TimedRender larger;     // the suite's resolution
+  SuiteScene entry;     // as the suite has it
+  TimedRender smaller;  // half each side
+  TimedRender larger;   // the suite's resolution
   RenderTimeModel model;
   ChosenResolution chosen;
 };

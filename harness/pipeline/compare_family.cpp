@@ -31,14 +31,16 @@ std::string what_would_decide(const SceneResult& scene, double threshold) {
   const ChangeSummary& c = *scene.change;
   const std::optional<std::size_t> rounds = rounds_to_decide(scene, threshold);
   if (!rounds) {
-    return fmt::format("(a change this close to the {:+.1f}% limit takes more rounds than any "
-                       "budget; a limit below the smallest slowdown that matters decides it)",
-                       100 * threshold);
+    return fmt::format(
+        "(a change this close to the {:+.1f}% limit takes more rounds than any "
+        "budget; a limit below the smallest slowdown that matters decides it)",
+        100 * threshold);
   }
   const std::size_t more = *rounds > c.rounds ? *rounds - c.rounds : 0;
-  return fmt::format("(about {} rounds in all would decide it, {} more at this scene's pace, or "
-                     "a quieter runner)",
-                     *rounds, duration_text(seconds_per_round(scene) * static_cast<double>(more)));
+  return fmt::format(
+      "(about {} rounds in all would decide it, {} more at this scene's pace, or "
+      "a quieter runner)",
+      *rounds, duration_text(seconds_per_round(scene) * static_cast<double>(more)));
 }
 
 // The interval that would decide the scene (measure/change.h deciding_interval): for an estimate
@@ -55,18 +57,17 @@ std::string undecided_scene(const SceneResult& scene, double threshold) {
   const ChangeSummary& c = *scene.change;
   const DecidingInterval sequence = deciding_sequence(c, threshold);
   if (const std::size_t needed = rounds_to_bound(c, sequence); c.rounds < needed) {
-    return fmt::format("{} {:+.1f}% after {}, no {} yet (it needs {} rounds at least, {} "
-                       "more at this scene's pace)",
-                       scene.entry.id, 100 * c.change, count_text(c.rounds, "round"), interval_name(sequence), needed,
-                       duration_text(seconds_per_round(scene) *
-                                     static_cast<double>(needed - c.rounds)));
+    return fmt::format(
+        "{} {:+.1f}% after {}, no {} yet (it needs {} rounds at least, {} "
+        "more at this scene's pace)",
+        scene.entry.id, 100 * c.change, count_text(c.rounds, "round"), interval_name(sequence),
+        needed, duration_text(seconds_per_round(scene) * static_cast<double>(needed - c.rounds)));
   }
   const Interval& i = sequence.interval;
   return fmt::format("{} {:+.1f}% [{:+.1f}%, {:+.1f}%] {} (width {:.1f} points) after {} {}",
                      scene.entry.id, 100 * c.change, 100 * i.lower, 100 * i.upper,
                      interval_name(sequence), 100 * (i.upper - i.lower),
-                     count_text(c.rounds, "round"),
-                     what_would_decide(scene, threshold));
+                     count_text(c.rounds, "round"), what_would_decide(scene, threshold));
 }
 
 }  // namespace

@@ -26,8 +26,8 @@ namespace raygate {
 namespace {
 
 // A Monte Carlo tracer's images: every run of head against every run of base, within noise.
-ImageCheck check_noisy_change(const SceneResult& scene, std::size_t family_size,
-                              double tolerance, const std::filesystem::path& evidence_dir) {
+ImageCheck check_noisy_change(const SceneResult& scene, std::size_t family_size, double tolerance,
+                              const std::filesystem::path& evidence_dir) {
   return check_noisy_images(Role::head, ImageReference::base, run_images(scene.runs, Role::head),
                             run_images(scene.runs, Role::base),
                             noisy_thresholds_for(family_size, tolerance), evidence_dir,
@@ -60,8 +60,8 @@ void finish_compare_scene(SceneResult& scene, const GatePolicy& gate_policy, dou
     scene.images.push_back(
         check_noisy_change(scene, *noisy_family, policy.image_tolerance, evidence_dir));
   } else if (base != nullptr && head != nullptr) {
-    scene.images.push_back(check_image(Role::head, ImageReference::base, head->image,
-                                       base->image, policy.image, evidence_dir,
+    scene.images.push_back(check_image(Role::head, ImageReference::base, head->image, base->image,
+                                       policy.image, evidence_dir,
                                        scene.entry.id + ".head-vs-base"));
   }
 }
@@ -74,18 +74,20 @@ std::optional<std::string> round_budget_warning(const MeasureContext& context, d
   const std::size_t to_regress = min_values_for_median_sequence(alpha);
   std::size_t to_pass = to_regress;
   for (const SuiteScene& scene : context.scenes) {
-    to_pass = std::min(to_pass,
-                       min_values_for_median_sequence(context.policy.for_scene(scene.id).significance));
+    to_pass = std::min(
+        to_pass, min_values_for_median_sequence(context.policy.for_scene(scene.id).significance));
   }
   if (max_rounds >= to_regress) return std::nullopt;
   if (max_rounds < to_pass) {
-    return fmt::format("warning: --max-rounds {} allows no verdict: a scene needs {} rounds to be "
-                       "UNCHANGED and {} to be REGRESSED, so every scene will be INCONCLUSIVE",
-                       max_rounds, to_pass, to_regress);
+    return fmt::format(
+        "warning: --max-rounds {} allows no verdict: a scene needs {} rounds to be "
+        "UNCHANGED and {} to be REGRESSED, so every scene will be INCONCLUSIVE",
+        max_rounds, to_pass, to_regress);
   }
-  return fmt::format("warning: --max-rounds {} cannot find a regression: REGRESSED needs {} "
-                     "rounds at this family's significance (UNCHANGED {})",
-                     max_rounds, to_regress, to_pass);
+  return fmt::format(
+      "warning: --max-rounds {} cannot find a regression: REGRESSED needs {} "
+      "rounds at this family's significance (UNCHANGED {})",
+      max_rounds, to_regress, to_pass);
 }
 
 }  // namespace
@@ -155,32 +157,32 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
       };
     };
   }
-  m.revisits = SceneRevisits{
-      [&](const SceneResult& scene, std::size_t scenes_left,
-          double seconds_needed) -> std::optional<StopRule> {
-        const ScenePolicy& policy = context.policy.for_scene(scene.entry.id);
-        const StoppingPolicy again =
-            budget.again(scene.runs.seconds_spent, scenes_left, seconds_needed);
-        if (again.max_seconds <= scene.runs.seconds_spent) return std::nullopt;
-        return compare_stop_rule(again, policy, scene_levels(policy, alpha),
-                                 exact_timing(context), noisy_images);
-      },
-      [&](const SceneResult& scene) {
-        return plan_visit(scene, context.policy, context.repeat_where_it_pays);
-      },
-      [&](SceneResult& scene) {
-        judge_change(scene, context.policy, alpha, exact_timing(context));
-      }};
+  m.revisits =
+      SceneRevisits{[&](const SceneResult& scene, std::size_t scenes_left,
+                        double seconds_needed) -> std::optional<StopRule> {
+                      const ScenePolicy& policy = context.policy.for_scene(scene.entry.id);
+                      const StoppingPolicy again =
+                          budget.again(scene.runs.seconds_spent, scenes_left, seconds_needed);
+                      if (again.max_seconds <= scene.runs.seconds_spent) return std::nullopt;
+                      return compare_stop_rule(again, policy, scene_levels(policy, alpha),
+                                               exact_timing(context), noisy_images);
+                    },
+                    [&](const SceneResult& scene) {
+                      return plan_visit(scene, context.policy, context.repeat_where_it_pays);
+                    },
+                    [&](SceneResult& scene) {
+                      judge_change(scene, context.policy, alpha, exact_timing(context));
+                    }};
   m.finish_scene = [&](SceneResult& scene) {
-    finish_compare_scene(scene, context.policy, alpha, work_dir / "evidence",
-                         exact_timing(context),
+    finish_compare_scene(scene, context.policy, alpha, work_dir / "evidence", exact_timing(context),
                          noisy_images ? std::optional(noisy_images->images) : std::nullopt);
   };
   m.finish_suite = [&](ResultsDocument& document) {
     std::vector<std::string> lines;
     for (const std::string& id : apply_family_control(document, context.policy, family_size)) {
-      lines.push_back(id + ": REGRESSED at its Holm share of the family (other scenes regressed "
-                           "first)");
+      lines.push_back(id +
+                      ": REGRESSED at its Holm share of the family (other scenes regressed "
+                      "first)");
     }
     if (std::string undecided = undecided_line(document, context.policy); !undecided.empty()) {
       lines.push_back(std::move(undecided));

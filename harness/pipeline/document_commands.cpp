@@ -41,14 +41,16 @@ void check_scaling_scenes(const ResultsDocument& document, const std::string& re
     const std::string where = fmt::format("{}: $.scenes[{}].scene", results, i);
     const scenes::SceneGenerator* generator = scenes::find_generator(entry.scene);
     if (generator == nullptr) {
-      throw UsageError(fmt::format("{}.scene: \"{}\" is not an SPD scene (raygate scenes list); "
-                                   "scaling fits the SPD generators' families",
-                                   where, entry.scene.substr(0, 80)));
+      throw UsageError(
+          fmt::format("{}.scene: \"{}\" is not an SPD scene (raygate scenes list); "
+                      "scaling fits the SPD generators' families",
+                      where, entry.scene.substr(0, 80)));
     }
     if (entry.size < 0 || entry.size > scenes::max_size(*generator)) {
-      throw UsageError(fmt::format("{}.size: {} is out of range for {} (0, its default, or 1 to "
-                                   "{})",
-                                   where, entry.size, entry.scene, scenes::max_size(*generator)));
+      throw UsageError(
+          fmt::format("{}.size: {} is out of range for {} (0, its default, or 1 to "
+                      "{})",
+                      where, entry.size, entry.scene, scenes::max_size(*generator)));
     }
   }
 }
@@ -61,13 +63,14 @@ ScalingJudgement judge_scaling(const std::string& results, const std::string& po
   j.document = read_results(results);
   check_scaling_scenes(j.document, results);
   std::string note;
-  j.policy = policy_file.empty() ? recorded_policy(j.document.settings, note)
-                                 : load_policy(policy_file);
+  j.policy =
+      policy_file.empty() ? recorded_policy(j.document.settings, note) : load_policy(policy_file);
   j.analysis = attach_scaling(j.document, scaling_limits(j.policy));
   if (j.analysis.families.empty()) {
-    throw UsageError(fmt::format("{}: no scene family was measured at 3 sizes or more (suite {}); "
-                                 "measure the scaling suite: --suite scaling",
-                                 results, j.document.suite));
+    throw UsageError(
+        fmt::format("{}: no scene family was measured at 3 sizes or more (suite {}); "
+                    "measure the scaling suite: --suite scaling",
+                    results, j.document.suite));
   }
   // The fits not written back still judge, and the reports still go out.
   if (!no_write) {

@@ -13,8 +13,7 @@ namespace raygate {
 namespace {
 
 bool regressed(const SceneResult& scene) {
-  return scene.change && !scene.runs.failed() &&
-         scene.change_verdict == ChangeVerdict::regressed;
+  return scene.change && !scene.runs.failed() && scene.change_verdict == ChangeVerdict::regressed;
 }
 
 std::optional<Explanation> explain_one(const SceneResult& scene, const MeasureContext& context,

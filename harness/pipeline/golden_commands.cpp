@@ -10,8 +10,8 @@ namespace raygate {
 namespace {
 
 BaselineGoldens open_goldens(const GoldenOptions& options) {
-  return open_baseline_goldens(options.suite, options.scenes, options.golden_dir,
-                               options.work_dir, options.baseline);
+  return open_baseline_goldens(options.suite, options.scenes, options.golden_dir, options.work_dir,
+                               options.baseline);
 }
 
 }  // namespace
@@ -21,8 +21,7 @@ BlessFromRun from_run_request(const GoldenOptions& options) {
   request.results = std::filesystem::absolute(options.from_run);
   const std::optional<Role> role = parse_role(options.role);
   if (!role || *role == Role::baseline) {
-    throw UsageError("--role: no such revision role '" + options.role +
-                     "' (tracer, base or head)");
+    throw UsageError("--role: no such revision role '" + options.role + "' (tracer, base or head)");
   }
   request.role = *role;
   request.scene_ids = options.scenes;
@@ -32,9 +31,10 @@ BlessFromRun from_run_request(const GoldenOptions& options) {
 }
 
 GoldenOutcome baseline_verification_outcome(const GoldenVerification& v, std::size_t scenes) {
-  std::string summary = fmt::format("{} scenes: {} identical, {} different, {} missing",
-                                    scenes, v.identical, v.different, v.missing);
-  if (v.unverifiable > 0) summary += fmt::format(", {} golden(s) not to be trusted", v.unverifiable);
+  std::string summary = fmt::format("{} scenes: {} identical, {} different, {} missing", scenes,
+                                    v.identical, v.different, v.missing);
+  if (v.unverifiable > 0)
+    summary += fmt::format(", {} golden(s) not to be trusted", v.unverifiable);
   if (v.missing > 0) return {summary, ExitCode::usage};  // a scene asked for has no golden
   // A difference found outranks a golden that could not verify (3).
   if (v.different > 0) return {summary, ExitCode::regression};
@@ -47,7 +47,8 @@ GoldenOutcome run_verification_outcome(const GoldenVerification& v) {
   std::string summary =
       fmt::format("{} scenes: {} same, {} different, {} too noisy to tell, {} missing", scenes,
                   v.identical, v.different, v.inconclusive, v.missing);
-  if (v.unverifiable > 0) summary += fmt::format(", {} golden(s) not to be trusted", v.unverifiable);
+  if (v.unverifiable > 0)
+    summary += fmt::format(", {} golden(s) not to be trusted", v.unverifiable);
   if (v.different > 0) return {summary, ExitCode::regression};
   if (v.unverifiable > 0) return {summary, ExitCode::infrastructure};
   return {summary, v.missing > 0 ? ExitCode::usage : ExitCode::pass};

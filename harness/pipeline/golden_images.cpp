@@ -34,8 +34,8 @@ BaselineRender render_scene(const BaselineGoldens& goldens, const SuiteScene& sc
   const std::filesystem::path nff = prepare_scene(scene, goldens.work_dir / "scenes");
   BaselineOptions options;
   options.sampling = goldens.suite.sampling;
-  BaselineRender render = goldens.baseline.render(
-      nff, goldens.work_dir / "renders" / (scene.id + ".png"), options);
+  BaselineRender render =
+      goldens.baseline.render(nff, goldens.work_dir / "renders" / (scene.id + ".png"), options);
   if (!render.process.succeeded()) {
     throw InfraError("raygate-baseline " + render.process.describe() + " on " + nff.string() +
                      "; log: " + render.log.string() + "\n" + log_tail(render.log, 10));
@@ -55,11 +55,12 @@ const SceneResult* find_scene(const ResultsDocument& document, const std::string
 void checked_image_extension(const std::filesystem::path& image, const std::string& field) {
   std::string extension = image.extension().string();
   for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  for (const char* known : {".png", ".ppm", ".pgm", ".pfm", ".exr", ".hdr", ".tga", ".bmp",
-                            ".tif", ".tiff", ".jpg", ".jpeg"}) {
+  for (const char* known : {".png", ".ppm", ".pgm", ".pfm", ".exr", ".hdr", ".tga", ".bmp", ".tif",
+                            ".tiff", ".jpg", ".jpeg"}) {
     if (extension == known) return;
   }
-  throw UsageError(field + ", " + image.string() + ", has no image file extension (.png, .ppm, "
+  throw UsageError(field + ", " + image.string() +
+                   ", has no image file extension (.png, .ppm, "
                    ".exr, ...); the golden copy is named after it");
 }
 
@@ -72,8 +73,8 @@ void check_manifest_suite(const GoldenManifest& manifest, const std::filesystem:
   }
 }
 
-void check_manifest_adapter(const GoldenManifest& manifest,
-                            const std::filesystem::path& golden_dir, const std::string& adapter) {
+void check_manifest_adapter(const GoldenManifest& manifest, const std::filesystem::path& golden_dir,
+                            const std::string& adapter) {
   if (manifest.tracer && manifest.tracer->adapter != adapter) {
     throw UsageError(golden_dir.string() + " holds goldens of adapter '" +
                      manifest.tracer->adapter + "', not '" + adapter + "' (use --golden-dir)");
@@ -96,8 +97,8 @@ ChosenImages chosen_images(const ResultsDocument& document, const BlessFromRun& 
     if (scene == nullptr) throw UsageError("scene '" + id + "' is not in " + results);
     const RunRecord* run = scene->runs.first_run(request.role);
     if (run == nullptr) {
-      throw UsageError(results + ": no successful " + role_name(request.role) + " run of '" +
-                       id + "', so no image to bless");
+      throw UsageError(results + ": no successful " + role_name(request.role) + " run of '" + id +
+                       "', so no image to bless");
     }
     if (!std::filesystem::is_regular_file(run->image)) {
       throw UsageError(results + ": the " + role_name(request.role) + " image of '" + id + "', " +
@@ -168,7 +169,8 @@ void swap_in_goldens(const std::filesystem::path& golden_dir, GoldenManifest& ma
 ImageKind run_image_kind(const ResultsDocument& document, const RevisionRecord& revision) {
   if (document.settings.images) return *document.settings.images;
   std::error_code ec;
-  if (revision.adapter_file.empty() || !std::filesystem::is_regular_file(revision.adapter_file, ec)) {
+  if (revision.adapter_file.empty() ||
+      !std::filesystem::is_regular_file(revision.adapter_file, ec)) {
     return ImageKind::deterministic;
   }
   try {
@@ -198,9 +200,11 @@ std::vector<Blessing> monte_carlo_blessings(const ChosenImages& chosen, Role rol
     const std::string mean_file = e.id + ".mean.exr";
     GoldenNoise noise{stats.runs, e.id + ".variance.exr", {}, stats.inflation};
     write_stats_images(stats, stats_dir / mean_file, stats_dir / noise.variance_file);
-    blessings.push_back({mean_file, stats_dir / mean_file,
+    blessings.push_back({mean_file,
+                         stats_dir / mean_file,
                          {e.id, e.scene, e.size, stats.width, stats.height, sampling, "", {}, {}},
-                         noise, stats_dir / noise.variance_file});
+                         noise,
+                         stats_dir / noise.variance_file});
   }
   return blessings;
 }
@@ -216,12 +220,11 @@ BaselineGoldens open_baseline_goldens(const std::string& suite_name,
   Suite suite = load_suite(suite_name, tools.data_root);
   std::vector<SuiteScene> selected = select_scenes(suite, scene_ids);
   return {std::move(suite), std::move(selected),
-          golden_dir.empty() ? tools.data_root / "golden" / kBaselineGoldens : golden_dir,
-          work_dir, BaselineTool(tools.baseline)};
+          golden_dir.empty() ? tools.data_root / "golden" / kBaselineGoldens : golden_dir, work_dir,
+          BaselineTool(tools.baseline)};
 }
 
-GoldenVerification verify_baseline_goldens(const BaselineGoldens& goldens,
-                                           ProgressSink& progress) {
+GoldenVerification verify_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progress) {
   const GoldenManifest manifest = load_golden_manifest(goldens.golden_dir);
   const std::string current_hash = goldens.baseline.source_hash();
   if (!manifest.baseline_source_sha256.empty() && manifest.baseline_source_sha256 != current_hash) {
@@ -233,9 +236,9 @@ GoldenVerification verify_baseline_goldens(const BaselineGoldens& goldens,
   for (const SuiteScene& scene : goldens.selected) {
     const GoldenEntry* entry = manifest.find(scene.id);
     if (entry == nullptr || !std::filesystem::exists(goldens.golden_dir / entry->file)) {
-      progress.line(fmt::format(
-          "MISSING   {:<12} no golden image; create it with: raygate golden bless {}", scene.id,
-          scene.id));
+      progress.line(
+          fmt::format("MISSING   {:<12} no golden image; create it with: raygate golden bless {}",
+                      scene.id, scene.id));
       ++counts.missing;
       continue;
     }
@@ -277,9 +280,16 @@ void bless_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progre
     const std::string file = scene.id + ".png";
     // One swap per scene: a render takes seconds, and an interrupted bless keeps its work.
     swap_in_goldens(goldens.golden_dir, manifest,
-                    {{file, render.image,
-                      {scene.id, scene.scene, scene.size, render.stats.value("width", 0),
-                       render.stats.value("height", 0), goldens.suite.sampling, "none", file,
+                    {{file,
+                      render.image,
+                      {scene.id,
+                       scene.scene,
+                       scene.size,
+                       render.stats.value("width", 0),
+                       render.stats.value("height", 0),
+                       goldens.suite.sampling,
+                       "none",
+                       file,
                        {}},
                       std::nullopt,
                       {}}});
@@ -310,9 +320,10 @@ void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress)
   manifest.suite = document.suite;
   manifest.baseline_version = document.baseline.version;
   manifest.baseline_source_sha256 = document.baseline.source_sha256;
-  manifest.tracer = GoldenProvenance{revision->adapter_name, revision->adapter_hash,
+  manifest.tracer = GoldenProvenance{revision->adapter_name,      revision->adapter_hash,
                                      revision->worktree.revision, revision->worktree.sha,
-                                     revision->worktree.dirty, results, document.started_at};
+                                     revision->worktree.dirty,    results,
+                                     document.started_at};
   if (run_image_kind(document, *revision) == ImageKind::monte_carlo) {
     const TempDir stats_dir("raygate-bless");
     const std::vector<Blessing> blessings =
@@ -333,9 +344,17 @@ void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress)
       throw UsageError(image.string() + ": cannot read image: " + decoded.geterror());
     }
     // The hash is provenance only: goldens are compared by decoded pixels, never by bytes.
-    blessings.push_back({e.id + image.extension().string(), image,
-                         {e.id, e.scene, e.size, decoded.spec().width, decoded.spec().height,
-                          document.baseline.sampling, "", {}, {}},
+    blessings.push_back({e.id + image.extension().string(),
+                         image,
+                         {e.id,
+                          e.scene,
+                          e.size,
+                          decoded.spec().width,
+                          decoded.spec().height,
+                          document.baseline.sampling,
+                          "",
+                          {},
+                          {}},
                          std::nullopt,
                          {}});
   }
@@ -369,7 +388,8 @@ void report_check(const std::string& id, const ImageCheck& check, GoldenVerifica
     ++counts.identical;
   }
   std::string line = fmt::format("{} {:<12} {}", word, id, what);
-  if (!check.evidence.empty()) line += "; evidence in " + check.evidence.front().parent_path().string();
+  if (!check.evidence.empty())
+    line += "; evidence in " + check.evidence.front().parent_path().string();
   progress.line(line);
 }
 
@@ -400,22 +420,22 @@ GoldenVerification verify_goldens_from_run(const BlessFromRun& request,
     if (!ids.empty() && std::find(ids.begin(), ids.end(), e.id) == ids.end()) continue;
     const RunRecord* run = scene.runs.first_run(request.role);
     if (run == nullptr) {
-      progress.line(fmt::format("MISSING   {:<12} no successful {} run", e.id,
-                                to_string(request.role)));
+      progress.line(
+          fmt::format("MISSING   {:<12} no successful {} run", e.id, to_string(request.role)));
       ++counts.missing;
       continue;
     }
-    const GoldenEntry rendered{e.id, e.scene, e.size, e.width, e.height,
-                               document.baseline.sampling, {}, {}, {}};
-    const ImageCheck check =
-        kind == ImageKind::monte_carlo
-            ? check_runs_against_golden(request.role, run_images(scene.runs, request.role),
-                                        golden_dir, manifest, rendered,
-                                        noisy_thresholds_for(document.scenes.size(),
-                                                             policy.for_scene(e.id).image_tolerance),
-                                        evidence_dir)
-            : check_against_golden(request.role, run->image, golden_dir, manifest, rendered, {},
-                                   evidence_dir);
+    const GoldenEntry rendered{e.id, e.scene, e.size, e.width, e.height, document.baseline.sampling,
+                               {},   {},      {}};
+    const ImageCheck check = kind == ImageKind::monte_carlo
+                                 ? check_runs_against_golden(
+                                       request.role, run_images(scene.runs, request.role),
+                                       golden_dir, manifest, rendered,
+                                       noisy_thresholds_for(document.scenes.size(),
+                                                            policy.for_scene(e.id).image_tolerance),
+                                       evidence_dir)
+                                 : check_against_golden(request.role, run->image, golden_dir,
+                                                        manifest, rendered, {}, evidence_dir);
     report_check(e.id, check, counts, progress);
   }
   return counts;

@@ -53,8 +53,8 @@ GoldenVerification verify_baseline_goldens(const BaselineGoldens& goldens, Progr
 void bless_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progress);
 
 struct BlessFromRun {
-  std::filesystem::path results;  // the run's document
-  Role role = Role::tracer;  // whose images: tracer, head or base
+  std::filesystem::path results;       // the run's document
+  Role role = Role::tracer;            // whose images: tracer, head or base
   std::vector<std::string> scene_ids;  // empty: every scene of the document
   std::filesystem::path golden_dir;    // empty: golden/<adapter>/ under the data root
   std::filesystem::path baseline;      // only to find the data root

@@ -24,8 +24,8 @@ SceneVerdict noisy_image_verdict(const NoisyImageFamily& family, double toleranc
     const std::vector<std::filesystem::path> base = run_images(so_far, Role::base);
     if (head.empty() || base.empty()) return false;
     // No evidence is written while measuring: the check at the end writes it.
-    const ImageCheck check = check_noisy_images(Role::head, ImageReference::base, head, base,
-                                                thresholds, {}, {});
+    const ImageCheck check =
+        check_noisy_images(Role::head, ImageReference::base, head, base, thresholds, {}, {});
     return check.verdict != ImageVerdict::inconclusive;
   };
 }
@@ -41,8 +41,8 @@ StopRule compare_stop_rule(const StoppingPolicy& policy, const ScenePolicy& scen
                            const std::optional<NoisyImageFamily>& images) {
   SceneVerdict speed = change_verdict(policy, scene, levels, counted);
   if (!images) return stop_rule(policy, std::move(speed));
-  return stop_rule(policy,
-                   both_decided(std::move(speed), noisy_image_verdict(*images, scene.image_tolerance)));
+  return stop_rule(
+      policy, both_decided(std::move(speed), noisy_image_verdict(*images, scene.image_tolerance)));
 }
 
 }  // namespace raygate

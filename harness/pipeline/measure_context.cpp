@@ -58,8 +58,8 @@ std::string shard_note(const MeasureContext& context) {
 std::vector<int> adapter_pinned_cpus(const MeasureContext& context) {
   if (!context.adapter.pin_cpus || !context.schedule.pin_cpus.empty()) return {};
   const std::vector<int> allowed = allowed_cpu_list();
-  const std::size_t count = std::min(
-      allowed.size(), static_cast<std::size_t>(std::max(context.adapter.threads, 1)));
+  const std::size_t count =
+      std::min(allowed.size(), static_cast<std::size_t>(std::max(context.adapter.threads, 1)));
   return {allowed.begin(), allowed.begin() + static_cast<long>(count)};
 }
 
@@ -89,9 +89,9 @@ MeasurementSettings measure_settings(const MeasureContext& c) {
           .baseline_rounds = c.schedule.normalizer_rounds,
           .repeats = c.schedule.repeats,
           // As asked; measure_suite says "os" instead when the machine refuses the hold.
-          .cpu_idle = exact_timing(c) ? std::nullopt
-                                      : std::optional(c.idle_poll_device.empty() ? CpuIdle::os
-                                                                                 : CpuIdle::poll),
+          .cpu_idle = exact_timing(c)
+                          ? std::nullopt
+                          : std::optional(c.idle_poll_device.empty() ? CpuIdle::os : CpuIdle::poll),
           .cpu_idle_refused = std::nullopt,
           .target_relative_half_width = c.stopping.target_relative_half_width,
           .min_rounds = c.stopping.min_rounds,

@@ -48,7 +48,7 @@ struct MeasureContext {
   std::string timing_choice;
   const TimingMode* timing = nullptr;
   GatePolicy policy;
-  int jobs = 0;  // parallel build jobs; 0 = every allowed CPU
+  int jobs = 0;                          // parallel build jobs; 0 = every allowed CPU
   std::optional<Cachegrind> cachegrind;  // sim mode (docs/simulated-timing.md)
   // compare --explain: profile each REGRESSED scene's base and head once under cachegrind
   // (pipeline/explain_stage.h); sim mode explains from its own runs without it.

@@ -36,14 +36,15 @@ void apply_shard(const MeasureOptions& args, MeasureContext& c) {
   if (!args.shard_costs.empty()) {
     const ResultsDocument costs = read_results(args.shard_costs);
     if (costs.suite != c.suite.name) {
-      throw UsageError(fmt::format("--shard-costs {}: a document of suite '{}', not '{}'; give "
-                                   "one measured on the suite being split",
-                                   args.shard_costs, costs.suite, c.suite.name));
+      throw UsageError(
+          fmt::format("--shard-costs {}: a document of suite '{}', not '{}'; give "
+                      "one measured on the suite being split",
+                      args.shard_costs, costs.suite, c.suite.name));
     }
     expected_seconds = expected_seconds_from(costs);
     // By content, not path: every job of the matrix must name the same costs to split alike.
-    record.cost_basis = "seconds_spent of results document sha256:" +
-                        sha256_file_hex(args.shard_costs);
+    record.cost_basis =
+        "seconds_spent of results document sha256:" + sha256_file_hex(args.shard_costs);
   }
   c.scenes = shard_scenes(c.scenes, record.spec, expected_seconds);
   c.shard = std::move(record);
@@ -115,8 +116,9 @@ MeasureContext load_measure_context(const MeasureOptions& args,
   if (args.no_idle_poll) c.idle_poll_device.clear();
   c.repeat_where_it_pays = args.repeats == 0 && c.schedule.kind == ScheduleKind::alternate;
   if (c.schedule.kind == ScheduleKind::duet && args.repeats > 1) {
-    throw UsageError("--repeats applies to the alternate schedule (a duet round runs each "
-                     "program once)");
+    throw UsageError(
+        "--repeats applies to the alternate schedule (a duet round runs each "
+        "program once)");
   }
   if (c.schedule.kind == ScheduleKind::duet &&
       (args.duet_cpus.size() != 2 || args.duet_cpus[0] == args.duet_cpus[1])) {

@@ -22,8 +22,8 @@ struct MeasureOptions {
   std::string baseline;    // raygate-baseline override
   std::string schedule = "alternate";
   std::vector<int> pin_cpus;
-  bool no_pin = false;  // --no-pin: not even the default pinning of a round to one CPU
-  bool no_idle_poll = false;  // --no-idle-poll: idle CPUs sleep as the kernel chooses
+  bool no_pin = false;              // --no-pin: not even the default pinning of a round to one CPU
+  bool no_idle_poll = false;        // --no-idle-poll: idle CPUs sleep as the kernel chooses
   std::size_t baseline_rounds = 0;  // rounds per scene the baseline joins; 0 = every round
   // Runs of each contender per round, the fastest kept; 0 (not given): one, and compare's second
   // pass repeats where it pays (MeasureContext::repeat_where_it_pays).
@@ -31,9 +31,9 @@ struct MeasureOptions {
   std::vector<int> duet_cpus{0, 1};
   int warmup = 1;
   StoppingPolicy stopping;  // --target, --min-rounds, ...; its defaults are the policy's own
-  std::string metric;  // --timing: "" (the adapter's) or a mode's name (runner/timing/)
+  std::string metric;       // --timing: "" (the adapter's) or a mode's name (runner/timing/)
   int jobs = 0;
-  std::string policy;  // gate policy file; "" = the defaults
+  std::string policy;       // gate policy file; "" = the defaults
   std::string shard;        // "K/N" (run and compare only); "" = every selected scene
   std::string shard_costs;  // results document whose scene times are the split's costs
 };

@@ -32,10 +32,10 @@ std::string advice(const Estimate& estimate, const EstimateShape& shape) {
       std::ceil(kAdviceMargin * estimate.total_seconds / 60.0), estimate.shards_needed,
       shape.command, estimate.shards_needed);
   if (estimate.tracer_render_seconds_to_fit > 0.0) {
-    text += fmt::format("; or a suite whose renders take about {:.2g} s (raygate calibrate "
-                        "--target-seconds {:.2g}, docs/calibrate.md)",
-                        estimate.tracer_render_seconds_to_fit,
-                        estimate.tracer_render_seconds_to_fit);
+    text += fmt::format(
+        "; or a suite whose renders take about {:.2g} s (raygate calibrate "
+        "--target-seconds {:.2g}, docs/calibrate.md)",
+        estimate.tracer_render_seconds_to_fit, estimate.tracer_render_seconds_to_fit);
   }
   return text;
 }
@@ -43,9 +43,8 @@ std::string advice(const Estimate& estimate, const EstimateShape& shape) {
 }  // namespace
 
 double scene_seconds(const RoundCost& cost, const EstimateShape& shape, std::size_t rounds) {
-  const double warmups =
-      static_cast<double>(std::max(shape.warmup_runs, 0)) *
-      (cost.normalizer_seconds + cost.tracers_seconds);
+  const double warmups = static_cast<double>(std::max(shape.warmup_runs, 0)) *
+                         (cost.normalizer_seconds + cost.tracers_seconds);
   const std::size_t normalizer_rounds =
       shape.normalizer_rounds == 0 ? rounds : std::min(rounds, shape.normalizer_rounds);
   const double runs = warmups + static_cast<double>(normalizer_rounds) * cost.normalizer_seconds +
@@ -53,18 +52,20 @@ double scene_seconds(const RoundCost& cost, const EstimateShape& shape, std::siz
   return runs * std::max(cost.overhead_factor, 1.0);
 }
 
-Estimate estimate_measurement(const RoundCost& cost, const EstimateShape& shape,
-                              std::size_t rounds, std::size_t tracer_count) {
+Estimate estimate_measurement(const RoundCost& cost, const EstimateShape& shape, std::size_t rounds,
+                              std::size_t tracer_count) {
   Estimate e;
   e.rounds_per_scene = rounds;
   e.seconds_per_scene = scene_seconds(cost, shape, rounds);
   e.total_seconds = e.seconds_per_scene * static_cast<double>(shape.scenes);
-  e.fits_scene_limit = shape.scene_max_seconds <= 0.0 || e.seconds_per_scene <= shape.scene_max_seconds;
+  e.fits_scene_limit =
+      shape.scene_max_seconds <= 0.0 || e.seconds_per_scene <= shape.scene_max_seconds;
   if (shape.budget_seconds > 0.0 && e.total_seconds > shape.budget_seconds) {
     e.fits_budget = false;
-    e.shards_needed = static_cast<std::size_t>(
-        std::ceil(kAdviceMargin * e.total_seconds / shape.budget_seconds));
-    e.shards_needed = std::clamp<std::size_t>(e.shards_needed, 2, std::max<std::size_t>(shape.scenes, 2));
+    e.shards_needed =
+        static_cast<std::size_t>(std::ceil(kAdviceMargin * e.total_seconds / shape.budget_seconds));
+    e.shards_needed =
+        std::clamp<std::size_t>(e.shards_needed, 2, std::max<std::size_t>(shape.scenes, 2));
     // Smaller renders shrink every program's run alike (the baseline renders the same smaller
     // pictures), so the tracer's render time scales by the budget's share of the estimate.
     if (tracer_count > 0 && cost.tracers_seconds > 0.0) {
@@ -79,12 +80,12 @@ Estimate estimate_measurement(const RoundCost& cost, const EstimateShape& shape,
 std::vector<std::string> estimate_lines(const Estimate& estimate, const EstimateShape& shape,
                                         const std::string& basis) {
   std::vector<std::string> lines;
-  std::string line = fmt::format("estimate {}: {} scenes x {} = {}", basis, shape.scenes,
-                                 span_text(estimate.seconds_per_scene),
-                                 span_text(estimate.total_seconds));
+  std::string line =
+      fmt::format("estimate {}: {} scenes x {} = {}", basis, shape.scenes,
+                  span_text(estimate.seconds_per_scene), span_text(estimate.total_seconds));
   if (shape.budget_seconds > 0.0) {
-    line += fmt::format(" for a budget of {} (--max-minutes {:g})",
-                        span_text(shape.budget_seconds), shape.budget_seconds / 60.0);
+    line += fmt::format(" for a budget of {} (--max-minutes {:g})", span_text(shape.budget_seconds),
+                        shape.budget_seconds / 60.0);
   }
   lines.push_back(std::move(line));
   if (!estimate.fits_budget) {
@@ -92,10 +93,10 @@ std::vector<std::string> estimate_lines(const Estimate& estimate, const Estimate
                     advice(estimate, shape));
   }
   if (!estimate.fits_scene_limit) {
-    lines.push_back(fmt::format("  a scene needs about {}, beyond --max-seconds {:g}: it stops "
-                                "INCONCLUSIVE unless given more",
-                                span_text(estimate.seconds_per_scene),
-                                shape.scene_max_seconds));
+    lines.push_back(
+        fmt::format("  a scene needs about {}, beyond --max-seconds {:g}: it stops "
+                    "INCONCLUSIVE unless given more",
+                    span_text(estimate.seconds_per_scene), shape.scene_max_seconds));
   }
   return lines;
 }
@@ -116,8 +117,8 @@ std::size_t fewest_compare_rounds(const MeasureContext& context, double decision
   if (exact_timing(context)) return 2;
   std::size_t fewest = min_values_for_median_sequence(decision_alpha);
   for (const SuiteScene& scene : context.scenes) {
-    fewest = std::min(fewest, min_values_for_median_sequence(
-                                  context.policy.for_scene(scene.id).significance));
+    fewest = std::min(
+        fewest, min_values_for_median_sequence(context.policy.for_scene(scene.id).significance));
   }
   return std::max(fewest, rounds_to_decide(context.stopping));
 }
@@ -132,8 +133,8 @@ RoundCost round_cost(const Round& round, double seconds_spent, int warmup_runs) 
     }
   }
   // The warm-ups ran every contender once each, about as long as this round's runs.
-  const double runs = (1.0 + std::max(warmup_runs, 0)) *
-                      (cost.normalizer_seconds + cost.tracers_seconds);
+  const double runs =
+      (1.0 + std::max(warmup_runs, 0)) * (cost.normalizer_seconds + cost.tracers_seconds);
   if (runs > 0.0 && seconds_spent > runs) cost.overhead_factor = seconds_spent / runs;
   return cost;
 }
@@ -177,10 +178,8 @@ void MeasurementEstimate::first_scene_done(const std::vector<Round>& rounds, dou
     progress_.line(fmt::format(
         "estimate: {} was not decided in {} ({}, its share of the budget); scenes like "
         "it need more: over {} scenes x {} = {}",
-        first_scene_, count_text(rounds.size(), "round"), span_text(seconds_spent),
-        shape_.scenes,
-        span_text(seconds_spent),
-        span_text(seconds_spent * static_cast<double>(shape_.scenes))));
+        first_scene_, count_text(rounds.size(), "round"), span_text(seconds_spent), shape_.scenes,
+        span_text(seconds_spent), span_text(seconds_spent * static_cast<double>(shape_.scenes))));
     return;
   }
   // The rounds it took, at the cost of a round as measured over all of them.
@@ -188,9 +187,8 @@ void MeasurementEstimate::first_scene_done(const std::vector<Round>& rounds, dou
   const double per_round = seconds_spent / scene_seconds(cost, shape_, rounds.size());
   cost.overhead_factor *= per_round;
   const Estimate estimate = estimate_measurement(cost, shape_, rounds.size(), tracer_count_);
-  const std::string basis = fmt::format(
-      "from {} (decided in {} rounds, {}), for scenes like it", first_scene_, rounds.size(),
-      span_text(seconds_spent));
+  const std::string basis = fmt::format("from {} (decided in {} rounds, {}), for scenes like it",
+                                        first_scene_, rounds.size(), span_text(seconds_spent));
   for (const std::string& line : estimate_lines(estimate, shape_, basis)) progress_.line(line);
 }
 

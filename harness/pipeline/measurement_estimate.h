@@ -41,7 +41,7 @@ struct Estimate {
   std::size_t rounds_per_scene = 0;
   double seconds_per_scene = 0.0;
   double total_seconds = 0.0;
-  bool fits_budget = true;  // within budget_seconds (always, with no budget)
+  bool fits_budget = true;       // within budget_seconds (always, with no budget)
   bool fits_scene_limit = true;  // a scene's estimate within --max-seconds
   // With a budget it does not fit: the fewest shards, each given the same budget, that would
   // (the family of a shard stays the whole suite, so its scenes need the same rounds).
@@ -58,8 +58,8 @@ double scene_seconds(const RoundCost& cost, const EstimateShape& shape, std::siz
 // The measurement estimated as `shape.scenes` scenes like this one, each `rounds` rounds.
 // `tracer_count`: how many tracer runs a round holds (1 for run, 2 for compare), to say what one
 // render of the tracer would need to cost.
-Estimate estimate_measurement(const RoundCost& cost, const EstimateShape& shape,
-                              std::size_t rounds, std::size_t tracer_count);
+Estimate estimate_measurement(const RoundCost& cost, const EstimateShape& shape, std::size_t rounds,
+                              std::size_t tracer_count);
 
 // The estimate as lines for the measurement's account, starting with `basis` (what it is
 // measured from) and saying what would decide the suite when the budget cannot.

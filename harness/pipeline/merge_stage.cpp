@@ -10,10 +10,10 @@ namespace {
 
 void say_scores(const ResultsDocument& document, const PublishSink& sink) {
   for (const auto& [role, score] : document.scores) {
-    sink.info(fmt::format("suite score {} (geometric mean of normalized ratios): {:.3f} "
-                          "[{:.3f}, {:.3f}] over {} scenes",
-                          role, score.score, score.interval.lower, score.interval.upper,
-                          score.scenes));
+    sink.info(
+        fmt::format("suite score {} (geometric mean of normalized ratios): {:.3f} "
+                    "[{:.3f}, {:.3f}] over {} scenes",
+                    role, score.score, score.interval.lower, score.interval.upper, score.scenes));
   }
 }
 
@@ -26,11 +26,11 @@ MergedShards merge_shard_documents(const MergeRequest& request, const PublishSin
   // Without --policy the shards' own limits judge the merge (merge checked that they agree).
   std::string note;
   MergedShards merged;
-  merged.policy = request.policy.empty() || inputs.empty()
-                      ? recorded_policy(inputs.empty() ? MeasurementSettings{}
-                                                       : inputs.front().document.settings,
-                                        note)
-                      : load_policy(request.policy);
+  merged.policy =
+      request.policy.empty() || inputs.empty()
+          ? recorded_policy(
+                inputs.empty() ? MeasurementSettings{} : inputs.front().document.settings, note)
+          : load_policy(request.policy);
   if (!note.empty()) sink.info(fmt::format("gate policy: {}", note));
   merged.policy.fail_on_inconclusive =
       merged.policy.fail_on_inconclusive || request.fail_on_inconclusive;

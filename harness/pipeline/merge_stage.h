@@ -18,7 +18,7 @@ namespace raygate {
 struct MergeRequest {
   std::vector<std::string> documents;  // the shards' results documents
   std::string out;                     // the merged document (required)
-  std::string policy;  // a gate policy file; "" = the limits the shards recorded
+  std::string policy;                  // a gate policy file; "" = the limits the shards recorded
   bool fail_on_inconclusive = false;
   bool allow_partial = false;  // merge even if whole shards are missing (incomplete: exit 3)
 };

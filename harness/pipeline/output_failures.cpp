@@ -60,8 +60,7 @@ void OutputFailures::say_summary(int exit_code) const {
   std::fflush(say_);
 }
 
-void check_standard_output(OutputFailures& failures, const std::string& output,
-                           int error_number) {
+void check_standard_output(OutputFailures& failures, const std::string& output, int error_number) {
   std::cout.flush();
   if (std::cout) return;
   const int reason = error_number != 0 ? error_number : errno;
@@ -74,14 +73,15 @@ void check_output_path(const std::filesystem::path& path, const std::string& opt
   std::error_code error;
   const std::filesystem::path target = std::filesystem::absolute(path, error);
   if (std::filesystem::is_directory(target, error)) {
-    throw UsageError(fmt::format("{}: {} is a directory; name a file in it", option,
-                                 target.string()));
+    throw UsageError(
+        fmt::format("{}: {} is a directory; name a file in it", option, target.string()));
   }
   if (std::filesystem::exists(target, error) && !std::filesystem::is_regular_file(target, error)) {
     // Files are replaced whole (a temporary renamed over them): that would replace the node.
-    throw UsageError(fmt::format("{}: {} is not a regular file (a device, FIFO or socket); name "
-                                 "a file, or - for standard output",
-                                 option, target.string()));
+    throw UsageError(
+        fmt::format("{}: {} is not a regular file (a device, FIFO or socket); name "
+                    "a file, or - for standard output",
+                    option, target.string()));
   }
   std::filesystem::path folder = target.parent_path();
   while (!std::filesystem::exists(folder, error) && folder.has_relative_path()) {

@@ -62,7 +62,6 @@ void check_output_path(const std::filesystem::path& path, const std::string& opt
 // Flushes standard output after a report went there; a failed write or flush (a full disk
 // behind `> file`, /dev/full) is a failure of `output`. `error_number` is errno as the writing
 // left it (the stream keeps only that it failed, not why); 0 says "write failed".
-void check_standard_output(OutputFailures& failures, const std::string& output,
-                           int error_number);
+void check_standard_output(OutputFailures& failures, const std::string& output, int error_number);
 
 }  // namespace raygate

@@ -84,15 +84,17 @@ ProjectDefaults read_project_config(const std::filesystem::path& file) {
     const std::string where = absolute.string() + line_of(text, item.name);
     if (item.name == "++" || item.name == "--") continue;  // CLI11's section markers
     if (!item.parents.empty()) {
-      throw UsageError(fmt::format("{}: [{}] {}: sections are not read; write the keys at the "
-                                   "top of the file",
-                                   where, item.parents.front(), item.name));
+      throw UsageError(
+          fmt::format("{}: [{}] {}: sections are not read; write the keys at the "
+                      "top of the file",
+                      where, item.parents.front(), item.name));
     }
     const auto& keys = project_keys();
     if (std::find(keys.begin(), keys.end(), item.name) == keys.end()) {
-      throw UsageError(fmt::format("{}: unknown key '{}'; the keys are repo, adapter, suite, "
-                                   "policy and store",
-                                   where, item.name));
+      throw UsageError(
+          fmt::format("{}: unknown key '{}'; the keys are repo, adapter, suite, "
+                      "policy and store",
+                      where, item.name));
     }
     if (item.inputs.size() != 1) {
       throw UsageError(fmt::format("{}: {}: expected one value", where, item.name));

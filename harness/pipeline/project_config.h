@@ -38,10 +38,8 @@ ProjectDefaults read_project_config(const std::filesystem::path& file);
 // else ./raygate.toml when it exists; then the environment over it. `getenv` is injectable
 // for tests.
 ProjectDefaults load_project_defaults(
-    const std::string& config_argument,
-    const std::function<const char*(const char*)>& getenv = [](const char* name) {
-      return std::getenv(name);
-    });
+    const std::string& config_argument, const std::function<const char*(const char*)>& getenv =
+                                            [](const char* name) { return std::getenv(name); });
 
 // The value of --config FILE / --config=FILE among the arguments, "" when absent: it must be
 // known before parsing, because the defaults it holds are put into the options parsed.

@@ -18,7 +18,8 @@ std::vector<ReportTarget> parse_report_targets(const std::vector<std::string>& s
   for (const std::string& spec : specs) {
     const std::size_t colon = spec.find(':');
     if (colon == std::string::npos || colon + 1 == spec.size()) {
-      throw UsageError(fmt::format("--report {}: expected FORMAT:PATH, e.g. html:report.html", spec));
+      throw UsageError(
+          fmt::format("--report {}: expected FORMAT:PATH, e.g. html:report.html", spec));
     }
     targets.push_back({parse_report_format(spec.substr(0, colon)), spec.substr(colon + 1)});
     const std::filesystem::path& path = targets.back().path;
@@ -42,21 +43,22 @@ void record_document(const ResultsDocument& document, const PublishRequest& requ
     const std::filesystem::path& path = request.document_path;
     std::error_code ignored;
     if (!std::filesystem::is_regular_file(path, ignored)) {
-      sink.problem(fmt::format("raygate: warning: results not stored: {}\n  and the document is "
-                               "in no file; only the reports keep it\n",
-                               e.what()));
+      sink.problem(
+          fmt::format("raygate: warning: results not stored: {}\n  and the document is "
+                      "in no file; only the reports keep it\n",
+                      e.what()));
       return;
     }
     // A URL's password stays out of the message.
-    sink.problem(fmt::format("raygate: warning: results not stored: {}\n  the document is kept "
-                             "at {}; store it later with: raygate import {} --store {}\n",
-                             e.what(), path.string(), path.string(),
-                             redact_postgresql_url(location)));
+    sink.problem(
+        fmt::format("raygate: warning: results not stored: {}\n  the document is kept "
+                    "at {}; store it later with: raygate import {} --store {}\n",
+                    e.what(), path.string(), path.string(), redact_postgresql_url(location)));
   }
 }
 
-int publish(const ResultsDocument& document, const PublishRequest& request,
-            const PublishSink& sink, OutputFailures& failures) {
+int publish(const ResultsDocument& document, const PublishRequest& request, const PublishSink& sink,
+            OutputFailures& failures) {
   if (!failures.failed(request.document_path)) {
     sink.info(fmt::format("results: {}", request.document_path.string()));
   }

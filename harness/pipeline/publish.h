@@ -25,7 +25,7 @@ using PublishSink = MessageSink;
 struct PublishRequest {
   std::filesystem::path document_path;  // where the document was written (or was to be)
   std::filesystem::path store;          // the store it is recorded in; "" = not recorded
-  std::string branch;   // recorded when the revision names no branch (--branch)
+  std::string branch;                   // recorded when the revision names no branch (--branch)
   GatePolicy policy;
   std::vector<ReportTarget> reports;
   // The console table for whoever watches (standard error), or nullptr (--quiet).
@@ -48,8 +48,8 @@ void record_document(const ResultsDocument& document, const PublishRequest& requ
 // gates it by request.policy, reads its trends, and writes every report, each tried even when
 // one before it failed. Returns the exit code: the gate's, or 3 when an output could not be
 // written and the gate found no regression; says that summary when an output failed.
-int publish(const ResultsDocument& document, const PublishRequest& request,
-            const PublishSink& sink, OutputFailures& failures);
+int publish(const ResultsDocument& document, const PublishRequest& request, const PublishSink& sink,
+            OutputFailures& failures);
 
 // The console table (request.table), then each report; a report that cannot be written is
 // recorded in `failures` and the next one is still written.

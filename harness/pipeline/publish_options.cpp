@@ -20,8 +20,8 @@ PublishRequest publish_request(const PublishOptions& options,
   PublishRequest request;
   request.document_path = document_path;
   if (!options.no_store) {
-    request.store = options.store.empty() ? cache_dir / "results.db"
-                                          : std::filesystem::path(options.store);
+    request.store =
+        options.store.empty() ? cache_dir / "results.db" : std::filesystem::path(options.store);
   }
   request.branch = options.branch;
   request.policy = policy;

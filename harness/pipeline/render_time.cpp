@@ -31,8 +31,8 @@ namespace {
 std::pair<int, int> scaled_sides(int width, int height, double scale, int min_side, int max_side) {
   auto side = [&](int s) {
     const double scaled = std::round(static_cast<double>(s) * scale);
-    return static_cast<int>(std::clamp(scaled, static_cast<double>(min_side),
-                                       static_cast<double>(max_side)));
+    return static_cast<int>(
+        std::clamp(scaled, static_cast<double>(min_side), static_cast<double>(max_side)));
   };
   return {side(width), side(height)};
 }

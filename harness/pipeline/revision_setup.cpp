@@ -36,8 +36,8 @@ CompareTrees locate_compare_trees(const std::string& repo, const std::string& ba
   }
   const std::optional<Revision> merge_base = repository.merge_base(head, base_branch);
   if (!merge_base) {
-    throw UsageError(fmt::format("{} and {} have no common ancestor; pass --base REV", head,
-                                 base_branch));
+    throw UsageError(
+        fmt::format("{} and {} have no common ancestor; pass --base REV", head, base_branch));
   }
   Revision named = *merge_base;
   named.revision = "merge-base(" + head + ", " + base_branch + ")";
@@ -107,9 +107,9 @@ void require_run_program(const Adapter& adapter, const BuildRecord& build,
   const std::filesystem::path program = expand(written, values);
   // A bare name is looked up on PATH, a relative path from the run's working folder.
   if (!program.is_absolute() || std::filesystem::exists(program)) return;
-  std::string message = fmt::format(
-      "adapter '{}': its run program {} does not exist after the build (`run` in {})", adapter.name,
-      written, adapter.file.string());
+  std::string message =
+      fmt::format("adapter '{}': its run program {} does not exist after the build (`run` in {})",
+                  adapter.name, written, adapter.file.string());
   const std::vector<std::filesystem::path> made = built_executables(build.build_dir);
   if (made.empty()) {
     message += fmt::format("\n  the build made no executable under {{build}} ({})",
@@ -118,8 +118,9 @@ void require_run_program(const Adapter& adapter, const BuildRecord& build,
     message += "\n  the build made these executables:";
     for (const std::filesystem::path& path : made) message += "\n    {build}/" + path.string();
   }
-  message += "\n  a CMake add_subdirectory(x) target lands in {build}/x/; fixing `run` reuses this "
-             "build (adapters/README.md)";
+  message +=
+      "\n  a CMake add_subdirectory(x) target lands in {build}/x/; fixing `run` reuses this "
+      "build (adapters/README.md)";
   throw InfraError(message);
 }
 
@@ -143,7 +144,8 @@ PreparedRevision prepared_revision(Role role, const std::string& repository,
   prepared.record.adapter_name = context.adapter.name;
   prepared.record.adapter_hash = adapter_hash(context.adapter);
   prepared.record.adapter_file = context.adapter.file.string();
-  prepared.record.adapter_measurement = measurement_hash(context.adapter, build_record.adapter_hash);
+  prepared.record.adapter_measurement =
+      measurement_hash(context.adapter, build_record.adapter_hash);
   prepared.record.build = build_record;
   prepared.setup.role = role;
   prepared.setup.adapter = context.adapter;

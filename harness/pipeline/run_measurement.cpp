@@ -22,8 +22,8 @@ MeasuredDocument measure_prepared_run(const RunRequest& request, const PreparedR
                                       PipelineIo& io) {
   const MeasureContext& context = request.context;
   const Worktree& worktree = request.worktree;
-  SuiteMeasurement m = suite_measurement(
-      context, compact_utc_timestamp() + "-" + worktree.short_sha, request.out);
+  SuiteMeasurement m =
+      suite_measurement(context, compact_utc_timestamp() + "-" + worktree.short_sha, request.out);
   SuiteBudget budget(context.stopping, m.scenes.size(), io.clock);
   MeasurementEstimate estimate(estimate_shape(context, m.scenes.size(), "run"),
                                rounds_to_decide(context.stopping), 1, io.progress);
@@ -43,10 +43,10 @@ MeasuredDocument measure_prepared_run(const RunRequest& request, const PreparedR
 
   ResultsDocument document = new_document(DocumentKind::run, context, request.baseline);
   document.revisions.push_back(tracer.record);
-  const std::string opening = fmt::format(
-      "measuring {} {} ({}) against {} on suite {}: {} scenes{}", context.adapter.name,
-      worktree.short_sha, worktree.subject, request.baseline.version_line(), context.suite.name,
-      m.scenes.size(), shard_note(context));
+  const std::string opening =
+      fmt::format("measuring {} {} ({}) against {} on suite {}: {} scenes{}", context.adapter.name,
+                  worktree.short_sha, worktree.subject, request.baseline.version_line(),
+                  context.suite.name, m.scenes.size(), shard_note(context));
   return measure_document(std::move(document), m, opening, io);
 }
 

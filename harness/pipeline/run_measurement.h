@@ -18,8 +18,8 @@ namespace raygate {
 struct RunRequest {
   const MeasureContext& context;
   const BaselineTool& baseline;
-  std::string repository;  // as the user named it, for the document
-  Worktree worktree;       // a checked-out commit, or the user's own tree
+  std::string repository;     // as the user named it, for the document
+  Worktree worktree;          // a checked-out commit, or the user's own tree
   std::filesystem::path out;  // results document; "" = in the run's work directory
 };
 

@@ -40,8 +40,8 @@ nlohmann::json scene_list_json() {
 }
 
 std::string scene_list_text() {
-  std::string out = fmt::format("{:<10} {:>7} {:>5}  {}\n", "scene", "default", "max",
-                                "description");
+  std::string out =
+      fmt::format("{:<10} {:>7} {:>5}  {}\n", "scene", "default", "max", "description");
   for (const scenes::SceneGenerator& g : scenes::all_generators()) {
     out += fmt::format("{:<10} {:>7} {:>5}  {}\n", g.name,
                        g.uses_size ? std::to_string(g.default_size) : "-",

@@ -84,12 +84,12 @@ SpdValidation validate_spd_counts(const SpdValidationRequest& args,
     BaselineOptions options;
     options.accel = args.accel;
     options.sampling = "corners";
-    status(fmt::format("validate: rendering {} (512x512 corners, accel {})...", scene.id,
-                       args.accel));
+    status(
+        fmt::format("validate: rendering {} (512x512 corners, accel {})...", scene.id, args.accel));
     const BaselineRender r = baseline.render(nff, work / (scene.id + ".png"), options);
     if (!r.process.succeeded()) {
-      throw InfraError("raygate-baseline " + r.process.describe() + " on " + nff.string() +
-                       "\n" + log_tail(r.log, 10));
+      throw InfraError("raygate-baseline " + r.process.describe() + " on " + nff.string() + "\n" +
+                       log_tail(r.log, 10));
     }
     const auto& rays = r.stats.at("rays");
     bool ok = true;

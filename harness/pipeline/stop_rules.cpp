@@ -15,8 +15,7 @@ StopRule stop_rule(const StoppingPolicy& policy, SceneVerdict verdict) {
   };
 }
 
-SceneVerdict ratio_verdict(const StoppingPolicy& policy, Role tracer_role,
-                           Role baseline_role) {
+SceneVerdict ratio_verdict(const StoppingPolicy& policy, Role tracer_role, Role baseline_role) {
   return [=](const std::vector<Round>& rounds) {
     return ratio_decided(round_samples(rounds, tracer_role, baseline_role), policy);
   };
@@ -35,13 +34,11 @@ SceneVerdict change_verdict(const StoppingPolicy& policy, const ScenePolicy& sce
   const BootstrapOptions options = change_bootstrap(scene);
   const double max_slowdown = scene.max_slowdown;
   return [=](const std::vector<Round>& rounds) {
-    return change_decided(compare_samples(rounds), policy, max_slowdown, options, levels,
-                          counted);
+    return change_decided(compare_samples(rounds), policy, max_slowdown, options, levels, counted);
   };
 }
 
-StopRule ratio_stop_rule(const StoppingPolicy& policy, Role tracer_role,
-                         Role baseline_role) {
+StopRule ratio_stop_rule(const StoppingPolicy& policy, Role tracer_role, Role baseline_role) {
   return stop_rule(policy, ratio_verdict(policy, tracer_role, baseline_role));
 }
 
@@ -66,8 +63,7 @@ SuiteBudget::SuiteBudget(const StoppingPolicy& policy, std::size_t scenes, Clock
 
 StoppingPolicy SuiteBudget::next_scene() {
   StoppingPolicy scene = policy_;
-  const double share = scene_time_share(60.0 * policy_.max_minutes,
-                                        clock_.now_seconds() - started_,
+  const double share = scene_time_share(60.0 * policy_.max_minutes, clock_.now_seconds() - started_,
                                         std::max<std::size_t>(scenes_left_, 1) + reserve_scenes_);
   scene.max_seconds = std::min(scene.max_seconds, share);
   if (scenes_left_ > 0) --scenes_left_;

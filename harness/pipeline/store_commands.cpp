@@ -44,9 +44,10 @@ AlertJudgement judge_store_history(const AlertRequest& request,
                   store->location(), rows.size()));
   AlertJudgement judgement = judge_history(rows, policy, request.detection, request.action);
   if (judgement.series.empty()) {
-    throw UsageError(fmt::format("no measured commits in {} match the filters; record some "
-                                 "with raygate run (or raygate import)",
-                                 store->location()));
+    throw UsageError(
+        fmt::format("no measured commits in {} match the filters; record some "
+                    "with raygate run (or raygate import)",
+                    store->location()));
   }
   return judgement;
 }
@@ -63,8 +64,8 @@ std::string import_documents(const std::vector<std::string>& files, const std::s
     const AddOutcome outcome = store->add(documents[i], recorded);
     fresh += outcome.duplicate ? 0 : 1;
     lines += fmt::format("{}: {} document {}{}\n", files[i],
-                         outcome.duplicate ? "already stored as" : "stored as",
-                         outcome.document_id, recorded.empty() ? "" : " (branch " + recorded + ")");
+                         outcome.duplicate ? "already stored as" : "stored as", outcome.document_id,
+                         recorded.empty() ? "" : " (branch " + recorded + ")");
   }
   return lines + fmt::format("imported {} of {} documents into {}\n", fresh, documents.size(),
                              store->location());

@@ -41,7 +41,7 @@ std::string import_documents(const std::vector<std::string>& files, const std::s
 
 struct ExportRequest {
   std::string store;
-  std::string sha;     // documents that measured a commit (a sha or its prefix); "" = any
+  std::string sha;       // documents that measured a commit (a sha or its prefix); "" = any
   std::size_t last = 0;  // the newest N stored; 0 = all
   std::string branch;
   std::string out;  // a directory (one file per document) or FILE.json

@@ -51,8 +51,7 @@ void check_images(SceneResult& result, const SuiteMeasurement& m, const GoldenMa
           m.work_dir / "evidence"));
       continue;
     }
-    result.images.push_back(check_against_golden(role, run->image, m.golden_dir, manifest,
-                                                 rendered,
+    result.images.push_back(check_against_golden(role, run->image, m.golden_dir, manifest, rendered,
                                                  m.policy.for_scene(result.entry.id).image,
                                                  m.work_dir / "evidence"));
   }
@@ -203,8 +202,13 @@ void revisit_scenes(ResultsDocument& document, const SuiteMeasurement& m, Execut
       revisit.spent = true;
       continue;
     }
-    ProgressState state{visit, visit + order.size() - 1, scene.entry.id + " (again)",
-                        scene.runs.rounds.size(), 0.0, 0.0, -1.0};
+    ProgressState state{visit,
+                        visit + order.size() - 1,
+                        scene.entry.id + " (again)",
+                        scene.runs.rounds.size(),
+                        0.0,
+                        0.0,
+                        -1.0};
     io.progress.update(state);
     const RoundObserver observe = [&](const std::vector<Round>& rounds, double) {
       state.round = rounds.size();
@@ -255,7 +259,12 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Pipeli
   for (std::size_t index = 0; index < m.scenes.size(); ++index) {
     throw_if_interrupted("between scenes");
     const SuiteScene& entry = m.scenes[index];
-    ProgressState state{index + 1, m.scenes.size(), entry.id, 0, 0.0, 0.0,
+    ProgressState state{index + 1,
+                        m.scenes.size(),
+                        entry.id,
+                        0,
+                        0.0,
+                        0.0,
                         eta_seconds(elapsed_done, index, m.scenes.size(), 0.0)};
     progress.update(state);
 
@@ -368,9 +377,10 @@ BaselineContender baseline_contender(const MeasureContext& context,
   BaselineContender baseline(context.tools.baseline, context.suite.sampling, timeout, "none",
                              &timing_mode(context));
   if (under_cachegrind(context)) {
-    baseline.simulate({*context.cachegrind,
-                       std::make_shared<BaselineCostCache>(context.cache_dir / "simulated-baseline"),
-                       baseline_source_sha256});
+    baseline.simulate(
+        {*context.cachegrind,
+         std::make_shared<BaselineCostCache>(context.cache_dir / "simulated-baseline"),
+         baseline_source_sha256});
   }
   return baseline;
 }
@@ -380,8 +390,8 @@ std::string scene_line(const SceneResult& scene, const std::vector<Role>& tracer
   for (const Role role : tracer_roles) {
     if (const RatioSummary* r = scene.ratio(role)) {
       text += fmt::format("  {}{:.3f} [{:.3f}, {:.3f}]",
-                          tracer_roles.size() > 1 ? role_name(role) + " " : "",
-                          r->ratio, r->ratio_interval.lower, r->ratio_interval.upper);
+                          tracer_roles.size() > 1 ? role_name(role) + " " : "", r->ratio,
+                          r->ratio_interval.lower, r->ratio_interval.upper);
     }
   }
   text += fmt::format("  {}, {}", count_text(scene.runs.rounds.size(), "round"),
@@ -403,8 +413,8 @@ std::string scene_line(const SceneResult& scene, const std::vector<Role>& tracer
       text += fmt::format("  image {} {}", what, check_detail(check));
       continue;
     }
-    const std::string detail = check.metrics && check.metrics->identical() ? "identical"
-                                                                           : check_detail(check);
+    const std::string detail =
+        check.metrics && check.metrics->identical() ? "identical" : check_detail(check);
     text += fmt::format("  image {} {} ({})", what, to_string(check.verdict), detail);
   }
   return text;

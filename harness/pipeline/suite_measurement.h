@@ -58,14 +58,14 @@ struct SceneRevisits {
 struct SuiteMeasurement {
   std::vector<SuiteScene> scenes;
   std::vector<const Contender*> contenders;  // the baseline first
-  std::vector<Role> tracer_roles;     // normalized against the baseline, image-checked
+  std::vector<Role> tracer_roles;            // normalized against the baseline, image-checked
   std::vector<SceneFormat> formats{SceneFormat::nff};  // scene files the contenders read
   ScheduleOptions schedule;
   std::function<StopRule(const SuiteScene&)> stop;  // the stopping rule of each scene
   // How each scene's first-pass rounds choose their runs per contender (runner/scheduler.h,
   // RepeatChooser); unset, or an empty chooser: `schedule`'s repeats.
   std::function<RepeatChooser(const SuiteScene&)> repeats;
-  GatePolicy policy;  // image thresholds per scene
+  GatePolicy policy;                            // image thresholds per scene
   ImageKind images = ImageKind::deterministic;  // the adapter's: how its images are judged
   std::filesystem::path golden_dir;
   std::filesystem::path scene_cache;  // generated scene files

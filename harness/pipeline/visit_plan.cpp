@@ -79,8 +79,8 @@ std::optional<std::size_t> rounds_to_decide(const SceneResult& scene, double thr
 
 VisitPlan plan_visit(const SceneResult& scene, const GatePolicy& gate_policy, bool may_repeat) {
   if (!scene.change) return {};
-  return plan_rounds(scene.runs, *scene.change,
-                     gate_policy.for_scene(scene.entry.id).max_slowdown, may_repeat);
+  return plan_rounds(scene.runs, *scene.change, gate_policy.for_scene(scene.entry.id).max_slowdown,
+                     may_repeat);
 }
 
 std::size_t next_round_repeats(const SceneRuns& so_far, const ChangeSummary& change,
@@ -97,9 +97,9 @@ VisitPlan plan_rounds(const SceneRuns& runs, const ChangeSummary& change, double
   const double run_seconds = seconds_per_run(runs);
   const ChangeSummary projected = projected_change(runs, change);
   const RoundsByRuns split = split_by_runs(runs);
-  plan.seconds = seconds_for(
-      estimated_rounds_to_decide(projected, threshold, spread_with_one_run(split)), rounds,
-      run_seconds);
+  plan.seconds =
+      seconds_for(estimated_rounds_to_decide(projected, threshold, spread_with_one_run(split)),
+                  rounds, run_seconds);
   if (!may_repeat || projected.exact) return plan;
   const std::optional<double> spread = spread_with_fastest_of_two(split);
   if (!spread) return plan;

@@ -161,8 +161,8 @@ void add_footer(const ReportInput& input, const std::vector<SceneView>& views, S
                               : exit_code == 1 ? GateOutcome::fail
                                                : GateOutcome::unmeasured;
   spans.push_back(plain("\n"));
-  spans.push_back(painted(fmt::format("{} ({}), exit {}", line.title, line.detail, exit_code),
-                          overall));
+  spans.push_back(
+      painted(fmt::format("{} ({}), exit {}", line.title, line.detail, exit_code), overall));
   spans.push_back(plain("\n"));
 }
 

@@ -48,7 +48,8 @@ std::vector<SceneGate> all_gates(const GateResult& gate) {
 }  // namespace
 
 void print_gate_summary(const GateResult& gate, std::FILE* stream) {
-  for (const GateOutcome outcome : {GateOutcome::fail, GateOutcome::unmeasured, GateOutcome::warn}) {
+  for (const GateOutcome outcome :
+       {GateOutcome::fail, GateOutcome::unmeasured, GateOutcome::warn}) {
     for (const SceneGate& scene : all_gates(gate)) {
       if (scene.outcome != outcome) continue;
       for (const std::string& reason : scene.reasons) {

@@ -12,8 +12,8 @@ namespace raygate::report::html {
 namespace {
 
 GateOutcome overall_outcome(const GateResult& gate) {
-  if (gate.exit_code == 0) return gate.count(GateOutcome::warn) > 0 ? GateOutcome::warn
-                                                                    : GateOutcome::pass;
+  if (gate.exit_code == 0)
+    return gate.count(GateOutcome::warn) > 0 ? GateOutcome::warn : GateOutcome::pass;
   return gate.exit_code == 1 ? GateOutcome::fail : GateOutcome::unmeasured;
 }
 
@@ -25,8 +25,9 @@ std::string commit_html(const ResultsDocument& d, Role role) {
   const RevisionRecord* revision = d.revision(role);
   if (revision == nullptr) return "";
   const Worktree& tree = revision->worktree;
-  std::string html = fmt::format(R"(<code class="sha" title="{}">{}</code> <span class="subject">{}</span>)",
-                                 escape(tree.sha), escape(tree.short_sha), escape(tree.subject));
+  std::string html =
+      fmt::format(R"(<code class="sha" title="{}">{}</code> <span class="subject">{}</span>)",
+                  escape(tree.sha), escape(tree.short_sha), escape(tree.subject));
   std::vector<std::string> extra;
   if (!tree.revision.empty() && tree.revision != tree.sha) extra.push_back(tree.revision);
   if (!tree.author.empty()) extra.push_back(tree.author);
@@ -110,10 +111,11 @@ std::string gate_notes_html(const GateResult& gate) {
 
 std::string counts_html(const GateResult& gate) {
   std::string html = R"(<div class="counts">)";
-  for (const GateOutcome o : {GateOutcome::fail, GateOutcome::unmeasured, GateOutcome::warn,
-                              GateOutcome::pass}) {
-    html += fmt::format(R"(<span class="count {}"><b>{}</b> {}</span>)", outcome_class(o),
-                        gate.count(o), o == GateOutcome::unmeasured ? "not measured" : to_string(o));
+  for (const GateOutcome o :
+       {GateOutcome::fail, GateOutcome::unmeasured, GateOutcome::warn, GateOutcome::pass}) {
+    html +=
+        fmt::format(R"(<span class="count {}"><b>{}</b> {}</span>)", outcome_class(o),
+                    gate.count(o), o == GateOutcome::unmeasured ? "not measured" : to_string(o));
   }
   return html + "</div>";
 }
@@ -161,7 +163,8 @@ std::string title_of(const ResultsDocument& d) {
                        d.suite);
   }
   const RevisionRecord* tracer = d.revision(Role::tracer);
-  return fmt::format("raygate run · {} · suite {}", tracer ? tracer->worktree.short_sha : "?", d.suite);
+  return fmt::format("raygate run · {} · suite {}", tracer ? tracer->worktree.short_sha : "?",
+                     d.suite);
 }
 
 class HtmlReporter final : public Reporter {
@@ -177,7 +180,8 @@ class HtmlReporter final : public Reporter {
         << "<header class=\"top card\"><div class=\"brand\">raygate <span>" << to_string(d.kind)
         << " report</span></div><h1>" << escape(title) << "</h1>" << banner(input, views)
         << gate_notes_html(input.gate) << meta_list(input) << "</header>\n"
-        << overview(input, views) << '\n' << scaling_section(d) << '\n'
+        << overview(input, views) << '\n'
+        << scaling_section(d) << '\n'
         << memory_html(input) << explanation_html(input) << '\n';  // issue 27
     for (const SceneView& view : views) out << scene_section(input, view) << '\n';
     out << "<footer>raygate " << escape(d.raygate_version)
@@ -185,8 +189,7 @@ class HtmlReporter final : public Reporter {
            "baseline joined, with its 95% CI (head's: base's times the change) · "
            "change = median of per-round head/base, with the interval that decided its verdict or, "
            "for INCONCLUSIVE, would decide it ("
-        << escape(kIntervalLegend)
-        << ") · hover an image to see its reference</footer></div>\n"
+        << escape(kIntervalLegend) << ") · hover an image to see its reference</footer></div>\n"
         << "<script>" << page_script() << "</script></body></html>\n";
   }
 };

@@ -14,7 +14,7 @@ namespace {
 
 struct Series {
   std::string label;
-  std::string css_class;  // scl-baseline, scl-tracer, scl-base, scl-head
+  std::string css_class;                          // scl-baseline, scl-tracer, scl-base, scl-head
   std::vector<std::pair<double, double>> points;  // primitives, seconds
   PowerFit fit;
 };
@@ -53,8 +53,9 @@ std::pair<double, double> decades(const std::vector<Series>& series, bool x) {
 std::string decade_label(double exponent, bool seconds) {
   const double v = std::pow(10.0, exponent);
   if (seconds) return v >= 1 ? fmt::format("{:g} s", v) : fmt::format("{:g} ms", v * 1000);
-  return v >= 1e6 ? fmt::format("{:g}M", v / 1e6) : v >= 1e3 ? fmt::format("{:g}k", v / 1e3)
-                                                             : fmt::format("{:g}", v);
+  return v >= 1e6   ? fmt::format("{:g}M", v / 1e6)
+         : v >= 1e3 ? fmt::format("{:g}k", v / 1e3)
+                    : fmt::format("{:g}", v);
 }
 
 std::string loglog_svg(const FamilyScaling& family) {
@@ -62,8 +63,12 @@ std::string loglog_svg(const FamilyScaling& family) {
   const auto [xlo, xhi] = decades(series, true);
   const auto [ylo, yhi] = decades(series, false);
   const double left = 62, right = 420, top = 14, bottom = 250;
-  const auto px = [&](double n) { return left + (std::log10(n) - xlo) / (xhi - xlo) * (right - left); };
-  const auto py = [&](double t) { return bottom - (std::log10(t) - ylo) / (yhi - ylo) * (bottom - top); };
+  const auto px = [&](double n) {
+    return left + (std::log10(n) - xlo) / (xhi - xlo) * (right - left);
+  };
+  const auto py = [&](double t) {
+    return bottom - (std::log10(t) - ylo) / (yhi - ylo) * (bottom - top);
+  };
   std::string out = fmt::format(
       R"(<svg class="plot scaling-plot" viewBox="0 0 560 290" width="560" height="290" role="img" aria-label="{}">)",
       escape(fmt::format("seconds against primitives, log-log, {}", family.family)));
@@ -79,16 +84,19 @@ std::string loglog_svg(const FamilyScaling& family) {
     out += fmt::format(R"(<text x="{}" y="{:.1f}" class="svg-tick" text-anchor="end">{}</text>)",
                        left - 6, py(std::pow(10.0, d)) + 4, decade_label(d, true));
   }
-  out += fmt::format(R"(<text x="{}" y="{}" class="svg-tick" text-anchor="middle">primitives</text>)",
-                     (left + right) / 2, bottom + 32);
+  out +=
+      fmt::format(R"(<text x="{}" y="{}" class="svg-tick" text-anchor="middle">primitives</text>)",
+                  (left + right) / 2, bottom + 32);
   double legend_y = top + 10;
   for (const Series& s : series) {
     const double n0 = s.points.front().first, n1 = s.points.back().first;
-    out += fmt::format(R"(<g class="{}"><line class="scl-fit" x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/>)",
-                       s.css_class, px(n0), py(s.fit.predict(n0)), px(n1), py(s.fit.predict(n1)));
+    out += fmt::format(
+        R"(<g class="{}"><line class="scl-fit" x1="{:.1f}" y1="{:.1f}" x2="{:.1f}" y2="{:.1f}"/>)",
+        s.css_class, px(n0), py(s.fit.predict(n0)), px(n1), py(s.fit.predict(n1)));
     for (const auto& [n, t] : s.points) {
-      out += fmt::format(R"(<circle cx="{:.1f}" cy="{:.1f}" r="4"><title>{}</title></circle>)", px(n),
-                         py(t), escape(fmt::format("{} {:.0f} primitives: {:.4f} s", s.label, n, t)));
+      out +=
+          fmt::format(R"(<circle cx="{:.1f}" cy="{:.1f}" r="4"><title>{}</title></circle>)", px(n),
+                      py(t), escape(fmt::format("{} {:.0f} primitives: {:.4f} s", s.label, n, t)));
     }
     out += fmt::format(R"(<circle cx="{}" cy="{:.1f}" r="4"/>)", right + 14, legend_y - 4);
     out += fmt::format(R"(<text x="{}" y="{:.1f}" class="svg-value">{} k={:.2f}</text></g>)",

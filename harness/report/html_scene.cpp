@@ -39,11 +39,10 @@ ImageReference reference_of(const SceneResult& scene, Role role) {
   int worst = -1;
   for (const ImageCheck& check : scene.images) {
     if (check.role != role) continue;
-    const int rank = check.verdict == ImageVerdict::fail ? 2
-                     : check.verdict == ImageVerdict::warn ||
-                             check.verdict == ImageVerdict::inconclusive
-                         ? 1
-                         : 0;
+    const int rank =
+        check.verdict == ImageVerdict::fail                                                  ? 2
+        : check.verdict == ImageVerdict::warn || check.verdict == ImageVerdict::inconclusive ? 1
+                                                                                             : 0;
     if (rank > worst) {
       worst = rank;
       reference = check.reference;
@@ -86,7 +85,12 @@ std::vector<Shot> shots_of(const ReportInput& input, const SceneView& view) {
       const std::string role = role_name(check.role);
       const std::string reference(to_string(check.reference));
       shots.push_back({shot_id(view, "diff-" + role + "-" + reference),
-                       fmt::format("|Δ|×16 {} vs {}", role, reference), diff, "", "", true, {}});
+                       fmt::format("|Δ|×16 {} vs {}", role, reference),
+                       diff,
+                       "",
+                       "",
+                       true,
+                       {}});
     }
   }
   return shots;
@@ -110,8 +114,9 @@ std::string figure(const ReportInput& input, const Shot& shot) {
   if (!shot.swap_id.empty() && uri) {
     caption += fmt::format(R"(<span class="hint">hover: {}</span>)", escape(shot.swap_label));
   }
-  return fmt::format(R"(<figure class="shot{}"><div class="frame">{}</div><figcaption>{}</figcaption></figure>)",
-                     shot.evidence ? " evidence" : "", picture, caption);
+  return fmt::format(
+      R"(<figure class="shot{}"><div class="frame">{}</div><figcaption>{}</figcaption></figure>)",
+      shot.evidence ? " evidence" : "", picture, caption);
 }
 
 std::string gallery(const ReportInput& input, const SceneView& view) {
@@ -138,16 +143,17 @@ std::string metric_row(const ImageCheck& check) {
                        escape(summarize(m)));
   }
   if (m.identical()) {
-    return fmt::format(R"(<tr><td>{}</td><td>{}</td><td colspan="5" class="muted">identical pixels</td></tr>)",
-                       who, verdict);
+    return fmt::format(
+        R"(<tr><td>{}</td><td>{}</td><td colspan="5" class="muted">identical pixels</td></tr>)",
+        who, verdict);
   }
   const std::string psnr = std::isfinite(m.psnr_db) ? fmt::format("{:.1f} dB", m.psnr_db) : "∞";
   return fmt::format(
       "<tr><td>{}</td><td>{}</td><td class=\"num\">{:.4g} <span class=\"muted\">at ({},{}) ch {}"
       "</span></td><td class=\"num\">{:.3g}%</td><td class=\"num\">{:.3g}</td>"
       "<td class=\"num\">{}</td><td class=\"num\">{:+.4f}</td></tr>",
-      who, verdict, m.max_error, m.max_x, m.max_y, m.max_channel, m.percent_over_fail,
-      m.rms_error, psnr, m.luminance_bias());
+      who, verdict, m.max_error, m.max_x, m.max_y, m.max_channel, m.percent_over_fail, m.rms_error,
+      psnr, m.luminance_bias());
 }
 
 std::string metrics_table(const SceneResult& scene) {
@@ -213,13 +219,14 @@ std::string run_facts(const ReportInput& input, const SceneResult& scene) {
   const RatioSummary* base = scene.ratio(Role::base);
   if (scene.change && !scene.runs.failed() && !scene.change->exact && base != nullptr &&
       base->rounds >= 6) {
-    facts.push_back(fmt::format("Mann–Whitney U {:.1f}, p {:.3g} over the {} rounds with the "
-                                "baseline (not used by the verdict)",
-                                scene.change->mann_whitney.u, scene.change->mann_whitney.p_value,
-                                base->rounds));
+    facts.push_back(fmt::format(
+        "Mann–Whitney U {:.1f}, p {:.3g} over the {} rounds with the "
+        "baseline (not used by the verdict)",
+        scene.change->mann_whitney.u, scene.change->mann_whitney.p_value, base->rounds));
   }
   facts.push_back(fmt::format("{:.1f} s spent", scene.runs.seconds_spent));
-  return fmt::format(R"(<p class="facts">{}</p>)", escape(fmt::format("{}", fmt::join(facts, " · "))));
+  return fmt::format(R"(<p class="facts">{}</p>)",
+                     escape(fmt::format("{}", fmt::join(facts, " · "))));
 }
 
 // The reasons above already say what failed and where its log is; this says what it costs.
@@ -258,8 +265,8 @@ std::string reasons_list(const SceneView& view) {
 
 std::string scene_section(const ReportInput& input, const SceneView& view) {
   const SceneResult& scene = *view.result;
-  std::string numbers = "<h3>Speed</h3>" + failure_note(scene) + speed_plots(input, view) +
-                        run_facts(input, scene);
+  std::string numbers =
+      "<h3>Speed</h3>" + failure_note(scene) + speed_plots(input, view) + run_facts(input, scene);
   if (const TrendSeries* trend = input.trend(scene.entry.id)) {
     std::vector<TrendMark> marks;
     for (const RevisionRecord& revision : input.document.revisions) {
@@ -276,8 +283,8 @@ std::string scene_section(const ReportInput& input, const SceneView& view) {
       R"(<section class="scene card {}" id="{}">{}{}<div class="scene-body">)"
       R"(<div class="scene-numbers">{}</div><div class="scene-images"><h3>Images</h3>{}</div>)"
       R"(</div>{}</section>)",
-      outcome_class(view.gate.outcome), anchor(view.gate.id), head_line(view),
-      reasons_list(view), numbers, gallery(input, view), metrics_table(scene));
+      outcome_class(view.gate.outcome), anchor(view.gate.id), head_line(view), reasons_list(view),
+      numbers, gallery(input, view), metrics_table(scene));
 }
 
 }  // namespace raygate::report::html

@@ -84,8 +84,8 @@ std::string text(double x, double y, const std::string& css_class, const std::st
 
 std::string x_axis(const Scale& x, double y, int target, int decimals, const std::string& suffix,
                    double percent_factor) {
-  std::string out = fmt::format(R"(<line class="svg-axis" x1="{:.1f}" x2="{:.1f}" y1="{}" y2="{}"/>)",
-                                x.a, x.b, y, y);
+  std::string out = fmt::format(
+      R"(<line class="svg-axis" x1="{:.1f}" x2="{:.1f}" y1="{}" y2="{}"/>)", x.a, x.b, y, y);
   for (const double t : ticks(x.lo, x.hi, target)) {
     out += fmt::format(R"(<line class="svg-axis" x1="{0:.1f}" x2="{0:.1f}" y1="{1}" y2="{2}"/>)",
                        x(t), y, y + 4);
@@ -99,13 +99,12 @@ std::string x_axis(const Scale& x, double y, int target, int decimals, const std
 // A CI as a bar with end caps and the estimate as a dot.
 std::string interval_mark(const Scale& x, double y, double value, double lower, double upper,
                           const std::string& css_class, const std::string& tooltip) {
-  return fmt::format(
-      R"(<g class="mark {0}"><title>{1}</title>)"
-      R"(<line class="ci" x1="{2:.1f}" x2="{3:.1f}" y1="{4}" y2="{4}"/>)"
-      R"(<line class="cap" x1="{2:.1f}" x2="{2:.1f}" y1="{5}" y2="{6}"/>)"
-      R"(<line class="cap" x1="{3:.1f}" x2="{3:.1f}" y1="{5}" y2="{6}"/>)"
-      R"(<circle cx="{7:.1f}" cy="{4}" r="4.5"/></g>)",
-      css_class, escape(tooltip), x(lower), x(upper), y, y - 5, y + 5, x(value));
+  return fmt::format(R"(<g class="mark {0}"><title>{1}</title>)"
+                     R"(<line class="ci" x1="{2:.1f}" x2="{3:.1f}" y1="{4}" y2="{4}"/>)"
+                     R"(<line class="cap" x1="{2:.1f}" x2="{2:.1f}" y1="{5}" y2="{6}"/>)"
+                     R"(<line class="cap" x1="{3:.1f}" x2="{3:.1f}" y1="{5}" y2="{6}"/>)"
+                     R"(<circle cx="{7:.1f}" cy="{4}" r="4.5"/></g>)",
+                     css_class, escape(tooltip), x(lower), x(upper), y, y - 5, y + 5, x(value));
 }
 
 }  // namespace
@@ -134,7 +133,8 @@ std::string change_bar_svg(const ChangeCell& cell, double threshold, const std::
   const Interval interval = cell.interval.value_or(Interval{cell.change, cell.change});
   const double change = cell.change;
   const double reach = std::max({2.0 * threshold, std::abs(interval.lower),
-                                 std::abs(interval.upper), std::abs(change), 0.01}) * 1.15;
+                                 std::abs(interval.upper), std::abs(change), 0.01}) *
+                       1.15;
   const Scale x{-reach, reach, 58.0, 290.0};
   const double y = 22;
   const std::string title =
@@ -147,8 +147,9 @@ std::string change_bar_svg(const ChangeCell& cell, double threshold, const std::
   out += interval_mark(x, y, change, interval.lower, interval.upper, css_class,
                        "head vs base " + cell.text);
   out += text(302, y + 4, "svg-value", signed_percent(change, cell.exact ? 3 : 1));
-  std::string note = cell.exact ? "exact (simulated cycles)"
-                                : fmt::format("no interval yet (needs {} rounds)", cell.rounds_needed);
+  std::string note = cell.exact
+                         ? "exact (simulated cycles)"
+                         : fmt::format("no interval yet (needs {} rounds)", cell.rounds_needed);
   if (cell.interval && !cell.exact) {
     note = fmt::format("[{}, {}] {}", signed_percent(interval.lower),
                        signed_percent(interval.upper), cell.interval_name);
@@ -219,8 +220,8 @@ std::string trend_svg(const TrendSeries& series, const std::vector<TrendMark>& m
   const double left = 52, right = width - 14, top = 18, bottom = height - 50;
   const std::size_t n = p.size();
   auto px = [&](std::size_t i) {
-    return n == 1 ? (left + right) / 2 : left + (right - left) * static_cast<double>(i) /
-                                         static_cast<double>(n - 1);
+    return n == 1 ? (left + right) / 2
+                  : left + (right - left) * static_cast<double>(i) / static_cast<double>(n - 1);
   };
   const Scale y{dlo, dhi, bottom, top};
   std::string out =

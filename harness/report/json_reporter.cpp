@@ -14,7 +14,6 @@ namespace {
 
 using nlohmann::json;
 
-
 json interval(const Interval& i) {
   return json{{"lower", finite_number(i.lower)}, {"upper", finite_number(i.upper)}};
 }
@@ -22,12 +21,9 @@ json interval(const Interval& i) {
 json revisions(const ResultsDocument& d) {
   json out = json::object();
   for (const RevisionRecord& r : d.revisions) {
-    out[role_name(r.role)] = {{"sha", r.worktree.sha},
-                   {"short_sha", r.worktree.short_sha},
-                   {"subject", r.worktree.subject},
-                   {"revision", r.worktree.revision},
-                   {"dirty", r.worktree.dirty},
-                   {"repository", r.repository}};
+    out[role_name(r.role)] = {{"sha", r.worktree.sha},         {"short_sha", r.worktree.short_sha},
+                              {"subject", r.worktree.subject}, {"revision", r.worktree.revision},
+                              {"dirty", r.worktree.dirty},     {"repository", r.repository}};
   }
   return out;
 }
@@ -92,13 +88,14 @@ json scene_json(const SceneView& view) {
           {"image_outcome", to_string(view.image_outcome)},
           {"reasons", view.gate.reasons},
           {"ratios", ratios(*view.result)},
-          {"change", change(view)}, {"images", images(*view.result)}};
+          {"change", change(view)},
+          {"images", images(*view.result)}};
 }
 
 json counts(const GateResult& gate) {
   json out = json::object();
-  for (GateOutcome o : {GateOutcome::pass, GateOutcome::warn, GateOutcome::unmeasured,
-                        GateOutcome::fail}) {
+  for (GateOutcome o :
+       {GateOutcome::pass, GateOutcome::warn, GateOutcome::unmeasured, GateOutcome::fail}) {
     out[std::string(to_string(o))] = gate.count(o);
   }
   return out;
@@ -111,10 +108,11 @@ json policy_json(const GatePolicy& policy) {
           {"significance", d.significance},
           {"max_memory_increase", d.max_memory_increase},
           {"fail_on_inconclusive", policy.fail_on_inconclusive},
-          {"image", {{"fail_threshold", d.image.fail_threshold},
-                     {"fail_percent", d.image.fail_percent},
-                     {"warn_threshold", d.image.warn_threshold},
-                     {"hard_fail", finite_number(d.image.hard_fail)}}}};
+          {"image",
+           {{"fail_threshold", d.image.fail_threshold},
+            {"fail_percent", d.image.fail_percent},
+            {"warn_threshold", d.image.warn_threshold},
+            {"hard_fail", finite_number(d.image.hard_fail)}}}};
 }
 
 class JsonReporter final : public Reporter {

@@ -90,9 +90,8 @@ std::string speed_numbers(const ResultsDocument& d, const SceneView& view) {
 std::string image_numbers(const SceneView& view) {
   std::vector<std::string> lines;
   for (const ImageCheck& check : view.result->images) {
-    std::string line =
-        fmt::format("{} vs {}: {}", to_string(check.role), to_string(check.reference),
-                    image_verdict_text(check.verdict));
+    std::string line = fmt::format("{} vs {}: {}", to_string(check.role),
+                                   to_string(check.reference), image_verdict_text(check.verdict));
     if (const std::string detail = check_detail(check); !detail.empty()) line += ": " + detail;
     lines.push_back(line);
   }

@@ -34,11 +34,15 @@ std::string md(const std::string& raw) {
       case '|': out += "\\|"; break;
       case '<': out += "&lt;"; break;
       case '&': out += "&amp;"; break;
-      case '*': case '_': case '`': case '\\':
+      case '*':
+      case '_':
+      case '`':
+      case '\\':
         out += '\\';
         out += c;
         break;
-      case '\n': case '\r': out += ' '; break;
+      case '\n':
+      case '\r': out += ' '; break;
       default: out += c;
     }
   }
@@ -69,8 +73,8 @@ std::string table_head(const ResultsDocument& d) {
 }
 
 std::string table_row(const ResultsDocument& d, const SceneView& view) {
-  std::string row = fmt::format("| **{}** | {} |", upper(to_string(view.gate.outcome)),
-                                md(view.gate.id));
+  std::string row =
+      fmt::format("| **{}** | {} |", upper(to_string(view.gate.outcome)), md(view.gate.id));
   for (const TableColumn& column : table_columns(d)) {
     row += fmt::format(" {} |", md(cell_text(column.kind, d, view, "→", "–")));
   }
@@ -133,9 +137,8 @@ class MarkdownReporter final : public Reporter {
   std::size_t limit_;
 };
 
-std::string MarkdownReporter::compose(const ReportInput& input,
-                                      const std::vector<SceneView>& views, std::size_t shown,
-                                      bool with_details) const {
+std::string MarkdownReporter::compose(const ReportInput& input, const std::vector<SceneView>& views,
+                                      std::size_t shown, bool with_details) const {
   const ResultsDocument& d = input.document;
   const Headline line = headline(input, views);
   std::string text = fmt::format("**{}** ({})\n\n", md(line.title), md(line.detail));
@@ -156,9 +159,10 @@ std::string MarkdownReporter::compose(const ReportInput& input,
   }
   text += fmt::format("\n<sub>{}</sub>\n", md(columns_line(d)));
   if (shown < views.size()) {
-    text += fmt::format("\n_{} more scenes not shown: the full report would exceed GitHub's "
-                        "comment limit. See the HTML or JSON report._\n",
-                        views.size() - shown);
+    text += fmt::format(
+        "\n_{} more scenes not shown: the full report would exceed GitHub's "
+        "comment limit. See the HTML or JSON report._\n",
+        views.size() - shown);
   }
   if (!reasons.empty()) text.append("\n").append(reasons);
   text += memory_markdown(input) + explanation_markdown(input);  // issue 27

@@ -301,14 +301,11 @@ nlohmann::json memory_json(const ReportInput& input, const SceneResult& scene) {
   const auto judged = judge_scene_memory(scene, input.policy.for_scene(scene.entry.id));
   if (!judged) return nullptr;
   const MemorySummary& s = judged->summary;
-  return {{"base_peak_kib", s.base_kib},
-          {"head_peak_kib", s.head_kib},
-          {"delta_kib", s.delta_kib},
-          {"change", s.change},
-          {"noise_kib", s.noise_kib()},
-          {"limit", judged->limit},
-          {"peak_method", method_words(input)},
-          {"verdict", std::string(to_string(judged->verdict))}};
+  return {
+      {"base_peak_kib", s.base_kib},        {"head_peak_kib", s.head_kib},
+      {"delta_kib", s.delta_kib},           {"change", s.change},
+      {"noise_kib", s.noise_kib()},         {"limit", judged->limit},
+      {"peak_method", method_words(input)}, {"verdict", std::string(to_string(judged->verdict))}};
 }
 
 }  // namespace raygate::report

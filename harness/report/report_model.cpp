@@ -100,9 +100,9 @@ namespace {
 
 // Growth exponents that failed the gate (gate/growth_gate.h): a regression with no scene failed.
 std::size_t failed_families(const GateResult& gate) {
-  return static_cast<std::size_t>(std::count_if(
-      gate.families.begin(), gate.families.end(),
-      [](const SceneGate& g) { return g.outcome == GateOutcome::fail; }));
+  return static_cast<std::size_t>(
+      std::count_if(gate.families.begin(), gate.families.end(),
+                    [](const SceneGate& g) { return g.outcome == GateOutcome::fail; }));
 }
 
 }  // namespace
@@ -116,7 +116,8 @@ Headline headline(const ReportInput& input, const std::vector<SceneView>& views)
   if (failed > 0) {
     line.title = "raygate: " + plural(failed, "regression", "regressions");
     line.detail = ids_of(views, GateOutcome::fail, true);
-    if (unmeasured > 0) line.detail += "; not measured: " + ids_of(views, GateOutcome::unmeasured, false);
+    if (unmeasured > 0)
+      line.detail += "; not measured: " + ids_of(views, GateOutcome::unmeasured, false);
   } else if (unmeasured > 0) {
     line.title = "raygate: could not measure " + plural(unmeasured, "scene", "scenes");
     line.detail = ids_of(views, GateOutcome::unmeasured, false);
@@ -229,10 +230,11 @@ std::vector<TableColumn> table_columns(const ResultsDocument& document) {
 std::string columns_line(const ResultsDocument& document) {
   const std::string ratio = "ratio = time(tracer) / time(baseline), the median over rounds";
   if (!is_compare(document.kind)) return ratio + ", [its 95% CI]";
-  return ratio + " the baseline joined; head's = base's x (1 + change), so both move with the "
-                 "change; change = median of per-round time(head) / time(base) - 1, [the "
-                 "interval its verdict was drawn from; INCONCLUSIVE: the one that would decide "
-                 "it]";
+  return ratio +
+         " the baseline joined; head's = base's x (1 + change), so both move with the "
+         "change; change = median of per-round time(head) / time(base) - 1, [the "
+         "interval its verdict was drawn from; INCONCLUSIVE: the one that would decide "
+         "it]";
 }
 
 std::string cell_text(ColumnKind kind, const ResultsDocument& document, const SceneView& view,
@@ -274,9 +276,8 @@ std::string ratio_text(const ResultsDocument& document, const SceneResult& scene
   }
   const RatioSummary* tracer = scene.ratio(Role::tracer);
   if (tracer == nullptr) return "";
-  return fmt::format("{:.3f} [{:.3f}, {:.3f}], {}{}", tracer->ratio,
-                     tracer->ratio_interval.lower, tracer->ratio_interval.upper,
-                     count_text(tracer->rounds, "round"),
+  return fmt::format("{:.3f} [{:.3f}, {:.3f}], {}{}", tracer->ratio, tracer->ratio_interval.lower,
+                     tracer->ratio_interval.upper, count_text(tracer->rounds, "round"),
                      fastest_of_text(scene.runs.rounds));
 }
 
@@ -320,7 +321,8 @@ std::string revision_line(const ResultsDocument& document, Role role) {
   if (revision == nullptr) return "";
   const Worktree& tree = revision->worktree;
   std::string line = fmt::format("{} {}", tree.short_sha, tree.subject);
-  if (!tree.revision.empty() && tree.revision != tree.sha) line += fmt::format(" ({})", tree.revision);
+  if (!tree.revision.empty() && tree.revision != tree.sha)
+    line += fmt::format(" ({})", tree.revision);
   if (tree.dirty) line += " [dirty]";
   return line;
 }
@@ -330,8 +332,8 @@ std::string policy_line(const GatePolicy& policy, DocumentKind kind) {
   std::string line;
   if (is_compare(kind)) {
     // The equivalence sequence's level, the one UNCHANGED rows name (measure/change.h).
-    const DecidingInterval equivalence{{}, 1.0 - 2.0 * d.significance,
-                                       ChangeIntervalKind::confidence_sequence};
+    const DecidingInterval equivalence{
+        {}, 1.0 - 2.0 * d.significance, ChangeIntervalKind::confidence_sequence};
     // No verdict words here: a report of a passing compare must not contain them (CI templates
     // search a comment for REGRESSED).
     line = fmt::format(

@@ -75,8 +75,7 @@ std::vector<std::string> report_format_names();
 std::string report_format_list();
 std::string_view to_string(ReportFormat format);
 std::unique_ptr<Reporter> make_reporter(ReportFormat format, const ReportOptions& options = {});
-std::unique_ptr<Reporter> make_reporter(std::string_view format,
-                                        const ReportOptions& options = {});
+std::unique_ptr<Reporter> make_reporter(std::string_view format, const ReportOptions& options = {});
 
 struct ReportTarget {
   ReportFormat format = ReportFormat::console;

@@ -68,7 +68,7 @@ struct MeasurementSettings {
   std::optional<std::string> metric;  // --timing's word, the adapter's metric, or a counted clock
   std::optional<bool> metric_by_threads;  // the adapter's "auto" chose the metric
   std::optional<TimingSource> timing_source;
-  std::optional<std::string> tracer_clock;    // absent before the clocks were matched (issue 18)
+  std::optional<std::string> tracer_clock;  // absent before the clocks were matched (issue 18)
   std::optional<std::string> baseline_clock;
   // The unit of every run's measure and of the medians (the timing mode's): "seconds",
   // "cycles". Absent before 2026-11-28; measure_unit() then infers it.

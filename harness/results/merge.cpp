@@ -76,17 +76,19 @@ ShardRecord shard_record(const MergeInput& input) {
     record.spec = parse_shard(input.document.shard);
     return record;
   }
-  throw UsageError(fmt::format("merge: {} records no shard (settings.shard): merge combines the "
-                               "documents of jobs run with --shard K/N",
-                               input.origin));
+  throw UsageError(
+      fmt::format("merge: {} records no shard (settings.shard): merge combines the "
+                  "documents of jobs run with --shard K/N",
+                  input.origin));
 }
 
 void same(const Shard& a, const Shard& b, const std::string& field, const std::string& value_a,
           const std::string& value_b) {
   if (value_a == value_b) return;
-  throw UsageError(fmt::format("merge: {} and {} differ in {} ('{}' vs '{}'): the shards of one "
-                               "matrix must measure the same thing the same way",
-                               origin(a), origin(b), field, value_a, value_b));
+  throw UsageError(
+      fmt::format("merge: {} and {} differ in {} ('{}' vs '{}'): the shards of one "
+                  "matrix must measure the same thing the same way",
+                  origin(a), origin(b), field, value_a, value_b));
 }
 
 void check_header(const Shard& a, const Shard& b) {
@@ -148,9 +150,10 @@ void check_shard_records(const Shard& a, const Shard& b) {
        fmt::format("{}", fmt::join(b.record.suite_scenes, ",")));
   same(a, b, "settings.shard.cost_basis", a.record.cost_basis, b.record.cost_basis);
   if (a.record.spec.index == b.record.spec.index) {
-    throw UsageError(fmt::format("merge: {} and {} are both shard {} (settings.shard.index): "
-                                 "give each shard's document once",
-                                 origin(a), origin(b), to_string(a.record.spec)));
+    throw UsageError(
+        fmt::format("merge: {} and {} are both shard {} (settings.shard.index): "
+                    "give each shard's document once",
+                    origin(a), origin(b), to_string(a.record.spec)));
   }
 }
 
@@ -182,14 +185,16 @@ std::vector<SceneResult> collect_scenes(const std::vector<Shard>& shards) {
       const std::string& id = scene.entry.id;
       const auto at = std::find(suite.begin(), suite.end(), id);
       if (!suite.empty() && at == suite.end()) {
-        throw UsageError(fmt::format("merge: {} has scene '{}', which is not in the selection "
-                                     "its shard was split from (settings.shard.suite_scenes)",
-                                     origin(shard), id));
+        throw UsageError(
+            fmt::format("merge: {} has scene '{}', which is not in the selection "
+                        "its shard was split from (settings.shard.suite_scenes)",
+                        origin(shard), id));
       }
       if (const auto [it, fresh] = owner.emplace(id, &shard); !fresh) {
-        throw UsageError(fmt::format("merge: scene '{}' is in both {} and {}: the shards "
-                                     "overlap; were they split from different selections?",
-                                     id, origin(*it->second), origin(shard)));
+        throw UsageError(
+            fmt::format("merge: scene '{}' is in both {} and {}: the shards "
+                        "overlap; were they split from different selections?",
+                        id, origin(*it->second), origin(shard)));
       }
       positioned.emplace_back(suite.empty() ? positioned.size() : std::size_t(at - suite.begin()),
                               &scene);
@@ -227,8 +232,14 @@ std::vector<std::string> unmeasured_scenes(const std::vector<Shard>& shards,
 
 MergedShard shard_summary(const Shard& shard) {
   const ResultsDocument& d = doc(shard);
-  MergedShard summary{shard.record.spec, origin(shard), d.raygate_version, d.started_at,
-                      d.finished_at,     d.complete,    {},                 d.machine};
+  MergedShard summary{shard.record.spec,
+                      origin(shard),
+                      d.raygate_version,
+                      d.started_at,
+                      d.finished_at,
+                      d.complete,
+                      {},
+                      d.machine};
   for (const SceneResult& scene : d.scenes) summary.scenes.push_back(scene.entry.id);
   return summary;
 }
@@ -263,18 +274,18 @@ MergeResult merge_shards(const std::vector<MergeInput>& inputs, const MergeOptio
   if (!missing.empty()) {
     const std::string which = fmt::format("{}", fmt::join(missing, ", "));
     if (!options.allow_partial) {
-      throw UsageError(fmt::format("merge: shard {} missing: give every shard's document, or "
-                                   "--allow-partial to merge what there is (the result is "
-                                   "incomplete and the gate exits 3)",
-                                   which));
+      throw UsageError(
+          fmt::format("merge: shard {} missing: give every shard's document, or "
+                      "--allow-partial to merge what there is (the result is "
+                      "incomplete and the gate exits 3)",
+                      which));
     }
     result.warnings.push_back("shard " + which + " missing: the merged document is incomplete");
   }
   for (const Shard& shard : shards) {
     if (doc(shard).raygate_version != doc(shards.front()).raygate_version) {
-      result.warnings.push_back(fmt::format("{} was written by raygate {}, {} by {}",
-                                            origin(shard), doc(shard).raygate_version,
-                                            origin(shards.front()),
+      result.warnings.push_back(fmt::format("{} was written by raygate {}, {} by {}", origin(shard),
+                                            doc(shard).raygate_version, origin(shards.front()),
                                             doc(shards.front()).raygate_version));
     }
   }
@@ -283,8 +294,8 @@ MergeResult merge_shards(const std::vector<MergeInput>& inputs, const MergeOptio
   const std::vector<std::string> unmeasured = unmeasured_scenes(shards, result.document.scenes);
   if (!unmeasured.empty()) {
     result.document.complete = false;
-    result.warnings.push_back(fmt::format("not measured by any shard given: {}",
-                                          fmt::join(unmeasured, ", ")));
+    result.warnings.push_back(
+        fmt::format("not measured by any shard given: {}", fmt::join(unmeasured, ", ")));
   }
   if (!missing.empty()) result.document.complete = false;
   result.document.scores = suite_scores(result.document.scenes, scored_roles(result.document));

@@ -30,7 +30,7 @@ inline constexpr int kResultsSchemaVersion = 1;
 
 // One measured revision of the tracer and how it was built.
 struct RevisionRecord {
-  Role role = Role::tracer;  // tracer for run; base and head for compare
+  Role role = Role::tracer;   // tracer for run; base and head for compare
   std::string repository;     // as the user named it: a path or a URL
   std::string repository_id;  // checkout/repository_identity.h; "" when not known
   Worktree worktree;
@@ -61,7 +61,7 @@ struct SceneResult {
   SceneStatus status = SceneStatus::measured;
   SceneRuns runs;
   std::map<std::string, RatioSummary> ratios;  // by role_name(), each against the baseline
-  std::optional<ChangeSummary> change;        // compare: head against base
+  std::optional<ChangeSummary> change;         // compare: head against base
   // compare: the change's verdict under the policy it was measured with (with `change` only).
   ChangeVerdict change_verdict = ChangeVerdict::inconclusive;
   std::vector<ImageCheck> images;

@@ -31,7 +31,7 @@ constexpr double kMaxSeconds = 7.0 * 24 * 3600;
 constexpr double kMaxMeasure = 1e18;
 constexpr std::int64_t kMaxCount = std::int64_t{1} << 40;
 constexpr std::int64_t kMaxSide = 1 << 20;  // pixels: past any image a tracer writes
-constexpr double kMaxLog = 50.0;             // |ln ratio|: a factor of 5e21
+constexpr double kMaxLog = 50.0;            // |ln ratio|: a factor of 5e21
 
 // Typed access over core/json_field.h's path-carrying reader, with the ranges a measured
 // document's numbers must be in.
@@ -65,8 +65,8 @@ double number(const JsonField& field, double lowest, double highest) {
   const double v = field.as_number();
   if (!std::isfinite(v)) field.fail("expected a finite number");
   if (v < lowest || v > highest) {
-    field.fail(fmt::format("{} is out of range (from {} to {})", field.value().dump(), lowest,
-                           highest));
+    field.fail(
+        fmt::format("{} is out of range (from {} to {})", field.value().dump(), lowest, highest));
   }
   return v;
 }
@@ -284,7 +284,8 @@ NoisyVerdict check_noisy(const JsonField& mc) {
   integer(mc.member("tests"), 0, kMaxCount);
   const std::int64_t biased = integer(mc.member("biased_count"), 0, kMaxCount);
   const JsonField tiles = array(mc.member("biased"));
-  if (static_cast<std::int64_t>(tiles.value().size()) > biased) tiles.fail("more tiles than biased_count");
+  if (static_cast<std::int64_t>(tiles.value().size()) > biased)
+    tiles.fail("more tiles than biased_count");
   for (const JsonField& tile : tiles.elements()) check_biased_tile(tile);
   std::vector<RelativeChange> intervals{check_relative_change(mc.member("image"))};
   const JsonField channels = array(mc.member("channels"));
@@ -300,8 +301,10 @@ NoisyVerdict check_noisy(const JsonField& mc) {
   if (*verdict == NoisyVerdict::pass) {
     for (const RelativeChange& c : intervals) {
       if (c.low < -tolerance || c.high > tolerance) {
-        verdict_field.fail(fmt::format("\"pass\" with an interval [{}, {}] beyond the tolerance "
-                                       "±{}", c.low, c.high, tolerance));
+        verdict_field.fail(
+            fmt::format("\"pass\" with an interval [{}, {}] beyond the tolerance "
+                        "±{}",
+                        c.low, c.high, tolerance));
       }
     }
     if (biased > 0) verdict_field.fail("\"pass\" with biased tiles");
@@ -416,8 +419,8 @@ void check_revision(const JsonField& r) {
   check_strings(r, {"repository"});
   if (const auto id = find(r, "repository_id")) id->as_string();
   const JsonField w = object(r.member("worktree"));
-  check_strings(w, {"path", "revision", "ref_name", "sha", "short_sha", "subject", "author",
-                    "commit_time"});
+  check_strings(
+      w, {"path", "revision", "ref_name", "sha", "short_sha", "subject", "author", "commit_time"});
   w.member("dirty").as_bool();
   check_strings(object(r.member("adapter")), {"name", "hash", "file"});
   check_build(r.member("build"));
@@ -485,7 +488,8 @@ void check_results_json(const nlohmann::json& document, const TimingModeList& mo
   check_machine(d.member("machine"));
   // null: what a document built in memory without settings (tests, tools) wrote before the
   // settings were typed; read as none. The fields are checked as they are read (settings_json).
-  if (const JsonField settings = d.member("settings"); !settings.value().is_null()) object(settings);
+  if (const JsonField settings = d.member("settings"); !settings.value().is_null())
+    object(settings);
   if (const auto shard = find(d, "shard")) shard->as_string();
   const JsonField baseline = object(d.member("baseline"));
   check_strings(baseline, {"version", "source_sha256"});

@@ -29,8 +29,8 @@ using json_record::read_strings;
 // A word of the document's vocabulary read as its enum (core/domain.h): results_check.cpp has
 // already refused unknown words, so this names the field only for a document built in memory.
 template <typename Enum>
-Enum word_at(const json& object, const char* key,
-             std::optional<Enum> (*parse)(std::string_view), const char* field) {
+Enum word_at(const json& object, const char* key, std::optional<Enum> (*parse)(std::string_view),
+             const char* field) {
   const std::string word = object.at(key).get<std::string>();
   const std::optional<Enum> value = parse(word);
   if (!value) throw std::invalid_argument(fmt::format("{}: unknown word \"{}\"", field, word));
@@ -48,21 +48,27 @@ json path_list(const std::vector<std::filesystem::path>& paths) {
 }  // namespace
 
 void to_json(json& j, const Worktree& w) {
-  j = json{{"path", w.path.string()},       {"revision", w.revision}, {"ref_name", w.ref_name},
-           {"sha", w.sha},                  {"short_sha", w.short_sha}, {"subject", w.subject},
-           {"author", w.author},            {"commit_time", w.commit_time}, {"dirty", w.dirty}};
+  j = json{{"path", w.path.string()},  {"revision", w.revision},
+           {"ref_name", w.ref_name},   {"sha", w.sha},
+           {"short_sha", w.short_sha}, {"subject", w.subject},
+           {"author", w.author},       {"commit_time", w.commit_time},
+           {"dirty", w.dirty}};
 }
 void from_json(const json& j, Worktree& w) {
   w.path = j.at("path").get<std::string>();
-  read_strings(j, {{"revision", &w.revision}, {"ref_name", &w.ref_name}, {"sha", &w.sha},
-                   {"short_sha", &w.short_sha}, {"subject", &w.subject}, {"author", &w.author},
+  read_strings(j, {{"revision", &w.revision},
+                   {"ref_name", &w.ref_name},
+                   {"sha", &w.sha},
+                   {"short_sha", &w.short_sha},
+                   {"subject", &w.subject},
+                   {"author", &w.author},
                    {"commit_time", &w.commit_time}});
   w.dirty = j.at("dirty").get<bool>();
 }
 
 void to_json(json& j, const SuiteScene& s) {
-  j = json{{"id", s.id}, {"scene", s.scene}, {"size", s.size}, {"width", s.width},
-           {"height", s.height}};
+  j = json{
+      {"id", s.id}, {"scene", s.scene}, {"size", s.size}, {"width", s.width}, {"height", s.height}};
 }
 void from_json(const json& j, SuiteScene& s) {
   s.id = j.at("id").get<std::string>();
@@ -158,11 +164,12 @@ void from_json(const json& j, SceneResult& s) {
 }
 
 void to_json(json& j, const RevisionRecord& r) {
-  j = json{{"role", word(r.role)},
-           {"repository", r.repository},
-           {"worktree", r.worktree},
-           {"adapter", {{"name", r.adapter_name}, {"hash", r.adapter_hash}, {"file", r.adapter_file}}},
-           {"build", build_record_to_json(r.build)}};
+  j = json{
+      {"role", word(r.role)},
+      {"repository", r.repository},
+      {"worktree", r.worktree},
+      {"adapter", {{"name", r.adapter_name}, {"hash", r.adapter_hash}, {"file", r.adapter_file}}},
+      {"build", build_record_to_json(r.build)}};
   // Written only when known, so a document from before it was recorded reads back and hashes
   // the same (the store's duplicate check compares canonical JSON).
   if (!r.repository_id.empty()) j["repository_id"] = r.repository_id;
@@ -184,12 +191,18 @@ void from_json(const json& j, RevisionRecord& r) {
 }
 
 void to_json(json& j, const BaselineRecord& b) {
-  j = json{{"version", b.version}, {"source_sha256", b.source_sha256}, {"accel", b.accel},
-           {"sampling", b.sampling}, {"timing", b.timing}};
+  j = json{{"version", b.version},
+           {"source_sha256", b.source_sha256},
+           {"accel", b.accel},
+           {"sampling", b.sampling},
+           {"timing", b.timing}};
 }
 void from_json(const json& j, BaselineRecord& b) {
-  read_strings(j, {{"version", &b.version}, {"source_sha256", &b.source_sha256},
-                   {"accel", &b.accel}, {"sampling", &b.sampling}, {"timing", &b.timing}});
+  read_strings(j, {{"version", &b.version},
+                   {"source_sha256", &b.source_sha256},
+                   {"accel", &b.accel},
+                   {"sampling", &b.sampling},
+                   {"timing", &b.timing}});
 }
 
 const RatioSummary* SceneResult::ratio(Role role) const {
@@ -206,19 +219,19 @@ const RevisionRecord* ResultsDocument::revision(Role role) const {
 
 nlohmann::json to_json(const ResultsDocument& d) {
   json j{{"schema_version", d.schema_version},
-              {"kind", word(d.kind)},
-              {"raygate_version", d.raygate_version},
-              {"started_at", d.started_at},
-              {"finished_at", d.finished_at},
-              {"complete", d.complete},
-              {"machine", d.machine},
-              {"baseline", d.baseline},
-              {"suite", d.suite},
-              {"shard", d.shard},
-              {"settings", to_json(d.settings)},
-              {"revisions", d.revisions},
-              {"scenes", d.scenes},
-              {"scores", d.scores}};
+         {"kind", word(d.kind)},
+         {"raygate_version", d.raygate_version},
+         {"started_at", d.started_at},
+         {"finished_at", d.finished_at},
+         {"complete", d.complete},
+         {"machine", d.machine},
+         {"baseline", d.baseline},
+         {"suite", d.suite},
+         {"shard", d.shard},
+         {"settings", to_json(d.settings)},
+         {"revisions", d.revisions},
+         {"scenes", d.scenes},
+         {"scores", d.scores}};
   if (d.scaling) j["scaling"] = to_json(*d.scaling);
   return j;
 }
@@ -245,9 +258,10 @@ ResultsDocument results_from_json(const nlohmann::json& j, const std::string& or
   try {
     const int version = schema_version_of(j, origin);
     if (version > kResultsSchemaVersion) {
-      throw UsageError(fmt::format("{}: results schema_version {} is newer than this raygate "
-                                   "reads ({}); upgrade raygate",
-                                   origin, version, kResultsSchemaVersion));
+      throw UsageError(
+          fmt::format("{}: results schema_version {} is newer than this raygate "
+                      "reads ({}); upgrade raygate",
+                      origin, version, kResultsSchemaVersion));
     }
     // Every field checked before any is taken, so what follows cannot meet a wrong type.
     check_results_json(j);

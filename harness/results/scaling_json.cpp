@@ -15,12 +15,12 @@ using json = nlohmann::json;
 using namespace typed_fields;
 
 // Each quality's name in results documents and reports: one table, read both ways.
-constexpr EnumWords<FitQuality, 5> kQualityNames{{
-    {FitQuality::power_law, "power-law"},
-    {FitQuality::startup_dominated, "startup-dominated"},
-    {FitQuality::curved, "curved"},
-    {FitQuality::scattered, "scattered"},
-    {FitQuality::too_few_points, "too-few-points"}}};
+constexpr EnumWords<FitQuality, 5> kQualityNames{
+    {{FitQuality::power_law, "power-law"},
+     {FitQuality::startup_dominated, "startup-dominated"},
+     {FitQuality::curved, "curved"},
+     {FitQuality::scattered, "scattered"},
+     {FitQuality::too_few_points, "too-few-points"}}};
 
 // An optional part: read when the key is there (absent rather than null, as written).
 template <typename Read>
@@ -53,7 +53,8 @@ FitQuality quality_from(const JsonField& field) {
   const std::string word = field.as_string();
   const std::optional<FitQuality> quality = parse_fit_quality(word);
   if (!quality) {
-    field.fail("unknown fit quality \"" + word + "\" (power-law, startup-dominated, curved, "
+    field.fail("unknown fit quality \"" + word +
+               "\" (power-law, startup-dominated, curved, "
                "scattered or too-few-points)");
   }
   return *quality;
@@ -75,10 +76,12 @@ PowerFit fit_from(const JsonField& j) {
 }
 
 json point_json(const ScalingPoint& p) {
-  json j{{"scene", p.scene_id},     {"size", p.size},     {"primitives", p.primitives},
-         {"baseline_seconds", p.baseline_seconds}, {"seconds", p.seconds}, {"ratios", p.ratios}};
+  json j{{"scene", p.scene_id},        {"size", p.size},
+         {"primitives", p.primitives}, {"baseline_seconds", p.baseline_seconds},
+         {"seconds", p.seconds},       {"ratios", p.ratios}};
   if (p.change) j["change"] = *p.change;
-  if (p.change_interval) j["change_interval"] = {p.change_interval->lower, p.change_interval->upper};
+  if (p.change_interval)
+    j["change_interval"] = {p.change_interval->lower, p.change_interval->upper};
   return j;
 }
 
@@ -144,8 +147,11 @@ json family_json(const FamilyScaling& f) {
   for (const auto& [role, fits] : f.roles) {
     roles[role] = json{{"time", fit_json(fits.time)}, {"ratio", fit_json(fits.ratio)}};
   }
-  json j{{"family", f.family},  {"series_id", f.series_id}, {"points", points},
-         {"baseline", fit_json(f.baseline)}, {"roles", roles}};
+  json j{{"family", f.family},
+         {"series_id", f.series_id},
+         {"points", points},
+         {"baseline", fit_json(f.baseline)},
+         {"roles", roles}};
   if (f.change) j["change"] = change_json(*f.change);
   return j;
 }

@@ -34,9 +34,9 @@ std::optional<FitQuality> parse_fit_quality(std::string_view text);
 // t ≈ c·n^k fitted in log-log (scaling/power_fit.h fit_power_law).
 struct PowerFit {
   int points = 0;
-  double exponent = 0.0;         // k, the slope in log-log
-  Interval exponent_interval;    // 95%, Student's t with points - 2 degrees of freedom
-  double log_prefactor = 0.0;    // ln c, the intercept
+  double exponent = 0.0;       // k, the slope in log-log
+  Interval exponent_interval;  // 95%, Student's t with points - 2 degrees of freedom
+  double log_prefactor = 0.0;  // ln c, the intercept
   double r_squared = 0.0;
   FitQuality quality = FitQuality::too_few_points;
   // Slope over the smallest and over the largest three sizes: how the local exponent moves.
@@ -56,10 +56,10 @@ struct ScalingPoint {
   std::string scene_id;
   int size = 0;
   std::int64_t primitives = 0;
-  double baseline_seconds = 0.0;          // median over rounds
-  std::map<std::string, double> seconds;  // by role (tracer; base, head): median over rounds
-  std::map<std::string, double> ratios;   // by role: the normalized ratio
-  std::optional<double> change;           // compare: head against base, +0.05 = 5% slower
+  double baseline_seconds = 0.0;            // median over rounds
+  std::map<std::string, double> seconds;    // by role (tracer; base, head): median over rounds
+  std::map<std::string, double> ratios;     // by role: the normalized ratio
+  std::optional<double> change;             // compare: head against base, +0.05 = 5% slower
   std::optional<Interval> change_interval;  // compare: its 95% interval (measure/change.h)
 };
 

@@ -138,10 +138,10 @@ ShardRecord shard_from(const JsonField& j) {
 }
 
 json merged_json(const MergedShard& m) {
-  return {{"index", m.spec.index},       {"count", m.spec.count},
-          {"document", m.document},      {"raygate_version", m.raygate_version},
-          {"started_at", m.started_at},  {"finished_at", m.finished_at},
-          {"complete", m.complete},      {"scenes", m.scenes},
+  return {{"index", m.spec.index},      {"count", m.spec.count},
+          {"document", m.document},     {"raygate_version", m.raygate_version},
+          {"started_at", m.started_at}, {"finished_at", m.finished_at},
+          {"complete", m.complete},     {"scenes", m.scenes},
           {"machine", m.machine}};
 }
 

@@ -39,9 +39,10 @@ double median_of(std::vector<double> values) {
 ShardSpec parse_shard(const std::string& text) {
   const std::size_t slash = text.find('/');
   const auto bad = [&](const std::string& why) {
-    return UsageError(fmt::format("--shard '{}': {}; give K/N with 1 <= K <= N, e.g. --shard 2/4 "
-                                  "for the second of four jobs",
-                                  text, why));
+    return UsageError(
+        fmt::format("--shard '{}': {}; give K/N with 1 <= K <= N, e.g. --shard 2/4 "
+                    "for the second of four jobs",
+                    text, why));
   };
   if (slash == std::string::npos) throw bad("not of the form K/N");
   const std::optional<int> index = whole_number(std::string_view(text).substr(0, slash));
@@ -76,9 +77,10 @@ std::vector<int> assign_shards(std::span<const long long> expected_milliseconds,
 std::vector<SuiteScene> shard_scenes(const std::vector<SuiteScene>& scenes, const ShardSpec& spec,
                                      const std::map<std::string, double>& expected_seconds) {
   if (std::cmp_greater(spec.count, scenes.size())) {
-    throw UsageError(fmt::format("--shard {}: the selection has only {} scene(s), so some shards "
-                                 "would measure nothing; use at most {} shards",
-                                 to_string(spec), scenes.size(), scenes.size()));
+    throw UsageError(
+        fmt::format("--shard {}: the selection has only {} scene(s), so some shards "
+                    "would measure nothing; use at most {} shards",
+                    to_string(spec), scenes.size(), scenes.size()));
   }
   std::vector<double> known;
   for (const SuiteScene& scene : scenes) {
@@ -90,8 +92,8 @@ std::vector<SuiteScene> shard_scenes(const std::vector<SuiteScene>& scenes, cons
   std::vector<long long> costs;
   for (const SuiteScene& scene : scenes) {
     const auto found = expected_seconds.find(scene.id);
-    costs.push_back(to_milliseconds(found == expected_seconds.end() ? unknown_seconds
-                                                                    : found->second));
+    costs.push_back(
+        to_milliseconds(found == expected_seconds.end() ? unknown_seconds : found->second));
   }
   const std::vector<int> shard_of = assign_shards(costs, spec.count);
   std::vector<SuiteScene> selected;

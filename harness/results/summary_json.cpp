@@ -196,7 +196,8 @@ BiasedTile biased_from(const json& j) {
 }  // namespace
 
 void to_json(json& j, const NoisyComparison& c) {
-  j = finite_numbers({{"tolerance", c.tolerance}, {"confidence", c.confidence},
+  j = finite_numbers({{"tolerance", c.tolerance},
+                      {"confidence", c.confidence},
                       {"samples_factor", c.samples_factor}});  // null: no number of runs
   j["verdict"] = std::string(to_string(c.verdict));
   j["width"] = c.width;
@@ -213,16 +214,16 @@ void to_json(json& j, const NoisyComparison& c) {
   for (const RelativeChange& channel : c.channels) j["channels"].push_back(change_json(channel));
   j["scales"] = json::array();
   for (const ScaleReport& s : c.scales) {
-    j["scales"].push_back({{"tile_px", s.tile_px}, {"tiles", s.tiles},
-                           {"detectable", finite_number(s.detectable)}});
+    j["scales"].push_back(
+        {{"tile_px", s.tile_px}, {"tiles", s.tiles}, {"detectable", finite_number(s.detectable)}});
   }
   j["runs_needed"] = c.runs_needed;
   j["why_inconclusive"] = c.why_inconclusive;
 }
 
 void from_json(const json& j, NoisyComparison& c) {
-  c.verdict = parse_noisy_verdict(j.at("verdict").get<std::string>())
-                  .value_or(NoisyVerdict::inconclusive);
+  c.verdict =
+      parse_noisy_verdict(j.at("verdict").get<std::string>()).value_or(NoisyVerdict::inconclusive);
   c.tolerance = number_at(j, "tolerance");
   c.confidence = number_at(j, "confidence");
   c.samples_factor = number_at(j, "samples_factor", std::numeric_limits<double>::infinity());
@@ -235,10 +236,11 @@ void from_json(const json& j, NoisyComparison& c) {
   c.biased_count = j.at("biased_count").get<std::size_t>();
   for (const json& t : j.at("biased")) c.biased.push_back(biased_from(t));
   c.image = change_from(j.at("image"));
-  for (std::size_t i = 0; i < c.channels.size(); ++i) c.channels[i] = change_from(j.at("channels").at(i));
+  for (std::size_t i = 0; i < c.channels.size(); ++i)
+    c.channels[i] = change_from(j.at("channels").at(i));
   for (const json& s : j.at("scales")) {
-    c.scales.push_back({s.at("tile_px").get<int>(), s.at("tiles").get<std::size_t>(),
-                        number_at(s, "detectable")});
+    c.scales.push_back(
+        {s.at("tile_px").get<int>(), s.at("tiles").get<std::size_t>(), number_at(s, "detectable")});
   }
   c.runs_needed = j.at("runs_needed").get<int>();
   c.why_inconclusive = j.at("why_inconclusive").get<std::string>();

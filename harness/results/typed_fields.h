@@ -26,8 +26,9 @@ inline std::int64_t whole(const JsonField& field, std::int64_t lowest, std::int6
   const bool fits = v.is_number_unsigned()
                         ? v.get<std::uint64_t>() <= static_cast<std::uint64_t>(highest)
                         : v.get<std::int64_t>() >= lowest && v.get<std::int64_t>() <= highest;
-  if (!fits) field.fail("expected a whole number from " + std::to_string(lowest) + " to " +
-                        std::to_string(highest) + ", found " + describe_json(v));
+  if (!fits)
+    field.fail("expected a whole number from " + std::to_string(lowest) + " to " +
+               std::to_string(highest) + ", found " + describe_json(v));
   return v.get<std::int64_t>();
 }
 

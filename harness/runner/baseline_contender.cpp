@@ -44,9 +44,14 @@ BaselineContender::BaselineContender(std::filesystem::path executable, std::stri
 ProcessSpec BaselineContender::command(const SceneInput& scene,
                                        const std::filesystem::path& run_dir) const {
   ProcessSpec spec;
-  spec.argv = {executable_.string(),       scene.nff.string(), "-o",
-               (run_dir / kImageName).string(), "--accel", accel_,
-               "--sampling",               sampling_};
+  spec.argv = {executable_.string(),
+               scene.nff.string(),
+               "-o",
+               (run_dir / kImageName).string(),
+               "--accel",
+               accel_,
+               "--sampling",
+               sampling_};
   spec.working_directory = run_dir;
   spec.stdout_path = run_dir / "log.txt";
   spec.stderr_path = spec.stdout_path;

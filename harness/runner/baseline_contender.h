@@ -35,8 +35,7 @@ class BaselineContender final : public Contender {
                     std::string accel = "none", const TimingMode* clock = nullptr);
 
   ProcessSpec command(const SceneInput& scene, const std::filesystem::path& run_dir) const override;
-  RunRecord interpret(const SceneInput& scene, const ProcessResult& result,
-                              const ProcessSpec& spec,
+  RunRecord interpret(const SceneInput& scene, const ProcessResult& result, const ProcessSpec& spec,
                       const std::filesystem::path& run_dir) const override;
 
   // Its clock: the tracer's timing mode (DESIGN.md §11); process wall when none was given.

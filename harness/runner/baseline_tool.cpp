@@ -35,9 +35,10 @@ BaselineRender BaselineTool::render(const std::filesystem::path& scene,
   out.stats_path = std::filesystem::path(image).replace_extension(".stats.json");
   out.log = std::filesystem::path(image).replace_extension(".log");
   ProcessSpec spec;
-  spec.argv = {executable_.string(), scene.string(),  "-o",       image.string(),
-               "--accel",            options.accel,   "--sampling", options.sampling,
-               "--stats",            out.stats_path.string()};
+  spec.argv = {executable_.string(),   scene.string(),   "-o",
+               image.string(),         "--accel",        options.accel,
+               "--sampling",           options.sampling, "--stats",
+               out.stats_path.string()};
   spec.stdout_path = out.log;
   spec.stderr_path = out.log;
   spec.timeout = options.timeout;

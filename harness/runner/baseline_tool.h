@@ -12,7 +12,7 @@
 namespace raygate {
 
 struct BaselineOptions {
-  std::string accel = "none";      // none | bbox
+  std::string accel = "none";       // none | bbox
   std::string sampling = "center";  // center | corners
   std::chrono::milliseconds timeout{std::chrono::minutes(30)};
 };

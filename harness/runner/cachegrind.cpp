@@ -41,8 +41,8 @@ std::uint64_t event(const std::map<std::string, std::uint64_t>& totals, const ch
                     const std::string& where) {
   const auto found = totals.find(name);
   if (found == totals.end()) {
-    throw InfraError(fmt::format("{}: no '{}' event (was cachegrind run with --cache-sim=yes?)",
-                                 where, name));
+    throw InfraError(
+        fmt::format("{}: no '{}' event (was cachegrind run with --cache-sim=yes?)", where, name));
   }
   return found->second;
 }

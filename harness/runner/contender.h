@@ -40,7 +40,8 @@ class Contender {
   std::string name() const { return role_name(role_); }
 
   // The process of one run whose files go in `run_dir` (created by the caller, empty).
-  virtual ProcessSpec command(const SceneInput& scene, const std::filesystem::path& run_dir) const = 0;
+  virtual ProcessSpec command(const SceneInput& scene,
+                              const std::filesystem::path& run_dir) const = 0;
 
   // A run whose result is already known, so the scheduler need not start it (the baseline's
   // cached simulated cost); nullopt, the default: run it.

@@ -35,8 +35,7 @@ std::vector<ProcessResult> SystemExecutor::run_together(const std::vector<Proces
 }
 
 double SteadyClock::now_seconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 }  // namespace raygate

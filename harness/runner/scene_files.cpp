@@ -41,7 +41,8 @@ std::filesystem::path prepare_converted_scene(const std::filesystem::path& nff, 
                                               const std::filesystem::path& cache_dir) {
   const std::optional<writers::OutputFormat> output =
       writers::parse_output_format(std::string(to_string(format)));
-  if (!output) throw UsageError("no scene writer for format '" + std::string(to_string(format)) + "'");
+  if (!output)
+    throw UsageError("no scene writer for format '" + std::string(to_string(format)) + "'");
   const std::filesystem::path out =
       cache_dir / (nff.stem().string() + "." + std::string(to_string(format)));
   try {

@@ -10,7 +10,8 @@ namespace raygate {
 
 // Writes <cache_dir>/<id>.nff (atomically) unless an identical file is already there, and
 // returns its path. Generation is deterministic, so the file is a pure function of the entry.
-std::filesystem::path prepare_scene(const SuiteScene& scene, const std::filesystem::path& cache_dir);
+std::filesystem::path prepare_scene(const SuiteScene& scene,
+                                    const std::filesystem::path& cache_dir);
 
 // Converts a prepared NFF file for tracers that read another format (scenes/writers): writes
 // <cache_dir>/<stem>.<pov|obj|pbrt> (with a .mtl beside an .obj) atomically and returns the main

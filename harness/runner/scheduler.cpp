@@ -11,9 +11,7 @@
 
 namespace raygate {
 
-const RunRecord* SceneRuns::first_run(Role role) const {
-  return first_run(role_name(role));
-}
+const RunRecord* SceneRuns::first_run(Role role) const { return first_run(role_name(role)); }
 
 const RunRecord* SceneRuns::first_run(const std::string& role) const {
   if (const auto found = warmup.find(role); found != warmup.end()) {
@@ -26,7 +24,8 @@ const RunRecord* SceneRuns::first_run(const std::string& role) const {
       return &found->second;
     }
   }
-  if (const auto found = partial_round.find(role); found != partial_round.end() && found->second.ok) {
+  if (const auto found = partial_round.find(role);
+      found != partial_round.end() && found->second.ok) {
     return &found->second;
   }
   return nullptr;
@@ -40,9 +39,10 @@ namespace {
 RunRecord require_positive_time(RunRecord run, const std::string& role) {
   if (run.ok && !(run.seconds > 0.0 && std::isfinite(run.seconds))) {
     run.ok = false;
-    run.failure = fmt::format("{} run took {} s by its timing metric; a ratio needs a positive "
-                              "time",
-                              role, run.seconds);
+    run.failure = fmt::format(
+        "{} run took {} s by its timing metric; a ratio needs a positive "
+        "time",
+        role, run.seconds);
   }
   return run;
 }
@@ -73,7 +73,8 @@ class RunLauncher {
 
   // Starts all at once, contender i pinned to cpus[i].
   std::vector<RunRecord> run_together(std::span<const Contender* const> contenders,
-                                      const std::string& label, const std::vector<int>& cpus) const {
+                                      const std::string& label,
+                                      const std::vector<int>& cpus) const {
     std::vector<std::filesystem::path> dirs;
     std::vector<ProcessSpec> specs;
     for (std::size_t i = 0; i < contenders.size(); ++i) {
@@ -100,7 +101,8 @@ class RunLauncher {
 template <typename T>
 std::vector<T> rotated(const std::vector<T>& items, std::size_t by) {
   std::vector<T> out(items);
-  if (!out.empty()) std::rotate(out.begin(), out.begin() + static_cast<long>(by % out.size()), out.end());
+  if (!out.empty())
+    std::rotate(out.begin(), out.begin() + static_cast<long>(by % out.size()), out.end());
   return out;
 }
 
@@ -138,14 +140,16 @@ void check_options(std::span<const Contender* const> contenders, const ScheduleO
   if (options.repeats < 1) throw UsageError("--repeats must be at least 1");
   if (options.kind != ScheduleKind::duet) return;
   if (options.repeats != 1 || options.repeats_from_rounds) {
-    throw UsageError("--repeats applies to the alternate schedule (a duet round runs each "
-                     "contender once)");
+    throw UsageError(
+        "--repeats applies to the alternate schedule (a duet round runs each "
+        "contender once)");
   }
   if (contenders.size() != 2 && contenders.size() != 3) {
-    throw UsageError(fmt::format("the duet schedule runs two programs at once (baseline and "
-                                 "tracer, or base and head after the baseline); this "
-                                 "measurement has {}",
-                                 contenders.size()));
+    throw UsageError(
+        fmt::format("the duet schedule runs two programs at once (baseline and "
+                    "tracer, or base and head after the baseline); this "
+                    "measurement has {}",
+                    contenders.size()));
   }
   if (options.duet_cpus.size() < 2 || options.duet_cpus[0] == options.duet_cpus[1]) {
     throw UsageError("the duet schedule needs two different CPUs");
@@ -178,7 +182,8 @@ SceneRuns run_scene(const SceneInput& scene, std::span<const Contender* const> c
 
   for (int w = 1; first_visit && w <= options.warmup_runs; ++w) {
     for (const Contender* contender : contenders) {
-      RunRecord run = launcher.run(*contender, fmt::format("warmup-{}", w), cpus_of_round(options, 0));
+      RunRecord run =
+          launcher.run(*contender, fmt::format("warmup-{}", w), cpus_of_round(options, 0));
       out.warmup[contender->name()].push_back(run);
       if (!run.ok) return fail(contender->role(), run);
     }
@@ -259,9 +264,8 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
 }
 
 SceneRuns continue_scene(const SceneInput& scene, std::span<const Contender* const> contenders,
-                         const ScheduleOptions& options, const StopRule& stop,
-                         Executor& executor, Clock& clock,
-                         const std::filesystem::path& scene_dir, SceneRuns earlier,
+                         const ScheduleOptions& options, const StopRule& stop, Executor& executor,
+                         Clock& clock, const std::filesystem::path& scene_dir, SceneRuns earlier,
                          const RoundObserver& on_round) {
   if (earlier.failed() || earlier.rounds.empty()) {
     throw std::invalid_argument("continue_scene: only a scene measured without failure continues");

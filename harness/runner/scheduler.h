@@ -39,8 +39,8 @@ using RepeatChooser = std::function<std::size_t(const SceneRuns& so_far)>;
 
 struct ScheduleOptions {
   ScheduleKind kind = ScheduleKind::alternate;
-  int warmup_runs = 1;         // per contender, not counted
-  std::vector<int> pin_cpus;   // alternate: every run pinned to these CPUs; empty: no pinning
+  int warmup_runs = 1;               // per contender, not counted
+  std::vector<int> pin_cpus;         // alternate: every run pinned to these CPUs; empty: no pinning
   std::vector<int> duet_cpus{0, 1};  // duet: one CPU per contender, rotated each round
   // Alternate schedule without pin_cpus: every run of a round pinned to one of these CPUs, the
   // CPU changing every second round (so each CPU sees both orders). The contenders compared
@@ -79,8 +79,8 @@ struct Round {
 
 struct SceneRuns {
   std::map<std::string, std::vector<RunRecord>> warmup;  // by role
-  std::vector<Round> rounds;                              // complete rounds only
-  std::string stop_reason;  // to_string(StopDecision), or "failed"
+  std::vector<Round> rounds;                             // complete rounds only
+  std::string stop_reason;                               // to_string(StopDecision), or "failed"
   double seconds_spent = 0.0;
   // When a run failed: whose, and that run (its failure, outcome and log). Measuring the scene
   // stopped there; the rounds before it are kept.
@@ -98,7 +98,8 @@ struct SceneRuns {
   const RunRecord* first_run(const std::string& role) const;  // by the role's word
 };
 
-using StopRule = std::function<StopDecision(const std::vector<Round>& rounds, double seconds_spent)>;
+using StopRule =
+    std::function<StopDecision(const std::vector<Round>& rounds, double seconds_spent)>;
 // Called after each complete round (progress display).
 using RoundObserver = std::function<void(const std::vector<Round>& rounds, double seconds_spent)>;
 
@@ -117,9 +118,8 @@ SceneRuns measure_scene(const SceneInput& scene, std::span<const Contender* cons
 // however the rounds are spread over time. Throws std::invalid_argument for `earlier` failed or
 // without rounds.
 SceneRuns continue_scene(const SceneInput& scene, std::span<const Contender* const> contenders,
-                         const ScheduleOptions& options, const StopRule& stop,
-                         Executor& executor, Clock& clock,
-                         const std::filesystem::path& scene_dir, SceneRuns earlier,
+                         const ScheduleOptions& options, const StopRule& stop, Executor& executor,
+                         Clock& clock, const std::filesystem::path& scene_dir, SceneRuns earlier,
                          const RoundObserver& on_round = {});
 
 // The rounds as (tracer, baseline) pairs of their `seconds`, of the rounds both ran in.

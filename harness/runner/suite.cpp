@@ -73,11 +73,11 @@ SuiteScene read_scene(const Suite& suite, const json& entry, const std::string& 
 
 Suite load_suite(const std::string& name_or_path, const std::filesystem::path& data_root) {
   Suite suite;
-  const bool is_path = name_or_path.find('/') != std::string::npos ||
-                       name_or_path.ends_with(".json");
+  const bool is_path =
+      name_or_path.find('/') != std::string::npos || name_or_path.ends_with(".json");
   suite.path = is_path ? std::filesystem::path(name_or_path)
-                       : join_component(data_root / "scenes" / "suites", name_or_path,
-                                        "suite name", ".json");
+                       : join_component(data_root / "scenes" / "suites", name_or_path, "suite name",
+                                        ".json");
   if (!is_path && !std::filesystem::exists(suite.path)) {
     throw UsageError("unknown suite '" + name_or_path + "' (no " + suite.path.string() + ")");
   }

@@ -38,8 +38,7 @@ class TracerContender final : public Contender {
   explicit TracerContender(TracerSetup setup);
 
   ProcessSpec command(const SceneInput& scene, const std::filesystem::path& run_dir) const override;
-  RunRecord interpret(const SceneInput& scene, const ProcessResult& result,
-                              const ProcessSpec& spec,
+  RunRecord interpret(const SceneInput& scene, const ProcessResult& result, const ProcessSpec& spec,
                       const std::filesystem::path& run_dir) const override;
 
   const TracerSetup& setup() const { return setup_; }

@@ -164,8 +164,7 @@ void diagnose(PowerFit& fit, std::span<const double> x, std::span<const double> 
   fit.growth_exponent = fit.exponent;
   const double change = fit.large_end_exponent - fit.small_end_exponent;
   const Curvature curvature = fit_curvature(x, y);
-  const bool significant =
-      n >= 4 && std::abs(curvature.t) > student_t_975(static_cast<int>(n) - 3);
+  const bool significant = n >= 4 && std::abs(curvature.t) > student_t_975(static_cast<int>(n) - 3);
   const bool curved = std::abs(change) > kSlopeChangeAlways ||
                       (significant && std::abs(change) > kSlopeChangeSignificant);
   if (curved && change > 0) {
@@ -200,7 +199,8 @@ double student_t_975(int dof) {
   if (dof <= 30) return kTable[static_cast<std::size_t>(dof - 1)];
   // Cornish-Fisher expansion around the normal quantile, accurate to 1e-4 beyond 30 dof.
   const double z = 1.959964, v = dof;
-  return z + (z * z * z + z) / (4 * v) + (5 * std::pow(z, 5) + 16 * z * z * z + 3 * z) / (96 * v * v);
+  return z + (z * z * z + z) / (4 * v) +
+         (5 * std::pow(z, 5) + 16 * z * z * z + 3 * z) / (96 * v * v);
 }
 
 PowerFit fit_power_law(std::span<const SizePoint> points) {
@@ -215,7 +215,8 @@ PowerFit fit_power_law(std::span<const SizePoint> points) {
   std::sort(sorted.begin(), sorted.end(),
             [](const SizePoint& a, const SizePoint& b) { return a.primitives < b.primitives; });
   std::vector<double> x, y;
-  for (const SizePoint& p : sorted) x.push_back(std::log(p.primitives)), y.push_back(std::log(p.value));
+  for (const SizePoint& p : sorted)
+    x.push_back(std::log(p.primitives)), y.push_back(std::log(p.value));
   PowerFit fit;
   fit.points = static_cast<int>(sorted.size());
   if (sorted.size() < 2 || x.front() == x.back()) {

@@ -39,11 +39,13 @@ ScalingPoint point_of(const SceneResult& scene, const PrimitiveCounter& count) {
 PowerFit fit_points(const std::vector<ScalingPoint>& points,
                     const std::function<double(const ScalingPoint&)>& value) {
   std::vector<SizePoint> sizes;
-  for (const ScalingPoint& p : points) sizes.push_back({static_cast<double>(p.primitives), value(p)});
+  for (const ScalingPoint& p : points)
+    sizes.push_back({static_cast<double>(p.primitives), value(p)});
   return fit_power_law(sizes);
 }
 
-std::string family_series(const ResultsDocument& document, const std::vector<const SceneResult*>& scenes) {
+std::string family_series(const ResultsDocument& document,
+                          const std::vector<const SceneResult*>& scenes) {
   const RevisionRecord* revision = document.revision(primary_role(document.kind));
   std::string settings;
   for (const SceneResult* scene : scenes) {
@@ -89,8 +91,10 @@ std::optional<PowerFit> local_change(const ScalingPoint& smaller, const ScalingP
   fit.points = 2;
   fit.exponent = (std::log1p(*larger.change) - std::log1p(*smaller.change)) / step;
   fit.exponent_interval = {
-      (std::log1p(larger.change_interval->lower) - std::log1p(smaller.change_interval->upper)) / step,
-      (std::log1p(larger.change_interval->upper) - std::log1p(smaller.change_interval->lower)) / step};
+      (std::log1p(larger.change_interval->lower) - std::log1p(smaller.change_interval->upper)) /
+          step,
+      (std::log1p(larger.change_interval->upper) - std::log1p(smaller.change_interval->lower)) /
+          step};
   fit.log_prefactor =
       std::log1p(*larger.change) - fit.exponent * std::log(static_cast<double>(larger.primitives));
   fit.r_squared = 1.0;
@@ -131,14 +135,18 @@ FamilyScaling analyse_family(const ResultsDocument& document,
   family.family = scenes.front()->entry.scene;
   family.series_id = family_series(document, scenes);
   for (const SceneResult* scene : scenes) family.points.push_back(point_of(*scene, count));
-  std::sort(family.points.begin(), family.points.end(),
-            [](const ScalingPoint& a, const ScalingPoint& b) { return a.primitives < b.primitives; });
-  family.baseline = fit_points(family.points, [](const ScalingPoint& p) { return p.baseline_seconds; });
+  std::sort(
+      family.points.begin(), family.points.end(),
+      [](const ScalingPoint& a, const ScalingPoint& b) { return a.primitives < b.primitives; });
+  family.baseline =
+      fit_points(family.points, [](const ScalingPoint& p) { return p.baseline_seconds; });
   for (const auto& entry : family.points.front().seconds) {
     const std::string& role = entry.first;
     RoleScaling fits;
-    fits.time = fit_points(family.points, [&](const ScalingPoint& p) { return p.seconds.at(role); });
-    fits.ratio = fit_points(family.points, [&](const ScalingPoint& p) { return p.ratios.at(role); });
+    fits.time =
+        fit_points(family.points, [&](const ScalingPoint& p) { return p.seconds.at(role); });
+    fits.ratio =
+        fit_points(family.points, [&](const ScalingPoint& p) { return p.ratios.at(role); });
     family.roles[role] = fits;
   }
   family.change = exponent_change(family.points, family.family, limits, count);

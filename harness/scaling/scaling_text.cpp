@@ -11,14 +11,15 @@ std::string quality_words(const PowerFit& fit) {
   switch (fit.quality) {
     case FitQuality::power_law: return "power law fits";
     case FitQuality::startup_dominated:
-      return fmt::format("power law does not fit: a fixed cost of {:.3g} s dominates the small "
-                         "sizes (local k {:.2f} -> {:.2f}); beyond it t grows as n^{:.2f}",
-                         fit.fixed_cost, fit.small_end_exponent, fit.large_end_exponent,
-                         fit.growth_exponent);
+      return fmt::format(
+          "power law does not fit: a fixed cost of {:.3g} s dominates the small "
+          "sizes (local k {:.2f} -> {:.2f}); beyond it t grows as n^{:.2f}",
+          fit.fixed_cost, fit.small_end_exponent, fit.large_end_exponent, fit.growth_exponent);
     case FitQuality::curved:
-      return fmt::format("power law does not fit: the local exponent moves from {:.2f} to {:.2f} "
-                         "along the range",
-                         fit.small_end_exponent, fit.large_end_exponent);
+      return fmt::format(
+          "power law does not fit: the local exponent moves from {:.2f} to {:.2f} "
+          "along the range",
+          fit.small_end_exponent, fit.large_end_exponent);
     case FitQuality::scattered: return "power law does not fit: the points scatter around the line";
     case FitQuality::too_few_points: return "too few sizes for an interval";
   }
@@ -33,8 +34,8 @@ std::string projection_words(const std::string& family, const Projection& p) {
 }  // namespace
 
 std::string describe_fit(const PowerFit& fit) {
-  if (fit.points < 3) return fmt::format("k {:.2f} from {} sizes, {}", fit.exponent, fit.points,
-                                         quality_words(fit));
+  if (fit.points < 3)
+    return fmt::format("k {:.2f} from {} sizes, {}", fit.exponent, fit.points, quality_words(fit));
   return fmt::format("k {:.2f} [{:.2f}, {:.2f}], r² {:.3f}, {}", fit.exponent,
                      fit.exponent_interval.lower, fit.exponent_interval.upper, fit.r_squared,
                      quality_words(fit));
@@ -45,11 +46,11 @@ std::string describe_change(const std::string& family, const ExponentChange& cha
   std::string text = fmt::format(
       "exponent head - base {:+.2f} [{:+.2f}, {:+.2f}]{} (limit {:+.2f}): {}", fit.exponent,
       fit.exponent_interval.lower, fit.exponent_interval.upper,
-      change.large_end ? fmt::format(" between the two largest sizes (over all {}: {:+.2f}, "
-                                     "{})",
-                                     change.fit.points, change.fit.exponent,
-                                     to_string(change.fit.quality))
-                       : "",
+      change.large_end
+          ? fmt::format(" between the two largest sizes (over all {}: {:+.2f}, "
+                        "{})",
+                        change.fit.points, change.fit.exponent, to_string(change.fit.quality))
+          : "",
       change.limit, to_string(change.verdict));
   if (change.crossing) {
     text += fmt::format("; {} (speed limit {:.0f}%)", projection_words(family, *change.crossing),

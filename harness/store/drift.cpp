@@ -55,8 +55,8 @@ std::optional<SceneDrift> scene_drift(const HistoryRow& latest,
     // Only the same series (results/series.h): another tracer's ratios or another scene size's
     // seconds are not this series' history.
     if (!usable(row) || row.scene_id != latest.scene_id || row.series_id != latest.series_id ||
-        row.role != latest.role ||
-        !same_machine_and_baseline(row, latest) || measured_order(row) >= measured_order(latest)) {
+        row.role != latest.role || !same_machine_and_baseline(row, latest) ||
+        measured_order(row) >= measured_order(latest)) {
       continue;
     }
     baselines.push_back(*row.baseline_median_seconds);

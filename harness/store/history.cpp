@@ -37,10 +37,9 @@ std::string distinguishing_parts(const SeriesColumn& column,
   std::string out;
   for (const Part part : parts) {
     const std::string mine = part(column.sample);
-    const bool differs = std::any_of(same_scene.begin(), same_scene.end(),
-                                     [&](const SeriesColumn* other) {
-                                       return part(other->sample) != mine;
-                                     });
+    const bool differs =
+        std::any_of(same_scene.begin(), same_scene.end(),
+                    [&](const SeriesColumn* other) { return part(other->sample) != mine; });
     if (differs) out += (out.empty() ? "" : ", ") + mine;
   }
   // Same visible parts (e.g. a repository or adapter outside this table): the id tells them apart.
@@ -54,9 +53,9 @@ void label_columns(std::vector<SeriesColumn>& columns) {
   std::vector<std::string> labels;
   for (const SeriesColumn& column : columns) {
     const auto& same_scene = by_scene[column.scene_id];
-    labels.push_back(same_scene.size() == 1 ? column.scene_id
-                                            : column.scene_id + " [" +
-                                                  distinguishing_parts(column, same_scene) + "]");
+    labels.push_back(same_scene.size() == 1
+                         ? column.scene_id
+                         : column.scene_id + " [" + distinguishing_parts(column, same_scene) + "]");
   }
   for (std::size_t i = 0; i < columns.size(); ++i) columns[i].label = labels[i];
 }

@@ -66,7 +66,7 @@ std::vector<SeriesColumn> series_columns(const std::vector<HistoryRow>& rows);
 struct SceneTrend {
   std::string series_id;
   std::string scene_id;
-  std::string label;  // the column's (SeriesColumn::label)
+  std::string label;           // the column's (SeriesColumn::label)
   std::vector<double> ratios;  // oldest first, the commits that measured the scene
   std::optional<double> latest;
   std::optional<double> change;  // latest / previous - 1: +0.05 is 5% slower than before

@@ -162,8 +162,7 @@ std::string setting_problem(PQconninfoOption* options) {
     if (number && (value.empty() || value.size() > 9 ||
                    !std::all_of(value.begin(), value.end(),
                                 [](unsigned char c) { return std::isdigit(c) != 0; }))) {
-      return fmt::format("{} \"{}\" is not a whole number of seconds", keyword,
-                         clipped(value));
+      return fmt::format("{} \"{}\" is not a whole number of seconds", keyword, clipped(value));
     }
   }
   return {};

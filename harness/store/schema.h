@@ -24,9 +24,9 @@ namespace raygate {
 
 // A field of a record, by the C++ types a stored column may have.
 template <class Record>
-using FieldOf = std::variant<std::string Record::*, bool Record::*, int Record::*,
-                             std::int64_t Record::*, std::optional<std::int64_t> Record::*,
-                             std::optional<double> Record::*>;
+using FieldOf =
+    std::variant<std::string Record::*, bool Record::*, int Record::*, std::int64_t Record::*,
+                 std::optional<std::int64_t> Record::*, std::optional<double> Record::*>;
 
 // The tables, parents first, in the order of their records in Column::field.
 enum class StoreTable { documents, revisions, scene_results };
@@ -70,8 +70,8 @@ std::span<const Column> store_columns();
 struct TableShape {
   StoreTable table = StoreTable::documents;
   std::string name;
-  std::string alias;  // in the queries: d, r, s
-  bool child = false;  // has document_id; documents has the identity id instead
+  std::string alias;                     // in the queries: d, r, s
+  bool child = false;                    // has document_id; documents has the identity id instead
   std::vector<std::string> key;          // with document_id, the primary key of a child
   std::vector<std::string> constraints;  // after the columns, in SQL both dialects read
 };

@@ -59,8 +59,8 @@ std::string measurements_where(const SqlDatabase& db, std::size_t scenes) {
       " AND ({3} = '' OR {4} > 0) AND ({5} = '' OR r.adapter_name = {5})"
       " AND ({6} = '' OR d.suite = {6})"
       " AND ({7} = '' OR substr(s.series_id, 1, length({7})) = {7})",
-      p(1), p(2), db.parameter(3, SqlType::flag), p(4), db.position("r.repository_key", p(4)),
-      p(5), p(6), p(7));
+      p(1), p(2), db.parameter(3, SqlType::flag), p(4), db.position("r.repository_key", p(4)), p(5),
+      p(6), p(7));
   if (scenes == 0) return sql;
   sql += " AND s.scene_id IN (";
   for (std::size_t i = 0; i < scenes; ++i) {
@@ -129,8 +129,7 @@ AddOutcome SqlStore::add(const ResultsDocument& document, const std::string& bra
 
 std::optional<std::int64_t> SqlStore::find_document(const std::string& content_sha256) {
   std::optional<std::int64_t> id;
-  db_->query("SELECT id FROM documents WHERE content_sha256 = " +
-                 db_->parameter(1, SqlType::text),
+  db_->query("SELECT id FROM documents WHERE content_sha256 = " + db_->parameter(1, SqlType::text),
              SqlParams().text(content_sha256), [&id](const SqlRow& row) { id = row.integer(0); });
   return id;
 }
@@ -175,8 +174,8 @@ std::unique_ptr<ResultsStore> open_sqlite_store(const std::filesystem::path& pat
   std::error_code error;
   if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), error);
   if (error) {
-    throw InfraError(fmt::format("results store {}: cannot create its directory: {}",
-                                 path.string(), error.message()));
+    throw InfraError(fmt::format("results store {}: cannot create its directory: {}", path.string(),
+                                 error.message()));
   }
   auto db = std::make_unique<SqliteDb>(
       SqliteDb::open(path, mode == StoreOpen::create_if_missing, busy_timeout));

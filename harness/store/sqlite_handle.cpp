@@ -69,7 +69,9 @@ SqliteDb SqliteDb::open(const std::filesystem::path& path, bool create,
 
 SqliteDb::SqliteDb(SqliteDb&& other) noexcept
     : SqlDatabase(std::move(other)),
-      db_(other.db_), path_(std::move(other.path_)), busy_timeout_(other.busy_timeout_) {
+      db_(other.db_),
+      path_(std::move(other.path_)),
+      busy_timeout_(other.busy_timeout_) {
   other.db_ = nullptr;
 }
 

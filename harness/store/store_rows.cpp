@@ -250,9 +250,9 @@ nlohmann::json parse_stored_document(const std::string& text, std::int64_t id,
   try {
     return nlohmann::json::parse(repaired_utf8(text));
   } catch (const nlohmann::json::parse_error& e) {
-    throw InfraError(fmt::format(
-        "results store {}: document {} is not JSON ({}); the store is damaged", location, id,
-        e.what()));
+    throw InfraError(
+        fmt::format("results store {}: document {} is not JSON ({}); the store is damaged",
+                    location, id, e.what()));
   }
 }
 

@@ -35,7 +35,7 @@ struct DocumentRow {
   std::string machine_cpu_model;
   std::string timing;          // results/series.h timing_identity()
   std::string baseline_accel;  // with baseline_sha256, the baseline's identity
-  std::string document_json;  // canonical: compact, keys sorted
+  std::string document_json;   // canonical: compact, keys sorted
 };
 
 struct RevisionRow {

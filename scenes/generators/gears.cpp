@@ -34,10 +34,10 @@ SpdMaterial gear_material(int ix, int iy, int iz) {
 }
 
 struct GearShape {
-  Vec3 center;        // centre of the top face
-  double phase;       // angular offset φ0 (alternate gears shifted half a tooth)
-  double outer;       // tooth tip radius
-  double inner;       // tooth root radius
+  Vec3 center;   // centre of the top face
+  double phase;  // angular offset φ0 (alternate gears shifted half a tooth)
+  double outer;  // tooth tip radius
+  double inner;  // tooth root radius
   double thickness;
 };
 

@@ -61,8 +61,7 @@ void jack(int level, int size, const Matrix4& m, NffWriter& out) {
   for (double i : {-0.5, 0.5}) {
     for (double j : {-0.5, 0.5}) {
       for (double k : {-0.5, 0.5}) {
-        const Matrix4 child =
-            Matrix4::scale(0.5, 0.5, 0.5) * Matrix4::translate({i, j, k}) * m;
+        const Matrix4 child = Matrix4::scale(0.5, 0.5, 0.5) * Matrix4::translate({i, j, k}) * m;
         jack(level + 1, size, child, out);
       }
     }

@@ -29,8 +29,8 @@ void write_header(int n, double inv, NffWriter& out) {
   // The eye sits just off the middle column of the lattice, looking down through it.
   const double x = ((n >> 1) + 0.5) * inv;
   const double half_cell = 1.0 / (2.0 * n);
-  out.view({x, 1.0, 1.0 - half_cell}, {x, -1.0, -1.0 - half_cell}, {0.2, 1.0, 0.0}, 60.0, 0.0,
-           512, 512);
+  out.view({x, 1.0, 1.0 - half_cell}, {x, -1.0, -1.0 - half_cell}, {0.2, 1.0, 0.0}, 60.0, 0.0, 512,
+           512);
   for (const Vec3& l : {Vec3{2, .5, .5}, Vec3{-1, .5, .5}, Vec3{.5, 2, .5}, Vec3{.5, -1, .5},
                         Vec3{.5, .5, 2}, Vec3{.5, .5, -1}}) {
     out.light(l);

@@ -42,8 +42,7 @@ double gauss(long seed) {
 
 class Mountain {
  public:
-  Mountain(int size, NffWriter& out)
-      : size_(size), cells_(1 << size), out_(out) {
+  Mountain(int size, NffWriter& out) : size_(size), cells_(1 << size), out_(out) {
     // Roughness = √(ratio² − 1) with ratio = 2/exp(ln 2/(D − 1)).
     const double ratio = 2.0 / std::exp(std::log(2.0) / (kFractalDimension - 1.0));
     roughness_ = std::sqrt(ratio * ratio - 1.0);
@@ -97,8 +96,7 @@ void emit_glass_spheres(NffWriter& out) {
   const double radius = 0.17;
   const Vec3 top{0.0, 0.0, radius * std::sqrt(1.5)};
   out.sphere(center + top, radius);
-  const Matrix4 tip =
-      Matrix4::rotate_axis(normalize(Vec3{1.0, 1.0, 0.0}), std::acos(-1.0 / 3.0));
+  const Matrix4 tip = Matrix4::rotate_axis(normalize(Vec3{1.0, 1.0, 0.0}), std::acos(-1.0 / 3.0));
   const Vec3 q = transform_vector(top, tip);
   for (int i = 0; i < 3; ++i) {
     const Matrix4 spin = Matrix4::rotate_z(i * 2.0 * kPi / 3.0);

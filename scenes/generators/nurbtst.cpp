@@ -16,8 +16,8 @@ namespace {
 
 constexpr int kOrder = 4;  // cubic in both directions
 constexpr int kDegree = kOrder - 1;
-constexpr int kRowsU = 6;  // control rows i (the y coordinate), along u
-constexpr int kColsV = 5;  // control columns j (the x coordinate), along v
+constexpr int kRowsU = 6;       // control rows i (the y coordinate), along u
+constexpr int kColsV = 5;       // control columns j (the x coordinate), along v
 constexpr int kResolution = 5;  // forced: 5 steps per control point (§4)
 
 // Open uniform knot vectors (§3.13). The data's weights are ignored by the SPD evaluator.
@@ -126,8 +126,7 @@ SurfacePoint evaluate(float u, float v) {
   const FVec3 p = combine(bu, bu.value, bv, bv.value);
   const FVec3 du = combine(bu, bu.derivative, bv, bv.value);
   const FVec3 dv = combine(bu, bu.value, bv, bv.derivative);
-  const FVec3 n{dv.y * du.z - dv.z * du.y, dv.z * du.x - dv.x * du.z,
-                dv.x * du.y - dv.y * du.x};
+  const FVec3 n{dv.y * du.z - dv.z * du.y, dv.z * du.x - dv.x * du.z, dv.x * du.y - dv.y * du.x};
   const float len = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
   return {{p.x, p.y, p.z}, {n.x / len, n.y / len, n.z / len}};
 }

@@ -38,9 +38,12 @@ RingPoints make_ring_points() {
 // One object: for each ring, its colour, then per element a cylinder to the previous element
 // of the ring and a sphere at the element.
 void emit_object(const RingPoints& points, const Vec3& offset, NffWriter& out) {
-  static constexpr std::array<Vec3, 6> kColors{
-      {{1.0, 0.0, 0.0}, {0.0, 1.0, 0.0}, {0.0, 0.0, 1.0}, {0.0, 1.0, 1.0}, {1.0, 0.0, 1.0},
-       {1.0, 1.0, 0.0}}};
+  static constexpr std::array<Vec3, 6> kColors{{{1.0, 0.0, 0.0},
+                                                {0.0, 1.0, 0.0},
+                                                {0.0, 0.0, 1.0},
+                                                {0.0, 1.0, 1.0},
+                                                {1.0, 0.0, 1.0},
+                                                {1.0, 1.0, 0.0}}};
   for (int e = 0; e < kRingPoints; ++e) {
     int previous = e - 1;
     if (e % 5 == 0) {

@@ -43,8 +43,8 @@ void generate_sample(int /*size: ignored*/, NffWriter& out) {
   const int res = out.tessellation_resolution();
   for (const Torus& t : kTori) {
     out.material(material(t.color));
-    for (const PatchTriangle& tri : tessellate_torus(t.center, normalize(t.normal), kMajorRadius,
-                                                     kMinorRadius, res, res)) {
+    for (const PatchTriangle& tri :
+         tessellate_torus(t.center, normalize(t.normal), kMajorRadius, kMinorRadius, res, res)) {
       out.patch(tri.vertices, tri.normals);
     }
   }
@@ -52,8 +52,8 @@ void generate_sample(int /*size: ignored*/, NffWriter& out) {
   out.material(material(red));
   out.cone({0.0, -2.0, 0.0}, 2.0, {0.0, 2.0, 0.0}, 0.1);
   out.material(material(red));
-  for (const Quad& q : tessellate_disc({0.0, -2.0, 0.0}, {0.0, 1.0, 0.0}, 0.0, 4.0,
-                                       kDiscResolution)) {
+  for (const Quad& q :
+       tessellate_disc({0.0, -2.0, 0.0}, {0.0, 1.0, 0.0}, 0.0, 4.0, kDiscResolution)) {
     out.polygon(q);
   }
 }

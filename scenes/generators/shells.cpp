@@ -31,8 +31,8 @@ void generate_shells(int size, NffWriter& out) {
   const long steps = static_cast<long>(180.0 * std::pow(2.0, size));
   for (long i = -(2 * steps) / 3; i <= steps / 3; ++i) {
     // Evaluated as ((3·6)·π·i)/steps: this order is part of the bytes (§3.9).
-    const double theta = ((3 * 6) * std::numbers::pi * static_cast<double>(i)) /
-                         static_cast<double>(steps);
+    const double theta =
+        ((3 * 6) * std::numbers::pi * static_cast<double>(i)) / static_cast<double>(steps);
     const double rho = kK * std::exp(kA * theta);
     const double z = kAlpha > 0.0 ? kAlpha * theta : kBeta * rho;
     out.sphere({rho * std::sin(theta), rho * std::cos(theta), z}, rho / kGamma);

@@ -24,8 +24,8 @@ std::vector<std::vector<float>> sample_heights(int width, int height) {
     double x = -4.0;
     for (int j = 0; j < width; ++j) {
       const double rho = std::sqrt(x * x + y * y);
-      d[i][j] = static_cast<float>((3.0 * std::cos(2.0 * 3.14159265358 * rho) * std::exp(-rho)) /
-                                   3.0);
+      d[i][j] =
+          static_cast<float>((3.0 * std::cos(2.0 * 3.14159265358 * rho) * std::exp(-rho)) / 3.0);
       x += 8.0 / width;
     }
     y += 8.0 / height;

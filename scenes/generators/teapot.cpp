@@ -14,10 +14,8 @@ using Mat4 = std::array<std::array<double, 4>, 4>;
 using Row4 = std::array<double, 4>;
 
 // The cubic Bezier basis in power form (§3.5).
-constexpr Mat4 kBezier{{{-1.0, 3.0, -3.0, 1.0},
-                        {3.0, -6.0, 3.0, 0.0},
-                        {-3.0, 3.0, 0.0, 0.0},
-                        {1.0, 0.0, 0.0, 0.0}}};
+constexpr Mat4 kBezier{
+    {{-1.0, 3.0, -3.0, 1.0}, {3.0, -6.0, 3.0, 0.0}, {-3.0, 3.0, 0.0, 0.0}, {1.0, 0.0, 0.0, 0.0}}};
 
 // a·b with the terms added left to right, as the spec's bit-exact order asks (§2.3).
 double dot4(const Row4& a, const Row4& b) {

@@ -79,11 +79,10 @@ void NffWriter::sphere(const Vec3& center, double radius) {
   out_ << ' ' << format_g(radius) << '\n';
 }
 
-void NffWriter::cone(const Vec3& base, double base_radius, const Vec3& apex,
-                     double apex_radius) {
+void NffWriter::cone(const Vec3& base, double base_radius, const Vec3& apex, double apex_radius) {
   if (mode_ == OutputMode::tessellated) {
-    for (const PatchTriangle& t : tessellate_cone(base, base_radius, apex, apex_radius,
-                                                  resolution_)) {
+    for (const PatchTriangle& t :
+         tessellate_cone(base, base_radius, apex, apex_radius, resolution_)) {
       patch(t.vertices, t.normals);
     }
     return;

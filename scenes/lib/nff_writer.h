@@ -53,8 +53,8 @@ class NffWriter {
   int tessellation_resolution() const { return resolution_; }
 
   void background(const Vec3& color);
-  void view(const Vec3& from, const Vec3& at, const Vec3& up, double angle_degrees,
-            double hither, int width, int height);
+  void view(const Vec3& from, const Vec3& at, const Vec3& up, double angle_degrees, double hither,
+            int width, int height);
   void light(const Vec3& position);
   void material(const SpdMaterial& material);
 

@@ -107,18 +107,18 @@ std::vector<PatchTriangle> tessellate_sphere(const Vec3& center, double radius, 
     turn_grid(grid, face);
     for (int u = 0; u < res; ++u) {
       for (int v = 0; v < res; ++v) {
-        out.push_back(sphere_triangle(center, radius, grid[u][v], grid[u][v + 1],
-                                      grid[u + 1][v + 1]));
-        out.push_back(sphere_triangle(center, radius, grid[u + 1][v + 1], grid[u + 1][v],
-                                      grid[u][v]));
+        out.push_back(
+            sphere_triangle(center, radius, grid[u][v], grid[u][v + 1], grid[u + 1][v + 1]));
+        out.push_back(
+            sphere_triangle(center, radius, grid[u + 1][v + 1], grid[u + 1][v], grid[u][v]));
       }
     }
   }
   return out;
 }
 
-std::vector<PatchTriangle> tessellate_cone(const Vec3& base, double base_radius,
-                                           const Vec3& apex, double apex_radius, int res) {
+std::vector<PatchTriangle> tessellate_cone(const Vec3& base, double base_radius, const Vec3& apex,
+                                           double apex_radius, int res) {
   require_resolution(res, "tessellate_cone");
   const Vec3 axis = apex - base;
   const Vec3 k = normalize(axis);
@@ -177,8 +177,7 @@ std::vector<PatchTriangle> tessellate_torus(const Vec3& center, const Vec3& unit
     for (int j = 0; j <= steps_v; ++j) {
       const double theta = thetas[j];
       points[i][j] = transform_point(torus_point(major_radius, minor_radius, theta, phi), frame);
-      normals[i][j] =
-          transform_vector(torus_normal(major_radius, minor_radius, theta, phi), frame);
+      normals[i][j] = transform_vector(torus_normal(major_radius, minor_radius, theta, phi), frame);
     }
   }
   std::vector<PatchTriangle> out;
@@ -196,8 +195,8 @@ std::vector<PatchTriangle> tessellate_torus(const Vec3& center, const Vec3& unit
   return out;
 }
 
-std::vector<Quad> tessellate_disc(const Vec3& center, const Vec3& unit_normal,
-                                  double inner_radius, double outer_radius, int res) {
+std::vector<Quad> tessellate_disc(const Vec3& center, const Vec3& unit_normal, double inner_radius,
+                                  double outer_radius, int res) {
   require_resolution(res, "tessellate_disc");
   const Matrix4 frame = canonical_frame(center, unit_normal);
   const int steps = 4 * res;

@@ -23,8 +23,8 @@ using Quad = std::array<Vec3, 4>;
 // 12·res² triangles on a cube-projected grid.
 std::vector<PatchTriangle> tessellate_sphere(const Vec3& center, double radius, int res);
 // 8·res triangles (4·res angular steps).
-std::vector<PatchTriangle> tessellate_cone(const Vec3& base, double base_radius,
-                                           const Vec3& apex, double apex_radius, int res);
+std::vector<PatchTriangle> tessellate_cone(const Vec3& base, double base_radius, const Vec3& apex,
+                                           double apex_radius, int res);
 
 // The frame of tori and discs (§4): the rotation taking +z to `unit_normal` (about
 // (−n_y, n_x, 0) by acos(n_z), or about +x when |n_z| = 1), then a translation to `center`.
@@ -37,7 +37,7 @@ std::vector<PatchTriangle> tessellate_torus(const Vec3& center, const Vec3& unit
 
 // 4·res quads, one ring from inner_radius to outer_radius. With inner_radius 0 the two inner
 // corners coincide, so the writer's clean-up turns each quad into a triangle (§1.5).
-std::vector<Quad> tessellate_disc(const Vec3& center, const Vec3& unit_normal,
-                                  double inner_radius, double outer_radius, int res);
+std::vector<Quad> tessellate_disc(const Vec3& center, const Vec3& unit_normal, double inner_radius,
+                                  double outer_radius, int res);
 
 }  // namespace raygate::scenes

@@ -41,9 +41,9 @@ void add_triangles(Mesh& mesh) {
 
 CameraBasis camera_basis(const nff::View& view) {
   require(view.width > 0 && view.height > 0, "resolution must be positive");
-  require(
-      std::isfinite(view.angle_degrees) && view.angle_degrees > 0.0 && view.angle_degrees < 180.0,
-      "angle must be between 0 and 180 degrees");
+  require(std::isfinite(view.angle_degrees) && view.angle_degrees > 0.0 &&
+              view.angle_degrees < 180.0,
+          "angle must be between 0 and 180 degrees");
   const Vec3 to_target = view.at - view.from;
   const double distance = length(to_target);
   require(std::isfinite(distance) && distance > 0.0, "'from' and 'at' must differ");

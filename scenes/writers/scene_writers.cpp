@@ -27,12 +27,9 @@ std::optional<OutputFormat> parse_output_format(std::string_view name) {
 
 std::string_view format_name(OutputFormat format) {
   switch (format) {
-    case OutputFormat::pov:
-      return "pov";
-    case OutputFormat::obj:
-      return "obj";
-    case OutputFormat::pbrt:
-      return "pbrt";
+    case OutputFormat::pov: return "pov";
+    case OutputFormat::obj: return "obj";
+    case OutputFormat::pbrt: return "pbrt";
   }
   return "?";
 }
@@ -45,9 +42,7 @@ std::vector<std::filesystem::path> write_scene_files(const nff::Scene& scene, Ou
   std::vector<std::filesystem::path> written{out};
   std::ostringstream mtl;
   switch (format) {
-    case OutputFormat::pov:
-      write_pov(scene, main);
-      break;
+    case OutputFormat::pov: write_pov(scene, main); break;
     case OutputFormat::obj: {
       const std::filesystem::path mtl_path = with_extension(out, ".mtl");
       if (mtl_path == out)

@@ -54,10 +54,34 @@ void on_terminate() {
 }
 
 // Where input goes wrong in files people write and strangers send.
-constexpr std::array<std::string_view, 28> kTokens = {
-    "1e400", "-1e400", "-1", "0", "1e-400", "0.5", "NaN", "Infinity", "null", "true", "false",
-    "\"\"", "\"x\"", "{", "}", "[", "]", ",", ":", "\"", "\\u0000", "18446744073709551616",
-    "-9223372036854775809", "99999999999", "\\ud800", "{}", "[]", "\n"};
+constexpr std::array<std::string_view, 28> kTokens = {"1e400",
+                                                      "-1e400",
+                                                      "-1",
+                                                      "0",
+                                                      "1e-400",
+                                                      "0.5",
+                                                      "NaN",
+                                                      "Infinity",
+                                                      "null",
+                                                      "true",
+                                                      "false",
+                                                      "\"\"",
+                                                      "\"x\"",
+                                                      "{",
+                                                      "}",
+                                                      "[",
+                                                      "]",
+                                                      ",",
+                                                      ":",
+                                                      "\"",
+                                                      "\\u0000",
+                                                      "18446744073709551616",
+                                                      "-9223372036854775809",
+                                                      "99999999999",
+                                                      "\\ud800",
+                                                      "{}",
+                                                      "[]",
+                                                      "\n"};
 
 class Mutator {
  public:
@@ -87,9 +111,7 @@ class Mutator {
       case 1:
         if (!s.empty()) s[pick(s.size())] = static_cast<char>(pick(256));
         break;
-      case 2:
-        s.insert(at, 1, static_cast<char>(pick(256)));
-        break;
+      case 2: s.insert(at, 1, static_cast<char>(pick(256))); break;
       case 3:
         if (at < s.size()) s.erase(at, 1 + pick(std::min<std::size_t>(s.size() - at, 64)));
         break;
@@ -105,15 +127,9 @@ class Mutator {
         s.insert(at, other.substr(from, pick(256)));
         break;
       }
-      case 6:
-        s.insert(at, kTokens[pick(kTokens.size())]);
-        break;
-      case 7:
-        replace_number(s);
-        break;
-      default:
-        replace_word(s);
-        break;
+      case 6: s.insert(at, kTokens[pick(kTokens.size())]); break;
+      case 7: replace_number(s); break;
+      default: replace_word(s); break;
     }
   }
 
@@ -147,9 +163,8 @@ class Mutator {
 }  // namespace
 
 MutationRun mutate_for(int (*target)(const std::uint8_t*, std::size_t),
-                       const std::vector<std::string>& corpus, double seconds,
-                       std::uint64_t seed, const std::filesystem::path& findings,
-                       unsigned timeout_seconds) {
+                       const std::vector<std::string>& corpus, double seconds, std::uint64_t seed,
+                       const std::filesystem::path& findings, unsigned timeout_seconds) {
   std::filesystem::create_directories(findings);
   const std::string path = (findings / ("crash-" + std::to_string(::getpid()))).string();
   std::strncpy(g_current.path, path.c_str(), sizeof g_current.path - 1);

@@ -23,8 +23,7 @@ struct MutationRun {
 // `timeout_seconds` is written to `<findings>/crash-<pid>` before the process dies, and the
 // process then dies as it would have.
 MutationRun mutate_for(int (*target)(const std::uint8_t*, std::size_t),
-                       const std::vector<std::string>& corpus, double seconds,
-                       std::uint64_t seed, const std::filesystem::path& findings,
-                       unsigned timeout_seconds);
+                       const std::vector<std::string>& corpus, double seconds, std::uint64_t seed,
+                       const std::filesystem::path& findings, unsigned timeout_seconds);
 
 }  // namespace raygate::fuzz

@@ -154,8 +154,8 @@ const std::map<std::string_view, ViewRow> kViews{
     {"rings", {"-1 -2.61313 0.5", "-1 -1.61313 0.5", "0 0 1", "1"}},
     {"teapot", {"4.86 7.2 5.4", "0 0 0", "0 0 1", "1"}},
     {"tetra",
-     {"1.02285 -3.17715 -2.17451", "-0.004103 -0.004103 0.216539",
-      "-0.816497 -0.816497 0.816497", "1"}},
+     {"1.02285 -3.17715 -2.17451", "-0.004103 -0.004103 0.216539", "-0.816497 -0.816497 0.816497",
+      "1"}},
     {"tree", {"4.5 0.4 2", "0 0 1.5", "0 0 1", "1"}},
 };
 
@@ -163,12 +163,10 @@ TEST_P(ClassicSceneTable, TableCBackgroundAndView) {
   const NffSummary s = summarize_nff(text());
   const ViewRow& v = kViews.at(GetParam().scene);
   EXPECT_EQ(s.background_line, "b 0.078 0.361 0.753");
-  const std::vector<std::string> expected{std::string("from ") + v.from,
-                                          std::string("at ") + v.at,
-                                          std::string("up ") + v.up,
-                                          "angle 45",
-                                          std::string("hither ") + v.hither,
-                                          "resolution 512 512"};
+  const std::vector<std::string> expected{
+      std::string("from ") + v.from,     std::string("at ") + v.at,
+      std::string("up ") + v.up,         "angle 45",
+      std::string("hither ") + v.hither, "resolution 512 512"};
   EXPECT_EQ(s.view_lines, expected);
   // §1.5: `b` first, then the 7-line view block.
   EXPECT_EQ(text().rfind("b 0.078 0.361 0.753\nv\nfrom ", 0), 0U);
@@ -216,9 +214,8 @@ INSTANTIATE_TEST_SUITE_P(SpdTables, ClassicSceneTable, testing::ValuesIn(kTable)
 
 // §8: every generator is deterministic; two runs at the default size give the same bytes.
 TEST(ClassicScenes, GenerationIsDeterministic) {
-  const std::map<std::string_view, int> kDefaultSizes{{"balls", 4},  {"gears", 4},
-                                                      {"mount", 6},  {"rings", 7},
-                                                      {"teapot", 6}, {"tetra", 6},
+  const std::map<std::string_view, int> kDefaultSizes{{"balls", 4}, {"gears", 4},  {"mount", 6},
+                                                      {"rings", 7}, {"teapot", 6}, {"tetra", 6},
                                                       {"tree", 11}};
   for (const auto& [scene, size] : kDefaultSizes) {
     EXPECT_EQ(generate(scene, size), generated(scene, size)) << scene;

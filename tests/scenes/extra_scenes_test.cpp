@@ -60,10 +60,8 @@ std::string param_name(const SceneSize& s) { return std::string(s.scene) + "_s" 
 // How gtest prints a parameter (instead of its bytes).
 void PrintTo(const SceneSize& s, std::ostream* os) { *os << s.scene << " -s " << s.label; }
 template <class Row>
-  requires requires(const Row& r) { r.at; }
-void PrintTo(const Row& row, std::ostream* os) {
-  PrintTo(row.at, os);
-}
+requires requires(const Row& r) { r.at; }
+void PrintTo(const Row& row, std::ostream* os) { PrintTo(row.at, os); }
 
 // Test names such as lattice_s1 and shells_sdef, for rows that hold their SceneSize in `at`.
 struct RowName {
@@ -145,8 +143,7 @@ TEST_P(TableA, CountsLinesAndBytes) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(ExtraScenes, TableA, ::testing::ValuesIn(kTableA),
-                         RowName());
+INSTANTIATE_TEST_SUITE_P(ExtraScenes, TableA, ::testing::ValuesIn(kTableA), RowName());
 
 // ---- Table B -----------------------------------------------------------------------------
 
@@ -192,8 +189,7 @@ TEST_P(TableB, BoundingBox) {
   EXPECT_EQ(format_corner(s.bbox_max), row.max);
 }
 
-INSTANTIATE_TEST_SUITE_P(ExtraScenes, TableB, ::testing::ValuesIn(kTableB),
-                         RowName());
+INSTANTIATE_TEST_SUITE_P(ExtraScenes, TableB, ::testing::ValuesIn(kTableB), RowName());
 
 // ---- Table C -----------------------------------------------------------------------------
 
@@ -203,24 +199,28 @@ struct TableCRow {
   std::vector<std::string> view;  // from, at, up, angle, hither, resolution
 };
 
-std::vector<std::string> view(const char* from, const char* at, const char* up,
-                              const char* angle, const char* hither, const char* resolution) {
-  return {std::string("from ") + from, std::string("at ") + at,   std::string("up ") + up,
-          std::string("angle ") + angle, std::string("hither ") + hither,
-          std::string("resolution ") + resolution};
+std::vector<std::string> view(const char* from, const char* at, const char* up, const char* angle,
+                              const char* hither, const char* resolution) {
+  return {std::string("from ") + from,     std::string("at ") + at,
+          std::string("up ") + up,         std::string("angle ") + angle,
+          std::string("hither ") + hither, std::string("resolution ") + resolution};
 }
 
 constexpr const char* kSky = "b 0.078 0.361 0.753";
 
 std::vector<TableCRow> table_c() {
   std::vector<TableCRow> rows{
-      {{"lattice", 1, "1"}, kSky,
+      {{"lattice", 1, "1"},
+       kSky,
        view("0.5 1 0.5", "0.5 -1 -1.5", "0.2 1 0", "60", "0", "512 512")},
-      {{"lattice", 2, "2"}, kSky,
+      {{"lattice", 2, "2"},
+       kSky,
        view("0.75 1 0.75", "0.75 -1 -1.25", "0.2 1 0", "60", "0", "512 512")},
-      {{"lattice", 3, "3"}, kSky,
+      {{"lattice", 3, "3"},
+       kSky,
        view("0.5 1 0.833333", "0.5 -1 -1.16667", "0.2 1 0", "60", "0", "512 512")},
-      {{"lattice", 12, "def"}, kSky,
+      {{"lattice", 12, "def"},
+       kSky,
        view("0.541667 1 0.958333", "0.541667 -1 -1.04167", "0.2 1 0", "60", "0", "512 512")},
   };
   // The other scenes' views do not depend on the size.
@@ -234,9 +234,9 @@ std::vector<TableCRow> table_c() {
   const std::map<std::string, int> defaults{
       {"shells", 5}, {"jacks", 1}, {"sombrero", 1}, {"sample", 1}, {"nurbtst", 1}};
   for (const auto& [scene, row] : fixed) {
-    for (const SceneSize& at : {SceneSize{scene, 1, "1"}, SceneSize{scene, 2, "2"},
-                                SceneSize{scene, 3, "3"},
-                                SceneSize{scene, defaults.at(scene), "def"}}) {
+    for (const SceneSize& at :
+         {SceneSize{scene, 1, "1"}, SceneSize{scene, 2, "2"}, SceneSize{scene, 3, "3"},
+          SceneSize{scene, defaults.at(scene), "def"}}) {
       rows.push_back({at, row.background, row.view});
     }
   }
@@ -255,8 +255,7 @@ TEST_P(TableC, BackgroundAndView) {
   EXPECT_EQ(text.rfind(std::string(row.background) + "\nv\n", 0), 0U);
 }
 
-INSTANTIATE_TEST_SUITE_P(ExtraScenes, TableC, ::testing::ValuesIn(table_c()),
-                         RowName());
+INSTANTIATE_TEST_SUITE_P(ExtraScenes, TableC, ::testing::ValuesIn(table_c()), RowName());
 
 // ---- Table D -----------------------------------------------------------------------------
 
@@ -295,8 +294,7 @@ TEST_P(TableD, DistinctMaterials) {
   EXPECT_EQ(summary(row.at.scene, row.at.size).distinct_f, row.distinct_f);
 }
 
-INSTANTIATE_TEST_SUITE_P(ExtraScenes, TableD, ::testing::ValuesIn(table_d()),
-                         RowName());
+INSTANTIATE_TEST_SUITE_P(ExtraScenes, TableD, ::testing::ValuesIn(table_d()), RowName());
 
 // ---- Patches: unit normals, winding agrees with them (§1.2) ------------------------------
 
@@ -344,16 +342,12 @@ TEST_P(Determinism, RepeatedGenerationIsByteIdentical) {
   EXPECT_EQ(again.str(), scene_text(at.scene, at.size));
 }
 
-INSTANTIATE_TEST_SUITE_P(ExtraScenes, Determinism,
-                         ::testing::Values(SceneSize{"lattice", 12, "def"},
-                                           SceneSize{"shells", 5, "def"},
-                                           SceneSize{"jacks", 3, "3"},
-                                           SceneSize{"sombrero", 2, "2"},
-                                           SceneSize{"sample", 1, "def"},
-                                           SceneSize{"nurbtst", 1, "def"}),
-                         [](const ::testing::TestParamInfo<SceneSize>& row) {
-                           return param_name(row.param);
-                         });
+INSTANTIATE_TEST_SUITE_P(
+    ExtraScenes, Determinism,
+    ::testing::Values(SceneSize{"lattice", 12, "def"}, SceneSize{"shells", 5, "def"},
+                      SceneSize{"jacks", 3, "3"}, SceneSize{"sombrero", 2, "2"},
+                      SceneSize{"sample", 1, "def"}, SceneSize{"nurbtst", 1, "def"}),
+    [](const ::testing::TestParamInfo<SceneSize>& row) { return param_name(row.param); });
 
 }  // namespace
 }  // namespace raygate::test

@@ -23,7 +23,7 @@ struct NffSummary {
   long patches = 0;
   long lights = 0;
   long f_lines = 0;
-  std::set<std::string> distinct_f;  // the `f` lines exactly as written
+  std::set<std::string> distinct_f;     // the `f` lines exactly as written
   std::vector<std::string> view_lines;  // the 6 lines after `v`, exactly as written
   std::string background_line;          // the `b` line, or empty
   Vec3 bbox_min{1e300, 1e300, 1e300};

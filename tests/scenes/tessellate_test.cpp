@@ -29,10 +29,8 @@ double area(const std::array<Vec3, 3>& v) { return 0.5 * length(face_normal(v));
 
 // How gtest prints a case (instead of its bytes).
 template <class Case>
-  requires requires(const Case& c) { c.name; }
-void PrintTo(const Case& c, std::ostream* os) {
-  *os << c.name;
-}
+requires requires(const Case& c) { c.name; }
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
 // Test names from the cases' `name` field.
 struct CaseName {
@@ -60,7 +58,7 @@ TEST_P(SphereTessellation, CountSurfaceNormalsAndWinding) {
   for (const PatchTriangle& t : tris) {
     expect_unit_normals(t);
     for (int k = 0; k < 3; ++k) {
-      EXPECT_NEAR(length(t.vertices[k] - c), r, kTight);                    // on the sphere
+      EXPECT_NEAR(length(t.vertices[k] - c), r, kTight);                       // on the sphere
       EXPECT_NEAR(length(t.normals[k] - (t.vertices[k] - c) / r), 0.0, 1e-9);  // radial
     }
     EXPECT_GT(dot(face_normal(t.vertices), centroid(t.vertices) - c), 0.0);  // outward
@@ -89,8 +87,7 @@ class ConeTessellation : public ::testing::TestWithParam<ConeCase> {};
 
 TEST_P(ConeTessellation, CountSurfaceNormalsAndWinding) {
   const ConeCase& p = GetParam();
-  const auto tris =
-      scenes::tessellate_cone(p.base, p.base_radius, p.apex, p.apex_radius, p.res);
+  const auto tris = scenes::tessellate_cone(p.base, p.base_radius, p.apex, p.apex_radius, p.res);
   ASSERT_EQ(tris.size(), static_cast<std::size_t>(8 * p.res));
   const Vec3 k = normalize(p.apex - p.base);
   const double h = length(p.apex - p.base);

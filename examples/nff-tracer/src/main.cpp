@@ -109,8 +109,10 @@ Options parse_arguments(int argc, char** argv) {
     else if (!arg.empty() && arg[0] != '-' && options.scene.empty()) options.scene = arg;
     else throw std::invalid_argument("unexpected argument '" + arg + "'");
   }
-  if (options.scene.empty() || options.image.empty()) throw std::invalid_argument("missing SCENE or -o IMAGE");
-  if (options.max_depth < 1 || options.max_depth > 64) throw std::invalid_argument("--depth must be 1..64");
+  if (options.scene.empty() || options.image.empty())
+    throw std::invalid_argument("missing SCENE or -o IMAGE");
+  if (options.max_depth < 1 || options.max_depth > 64)
+    throw std::invalid_argument("--depth must be 1..64");
   return options;
 }
 
@@ -124,7 +126,8 @@ int main(int argc, char** argv) {
     options = nff::parse_arguments(argc, argv);
     scene = nff::read_nff(options.scene);
   } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "tracer: %s\nusage: tracer SCENE.nff -o IMAGE.png|IMAGE.ppm [--depth N]\n", e.what());
+    std::fprintf(stderr, "tracer: %s\nusage: tracer SCENE.nff -o IMAGE.png|IMAGE.ppm [--depth N]\n",
+                 e.what());
     return 2;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "tracer: %s\n", e.what());
@@ -140,8 +143,9 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "tracer: %s\n", e.what());
     return 1;
   }
-  std::printf("tracer: %dx%d, %zu spheres, %zu cones, %zu polygons, %zu triangles, %zu BVH nodes, %.6f s\n",
-              image.width, image.height, scene.spheres.size(), scene.cones.size(), scene.polygons.size(),
-              scene.triangles.size(), bvh.node_count(), seconds.count());
+  std::printf(
+      "tracer: %dx%d, %zu spheres, %zu cones, %zu polygons, %zu triangles, %zu BVH nodes, %.6f s\n",
+      image.width, image.height, scene.spheres.size(), scene.cones.size(), scene.polygons.size(),
+      scene.triangles.size(), bvh.node_count(), seconds.count());
   return 0;
 }

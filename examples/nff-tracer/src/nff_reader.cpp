@@ -53,7 +53,8 @@ class Reader {
   int last_line() const { return tokens_.empty() ? 1 : tokens_.back().line; }
 
   double number(const char* what) {
-    if (next_ >= tokens_.size()) fail(last_line(), std::string("expected ") + what + ", found the end of the file");
+    if (next_ >= tokens_.size())
+      fail(last_line(), std::string("expected ") + what + ", found the end of the file");
     const Token& token = tokens_[next_++];
     try {
       std::size_t used = 0;
@@ -73,7 +74,8 @@ class Reader {
     const int line = next_ < tokens_.size() ? tokens_[next_].line : last_line();
     const double n = number(what);
     if (n != static_cast<int>(n) || n < minimum) {
-      fail(line, std::string(what) + " must be a whole number of at least " + std::to_string(minimum));
+      fail(line,
+           std::string(what) + " must be a whole number of at least " + std::to_string(minimum));
     }
     return static_cast<int>(n);
   }
@@ -97,7 +99,8 @@ class Reader {
     Vec3 newell;  // robust for concave outlines and nearly collinear first vertices
     for (int i = 0; i < n; ++i) {
       const Vec3 a = polygon.vertices[i], b = polygon.vertices[(i + 1) % n];
-      newell += Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
+      newell +=
+          Vec3{(a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y)};
     }
     if (length(newell) == 0) return;  // zero area: no ray can hit it
     polygon.normal = normalize(newell);

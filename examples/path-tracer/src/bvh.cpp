@@ -41,7 +41,8 @@ std::uint32_t Bvh::build(std::uint32_t begin, std::uint32_t end) {
   for (std::uint32_t i = begin; i < end; ++i) box.grow(boxes_[i]), centres.grow(boxes_[i].centre());
   nodes_[index].box = box;
   const Vec3 extent = centres.high - centres.low;
-  const int axis = extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
+  const int axis =
+      extent.x >= extent.y && extent.x >= extent.z ? 0 : (extent.y >= extent.z ? 1 : 2);
   if (end - begin <= kLeafShapes || extent[axis] <= 0) {
     nodes_[index].first = begin, nodes_[index].count = end - begin;
     return index;

@@ -26,7 +26,8 @@ Bytes to_bytes(const Image& image) {
 }
 
 void put_u32_big_endian(Bytes& out, std::uint32_t value) {
-  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<unsigned char>(value >> shift));
+  for (int shift = 24; shift >= 0; shift -= 8)
+    out.push_back(static_cast<unsigned char>(value >> shift));
 }
 
 // The CRC-32 of PNG chunks (polynomial 0xEDB88320, bit by bit: small images, no table needed).
@@ -58,9 +59,11 @@ Bytes zlib_stored(const Bytes& raw) {
     const bool last = at + size == raw.size();
     out.push_back(last ? 1 : 0);
     const auto len = static_cast<std::uint16_t>(size), nlen = static_cast<std::uint16_t>(~len);
-    out.insert(out.end(), {static_cast<unsigned char>(len & 0xFF), static_cast<unsigned char>(len >> 8),
-                           static_cast<unsigned char>(nlen & 0xFF), static_cast<unsigned char>(nlen >> 8)});
-    out.insert(out.end(), raw.begin() + static_cast<long>(at), raw.begin() + static_cast<long>(at + size));
+    out.insert(out.end(),
+               {static_cast<unsigned char>(len & 0xFF), static_cast<unsigned char>(len >> 8),
+                static_cast<unsigned char>(nlen & 0xFF), static_cast<unsigned char>(nlen >> 8)});
+    out.insert(out.end(), raw.begin() + static_cast<long>(at),
+               raw.begin() + static_cast<long>(at + size));
     at += size;
   } while (at < raw.size());
   put_u32_big_endian(out, (b << 16) | a);
@@ -107,14 +110,16 @@ Bytes encode_pfm(const Image& image) {
       const float value = image.rgb[static_cast<std::size_t>(y) * row_floats + i];
       std::uint32_t bits = 0;
       std::memcpy(&bits, &value, sizeof bits);
-      for (int shift = 0; shift < 32; shift += 8) pfm.push_back(static_cast<unsigned char>(bits >> shift));
+      for (int shift = 0; shift < 32; shift += 8)
+        pfm.push_back(static_cast<unsigned char>(bits >> shift));
     }
   }
   return pfm;
 }
 
 bool ends_with(const std::string& text, const std::string& suffix) {
-  return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return text.size() >= suffix.size() &&
+         text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 }  // namespace
@@ -126,7 +131,8 @@ void write_image(const std::string& path, const Image& image) {
   else if (ends_with(path, ".pfm")) bytes = encode_pfm(image);
   else throw std::runtime_error(path + ": unknown image format (use .pfm, .png or .ppm)");
   std::ofstream out(path, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  out.write(reinterpret_cast<const char*>(bytes.data()),
+            static_cast<std::streamsize>(bytes.size()));
   if (!out.flush()) throw std::runtime_error(path + ": cannot write the image");
 }
 

@@ -32,8 +32,8 @@ long long parse_number(const std::string& option, const char* text, long long lo
   char* end = nullptr;
   const long long value = std::strtoll(text, &end, 10);
   if (end == text || *end != '\0' || value < low || value > high) {
-    throw std::invalid_argument(option + " must be a whole number in [" + std::to_string(low) + ", " +
-                                std::to_string(high) + "], found '" + text + "'");
+    throw std::invalid_argument(option + " must be a whole number in [" + std::to_string(low) +
+                                ", " + std::to_string(high) + "], found '" + text + "'");
   }
   return value;
 }
@@ -45,9 +45,11 @@ Options parse_arguments(int argc, char** argv) {
     const bool has_value = i + 1 < argc;
     if (arg == "-o" && has_value) options.image = argv[++i];
     else if (arg == "--spp" && has_value) {
-      options.settings.samples_per_pixel = static_cast<int>(parse_number(arg, argv[++i], 1, 1 << 20));
+      options.settings.samples_per_pixel =
+          static_cast<int>(parse_number(arg, argv[++i], 1, 1 << 20));
     } else if (arg == "--seed" && has_value) {
-      options.settings.seed = static_cast<std::uint64_t>(parse_number(arg, argv[++i], 0, (1ll << 62)));
+      options.settings.seed =
+          static_cast<std::uint64_t>(parse_number(arg, argv[++i], 0, (1ll << 62)));
     } else if (arg == "--depth" && has_value) {
       options.settings.max_depth = static_cast<int>(parse_number(arg, argv[++i], 1, 64));
     } else if (!arg.empty() && arg[0] != '-' && options.scene.empty()) {
@@ -56,7 +58,8 @@ Options parse_arguments(int argc, char** argv) {
       throw std::invalid_argument("unexpected argument '" + arg + "'");
     }
   }
-  if (options.scene.empty() || options.image.empty()) throw std::invalid_argument("missing SCENE or -o IMAGE");
+  if (options.scene.empty() || options.image.empty())
+    throw std::invalid_argument("missing SCENE or -o IMAGE");
   return options;
 }
 
@@ -89,10 +92,11 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "tracer: %s\n", e.what());
     return 1;
   }
-  std::printf("tracer: %dx%d, %d spp, seed %llu, %zu shapes, %zu BVH nodes, %.3f s\n", image.width,
-              image.height, options.settings.samples_per_pixel,
-              static_cast<unsigned long long>(options.settings.seed),
-              scene.spheres.size() + scene.cones.size() + scene.polygons.size() + scene.triangles.size(),
-              bvh.node_count(), seconds.count());
+  std::printf(
+      "tracer: %dx%d, %d spp, seed %llu, %zu shapes, %zu BVH nodes, %.3f s\n", image.width,
+      image.height, options.settings.samples_per_pixel,
+      static_cast<unsigned long long>(options.settings.seed),
+      scene.spheres.size() + scene.cones.size() + scene.polygons.size() + scene.triangles.size(),
+      bvh.node_count(), seconds.count());
   return 0;
 }

@@ -82,10 +82,13 @@ struct Camera {
   int width, height;
 
   explicit Camera(const View& view)
-      : from(view.from), forward(normalize(view.at - view.from)),
+      : from(view.from),
+        forward(normalize(view.at - view.from)),
         half_width(std::tan(view.angle_degrees * kPi / 360)),
-        aspect(static_cast<double>(view.height) / view.width), hither(view.hither),
-        width(view.width), height(view.height) {
+        aspect(static_cast<double>(view.height) / view.width),
+        hither(view.hither),
+        width(view.width),
+        height(view.height) {
     up = normalize(view.up - forward * dot(view.up, forward));
     right = normalize(cross(forward, up));
   }

@@ -31,7 +31,8 @@ struct Frame {
 inline Vec3 sample_cosine(Vec3 n, double u1, double u2) {
   const double r = std::sqrt(u1);
   const double phi = 2 * kPi * u2;
-  return Frame(n).to_world({r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1 - u1))});
+  return Frame(n).to_world(
+      {r * std::cos(phi), r * std::sin(phi), std::sqrt(std::max(0.0, 1 - u1))});
 }
 
 // pdf = (e + 1) / (2 pi) * cos(alpha)^e about `axis` (alpha: the angle to the axis).

@@ -5,10 +5,9 @@
 namespace raygate {
 
 std::unique_ptr<TimingMode> make_process_cpu_mode() {
-  return make_clock_mode({"cpu", "process CPU seconds, user + system (wait4)", "process-cpu",
-                          "process-cpu", [](const RunRecord& run) -> std::optional<double> {
-                            return run.cpu_seconds();
-                          }});
+  return make_clock_mode(
+      {"cpu", "process CPU seconds, user + system (wait4)", "process-cpu", "process-cpu",
+       [](const RunRecord& run) -> std::optional<double> { return run.cpu_seconds(); }});
 }
 
 }  // namespace raygate

@@ -7,11 +7,10 @@
 namespace raygate {
 
 std::unique_ptr<TimingMode> make_process_user_mode() {
-  return make_clock_mode({"user", "process user CPU seconds, without system time (wait4)",
-                          "process-user", "process-user",
-                          [](const RunRecord& run) -> std::optional<double> {
-                            return run.user_seconds;
-                          }});
+  return make_clock_mode(
+      {"user", "process user CPU seconds, without system time (wait4)", "process-user",
+       "process-user",
+       [](const RunRecord& run) -> std::optional<double> { return run.user_seconds; }});
 }
 
 }  // namespace raygate

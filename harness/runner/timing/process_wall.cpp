@@ -5,10 +5,9 @@
 namespace raygate {
 
 std::unique_ptr<TimingMode> make_process_wall_mode() {
-  return make_clock_mode({"wall", "process wall-clock seconds (wait4)", "process-wall",
-                          "process-wall", [](const RunRecord& run) -> std::optional<double> {
-                            return run.wall_seconds;
-                          }});
+  return make_clock_mode(
+      {"wall", "process wall-clock seconds (wait4)", "process-wall", "process-wall",
+       [](const RunRecord& run) -> std::optional<double> { return run.wall_seconds; }});
 }
 
 }  // namespace raygate

@@ -26,9 +26,14 @@ void record_startup(RunRecord& run) {
 }  // namespace
 
 std::unique_ptr<TimingMode> make_reported_mode() {
-  return make_clock_mode({"reported", "reported by the tracer", "reported", "in-process",
+  return make_clock_mode({"reported",
+                          "reported by the tracer",
+                          "reported",
+                          "in-process",
                           [](const RunRecord& run) { return run.reported_seconds; },
-                          TimingSource::reported, {kStartup}, record_startup});
+                          TimingSource::reported,
+                          {kStartup},
+                          record_startup});
 }
 
 }  // namespace raygate

@@ -93,10 +93,10 @@ class Simulated final : public TimingMode {
           std::lround(seconds * 48.0 * 48.0 / (128.0 * 128.0) / 60.0)));
     }
     if (plan.threads > 1) {
-      plan.warnings.push_back(fmt::format(
-          "{}: threads is {}, but valgrind runs a program's threads one at a time: the "
-          "simulated cost counts all their work, not the parallel speed-up",
-          plan.adapter_file.string(), plan.threads));
+      plan.warnings.push_back(
+          fmt::format("{}: threads is {}, but valgrind runs a program's threads one at a time: the "
+                      "simulated cost counts all their work, not the parallel speed-up",
+                      plan.adapter_file.string(), plan.threads));
     }
   }
 };

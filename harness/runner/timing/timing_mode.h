@@ -26,7 +26,7 @@ struct StoppingPolicy;
 // stopping budget, the gate's default limit, the simulator it needs, and warnings for the user.
 struct TimingPlan {
   const Suite& suite;
-  int threads = 1;                         // the adapter's
+  int threads = 1;                            // the adapter's
   const std::filesystem::path& adapter_file;  // for messages
   ScheduleOptions& schedule;
   StoppingPolicy& stopping;

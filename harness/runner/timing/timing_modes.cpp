@@ -73,8 +73,8 @@ const TimingMode& timing_mode(std::string_view name) {
   for (const TimingMode* mode : timing_modes()) {
     if (mode->name() == name) return *mode;
   }
-  throw UsageError(fmt::format("unknown timing mode '{}' (known: {})", name,
-                               fmt::join(names(false), ", ")));
+  throw UsageError(
+      fmt::format("unknown timing mode '{}' (known: {})", name, fmt::join(names(false), ", ")));
 }
 
 std::vector<std::string> timing_mode_choices() { return names(true); }

@@ -131,7 +131,8 @@ class BaselineCli : public ::testing::Test {
 TEST_F(BaselineCli, VersionNamesTheSourceHash) {
   const RunResult r = run({"--version"});
   EXPECT_EQ(r.exit_code, 0);
-  EXPECT_TRUE(std::regex_match(r.out, std::regex("raygate-baseline 0\\.1\\.0 source-sha256:[0-9a-f]{64}\n")))
+  EXPECT_TRUE(std::regex_match(
+      r.out, std::regex("raygate-baseline 0\\.1\\.0 source-sha256:[0-9a-f]{64}\n")))
       << r.out;
 }
 
@@ -186,8 +187,8 @@ TEST_F(BaselineCli, StartsWithoutOpenImageIo) {
   for (int i = 0; i < 10; ++i) {
     const auto start = std::chrono::steady_clock::now();
     ASSERT_EQ(run({"--version"}).exit_code, 0);
-    fastest = std::min(fastest, std::chrono::duration<double>(std::chrono::steady_clock::now() -
-                                                              start).count());
+    fastest = std::min(
+        fastest, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   EXPECT_LT(fastest, 0.05);
 }
@@ -209,8 +210,10 @@ TEST_F(BaselineCli, SameBytesOnEveryRunAndInBothAccelModes) {
   ASSERT_EQ(run({scene_file().string(), "-o", a.string()}).exit_code, 0);
   ASSERT_EQ(run({scene_file().string(), "-o", b.string(), "--accel", "bbox"}).exit_code, 0);
   ASSERT_EQ(run({scene_file().string(), "-o", c.string(), "--sampling", "corners"}).exit_code, 0);
-  ASSERT_EQ(run({scene_file().string(), "-o", d.string(), "--sampling", "corners", "--accel",
-                 "bbox"}).exit_code, 0);
+  ASSERT_EQ(
+      run({scene_file().string(), "-o", d.string(), "--sampling", "corners", "--accel", "bbox"})
+          .exit_code,
+      0);
   EXPECT_EQ(read_text(a), read_text(b));
   EXPECT_EQ(read_text(c), read_text(d));
   // And again a second later: no timestamp in either format.
@@ -225,8 +228,8 @@ TEST_F(BaselineCli, SameBytesOnEveryRunAndInBothAccelModes) {
 TEST_F(BaselineCli, StatsJsonIsCompleteAndConsistent) {
   const fs::path image = temp_dir() / "stats.png";
   const fs::path stats = temp_dir() / "stats.json";
-  const RunResult r = run({scene_file().string(), "-o", image.string(), "--stats",
-                           stats.string(), "--accel", "bbox"});
+  const RunResult r = run(
+      {scene_file().string(), "-o", image.string(), "--stats", stats.string(), "--accel", "bbox"});
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const nlohmann::json doc = nlohmann::json::parse(read_text(stats));
   EXPECT_EQ(doc["width"], 24);
@@ -258,8 +261,10 @@ TEST_F(BaselineCli, StatsJsonIsCompleteAndConsistent) {
 TEST_F(BaselineCli, CornerSamplingCastsOneMoreRowAndColumn) {
   const fs::path image = temp_dir() / "corners.png";
   const fs::path stats = temp_dir() / "corners.json";
-  ASSERT_EQ(run({scene_file().string(), "-o", image.string(), "--sampling", "corners",
-                 "--stats", stats.string(), "--depth", "3"}).exit_code, 0);
+  ASSERT_EQ(run({scene_file().string(), "-o", image.string(), "--sampling", "corners", "--stats",
+                 stats.string(), "--depth", "3"})
+                .exit_code,
+            0);
   const nlohmann::json doc = nlohmann::json::parse(read_text(stats));
   EXPECT_EQ(doc["rays"]["eye"], 25 * 17);
   EXPECT_EQ(doc["sampling"], "corners");
@@ -268,8 +273,9 @@ TEST_F(BaselineCli, CornerSamplingCastsOneMoreRowAndColumn) {
 
 TEST_F(BaselineCli, MalformedSceneExitsTwoWithTheParserMessage) {
   const fs::path bad = temp_dir() / "bad.nff";
-  write_text(bad, "v\nfrom 0 0 1\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution 8 8\n"
-                  "f 1 1 1 1 0 1 0 1\ns 0 0 zero 1\n");
+  write_text(bad,
+             "v\nfrom 0 0 1\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution 8 8\n"
+             "f 1 1 1 1 0 1 0 1\ns 0 0 zero 1\n");
   const RunResult r = run({bad.string(), "-o", (temp_dir() / "bad.png").string()});
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find(bad.string() + ":9:"), std::string::npos) << r.err;
@@ -322,8 +328,8 @@ TEST_F(BaselineCli, UnwritableOutputExitsOneAndSaysWhere) {
   EXPECT_EQ(r.exit_code, 1);
   EXPECT_NE(r.err.find(out), std::string::npos) << r.err;
   const std::string stats = (temp_dir() / "no-such-dir" / "s.json").string();
-  const RunResult s = run({scene_file().string(), "-o", (temp_dir() / "ok.png").string(),
-                           "--stats", stats});
+  const RunResult s =
+      run({scene_file().string(), "-o", (temp_dir() / "ok.png").string(), "--stats", stats});
   EXPECT_EQ(s.exit_code, 1);
   EXPECT_NE(s.err.find(stats), std::string::npos) << s.err;
 }

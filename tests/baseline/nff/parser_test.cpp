@@ -194,7 +194,9 @@ TEST(NffParser, WhitespaceVariantsAndColumns) {
 
 TEST(NffParser, ByteOrderMarkIsSkipped) {
   const Scene scene = parse_nff(
-      "\xEF\xBB\xBF" "f 1 1 1 1 0 1 0 1\nv from 0 0 1 at 0 0 0 up 0 1 0 angle 45\n", "scene.nff");
+      "\xEF\xBB\xBF"
+      "f 1 1 1 1 0 1 0 1\nv from 0 0 1 at 0 0 0 up 0 1 0 angle 45\n",
+      "scene.nff");
   expect_loc(scene.materials[0].loc, 1, 1);
 }
 

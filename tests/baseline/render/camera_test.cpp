@@ -40,8 +40,7 @@ TEST(Camera, PixelCentresFollowTheDocumentedFormula) {
   const double angle = 60.0;
   const int width = 8;
   const int height = 4;
-  const nff::Scene scene = test::make_scene({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, angle, width,
-                                            height);
+  const nff::Scene scene = test::make_scene({0, 0, 0}, {0, 0, -1}, {0, 1, 0}, angle, width, height);
   const Camera camera = make_camera(scene.view);
   const double t = std::tan(angle * std::numbers::pi / 360.0);
   for (int j = 0; j < height; ++j) {
@@ -49,8 +48,7 @@ TEST(Camera, PixelCentresFollowTheDocumentedFormula) {
       const double sx = (2.0 * (i + 0.5) / width - 1.0) * t;
       const double sy = (1.0 - 2.0 * (j + 0.5) / height) * t * height / width;
       // forward -z, up +y, right = (-z) x (+y) = +x
-      expect_vec_near(camera.direction_at(i + 0.5, j + 0.5), normalize(Vec3{sx, sy, -1}),
-                      1e-15);
+      expect_vec_near(camera.direction_at(i + 0.5, j + 0.5), normalize(Vec3{sx, sy, -1}), 1e-15);
     }
   }
 }

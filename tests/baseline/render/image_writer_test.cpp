@@ -50,8 +50,9 @@ Image test_image(int width, int height) {
   for (int j = 0; j < height; ++j) {
     for (int i = 0; i < width; ++i) {
       const double noise = double((i * 7919 + j * 104729) % 251) / 250.0;
-      image.set(i, j, {i / double(width - 1) * 1.2 - 0.1, j % 3 == 0 ? noise : j / double(height),
-                       1.5 - 0.25 * i});
+      image.set(i, j,
+                {i / double(width - 1) * 1.2 - 0.1, j % 3 == 0 ? noise : j / double(height),
+                 1.5 - 0.25 * i});
     }
   }
   return image;

@@ -46,7 +46,7 @@ TEST(SphereIntersect, HitsNearSideFromOutsideAndFarSideFromInside) {
   EXPECT_DOUBLE_EQ(hit.t, 4.0);
   ASSERT_TRUE(nearest(world, ray({0, 0, 0}, {0, 0, 1}), hit));
   EXPECT_DOUBLE_EQ(hit.t, 1.0);
-  EXPECT_FALSE(nearest(world, ray({0, 0, -5}, {0, 0, -1}), hit));  // behind the origin
+  EXPECT_FALSE(nearest(world, ray({0, 0, -5}, {0, 0, -1}), hit));         // behind the origin
   EXPECT_FALSE(nearest(world, ray({0, 1.0000001, -5}, {0, 0, 1}), hit));  // just outside
 }
 
@@ -120,18 +120,19 @@ TEST(ConeIntersect, ZeroBaseRadiusAndRayParallelToASideLine) {
 // A concave "U": the ray through the notch misses, rays through the arms hit from either side.
 TEST(PolygonIntersect, ConcaveOutlineByEvenOddRule) {
   nff::Scene scene = blank();
-  add_polygon(scene, {{0, 0, 0}, {3, 0, 0}, {3, 3, 0}, {2, 3, 0}, {2, 1, 0}, {1, 1, 0},
-                      {1, 3, 0}, {0, 3, 0}},
-              add_material(scene, {}));
+  add_polygon(
+      scene,
+      {{0, 0, 0}, {3, 0, 0}, {3, 3, 0}, {2, 3, 0}, {2, 1, 0}, {1, 1, 0}, {1, 3, 0}, {0, 3, 0}},
+      add_material(scene, {}));
   const World world = build_world(scene);
   Hit hit;
   EXPECT_FALSE(nearest(world, ray({1.5, 2, 5}, {0, 0, -1}), hit));  // the notch
   ASSERT_TRUE(nearest(world, ray({0.5, 2, 5}, {0, 0, -1}), hit));
   EXPECT_DOUBLE_EQ(hit.t, 5.0);
-  ASSERT_TRUE(nearest(world, ray({2.5, 2, -5}, {0, 0, 1}), hit));   // from the back
+  ASSERT_TRUE(nearest(world, ray({2.5, 2, -5}, {0, 0, 1}), hit));  // from the back
   EXPECT_DOUBLE_EQ(hit.t, 5.0);
   EXPECT_FALSE(nearest(world, ray({3.5, 2, 5}, {0, 0, -1}), hit));
-  EXPECT_FALSE(nearest(world, ray({-1, 2, 1}, {1, 0, 0}), hit));    // in the plane
+  EXPECT_FALSE(nearest(world, ray({-1, 2, 1}, {1, 0, 0}), hit));  // in the plane
 }
 
 TEST(PolygonIntersect, NormalFollowsCounterClockwiseWinding) {
@@ -143,8 +144,8 @@ TEST(PolygonIntersect, NormalFollowsCounterClockwiseWinding) {
 
 TEST(TriangleIntersect, SmoothNormalIsTheNormalizedBarycentricBlend) {
   nff::Scene scene = blank();
-  const std::vector<Vec3> normals = {normalize(Vec3{-1, 0, 1}), normalize(Vec3{1, 0, 1}),
-                                     {0, 0, 1}};
+  const std::vector<Vec3> normals = {
+      normalize(Vec3{-1, 0, 1}), normalize(Vec3{1, 0, 1}), {0, 0, 1}};
   add_patch(scene, {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}}, normals, add_material(scene, {}));
   const World world = build_world(scene);
   Hit hit;
@@ -162,8 +163,8 @@ TEST(TriangleIntersect, SmoothNormalIsTheNormalizedBarycentricBlend) {
 TEST(TriangleIntersect, PatchWithMoreThanThreeVerticesIsTriangulated) {
   nff::Scene scene = blank();
   const Vec3 up{0, 0, 1};
-  add_patch(scene, {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0.5, 0}, {0, 2, 0}},
-            {up, up, up, up, up}, add_material(scene, {}));
+  add_patch(scene, {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {1, 0.5, 0}, {0, 2, 0}}, {up, up, up, up, up},
+            add_material(scene, {}));
   const World world = build_world(scene);
   EXPECT_EQ(world.triangles.size(), 3u);
   Hit hit;

@@ -55,8 +55,8 @@ TEST(RenderImage, ObjectsToTheRightAndAboveAppearRightAndUp) {
 }
 
 nff::Scene spheres_scene() {
-  nff::Scene scene = test::make_scene({6, -8, 5}, {0, 0, 0.5}, {0, 0, 1}, 45, 40, 30,
-                                      {0.1, 0.2, 0.4});
+  nff::Scene scene =
+      test::make_scene({6, -8, 5}, {0, 0, 0.5}, {0, 0, 1}, 45, 40, 30, {0.1, 0.2, 0.4});
   const int floor = add_material(scene, {{0.9, 0.9, 0.8}, 0.8, 0.2, 3.0827});
   const int mirror = add_material(scene, {{0.8, 0.8, 0.8}, 0.2, 0.8, 45.2776});
   const int glass = add_material(scene, {{1, 1, 1}, 0.1, 0.1, 101.148, 0.9, 1.5});
@@ -109,8 +109,7 @@ nff::Scene polygons_scene() {
   const int glass = add_material(scene, {{1, 1, 1}, 0.05, 0.1, 45.2776, 0.9, 1.5});
   add_polygon(scene, test::square_z(-6, -6, 6, 6, 0), floor);
   add_polygon(scene, star({-2, 0, 1.5}, {1, 0, 0}, {0, 0, 1}, 1.2, 0.5), star_material);
-  add_polygon(scene, star({1.5, 1, 1.2}, normalize(Vec3{1, 1, 0}), {0, 0, 1}, 1.0, 0.4),
-              glass);
+  add_polygon(scene, star({1.5, 1, 1.2}, normalize(Vec3{1, 1, 0}), {0, 0, 1}, 1.0, 0.4), glass);
   add_polygon(scene, star({0, -1, 0.01}, {1, 0, 0}, {0, 1, 0}, 1.5, 0.6), star_material);
   add_light(scene, {-3, -6, 6});
   add_light(scene, {4, -4, 3});
@@ -129,8 +128,7 @@ nff::Scene patches_scene() {
   auto at = [&](int r, int s) {
     const double theta = std::numbers::pi * r / rings;
     const double phi = 2 * std::numbers::pi * s / segments;
-    return Vec3{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi),
-                std::cos(theta)};
+    return Vec3{std::sin(theta) * std::cos(phi), std::sin(theta) * std::sin(phi), std::cos(theta)};
   };
   for (int r = 0; r < rings; ++r) {
     for (int s = 0; s < segments; ++s) {

@@ -23,8 +23,7 @@ using test::MaterialSpec;
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-Image render_scene(const nff::Scene& scene, RenderStats& stats,
-                   const RenderOptions& options = {}) {
+Image render_scene(const nff::Scene& scene, RenderStats& stats, const RenderOptions& options = {}) {
   return render(build_world(scene), make_camera(scene.view), options, stats);
 }
 
@@ -251,8 +250,7 @@ TEST(Refraction, SlabDisplacesARayWithoutTurningIt) {
   // Perpendicular distance between the incoming line and the outgoing one.
   const double shift = std::sin(theta_i - theta_t) / std::cos(theta_t);
   const Vec3 offset = bottom.surface.point - point_at(in, 1.0 / std::cos(theta_i));
-  EXPECT_NEAR(length(offset - in.direction * dot(offset, in.direction)), shift,
-              kOffsetTolerance);
+  EXPECT_NEAR(length(offset - in.direction * dot(offset, in.direction)), shift, kOffsetTolerance);
 }
 
 // Leaving glass (ior 1.5) the critical angle is asin(1/1.5) = 41.81 degrees.

@@ -35,8 +35,8 @@ std::string shipped(const std::string& name) {
 }
 
 TEST(AdapterCheckCli, ShippedAdaptersPass) {
-  const CheckRun run = check({shipped("raygate-baseline-bbox.json"), shipped("cmake-nff.json"),
-                              shipped("make-nff.json")});
+  const CheckRun run = check(
+      {shipped("raygate-baseline-bbox.json"), shipped("cmake-nff.json"), shipped("make-nff.json")});
   ASSERT_EQ(run.result.outcome, ProcessOutcome::exited) << run.result.describe();
   EXPECT_EQ(run.result.exit_code, 0) << run.err;
   EXPECT_NE(run.out.find("{build}/bin/raygate-baseline {scene} -o {image} --accel bbox"),

@@ -102,8 +102,7 @@ TEST(ReportedTime, ShippedBlenderAdapterReadsTheFramesTime) {
       " Time: 00:00.52 (Saving: 00:00.00)\n"
       "\n\nBlender quit\n";
   EXPECT_DOUBLE_EQ(*parse_reported_seconds(blender, tail), 0.52);
-  EXPECT_DOUBLE_EQ(*parse_reported_seconds(blender, " Time: 01:05.25 (Saving: 00:00.01)\n"),
-                   65.25);
+  EXPECT_DOUBLE_EQ(*parse_reported_seconds(blender, " Time: 01:05.25 (Saving: 00:00.01)\n"), 65.25);
   // A log cut before the frame finished has no render time: the run fails, not a wrong one.
   EXPECT_EQ(parse_reported_seconds(blender, tail.substr(0, tail.find("Saved"))), std::nullopt);
 }

@@ -27,8 +27,8 @@ std::string error_of(const std::string& text) {
 std::string with(const std::string& extra,
                  const std::string& run = R"(["t", "{scene}", "{image}"])",
                  const std::string& image = R"("{image}")") {
-  std::string text = R"({"name": "t", "scene_format": "nff", "run": )" + run + R"(, "image": )" +
-                     image;
+  std::string text =
+      R"({"name": "t", "scene_format": "nff", "run": )" + run + R"(, "image": )" + image;
   if (!extra.empty()) text += ", " + extra;
   return text + "}";
 }
@@ -147,8 +147,9 @@ TEST(AdapterLoad, ImagesKindAndSeed) {
       with(R"("images": "monte-carlo")", R"(["t", "{scene}", "{image}", "--seed={seed}"])"), "x");
   EXPECT_EQ(mc.images, ImageKind::monte_carlo);
   EXPECT_EQ(to_string(mc.images), "monte-carlo");
-  EXPECT_EQ(parse_adapter(with(R"("images": "monte-carlo", "env": {"SEED": "{seed}"})"), "x").images,
-            ImageKind::monte_carlo);
+  EXPECT_EQ(
+      parse_adapter(with(R"("images": "monte-carlo", "env": {"SEED": "{seed}"})"), "x").images,
+      ImageKind::monte_carlo);
   const Adapter shipped = load_adapter(std::filesystem::path(RAYGATE_SOURCE_DIR) / "adapters" /
                                        "cmake-path-tracer.json");
   EXPECT_EQ(shipped.images, ImageKind::monte_carlo);
@@ -280,8 +281,8 @@ INSTANTIATE_TEST_SUITE_P(
         Broken{"image_never_passed", with("", R"(["t", "{scene}"])"),
                "$.image: '{image}' is never given to the tracer: put '{image}' in run or env, "
                "or name the file the tracer writes, e.g. \"{workdir}/trace.ppm\""},
-        Broken{"workdir_unknown", with(R"("cwd": "{build}")", R"(["t", "{scene}"])",
-                                       R"("{workdir}/trace.ppm")"),
+        Broken{"workdir_unknown",
+               with(R"("cwd": "{build}")", R"(["t", "{scene}"])", R"("{workdir}/trace.ppm")"),
                "$.image: the tracer cannot know '{workdir}': run it there (\"cwd\": "
                "\"{workdir}\", the default) or pass '{workdir}' in run or env"},
         Broken{"bad_regex",
@@ -314,14 +315,16 @@ INSTANTIATE_TEST_SUITE_P(
         Broken{"duplicate_env_key", with(R"("env": {"A": "1", "B": "2", "A": "3"})"),
                ":1:122: $.env: duplicate key 'A' (JSON keeps only one of them; remove the "
                "other)"},
-        Broken{"name_too_long_for_a_file",
-               R"({"name": ")" + std::string(300, 'n') +
-                   R"(", "scene_format": "nff", "run": ["t", "{scene}", "{image}"], "image": "{image}"})",
-               "$.name: 'nnnnnnnnnnnnnnnnnnnn...' is 300 bytes long, more than the 64 allowed "
-               "(it is part of cache folder names)"},
-        Broken{"name_climbing_out",
-               R"({"name": "../../x", "scene_format": "nff", "run": ["t", "{scene}", "{image}"], "image": "{image}"})",
-               "$.name: '../../x' must be letters, digits, '.', '_' or '-' (it names folders)"},
+        Broken{
+            "name_too_long_for_a_file",
+            R"({"name": ")" + std::string(300, 'n') +
+                R"(", "scene_format": "nff", "run": ["t", "{scene}", "{image}"], "image": "{image}"})",
+            "$.name: 'nnnnnnnnnnnnnnnnnnnn...' is 300 bytes long, more than the 64 allowed "
+            "(it is part of cache folder names)"},
+        Broken{
+            "name_climbing_out",
+            R"({"name": "../../x", "scene_format": "nff", "run": ["t", "{scene}", "{image}"], "image": "{image}"})",
+            "$.name: '../../x' must be letters, digits, '.', '_' or '-' (it names folders)"},
         Broken{"zero_threads", with(R"("threads": 0)"),
                "$.threads: must be between 1 and 4096, found number 0"},
         Broken{"relative_cwd", with(R"("cwd": "out")"),

@@ -9,7 +9,8 @@ namespace {
 
 Adapter requiring(const std::string& packages) {
   return parse_adapter(R"({"name": "t", "scene_format": "nff", "run": ["t", "{scene}", "{image}"],
-    "image": "{image}", "requires": )" + packages + "}",
+    "image": "{image}", "requires": )" +
+                           packages + "}",
                        "p.json");
 }
 

@@ -63,9 +63,9 @@ TEST(Placeholders, ValuesAreNotExpandedAgain) {
 TEST(Placeholders, ShellSyntaxStaysLiteral) {
   Placeholders p = run_values();
   p.scene = "/r/feature;rm -rf ~/$(whoami)`id`";
-  EXPECT_EQ(expand(std::vector<std::string>{"t", "a;b", "$(echo hi)", "{scene}"}, p),
-            (std::vector<std::string>{"t", "a;b", "$(echo hi)",
-                                      "/r/feature;rm -rf ~/$(whoami)`id`"}));
+  EXPECT_EQ(
+      expand(std::vector<std::string>{"t", "a;b", "$(echo hi)", "{scene}"}, p),
+      (std::vector<std::string>{"t", "a;b", "$(echo hi)", "/r/feature;rm -rf ~/$(whoami)`id`"}));
 }
 
 TEST(Placeholders, ShellSyntaxReachesTheProgramVerbatim) {
@@ -93,7 +93,8 @@ TEST(Placeholders, WhereEachIsAllowed) {
     EXPECT_EQ(template_error(std::string("{") + name + "}", TemplateField::build), std::nullopt)
         << name;
   }
-  for (const char* name : {"threads", "scene", "image", "workdir", "scene_stem", "width", "height"}) {
+  for (const char* name :
+       {"threads", "scene", "image", "workdir", "scene_stem", "width", "height"}) {
     EXPECT_NE(template_error(std::string("{") + name + "}", TemplateField::build), std::nullopt)
         << name;
   }

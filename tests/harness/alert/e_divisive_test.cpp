@@ -12,9 +12,12 @@ namespace raygate {
 namespace {
 
 // ±1% of deterministic, irregular noise around `level`.
-double noisy(double level, std::size_t i) { return level * (1.0 + 0.01 * std::sin(2.399 * static_cast<double>(i) + 0.7)); }
+double noisy(double level, std::size_t i) {
+  return level * (1.0 + 0.01 * std::sin(2.399 * static_cast<double>(i) + 0.7));
+}
 
-std::vector<double> series(std::size_t n, const std::vector<std::pair<std::size_t, double>>& levels) {
+std::vector<double> series(std::size_t n,
+                           const std::vector<std::pair<std::size_t, double>>& levels) {
   std::vector<double> values;
   for (std::size_t i = 0; i < n; ++i) {
     double level = 1.0;

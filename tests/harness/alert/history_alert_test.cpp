@@ -47,9 +47,9 @@ std::vector<HistoryRow> join(std::vector<HistoryRow> a, const std::vector<Histor
 }
 
 TEST(HistoryAlert, RegressionAtCommitNineNamesRangeEightToNine) {
-  const AlertJudgement j = judge_history(join(rows_of("balls", 15, slower_at_9),
-                                              rows_of("gears", 15, flat)),
-                                         GatePolicy{}, {}, AlertAction::fail);
+  const AlertJudgement j =
+      judge_history(join(rows_of("balls", 15, slower_at_9), rows_of("gears", 15, flat)),
+                    GatePolicy{}, {}, AlertAction::fail);
   ASSERT_EQ(j.series.size(), 2u);
   EXPECT_EQ(j.alerts(), 1u);
   EXPECT_EQ(j.exit_code(), 1);

@@ -20,33 +20,34 @@ std::string read_text(const fs::path& path) {
 }
 
 BuildKeyInputs inputs_for(const Worktree& w, const Adapter& a, const BuildOptions& o) {
-  return {w.sha, w.dirty, a.name, build_inputs_hash(a, build_environment()), *o.compiler_identity,
-          o.key_extra};
+  return {
+      w.sha,      w.dirty, a.name, build_inputs_hash(a, build_environment()), *o.compiler_identity,
+      o.key_extra};
 }
 
 TEST(BuilderCache, RunsEveryStepWithPlaceholdersInSrc) {
   BuilderFixture f;
   fs::create_directories(f.tree() / "renderer");
-  const Adapter a = toy_adapter(
-      {{"sh", "-c", "printf '%s\\n' \"$@\" > \"$1/placeholders.txt\"", "sh", "{build}", "{src}",
-        "{repo_root}", "{jobs}", "{raygate_source}"},
-       {"cp", "{build}/placeholders.txt", "{build}/tracer"},
-       {"sh", "-c", "pwd > \"$1/cwd.txt\"", "sh", "{build}"}},
-      {{"source_dir", "renderer"}});
+  const Adapter a =
+      toy_adapter({{"sh", "-c", "printf '%s\\n' \"$@\" > \"$1/placeholders.txt\"", "sh", "{build}",
+                    "{src}", "{repo_root}", "{jobs}", "{raygate_source}"},
+                   {"cp", "{build}/placeholders.txt", "{build}/tracer"},
+                   {"sh", "-c", "pwd > \"$1/cwd.txt\"", "sh", "{build}"}},
+                  {{"source_dir", "renderer"}});
   const BuildRecord r = build(f.worktree(), a, f.options());
 
   ASSERT_TRUE(r.success) << failure_message(r);
   EXPECT_FALSE(r.cached);
   ASSERT_EQ(r.steps.size(), 3u);
   const fs::path src = f.tree() / "renderer";
-  EXPECT_EQ(read_text(r.build_dir / "tracer"),
-            r.build_dir.string() + "\n" + src.string() + "\n" + f.tree().string() + "\n3\n" +
-                (f.root() / "raygate-src").string() + "\n");
+  EXPECT_EQ(read_text(r.build_dir / "tracer"), r.build_dir.string() + "\n" + src.string() + "\n" +
+                                                   f.tree().string() + "\n3\n" +
+                                                   (f.root() / "raygate-src").string() + "\n");
   EXPECT_EQ(read_text(r.build_dir / "cwd.txt"), src.string() + "\n");
   EXPECT_EQ(r.src_dir, src);
-  EXPECT_EQ(r.steps[1].argv, (std::vector<std::string>{"cp", r.build_dir.string() +
-                                                       "/placeholders.txt",
-                                                       r.build_dir.string() + "/tracer"}));
+  EXPECT_EQ(r.steps[1].argv,
+            (std::vector<std::string>{"cp", r.build_dir.string() + "/placeholders.txt",
+                                      r.build_dir.string() + "/tracer"}));
   EXPECT_EQ(r.steps[0].outcome, "exited with status 0");
   EXPECT_EQ(r.steps[2].log, f.cache() / "builds" / r.key / "logs" / "step-3.log");
   EXPECT_EQ(r.build_dir, f.cache() / "builds" / r.key / "build");
@@ -116,12 +117,11 @@ TEST(BuilderCache, OtherCommitAdapterOrCompilerBuildsAgain) {
 TEST(BuilderCache, ARunOnlyChangeReusesTheBuild) {
   BuilderFixture f;
   const Adapter a = toy_adapter({count_step(f.counter())});
-  const Adapter fixed = toy_adapter(
-      {count_step(f.counter())},
-      {{"run", {"{build}/bin/tracer", "{scene}", "-o", "{image}"}},
-       {"timeout_s", {{"run", 9}}},
-       {"env", {{"OMP_NUM_THREADS", "1"}}},
-       {"description", "the run path fixed"}});
+  const Adapter fixed = toy_adapter({count_step(f.counter())},
+                                    {{"run", {"{build}/bin/tracer", "{scene}", "-o", "{image}"}},
+                                     {"timeout_s", {{"run", 9}}},
+                                     {"env", {{"OMP_NUM_THREADS", "1"}}},
+                                     {"description", "the run path fixed"}});
   const BuildRecord first = build(f.worktree(), a, f.options());
   const BuildRecord second = build(f.worktree(), fixed, f.options());
   ASSERT_TRUE(first.success);
@@ -136,8 +136,10 @@ TEST(BuilderCache, ARunOnlyChangeReusesTheBuild) {
 TEST(BuilderCacheKey, BuildEnvironmentIsAnInput) {
   const Adapter a = toy_adapter({{"true"}});
   EXPECT_NE(build_inputs_hash(a, {{"CXXFLAGS", "-O3"}}), build_inputs_hash(a, {}));
-  EXPECT_NE(build_inputs_hash(a, {{"CXXFLAGS", "-O3"}}), build_inputs_hash(a, {{"CXXFLAGS", "-O2"}}));
-  EXPECT_EQ(build_inputs_hash(a, {}), build_inputs_hash(toy_adapter({{"true"}}, {{"threads", 4}}), {}));
+  EXPECT_NE(build_inputs_hash(a, {{"CXXFLAGS", "-O3"}}),
+            build_inputs_hash(a, {{"CXXFLAGS", "-O2"}}));
+  EXPECT_EQ(build_inputs_hash(a, {}),
+            build_inputs_hash(toy_adapter({{"true"}}, {{"threads", 4}}), {}));
 }
 
 TEST(BuilderCache, DirtyWorktreeIsAlwaysRebuiltAndNeverRecorded) {
@@ -160,8 +162,7 @@ TEST(BuilderCache, LeftoverOfADeadRunIsRemovedBeforeBuilding) {
   BuilderFixture f;
   const Adapter a = toy_adapter({count_step(f.counter())});
   const BuildOptions o = f.options();
-  const BuildCacheEntry entry =
-      cache_entry(f.cache(), build_key(inputs_for(f.worktree(), a, o)));
+  const BuildCacheEntry entry = cache_entry(f.cache(), build_key(inputs_for(f.worktree(), a, o)));
   fs::create_directories(entry.build_dir);
   std::ofstream(entry.build_dir / "tracer") << "stale";
 
@@ -189,9 +190,9 @@ TEST(BuilderCache, UnreadableOrFailedRecordIsNotAHit) {
 
 TEST(BuilderCache, TwoBuildsOfOneKeyAtOnceRunTheStepsOnce) {
   BuilderFixture f;
-  const Adapter a = toy_adapter({{"sh", "-c", "echo ran >> \"$1\"; sleep 0.2", "sh",
-                                  f.counter().string()},
-                                 {"touch", "{build}/tracer"}});
+  const Adapter a =
+      toy_adapter({{"sh", "-c", "echo ran >> \"$1\"; sleep 0.2", "sh", f.counter().string()},
+                   {"touch", "{build}/tracer"}});
   BuildRecord first;
   BuildRecord second;
   std::thread other([&] { first = build(f.worktree(), a, f.options()); });

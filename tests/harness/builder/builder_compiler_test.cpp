@@ -72,8 +72,8 @@ TEST(BuilderCheckout, BuildsACheckedOutCommit) {
   const std::string v1 = repo.commit("v1");
   repo.write("renderer/tracer.sh", "echo v2\n", true);
   const std::string v2 = repo.commit("v2");
-  const Adapter a = toy_adapter({{"cp", "{src}/tracer.sh", "{build}/tracer"}},
-                                {{"source_dir", "renderer"}});
+  const Adapter a =
+      toy_adapter({{"cp", "{src}/tracer.sh", "{build}/tracer"}}, {{"source_dir", "renderer"}});
   const Repository repository = Repository::open(repo.path().string(), f.cache());
 
   const BuildRecord first = build(repository.checkout(v1), a, f.options());

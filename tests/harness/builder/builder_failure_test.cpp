@@ -20,9 +20,8 @@ const char* const kThirtyLinesThenFail = "for i in $(seq 1 30); do echo line $i;
 
 TEST(BuilderFailure, FailingStepStopsTheBuild) {
   BuilderFixture f;
-  const Adapter a = toy_adapter({{"touch", "{build}/tracer"},
-                                 {"sh", "-c", kThirtyLinesThenFail},
-                                 count_step(f.counter())});
+  const Adapter a = toy_adapter(
+      {{"touch", "{build}/tracer"}, {"sh", "-c", kThirtyLinesThenFail}, count_step(f.counter())});
   const BuildRecord r = build(f.worktree(), a, f.options());
 
   EXPECT_FALSE(r.success);
@@ -44,8 +43,7 @@ TEST(BuilderFailure, FailingStepStopsTheBuild) {
 TEST(BuilderFailure, MessageNamesStepOutcomeLogAndTail) {
   BuilderFixture f;
   const BuildRecord r =
-      build(f.worktree(), toy_adapter({{"true"}, {"sh", "-c", kThirtyLinesThenFail}}),
-            f.options());
+      build(f.worktree(), toy_adapter({{"true"}, {"sh", "-c", kThirtyLinesThenFail}}), f.options());
   const std::string message = failure_message(r);
   EXPECT_NE(message.find("step 2 of 2 `sh -c 'for i in $(seq 1 30); do echo line $i; done; "
                          "exit 2'` exited with status 2"),
@@ -92,8 +90,9 @@ TEST(BuilderFailure, MessageShowsTheFirstErrorLineFarAboveTheTail) {
 TEST(BuilderFailure, FirstErrorLineSkipsCMakeChatter) {
   TempDir dir;
   const fs::path log = dir.path() / "step-1.log";
-  write_file_atomically(log, "-- Looking for x - not found\n-- Configuring incomplete, errors "
-                             "occurred!\nsrc/a.cpp:3:1: error: 'foo' was not declared\n");
+  write_file_atomically(log,
+                        "-- Looking for x - not found\n-- Configuring incomplete, errors "
+                        "occurred!\nsrc/a.cpp:3:1: error: 'foo' was not declared\n");
   const std::optional<LogLine> first = first_error_line(log);
   ASSERT_TRUE(first.has_value());
   EXPECT_EQ(first->number, 3u);
@@ -140,11 +139,11 @@ TEST(BuilderFailure, RetryOfAFailedKeyStartsEmpty) {
   BuilderFixture f;
   // The first attempt leaves a binary and then fails (the counter has one line); the retry
   // succeeds only if that binary is gone when it starts.
-  const Adapter a = toy_adapter(
-      {{"sh", "-c", "test ! -e \"$1/tracer\"", "sh", "{build}"},
-       count_step(f.counter()),
-       {"touch", "{build}/tracer"},
-       {"sh", "-c", "test \"$(wc -l < \"$1\")\" -ge 2", "sh", f.counter().string()}});
+  const Adapter a =
+      toy_adapter({{"sh", "-c", "test ! -e \"$1/tracer\"", "sh", "{build}"},
+                   count_step(f.counter()),
+                   {"touch", "{build}/tracer"},
+                   {"sh", "-c", "test \"$(wc -l < \"$1\")\" -ge 2", "sh", f.counter().string()}});
   const BuildRecord first = build(f.worktree(), a, f.options());
   const BuildRecord second = build(f.worktree(), a, f.options());
   EXPECT_FALSE(first.success);
@@ -181,8 +180,8 @@ TEST(BuilderFailure, TimeoutKillsTheStep) {
 TEST(BuilderFailure, OneTimeoutCoversAllSteps) {
   BuilderFixture f;
   // Each step alone fits in the timeout; together they do not, so the second one is stopped.
-  const Adapter a = toy_adapter({{"sleep", "0.3"}, {"sleep", "0.3"}},
-                                {{"timeout_s", {{"build", 0.5}}}});
+  const Adapter a =
+      toy_adapter({{"sleep", "0.3"}, {"sleep", "0.3"}}, {{"timeout_s", {{"build", 0.5}}}});
   const BuildRecord r = build(f.worktree(), a, f.options());
   EXPECT_FALSE(r.success);
   ASSERT_EQ(r.steps.size(), 2u);
@@ -206,8 +205,8 @@ TEST(BuilderFailure, ProgramThatCannotStart) {
 
 TEST(BuilderFailure, CrashIsAFailure) {
   BuilderFixture f;
-  const BuildRecord r = build(f.worktree(), toy_adapter({{"sh", "-c", "kill -SEGV $$"}}),
-                              f.options());
+  const BuildRecord r =
+      build(f.worktree(), toy_adapter({{"sh", "-c", "kill -SEGV $$"}}), f.options());
   EXPECT_FALSE(r.success);
   EXPECT_NE(r.failure.find("killed by signal 11 (SEGV)"), std::string::npos) << r.failure;
 }

@@ -47,9 +47,7 @@ inline int lines_in(const std::filesystem::path& file) {
 
 class BuilderFixture {
  public:
-  BuilderFixture() {
-    std::filesystem::create_directories(tree());
-  }
+  BuilderFixture() { std::filesystem::create_directories(tree()); }
   std::filesystem::path root() const { return dir_.path(); }
   std::filesystem::path tree() const { return dir_.path() / "tree"; }
   std::filesystem::path cache() const { return dir_.path() / "cache"; }

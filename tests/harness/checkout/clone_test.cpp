@@ -14,9 +14,7 @@ namespace fs = std::filesystem;
 // libgit2 1.5 leaks a PCRE2 match block on every regex match it runs over config keys (fixed
 // upstream after 1.5: libgit2 PR #6382), and every remote lookup runs some. LeakSanitizer
 // reads this hook in sanitizer builds; ordinary builds never call it.
-extern "C" const char* __lsan_default_suppressions() {
-  return "leak:libpcre2-8.so\n";
-}
+extern "C" const char* __lsan_default_suppressions() { return "leak:libpcre2-8.so\n"; }
 
 namespace raygate {
 namespace {

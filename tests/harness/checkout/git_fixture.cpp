@@ -29,9 +29,7 @@ GitFixture::GitFixture(const fs::path& dir) : path_(fs::absolute(dir)) {
              "initialising a test repository in " + path_.string());
 }
 
-std::string GitFixture::url() const {
-  return "file://" + path_.string();
-}
+std::string GitFixture::url() const { return "file://" + path_.string(); }
 
 void GitFixture::write(const std::string& relative, std::string_view content, bool executable) {
   const fs::path file = path_ / relative;
@@ -50,9 +48,7 @@ void GitFixture::write_symlink(const std::string& relative, const std::string& t
   fs::create_symlink(target, link);
 }
 
-void GitFixture::remove(const std::string& relative) {
-  fs::remove_all(path_ / relative);
-}
+void GitFixture::remove(const std::string& relative) { fs::remove_all(path_ / relative); }
 
 git::SignaturePtr GitFixture::signature(const std::string& name, std::int64_t time,
                                         int offset) const {

@@ -65,7 +65,8 @@ TEST(CheckoutRefusal, RepositoryOwnedByAnotherUserNamesTheOwnershipCheck) {
       << refused;
   EXPECT_NE(refused.find("owned by uid 65534"), std::string::npos) << refused;
   EXPECT_NE(refused.find("git config --global --add safe.directory " + path.string()),
-            std::string::npos) << refused;
+            std::string::npos)
+      << refused;
   EXPECT_EQ(refused.find("not in a git repository"), std::string::npos) << refused;
 
   // The remedy the message names works: libgit2 honours safe.directory from git config.

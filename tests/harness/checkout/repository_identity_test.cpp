@@ -68,9 +68,9 @@ TEST(RepositoryIdentity, NothingWhereThereIsNoRepositoryOrCommit) {
   repo.commit("first");
   EXPECT_EQ(repository_identity(repo.path().string(), "uncommitted", dir.path()), "");
   EXPECT_EQ(repository_identity(repo.path().string(), std::string(40, 'f'), dir.path()), "");
-  EXPECT_EQ(repository_identity("https://example.invalid/none.git", std::string(40, 'f'),
-                                dir.path()),
-            "");  // never fetched: no cached clone, no identity
+  EXPECT_EQ(
+      repository_identity("https://example.invalid/none.git", std::string(40, 'f'), dir.path()),
+      "");  // never fetched: no cached clone, no identity
 }
 
 TEST(RepositoryIdentity, RemoteUrlsInOneSpelling) {

@@ -22,7 +22,8 @@ namespace {
 // with NUL bytes. A text filter that touched it would change its line ends.
 std::string png_like_bytes() {
   static constexpr char kHeader[] =
-      "\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10\0\0\0\x10\x08\x06\0\0\0\x1f\xf3\xff" "a";
+      "\x89PNG\r\n\x1a\n\0\0\0\rIHDR\0\0\0\x10\0\0\0\x10\x08\x06\0\0\0\x1f\xf3\xff"
+      "a";
   std::string bytes(kHeader, sizeof(kHeader) - 1);
   for (int i = 0; i < 64; ++i) bytes.push_back(static_cast<char>(i * 37));
   bytes += "\r\n\n\r end";

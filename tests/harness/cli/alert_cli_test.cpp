@@ -54,7 +54,8 @@ class AlertCli : public ::testing::Test {
 
 TEST_F(AlertCli, RegressionAtCommitNineIsFlaggedAsRangeEightToNine) {
   record_history(1.10, 9);
-  const CliStreams r = run_raygate_streams({"alert", "--store", "store.db", "--branch", "main"}, dir);
+  const CliStreams r =
+      run_raygate_streams({"alert", "--store", "store.db", "--branch", "main"}, dir);
   EXPECT_EQ(r.exit_code, 1) << r.out << r.err;
   EXPECT_THAT(r.out, HasSubstr("REGRESSED  balls"));
   EXPECT_THAT(r.out, HasSubstr(short_sha(8) + ".." + short_sha(9)));
@@ -95,8 +96,9 @@ TEST_F(AlertCli, TextThatIsNotUtf8InTheStoreIsRepairedOnTheWayOut) {
   record_history(1.10, 9);
   {
     SqliteDb db = SqliteDb::open(dir.path() / "store.db", false);
-    db.exec("UPDATE revisions SET subject = subject || ' caf' || CAST(X'E9' AS TEXT) || "
-            "CAST(X'1B' AS TEXT) || '[2J'");
+    db.exec(
+        "UPDATE revisions SET subject = subject || ' caf' || CAST(X'E9' AS TEXT) || "
+        "CAST(X'1B' AS TEXT) || '[2J'");
   }
   const CliStreams j = run_raygate_streams(
       {"alert", "--store", "store.db", "--branch", "main", "--format", "json"}, dir);
@@ -140,8 +142,7 @@ TEST_F(AlertCli, FlatHistoryRaisesNothing) {
 TEST_F(AlertCli, PolicyLimitAndUnknownBranch) {
   record_history(1.02, 9);  // +2%: under the default 3% limit
   EXPECT_EQ(run_raygate_streams({"alert", "--store", "store.db"}, dir).exit_code, 0);
-  write_file_atomically(dir.path() / "strict.json",
-                        R"({"max_slowdown": 0.01})");
+  write_file_atomically(dir.path() / "strict.json", R"({"max_slowdown": 0.01})");
   const CliStreams strict =
       run_raygate_streams({"alert", "--store", "store.db", "--policy", "strict.json"}, dir);
   EXPECT_EQ(strict.exit_code, 1) << strict.out << strict.err;

@@ -23,12 +23,13 @@ namespace fs = std::filesystem;
 
 class CompareCli : public TracerRepoTest {
  protected:
-
   // The options every measuring command here shares: the tiny suite, make-nff, no goldens.
   std::vector<std::string> common(const std::vector<std::string>& scenes) const {
-    std::vector<std::string> args{"--repo",       repo_.path().string(), "--adapter", "make-nff",
-                                  "--suite",      suite_.string(),       "--cache-dir",
-                                  cache_.string(), "--golden-dir",       "no-goldens",
+    std::vector<std::string> args{"--repo",       repo_.path().string(),
+                                  "--adapter",    "make-nff",
+                                  "--suite",      suite_.string(),
+                                  "--cache-dir",  cache_.string(),
+                                  "--golden-dir", "no-goldens",
                                   "--max-rounds", "16"};  // a verdict needs 12 (1 scene)
     for (const std::string& id : scenes) args.insert(args.end(), {"--scene", id});
     return args;
@@ -36,8 +37,9 @@ class CompareCli : public TracerRepoTest {
 
   CliRun compare(const std::string& base, const std::string& head,
                  const std::vector<std::string>& scenes, std::vector<std::string> extra = {}) {
-    std::vector<std::string> args{"compare", "--base", base, "--head", head, "--no-store",
-                                  "--out",   (dir_.path() / "c.json").string()};
+    std::vector<std::string> args{
+        "compare", "--base",     base,    "--head",
+        head,      "--no-store", "--out", (dir_.path() / "c.json").string()};
     const std::vector<std::string> shared = common(scenes);
     args.insert(args.end(), shared.begin(), shared.end());
     args.insert(args.end(), extra.begin(), extra.end());
@@ -83,7 +85,8 @@ TEST_F(CompareCli, WrongShadingFailsOnTheImageAgainstBase) {
   // Named: a range-for over document().scenes.at(0) would outlive the document (C++20).
   const ResultsDocument d = document();
   for (const ImageCheck& check : d.scenes.at(0).images) {
-    if (check.reference == ImageReference::base) base_check_failed = check.verdict == ImageVerdict::fail;
+    if (check.reference == ImageReference::base)
+      base_check_failed = check.verdict == ImageVerdict::fail;
   }
   EXPECT_TRUE(base_check_failed);
 }
@@ -149,7 +152,8 @@ TEST_F(CompareCli, BisectNamesTheCommitThatMadeTheTracerSlower) {
   // +18.6% [+4.3%, +34.3%], which the default 3% limit calls REGRESSED.
   const fs::path policy = dir_.path() / "policy.json";
   write_file_atomically(policy, R"({"max_slowdown": 1.0})");
-  std::vector<std::string> args{"bisect", "--good", good, "--bad", bad, "--policy", policy.string()};
+  std::vector<std::string> args{"bisect", "--good",   good,           "--bad",
+                                bad,      "--policy", policy.string()};
   const std::vector<std::string> shared = common({"tetra"});
   args.insert(args.end(), shared.begin(), shared.end());
   // --format json: the answer and every step on standard output, as one JSON object; the steps
@@ -171,8 +175,8 @@ TEST_F(CompareCli, BisectOfAnEmptyRangeIsAUsageErrorNotACrash) {
   commit(sources_.fast, "tracer");
   const std::string only = commit(sources_.slow, "slower");
   repo_.annotated_tag("v2", "release 2");
-  for (const auto& [good, bad] : std::vector<std::pair<std::string, std::string>>{
-           {only, only}, {"v2", only}, {only, "v2"}}) {
+  for (const auto& [good, bad] :
+       std::vector<std::pair<std::string, std::string>>{{only, only}, {"v2", only}, {only, "v2"}}) {
     std::vector<std::string> args{"bisect", "--good", good, "--bad", bad};
     const std::vector<std::string> shared = common({"tetra"});
     args.insert(args.end(), shared.begin(), shared.end());

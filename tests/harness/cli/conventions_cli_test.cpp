@@ -50,11 +50,13 @@ TEST_F(Conventions, NoColorIsHonouredOnATerminal) {
 
   // An empty NO_COLOR does not count (no-color.org); --color beats the variable either way.
   EXPECT_THAT(run_on_terminal(report, dir.path(), {{"NO_COLOR", ""}}).out, HasSubstr(kEscape));
-  EXPECT_THAT(run_on_terminal({"report", "doc.json", "--color", "always"}, dir.path(),
-                              {{"NO_COLOR", "1"}}).out,
-              HasSubstr(kEscape));
+  EXPECT_THAT(
+      run_on_terminal({"report", "doc.json", "--color", "always"}, dir.path(), {{"NO_COLOR", "1"}})
+          .out,
+      HasSubstr(kEscape));
   EXPECT_THAT(run_on_terminal({"--color", "never", "report", "doc.json"}, dir.path(),
-                              {{"NO_COLOR", std::nullopt}}).out,
+                              {{"NO_COLOR", std::nullopt}})
+                  .out,
               Not(HasSubstr(kEscape)));
 }
 
@@ -85,7 +87,8 @@ TEST_F(Conventions, GateAndScenesListPrintJsonAlone) {
 
 TEST_F(Conventions, DeprecatedSpellingsStillWorkAndSaySo) {
   import_document();
-  const CliStreams old_json = run_raygate_streams({"history", "--store", "store.db", "--json"}, dir);
+  const CliStreams old_json =
+      run_raygate_streams({"history", "--store", "store.db", "--json"}, dir);
   ASSERT_EQ(old_json.exit_code, 0) << old_json.err;
   EXPECT_TRUE(json::accept(old_json.out)) << old_json.out;
   EXPECT_THAT(old_json.err, HasSubstr("--json is deprecated; use --format json"));
@@ -103,15 +106,17 @@ TEST_F(Conventions, DeprecatedSpellingsStillWorkAndSaySo) {
       run_raygate_streams({"export", "--store", "store.db", "--output", "b.json"}, dir);
   ASSERT_EQ(new_out.exit_code, 0) << new_out.err;
   EXPECT_EQ(read_file(dir.path() / "a.json"), read_file(dir.path() / "b.json"));
-  EXPECT_EQ(run_raygate_streams({"export", "--store", "store.db", "--out", "c.json", "-o",
-                                 "d.json"}, dir).exit_code,
-            2);
+  EXPECT_EQ(
+      run_raygate_streams({"export", "--store", "store.db", "--out", "c.json", "-o", "d.json"}, dir)
+          .exit_code,
+      2);
   EXPECT_EQ(run_raygate_streams({"export", "--store", "store.db"}, dir).exit_code, 2);
 }
 
 TEST_F(Conventions, ConfigFileThenEnvironmentThenCommandLine) {
   // A store that does not exist is named in the error: which one was used.
-  write_file_atomically(dir.path() / "raygate.toml", "# the project's defaults\nstore = \"from-file.db\"\n");
+  write_file_atomically(dir.path() / "raygate.toml",
+                        "# the project's defaults\nstore = \"from-file.db\"\n");
   const auto store_named = [&](const std::vector<std::string>& args,
                                const std::map<std::string, std::string>& env) {
     const CliStreams r = run_raygate_streams(args, dir, env);
@@ -122,8 +127,9 @@ TEST_F(Conventions, ConfigFileThenEnvironmentThenCommandLine) {
   EXPECT_THAT(store_named({"history"}, unset), HasSubstr((dir.path() / "from-file.db").string()));
   EXPECT_THAT(store_named({"history"}, {{"RAYGATE_STORE", "from-env.db"}}),
               HasSubstr("from-env.db"));
-  EXPECT_THAT(store_named({"history", "--store", "from-cli.db"}, {{"RAYGATE_STORE", "from-env.db"}}),
-              HasSubstr("from-cli.db"));
+  EXPECT_THAT(
+      store_named({"history", "--store", "from-cli.db"}, {{"RAYGATE_STORE", "from-env.db"}}),
+      HasSubstr("from-cli.db"));
   write_file_atomically(dir.path() / "other.toml", "store = \"other.db\"\n");
   EXPECT_THAT(store_named({"--config", "other.toml", "history"}, unset), HasSubstr("other.db"));
 
@@ -167,9 +173,9 @@ TEST_F(Conventions, RunReportJsonToStandardOutputIsPureJson) {
   write_file_atomically(dir.path() / "tiny.json", kTinySuite);
   fs::create_directories(dir.path() / "no-goldens");
   const std::vector<std::string> run{
-      "run", "--repo", "tracer-repo", "--adapter", "make-nff", "--suite", "tiny.json",
-      "--scene", "tetra", "--max-rounds", "1", "--warmup", "0", "--golden-dir", "no-goldens",
-      "--no-store", "--report", "json:-"};
+      "run",       "--repo",       "tracer-repo", "--adapter",    "make-nff", "--suite",
+      "tiny.json", "--scene",      "tetra",       "--max-rounds", "1",        "--warmup",
+      "0",         "--golden-dir", "no-goldens",  "--no-store",   "--report", "json:-"};
   const CliStreams r = run_raygate_streams(run, dir);
   ASSERT_EQ(r.exit_code, 0) << r.out << r.err;
   const json report = json::parse(r.out);  // throws on anything but one JSON document

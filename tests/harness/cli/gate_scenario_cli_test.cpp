@@ -52,14 +52,15 @@ class GateScenario : public TracerRepoTest {
   // where things go, and 30 rounds per scene instead of compare's 60: the confidence sequences
   // decide a 2-scene compare from the 13th round, and the test's time stays what it was.
   std::vector<std::string> common() const {
-    return {"--repo",      repo_.path().string(), "--adapter",    "make-nff",
-            "--suite",     suite_.string(),       "--cache-dir",  cache_.string(),
-            "--golden-dir", "no-goldens",         "--max-rounds", "30"};
+    return {"--repo",       repo_.path().string(), "--adapter",    "make-nff",
+            "--suite",      suite_.string(),       "--cache-dir",  cache_.string(),
+            "--golden-dir", "no-goldens",          "--max-rounds", "30"};
   }
 
   CliRun compare(const std::string& base, const std::string& head) {
-    std::vector<std::string> args{"compare", "--base", base, "--head", head, "--no-store",
-                                  "--out",   (dir_.path() / "c.json").string()};
+    std::vector<std::string> args{
+        "compare", "--base",     base,    "--head",
+        head,      "--no-store", "--out", (dir_.path() / "c.json").string()};
     const std::vector<std::string> shared = common();
     args.insert(args.end(), shared.begin(), shared.end());
     return run_raygate(args, dir_);
@@ -99,7 +100,8 @@ TEST_F(GateScenario, TwiceSlowerFailsOnSpeed) {
     ASSERT_TRUE(scene.change) << scene.entry.id;
     EXPECT_TRUE(scene.change_verdict == ChangeVerdict::regressed ||
                 scene.change_verdict == ChangeVerdict::inconclusive)
-        << scene.entry.id << " " << to_string(scene.change_verdict) << "\n" << r.out;
+        << scene.entry.id << " " << to_string(scene.change_verdict) << "\n"
+        << r.out;
     EXPECT_GT(scene.change->change, 0.3) << scene.entry.id;
     EXPECT_LT(scene.change->change, 2.5) << scene.entry.id;
     if (scene.change_verdict == ChangeVerdict::regressed) ++regressed;
@@ -118,7 +120,8 @@ TEST_F(GateScenario, WrongShadingFailsOnTheImageNotOnSpeed) {
   for (const SceneResult& scene : document().scenes) {
     bool base_check_failed = false;
     for (const ImageCheck& check : scene.images) {
-      if (check.reference == ImageReference::base) base_check_failed = check.verdict == ImageVerdict::fail;
+      if (check.reference == ImageReference::base)
+        base_check_failed = check.verdict == ImageVerdict::fail;
     }
     EXPECT_TRUE(base_check_failed) << scene.entry.id;
   }

@@ -80,8 +80,8 @@ TEST(GoldenCli, MissingGoldenIsAnErrorNotAPass) {
 
 TEST(GoldenCli, BlessWritesOnlyTheNamedScenes) {
   TempDir dir;
-  const CliRun r = run_raygate(
-      {"golden", "bless", "tetra", "--golden-dir", "fresh", "--work-dir", "work"}, dir);
+  const CliRun r =
+      run_raygate({"golden", "bless", "tetra", "--golden-dir", "fresh", "--work-dir", "work"}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const GoldenManifest m = load_golden_manifest(dir.path() / "fresh");
   ASSERT_EQ(m.entries.size(), 1u);
@@ -89,8 +89,8 @@ TEST(GoldenCli, BlessWritesOnlyTheNamedScenes) {
   // The freshly blessed image is the shipped one, pixel for pixel (deterministic baseline; the
   // bytes may differ: goldens blessed by an older baseline's PNG writer decode to the same pixels).
   EXPECT_EQ(m.entries[0].sha256, sha256_file_hex(dir.path() / "fresh" / "tetra.png"));
-  EXPECT_TRUE(compare_images(dir.path() / "fresh" / "tetra.png", kGolden / "tetra.png", {})
-                  .identical());
+  EXPECT_TRUE(
+      compare_images(dir.path() / "fresh" / "tetra.png", kGolden / "tetra.png", {}).identical());
   const CliRun unknown = run_raygate({"golden", "bless", "nope", "--golden-dir", "fresh"}, dir);
   EXPECT_EQ(unknown.exit_code, 2);
   EXPECT_NE(unknown.out.find("suite 'ci' has no scene 'nope'"), std::string::npos);
@@ -135,9 +135,8 @@ class NewTracerCli : public TracerRepoTest {
 TEST_F(NewTracerCli, FirstCompareWithoutGoldensPassesAndSaysSoOnce) {
   const std::string sha = commit(sources_.fast, "tracer");
   const std::filesystem::path out = dir_.path() / "c.json";
-  const CliRun r = run_raygate(measure({"compare", "--base", sha, "--head", sha, "--out",
-                                        out.string()}),
-                               dir_);
+  const CliRun r =
+      run_raygate(measure({"compare", "--base", sha, "--head", sha, "--out", out.string()}), dir_);
   EXPECT_EQ(r.exit_code, 0) << r.out;
   const std::filesystem::path own = kSource / "golden" / "make-nff";
   EXPECT_EQ(occurrences(r.out, "no goldens in " + own.string()), 1u) << r.out;
@@ -156,12 +155,12 @@ TEST_F(NewTracerCli, FirstCompareWithoutGoldensPassesAndSaysSoOnce) {
   }
   EXPECT_TRUE(head_vs_base);
 
-  const CliRun bless = run_raygate({"golden", "bless", "--from-run", out.string(), "--role",
-                                    "head", "--golden-dir", "mine"},
-                                   dir_);
+  const CliRun bless = run_raygate(
+      {"golden", "bless", "--from-run", out.string(), "--role", "head", "--golden-dir", "mine"},
+      dir_);
   ASSERT_EQ(bless.exit_code, 0) << bless.out;
-  const CliRun gated = run_raygate(
-      measure({"run", "--rev", sha, "--golden-dir", "mine", "--out", "r.json"}), dir_);
+  const CliRun gated =
+      run_raygate(measure({"run", "--rev", sha, "--golden-dir", "mine", "--out", "r.json"}), dir_);
   EXPECT_EQ(gated.exit_code, 0) << gated.out;
   EXPECT_FALSE(has(gated.out, "no goldens")) << gated.out;
   const ResultsDocument run = read_results(dir_.path() / "r.json");
@@ -175,8 +174,9 @@ TEST_F(NewTracerCli, FirstCompareWithoutGoldensPassesAndSaysSoOnce) {
   write_file_atomically(dir_.path() / "empty.json", empty.dump());
   const CliRun gate = run_raygate({"gate", "empty.json"}, dir_);
   EXPECT_EQ(gate.exit_code, 3) << gate.out;
-  EXPECT_TRUE(has(gate.out, "gate: COULD NOT MEASURE: 0 scenes, 0 failed, 0 warnings; the "
-                            "document holds no scenes: nothing was measured"))
+  EXPECT_TRUE(has(gate.out,
+                  "gate: COULD NOT MEASURE: 0 scenes, 0 failed, 0 warnings; the "
+                  "document holds no scenes: nothing was measured"))
       << gate.out;
 }
 
@@ -185,8 +185,8 @@ TEST_F(NewTracerCli, FirstCompareWithoutGoldensPassesAndSaysSoOnce) {
 TEST_F(NewTracerCli, GarbageImageOfHeadFailsTheChange) {
   const std::string base = commit(sources_.fast, "tracer");
   const std::string head = commit(sources_.garbling, "write text, not an image");
-  const CliRun r = run_raygate(
-      measure({"compare", "--base", base, "--head", head, "--out", "c.json"}), dir_);
+  const CliRun r =
+      run_raygate(measure({"compare", "--base", base, "--head", head, "--out", "c.json"}), dir_);
   EXPECT_EQ(r.exit_code, 1) << r.out;
   EXPECT_TRUE(has(r.out, "image head vs base: ")) << r.out;
   EXPECT_TRUE(has(r.out, "cannot read image")) << r.out;

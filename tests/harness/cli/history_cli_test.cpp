@@ -132,10 +132,12 @@ TEST_F(HistoryCli, TextThatIsNotUtf8InTheStoreIsRepairedOnTheWayOut) {
   ASSERT_EQ(import(three_commits()).exit_code, 0);
   {
     SqliteDb db = SqliteDb::open(dir.path() / "store.db", false);
-    db.exec("UPDATE revisions SET subject = subject || ' caf' || CAST(X'E9' AS TEXT) || "
-            "CAST(X'1B' AS TEXT) || '[2J'");
-    db.exec("UPDATE documents SET document_json = replace(document_json, 'commit number 2', "
-            "'commit number 2 ' || CAST(X'FF' AS TEXT))");
+    db.exec(
+        "UPDATE revisions SET subject = subject || ' caf' || CAST(X'E9' AS TEXT) || "
+        "CAST(X'1B' AS TEXT) || '[2J'");
+    db.exec(
+        "UPDATE documents SET document_json = replace(document_json, 'commit number 2', "
+        "'commit number 2 ' || CAST(X'FF' AS TEXT))");
   }
   const CliStreams j =
       run_raygate_streams({"history", "--store", "store.db", "--format", "json"}, dir);
@@ -287,19 +289,19 @@ TEST_F(HistoryOfRuns, ARunRecordsItsRepositorysRootCommitAndHistoryShowsIt) {
   const std::string second = commit(sources_.fast + "\n// a comment\n", "second");
   for (const std::string& rev : {first, second}) {
     const std::filesystem::path out = dir_.path() / ("run-" + rev.substr(0, 7) + ".json");
-    const CliRun run = run_raygate(
-        {"run", "--repo", repo_.path().string(), "--rev", rev, "--adapter", "make-nff", "--suite",
-         suite_.string(), "--cache-dir", cache_.string(), "--golden-dir", "no-goldens",
-         "--max-rounds", "2", "--warmup", "0", "--out", out.string()},
-        dir_);
+    const CliRun run =
+        run_raygate({"run", "--repo", repo_.path().string(), "--rev", rev, "--adapter", "make-nff",
+                     "--suite", suite_.string(), "--cache-dir", cache_.string(), "--golden-dir",
+                     "no-goldens", "--max-rounds", "2", "--warmup", "0", "--out", out.string()},
+                    dir_);
     ASSERT_EQ(run.exit_code, 0) << run.out;
     EXPECT_EQ(read_results(out).revisions.at(0).repository_id, "root:" + first);
   }
   const CliRun history =
       run_raygate({"history", "--store", (cache_ / "results.db").string()}, dir_);
   ASSERT_EQ(history.exit_code, 0) << history.out;
-  EXPECT_TRUE(has(history.out, "repository root:" + first.substr(0, 12) +
-                                   ", adapter make-nff: 2 commits"))
+  EXPECT_TRUE(
+      has(history.out, "repository root:" + first.substr(0, 12) + ", adapter make-nff: 2 commits"))
       << history.out;
 }
 

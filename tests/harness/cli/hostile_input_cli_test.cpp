@@ -124,9 +124,8 @@ TEST(HostileInput, BadFlagsAndFilesAreUsageErrors) {
       run_raygate({"compare", "--adapter", "make-nff", "--baseline", "a-folder"}, dir),
       "--baseline a-folder");
   // libpq checks sslmode only when it connects, and calls a bad one a connection failure.
-  const CliRun ssl =
-      run_raygate({"history", "--store", "postgresql://ci@localhost/raygate?sslmode=sometimes"},
-                  dir);
+  const CliRun ssl = run_raygate(
+      {"history", "--store", "postgresql://ci@localhost/raygate?sslmode=sometimes"}, dir);
   expect_usage_error(ssl, "sslmode \"sometimes\" is not one of disable, allow, prefer");
   expect_usage_error(
       run_raygate({"history", "--store", "postgresql://ci@localhost/raygate?connect_timeout=x"},
@@ -151,10 +150,10 @@ class LongRevision : public TracerRepoTest {};
 TEST_F(LongRevision, IsAUsageErrorThatEchoesLittleOfIt) {
   commit(sources_.fast, "the tracer");
   for (const std::string& rev : {std::string(100000, 'a'), std::string("main\x1b[2J")}) {
-    const CliRun r = run_raygate({"run", "--repo", repo_.path().string(), "--rev", rev,
-                                  "--adapter", "make-nff", "--suite", suite_.string(),
-                                  "--cache-dir", cache_.string()},
-                                 dir_);
+    const CliRun r =
+        run_raygate({"run", "--repo", repo_.path().string(), "--rev", rev, "--adapter", "make-nff",
+                     "--suite", suite_.string(), "--cache-dir", cache_.string()},
+                    dir_);
     expect_usage_error(r, "cannot name anything in");
     EXPECT_LT(r.out.size(), 2000u) << r.out.substr(0, 2000);
   }

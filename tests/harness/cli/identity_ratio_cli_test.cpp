@@ -74,8 +74,11 @@ class IdentityRatio : public ::testing::Test {
     // PPM, as the baseline writes during measurement: the same work, not PNG's extra deflate.
     json run = {"/bin/sh", "{src}/identity.sh", "{scene}", "{workdir}/identity.ppm"};
     if (!extra.empty()) run.push_back(extra);
-    const json a = {{"name", name}, {"scene_format", "nff"}, {"run", run},
-                    {"image", "{workdir}/identity.ppm"}, {"timing", timing}};
+    const json a = {{"name", name},
+                    {"scene_format", "nff"},
+                    {"run", run},
+                    {"image", "{workdir}/identity.ppm"},
+                    {"timing", timing}};
     const fs::path path = dir_.path() / (name + ".json");
     write_file_atomically(path, a.dump(2));
     return path;
@@ -83,14 +86,28 @@ class IdentityRatio : public ::testing::Test {
 
   ResultsDocument measure(const fs::path& adapter_file, const std::vector<std::string>& extra,
                           const fs::path& suite, const std::string& rounds) {
-    const fs::path out = dir_.path() / (adapter_file.stem().string() + "-" + std::to_string(extra.size()) + ".json");
-    std::vector<std::string> args{"run",         "--repo",       repo_.path().string(),
-                                  "--adapter",   adapter_file.string(), "--suite",
-                                  suite.string(), "--cache-dir", (dir_.path() / "cache").string(),
-                                  "--golden-dir", (dir_.path() / "no-goldens").string(),
-                                  "--min-rounds", rounds,        "--max-rounds", rounds,
-                                  "--warmup",    "1",            "--no-store",
-                                  "--out",       out.string()};
+    const fs::path out =
+        dir_.path() / (adapter_file.stem().string() + "-" + std::to_string(extra.size()) + ".json");
+    std::vector<std::string> args{"run",
+                                  "--repo",
+                                  repo_.path().string(),
+                                  "--adapter",
+                                  adapter_file.string(),
+                                  "--suite",
+                                  suite.string(),
+                                  "--cache-dir",
+                                  (dir_.path() / "cache").string(),
+                                  "--golden-dir",
+                                  (dir_.path() / "no-goldens").string(),
+                                  "--min-rounds",
+                                  rounds,
+                                  "--max-rounds",
+                                  rounds,
+                                  "--warmup",
+                                  "1",
+                                  "--no-store",
+                                  "--out",
+                                  out.string()};
     args.insert(args.end(), extra.begin(), extra.end());
     const CliRun r = run_raygate(args, dir_);
     EXPECT_EQ(r.exit_code, 0) << r.out;
@@ -146,10 +163,9 @@ TEST_F(IdentityRatio, ProcessCpuAgainstProcessCpu) {
 
 // A tracer that prints its own time is compared with the baseline's in-process seconds.
 TEST_F(IdentityRatio, ReportedAgainstInProcess) {
-  const json timing = {{"source", "reported"}, {"regex", "in-process seconds ([0-9.]+)"},
-                       {"unit", "s"}};
-  const ResultsDocument d =
-      measure_timed(adapter("identity-reported", timing, "--print-time"), {});
+  const json timing = {
+      {"source", "reported"}, {"regex", "in-process seconds ([0-9.]+)"}, {"unit", "s"}};
+  const ResultsDocument d = measure_timed(adapter("identity-reported", timing, "--print-time"), {});
   expect_identity(d, "in-process");
   EXPECT_EQ(d.settings.tracer_clock, "reported");
   // The tracer's seconds are the very number it printed: its in-process seconds.

@@ -77,16 +77,22 @@ class InterruptCli : public TracerRepoTest {
   fs::path sleeping_adapter(bool deaf = false) const {
     json adapter = json::parse(read_file(kSource / "adapters" / "make-nff.json"));
     adapter["name"] = deaf ? "make-nff-deaf" : "make-nff-sleeping";
-    adapter["run"] = {"sh", "-c",
-                      std::string(deaf ? "trap '' TERM\n" : "") +
-                      "case \"$1\" in *balls*)\n"
-                      "  sleep 100 & echo $! > \"$4/grandchild.pid\"\n"
-                      "  setsid sleep 100 </dev/null >/dev/null 2>&1 & echo $! > \"$4/stray.pid\"\n"
-                      "  echo $$ > \"$4/tracer.pid\"\n"
-                      "  wait;;\n"
-                      "esac\n"
-                      "exec \"$2\" \"$1\" -o \"$3\"",
-                      "sh", "{scene}", "{build}/tracer", "{image}", pids_.string()};
+    adapter["run"] = {
+        "sh",
+        "-c",
+        std::string(deaf ? "trap '' TERM\n" : "") +
+            "case \"$1\" in *balls*)\n"
+            "  sleep 100 & echo $! > \"$4/grandchild.pid\"\n"
+            "  setsid sleep 100 </dev/null >/dev/null 2>&1 & echo $! > \"$4/stray.pid\"\n"
+            "  echo $$ > \"$4/tracer.pid\"\n"
+            "  wait;;\n"
+            "esac\n"
+            "exec \"$2\" \"$1\" -o \"$3\"",
+        "sh",
+        "{scene}",
+        "{build}/tracer",
+        "{image}",
+        pids_.string()};
     const fs::path path = dir_.path() / "make-nff-sleeping.json";
     write_file_atomically(path, adapter.dump(2));
     return path;
@@ -110,11 +116,24 @@ class InterruptCli : public TracerRepoTest {
   }
 
   std::vector<std::string> run_args(const fs::path& adapter) const {
-    return {"run",          "--repo",        repo_.path().string(), "--adapter",
-            adapter.string(), "--suite",     suite_.string(),       "--cache-dir",
-            cache_.string(), "--golden-dir", "no-goldens",          "--max-rounds",
-            "1",            "--warmup",      "0",                   "--no-store",
-            "--out",        out_.string()};
+    return {"run",
+            "--repo",
+            repo_.path().string(),
+            "--adapter",
+            adapter.string(),
+            "--suite",
+            suite_.string(),
+            "--cache-dir",
+            cache_.string(),
+            "--golden-dir",
+            "no-goldens",
+            "--max-rounds",
+            "1",
+            "--warmup",
+            "0",
+            "--no-store",
+            "--out",
+            out_.string()};
   }
 
   // Starts raygate with `args`; once `ready` appears, sends `sig` (and `second` 200 ms later,
@@ -222,8 +241,7 @@ TEST_F(InterruptCli, SecondSignalEndsRaygateAtOnceWithItsChildren) {
   commit(sources_.fast, "tracer");
   fs::create_directories(pids_);
   // The tracer ignores SIGTERM, so the first SIGINT alone would take the 2 s grace to SIGKILL.
-  EXPECT_EQ(signal_when(run_args(sleeping_adapter(true)), pids_ / "tracer.pid", SIGINT, SIGINT),
-            -1)
+  EXPECT_EQ(signal_when(run_args(sleeping_adapter(true)), pids_ / "tracer.pid", SIGINT, SIGINT), -1)
       << output_;
   EXPECT_EQ(died_of_, SIGINT);
   EXPECT_LT(stop_seconds_, 1.5);
@@ -243,8 +261,7 @@ TEST_F(InterruptCli, ARepeatedHangUpIsOneHangUpNotTheSecondSignalEscape) {
   EXPECT_EQ(died_of_, 0);
   EXPECT_TRUE(ends(pid_in(pids_ / "tracer.pid"))) << "the tracer still runs";
   EXPECT_FALSE(read_results(out_).complete);
-  EXPECT_EQ(lines_with(output_, "interrupted by SIGHUP: kept 1 of 2 scenes").size(), 1u)
-      << output_;
+  EXPECT_EQ(lines_with(output_, "interrupted by SIGHUP: kept 1 of 2 scenes").size(), 1u) << output_;
 }
 
 TEST_F(InterruptCli, AClosedTerminalStopsTheTracerAndKeepsTheFinishedScenes) {
@@ -290,12 +307,19 @@ TEST_F(InterruptCli, CrashingHeadFailsTheGateWithOrWithoutAWarmup) {
   const std::string head = commit(sources_.crashing, "abort on spheres");
   for (const char* warmup : {"0", "1"}) {
     SCOPED_TRACE(std::string("--warmup ") + warmup);
-    const CliRun r = run_raygate(
-        {"compare", "--base", base, "--head", head, "--no-store", "--out", out_.string(),
-         "--repo", repo_.path().string(), "--adapter", "make-nff", "--suite", suite_.string(),
-         "--cache-dir", cache_.string(), "--golden-dir", "no-goldens", "--scene", "balls",
-         "--max-rounds", "2", "--warmup", warmup},
-        dir_);
+    const CliRun r = run_raygate({"compare",      "--base",
+                                  base,           "--head",
+                                  head,           "--no-store",
+                                  "--out",        out_.string(),
+                                  "--repo",       repo_.path().string(),
+                                  "--adapter",    "make-nff",
+                                  "--suite",      suite_.string(),
+                                  "--cache-dir",  cache_.string(),
+                                  "--golden-dir", "no-goldens",
+                                  "--scene",      "balls",
+                                  "--max-rounds", "2",
+                                  "--warmup",     warmup},
+                                 dir_);
     EXPECT_EQ(r.exit_code, 1) << r.out;
     EXPECT_TRUE(has(r.out, "head failed where base ran")) << r.out;
     // The document alone gives the same verdict.
@@ -309,21 +333,21 @@ TEST_F(InterruptCli, UnwritableOutputsAreRefusedBeforeAnythingIsBuilt) {
   const fs::path a_file = dir_.path() / "a-file";
   write_file_atomically(a_file, "");
   const std::vector<std::pair<std::string, std::string>> cases = {
-      {"--out", dir_.path().string()},                 // a directory
-      {"--out", (a_file / "r.json").string()},         // under a file
-      {"--report", "html:" + dir_.path().string()},    // a directory
+      {"--out", dir_.path().string()},               // a directory
+      {"--out", (a_file / "r.json").string()},       // under a file
+      {"--report", "html:" + dir_.path().string()},  // a directory
       {"--report", "junit:" + (a_file / "j.xml").string()},
-      {"--out", "/dev/full"},        // a device: renaming over it would replace the node
+      {"--out", "/dev/full"},  // a device: renaming over it would replace the node
       {"--report", "json:/dev/null"},
   };
   for (const std::string command : {"run", "compare"}) {
     for (const auto& [option, value] : cases) {
       SCOPED_TRACE(command + " " + option + " " + value);
-      std::vector<std::string> args{command,   "--repo",          repo_.path().string(),
-                                    "--adapter", "make-nff",       "--suite",
+      std::vector<std::string> args{command,         "--repo",      repo_.path().string(),
+                                    "--adapter",     "make-nff",    "--suite",
                                     suite_.string(), "--cache-dir", cache_.string(),
-                                    "--golden-dir", "no-goldens",  "--no-store",
-                                    option,     value};
+                                    "--golden-dir",  "no-goldens",  "--no-store",
+                                    option,          value};
       if (command == "compare") args.insert(args.end(), {"--base", "HEAD"});
       const CliRun r = run_raygate(args, dir_);
       EXPECT_EQ(r.exit_code, 2) << r.out;

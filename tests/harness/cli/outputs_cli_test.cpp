@@ -84,17 +84,17 @@ class OutputsCli : public TracerRepoTest {
   bool skipped_ = false;
 };
 
-#define SKIP_WITHOUT_PRIVATE_MOUNTS()                                               \
+#define SKIP_WITHOUT_PRIVATE_MOUNTS() \
   if (skipped_) GTEST_SKIP() << "a private tmpfs mount is not permitted here (needs root)"
 
 TEST_F(OutputsCli, AMergeOnAFullStandardOutputIsStoredAndItsOtherOutputsWritten) {
-  const CliStreams merged =
-      shell({}, "exec \"$@\" > /dev/full",
-            {"merge", shard_file(), "-o", "merged.json", "--store", "store.db", "--format",
-             "json", "--report", "html:report.html"});
+  const CliStreams merged = shell({}, "exec \"$@\" > /dev/full",
+                                  {"merge", shard_file(), "-o", "merged.json", "--store",
+                                   "store.db", "--format", "json", "--report", "html:report.html"});
   EXPECT_EQ(merged.exit_code, 3) << merged.err;
-  EXPECT_TRUE(has(merged.err, "--report json:- not written: cannot write -: No space left on "
-                              "device"))
+  EXPECT_TRUE(has(merged.err,
+                  "--report json:- not written: cannot write -: No space left on "
+                  "device"))
       << merged.err;
   EXPECT_TRUE(has(merged.err, "1 output could not be written (--report json:-)")) << merged.err;
   EXPECT_TRUE(fs::exists(dir_.path() / "merged.json"));
@@ -112,8 +112,9 @@ TEST_F(OutputsCli, AMergeWhoseOutputIsOnAFullDiskIsStoredAndReported) {
                                   (dir_.path() / "full" / "merged.json").string() +
                                   ": No space left on device"))
       << merged.err;
-  EXPECT_TRUE(has(merged.err, "--report markdown:full/report.md not written: cannot write "
-                              "full/report.md: No space left on device"))
+  EXPECT_TRUE(has(merged.err,
+                  "--report markdown:full/report.md not written: cannot write "
+                  "full/report.md: No space left on device"))
       << merged.err;
   EXPECT_TRUE(has(merged.err, "2 outputs could not be written")) << merged.err;
   EXPECT_TRUE(fs::exists(dir_.path() / "junit.xml"));
@@ -136,25 +137,45 @@ TEST_F(OutputsCli, ARegressionOutranksAFailedOutput) {
   spec.shard = "1/1";
   spec.scenes = {{.id = "balls", .max_error = 0.5, .verdict = ImageVerdict::fail}};
   write_results(make_document(spec), dir_.path() / "failing.json");
-  const CliStreams merged = shell({}, "exec \"$@\" > /dev/full",
-                                  {"merge", "failing.json", "-o", "merged.json", "--no-store",
-                                   "--format", "markdown"});
+  const CliStreams merged =
+      shell({}, "exec \"$@\" > /dev/full",
+            {"merge", "failing.json", "-o", "merged.json", "--no-store", "--format", "markdown"});
   EXPECT_EQ(merged.exit_code, 1) << merged.err;
   EXPECT_TRUE(has(merged.err, "1 output could not be written")) << merged.err;
 }
 
 TEST_F(OutputsCli, ARunWhoseOutputIsOnAFullDiskKeepsTheDocumentInItsRunFolderAndTheStore) {
   const std::string sha = commit(sources_.fast, "tracer");
-  const CliStreams run = with_full_disk(
-      {"run", "--repo", repo_.path().string(), "--rev", sha, "--adapter", "make-nff", "--suite",
-       suite_.string(), "--scene", "tetra", "--max-rounds", "1", "--warmup", "0",
-       "--golden-dir", "no-goldens", "--cache-dir", "cache", "-o", "full/results.json",
-       "--store", "store.db", "--report", "html:report.html"});
+  const CliStreams run = with_full_disk({"run",
+                                         "--repo",
+                                         repo_.path().string(),
+                                         "--rev",
+                                         sha,
+                                         "--adapter",
+                                         "make-nff",
+                                         "--suite",
+                                         suite_.string(),
+                                         "--scene",
+                                         "tetra",
+                                         "--max-rounds",
+                                         "1",
+                                         "--warmup",
+                                         "0",
+                                         "--golden-dir",
+                                         "no-goldens",
+                                         "--cache-dir",
+                                         "cache",
+                                         "-o",
+                                         "full/results.json",
+                                         "--store",
+                                         "store.db",
+                                         "--report",
+                                         "html:report.html"});
   SKIP_WITHOUT_PRIVATE_MOUNTS();
   EXPECT_EQ(run.exit_code, 3) << run.err;
   const fs::path requested = dir_.path() / "full" / "results.json";
-  EXPECT_TRUE(has(run.err, "the results document not written: cannot write " +
-                               requested.string() + ": No space left on device"))
+  EXPECT_TRUE(has(run.err, "the results document not written: cannot write " + requested.string() +
+                               ": No space left on device"))
       << run.err;
   // The document in the run folder, complete, and said where.
   std::vector<fs::path> kept;
@@ -208,8 +229,7 @@ TEST_F(OutputsCli, ABaselineBlessOnAFullDiskLeavesTheOldGoldensAndTheirManifestI
   EXPECT_TRUE(has(said, "the goldens there are unchanged")) << said;
   const fs::path after = dir_.path() / "after" / "g";
   EXPECT_EQ(read_file(after / "tetra.png"), read_file(dir_.path() / "first" / "tetra.png"));
-  EXPECT_EQ(read_file(after / "manifest.json"),
-            read_file(dir_.path() / "first" / "manifest.json"));
+  EXPECT_EQ(read_file(after / "manifest.json"), read_file(dir_.path() / "first" / "manifest.json"));
   EXPECT_FALSE(fs::exists(after / "gears.png"));
   const GoldenManifest manifest = load_golden_manifest(after);
   ASSERT_EQ(manifest.entries.size(), 1u);

@@ -72,8 +72,8 @@ struct Change {
 };
 
 constexpr Change kChanges[] = {
-    {"another-seed", false},      {"more-samples", false},         {"stratified-sampler", false},
-    {"dimmer-light", true},       {"grazing-energy-loss", true},   {"polygons-cast-no-shadows", true},
+    {"another-seed", false}, {"more-samples", false},       {"stratified-sampler", false},
+    {"dimmer-light", true},  {"grazing-energy-loss", true}, {"polygons-cast-no-shadows", true},
 };
 
 class PathTracerImages : public ::testing::Test {
@@ -105,15 +105,30 @@ class PathTracerImages : public ::testing::Test {
   }
 
   std::vector<std::string> measure_args() const {
-    return {"--no-store", "--repo", repo_.path().string(), "--adapter", "adapter.json",
-            "--suite", "suite.json", "--cache-dir", shared_cache().path().string(),
-            "--policy", "policy.json",
-            "--warmup", "1", "--min-rounds", "7", "--max-rounds", "7", "--timing", "cpu"};
+    return {"--no-store",
+            "--repo",
+            repo_.path().string(),
+            "--adapter",
+            "adapter.json",
+            "--suite",
+            "suite.json",
+            "--cache-dir",
+            shared_cache().path().string(),
+            "--policy",
+            "policy.json",
+            "--warmup",
+            "1",
+            "--min-rounds",
+            "7",
+            "--max-rounds",
+            "7",
+            "--timing",
+            "cpu"};
   }
 
   CliRun compare(const std::string& head, const std::string& out) {
-    std::vector<std::string> args{"compare", "--base", base_, "--head", head, "--output", out,
-                                  "--golden-dir", "no-goldens"};
+    std::vector<std::string> args{"compare",  "--base", base_,          "--head",    head,
+                                  "--output", out,      "--golden-dir", "no-goldens"};
     for (const std::string& a : measure_args()) args.push_back(a);
     return run_raygate(args, dir_);
   }
@@ -134,7 +149,8 @@ std::vector<ImageCheck> head_checks(const fs::path& document) {
   std::vector<ImageCheck> checks;
   for (const SceneResult& scene : read_results(document).scenes) {
     for (const ImageCheck& check : scene.images) {
-      if (check.role == Role::head && check.reference == ImageReference::base) checks.push_back(check);
+      if (check.role == Role::head && check.reference == ImageReference::base)
+        checks.push_back(check);
     }
   }
   return checks;
@@ -178,8 +194,8 @@ TEST_F(PathTracerImages, NoiseOnlyChangesPassAndBiasedOnesFailSayingWhere) {
 TEST_F(PathTracerImages, GoldensStoreTheRunsStatisticsAndJudgeWithinNoise) {
   const CliRun first = run(base_, "first.json", "no-goldens");
   ASSERT_EQ(first.exit_code, 0) << first.out;
-  const CliRun bless = run_raygate({"golden", "bless", "--from-run", "first.json",
-                                    "--golden-dir", "goldens"}, dir_);
+  const CliRun bless =
+      run_raygate({"golden", "bless", "--from-run", "first.json", "--golden-dir", "goldens"}, dir_);
   ASSERT_EQ(bless.exit_code, 0) << bless.out;
   EXPECT_TRUE(has(bless.out, "mean and variance of 8 runs")) << bless.out;
   const GoldenManifest manifest = load_golden_manifest(dir_.path() / "goldens");
@@ -192,16 +208,16 @@ TEST_F(PathTracerImages, GoldensStoreTheRunsStatisticsAndJudgeWithinNoise) {
   commit_change("another-seed");
   const CliRun again = run("another-seed", "again.json", "goldens");
   EXPECT_EQ(again.exit_code, 0) << again.out;
-  const CliRun same = run_raygate({"golden", "verify", "--from-run", "again.json",
-                                   "--golden-dir", "goldens"}, dir_);
+  const CliRun same = run_raygate(
+      {"golden", "verify", "--from-run", "again.json", "--golden-dir", "goldens"}, dir_);
   EXPECT_EQ(same.exit_code, 0) << same.out;
   EXPECT_TRUE(has(same.out, "2 scenes: 2 same, 0 different")) << same.out;
 
   commit_change("dimmer-light");
   const CliRun dim = run("dimmer-light", "dim.json", "goldens");
   EXPECT_EQ(dim.exit_code, 1) << dim.out;  // the run itself fails on its goldens
-  const CliRun different = run_raygate({"golden", "verify", "--from-run", "dim.json",
-                                        "--golden-dir", "goldens"}, dir_);
+  const CliRun different =
+      run_raygate({"golden", "verify", "--from-run", "dim.json", "--golden-dir", "goldens"}, dir_);
   EXPECT_EQ(different.exit_code, 1) << different.out;
   EXPECT_TRUE(has(different.out, "DIFFERENT")) << different.out;
   EXPECT_TRUE(has(different.out, "fail (")) << different.out;

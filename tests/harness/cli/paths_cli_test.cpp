@@ -52,11 +52,12 @@ TEST(PathsCli, BlessFromRunRefusesASceneIdThatClimbsOut) {
   fs::create_directories(dir.path() / "a" / "b");
   write_results(run_document("mine", "../../escaped", dir.path() / "image.png"),
                 dir.path() / "r.json");
-  const CliRun r = run_raygate(
-      {"golden", "bless", "--from-run", "r.json", "--golden-dir", "a/b/g"}, dir);
+  const CliRun r =
+      run_raygate({"golden", "bless", "--from-run", "r.json", "--golden-dir", "a/b/g"}, dir);
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_NE(r.out.find("r.json: scenes[].entry.id '../../escaped' may hold only"),
-            std::string::npos) << r.out;
+            std::string::npos)
+      << r.out;
   EXPECT_FALSE(fs::exists(dir.path() / "a" / "escaped.png"));
   EXPECT_FALSE(fs::exists(dir.path() / "a" / "b" / "g"));
 }
@@ -73,7 +74,8 @@ TEST(PathsCli, BlessFromRunRefusesAnImageWithoutAnImageExtension) {
     EXPECT_EQ(r.exit_code, 2) << r.out;
     EXPECT_NE(r.out.find("the tracer image of 'manifest', " + (dir.path() / image).string() +
                          ", has no image file extension"),
-              std::string::npos) << r.out;
+              std::string::npos)
+        << r.out;
     EXPECT_FALSE(fs::exists(dir.path() / "g")) << image;
   }
 }
@@ -88,7 +90,8 @@ TEST(PathsCli, BlessFromRunRefusesAnAdapterNameThatIsAPath) {
   const CliRun r = run_raygate({"golden", "bless", "--from-run", "r.json"}, dir);
   EXPECT_EQ(r.exit_code, 2) << r.out;
   EXPECT_NE(r.out.find("r.json: revisions[tracer].adapter.name '" + escaped.string() + "'"),
-            std::string::npos) << r.out;
+            std::string::npos)
+      << r.out;
   EXPECT_FALSE(fs::exists(escaped));
 }
 
@@ -98,8 +101,8 @@ TEST(PathsCli, RunRefusesSuiteNamesAndIdsThatClimbOutOfTheCache) {
   TempDir dir("raygate-paths");
   fs::create_directories(dir.path() / "tree");
   const fs::path outside = dir.path() / "outside";
-  write_file_atomically(dir.path() / "named.json",
-                        R"({"name": ")" + outside.string() + R"(", "scenes": [{"scene": "balls"}]})");
+  write_file_atomically(dir.path() / "named.json", R"({"name": ")" + outside.string() +
+                                                       R"(", "scenes": [{"scene": "balls"}]})");
   write_file_atomically(dir.path() / "ids.json",
                         R"({"scenes": [{"scene": "balls", "id": "../../../escaped"}]})");
   for (const char* suite : {"named.json", "ids.json"}) {

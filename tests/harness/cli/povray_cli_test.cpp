@@ -46,8 +46,8 @@ TEST(PovrayCli, RunMeasuresRatiosAndPassesItsGoldens) {
   if (!on_path("povray")) GTEST_SKIP() << "povray is not on PATH (Debian package povray)";
   TempDir dir("raygate-povray");
   fs::create_directories(dir.path() / "tree");  // nothing to build: an empty tree
-  const CliRun r = run_raygate({"run", "--adapter", "povray", "--worktree", "tree", "--suite",
-                                "ci", "--scene", "tetra", "--scene", "balls", "--max-rounds", "3",
+  const CliRun r = run_raygate({"run", "--adapter", "povray", "--worktree", "tree", "--suite", "ci",
+                                "--scene", "tetra", "--scene", "balls", "--max-rounds", "3",
                                 "--out", "results.json", "--no-store"},
                                dir);
   ASSERT_EQ(r.exit_code, 0) << r.out;
@@ -110,8 +110,8 @@ TEST(GoldenBlessFromRun, CopiesTheRunsImageWithProvenance) {
   write_png(dir.path() / "run" / "image.png", 160, 160, 0.5f);
   write_results(document_with_image(dir.path() / "run" / "image.png"), dir.path() / "r.json");
 
-  const CliRun r = run_raygate(
-      {"golden", "bless", "--from-run", "r.json", "--golden-dir", "golden-mine"}, dir);
+  const CliRun r =
+      run_raygate({"golden", "bless", "--from-run", "r.json", "--golden-dir", "golden-mine"}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   EXPECT_NE(r.out.find("blessed   tetra"), std::string::npos) << r.out;
   const fs::path golden = dir.path() / "golden-mine";
@@ -135,7 +135,8 @@ TEST(GoldenBlessFromRun, CopiesTheRunsImageWithProvenance) {
   EXPECT_EQ(m.tracer->results, (dir.path() / "r.json").string());
 
   // A baseline bless into a tracer's golden directory is refused.
-  const CliRun baseline = run_raygate({"golden", "bless", "tetra", "--golden-dir", "golden-mine"}, dir);
+  const CliRun baseline =
+      run_raygate({"golden", "bless", "tetra", "--golden-dir", "golden-mine"}, dir);
   EXPECT_EQ(baseline.exit_code, 2) << baseline.out;
   EXPECT_NE(baseline.out.find("blessed from a run"), std::string::npos) << baseline.out;
 }
@@ -143,8 +144,8 @@ TEST(GoldenBlessFromRun, CopiesTheRunsImageWithProvenance) {
 TEST(GoldenBlessFromRun, RefusesUnknownScenesAndVanishedImagesWritingNothing) {
   TempDir dir("raygate-bless");
   write_results(document_with_image(dir.path() / "gone.png"), dir.path() / "r.json");
-  const CliRun gone = run_raygate(
-      {"golden", "bless", "--from-run", "r.json", "--golden-dir", "g"}, dir);
+  const CliRun gone =
+      run_raygate({"golden", "bless", "--from-run", "r.json", "--golden-dir", "g"}, dir);
   EXPECT_EQ(gone.exit_code, 2) << gone.out;
   EXPECT_NE(gone.out.find("is gone"), std::string::npos) << gone.out;
 

@@ -47,12 +47,23 @@ class RunCli : public ::testing::Test {
 
   // The arguments of raygate run of `rev` on the tiny suite.
   std::vector<std::string> arguments(const std::string& rev, const Options& options) const {
-    std::vector<std::string> args{"run",           "--repo",         repo_.path().string(),
-                                  "--rev",         rev,              "--adapter",
-                                  options.adapter, "--suite",        suite_.string(),
-                                  "--cache-dir",   cache_.string(),  "--golden-dir",
-                                  options.golden_dir, "--max-rounds", options.max_rounds,
-                                  "--warmup",      options.warmup};
+    std::vector<std::string> args{"run",
+                                  "--repo",
+                                  repo_.path().string(),
+                                  "--rev",
+                                  rev,
+                                  "--adapter",
+                                  options.adapter,
+                                  "--suite",
+                                  suite_.string(),
+                                  "--cache-dir",
+                                  cache_.string(),
+                                  "--golden-dir",
+                                  options.golden_dir,
+                                  "--max-rounds",
+                                  options.max_rounds,
+                                  "--warmup",
+                                  options.warmup};
     for (const std::string& id : options.scenes) args.insert(args.end(), {"--scene", id});
     args.insert(args.end(), options.extra.begin(), options.extra.end());
     return args;

@@ -79,12 +79,19 @@ class ScalingCli : public ::testing::Test {
   }
 
   CliRun compare(const std::string& base, const std::string& head) {
-    return run_raygate({"compare", "--base", base, "--head", head, "--no-store",
-                        "--out", (dir_.path() / "c.json").string(),
-                        "--repo", repo_.path().string(), "--adapter", "adapter.json",
-                        "--suite", "suite.json", "--cache-dir", ".raygate",
-                        "--golden-dir", "no-goldens", "--warmup", "0", "--min-rounds", "3",
-                        "--max-rounds", "3", "--timing", "cpu"},
+    return run_raygate({"compare",      "--base",
+                        base,           "--head",
+                        head,           "--no-store",
+                        "--out",        (dir_.path() / "c.json").string(),
+                        "--repo",       repo_.path().string(),
+                        "--adapter",    "adapter.json",
+                        "--suite",      "suite.json",
+                        "--cache-dir",  ".raygate",
+                        "--golden-dir", "no-goldens",
+                        "--warmup",     "0",
+                        "--min-rounds", "3",
+                        "--max-rounds", "3",
+                        "--timing",     "cpu"},
                        dir_);
   }
 
@@ -128,10 +135,15 @@ TEST_F(ScalingCli, LinearPrimaryRaysFailTheGateOnTheExponentAndSayByHowMuch) {
 TEST_F(ScalingCli, ADocumentWithoutSizesToFitIsAUsageError) {
   write_file_atomically(dir_.path() / "suite.json", R"({"name": "one", "scenes": [
     {"id": "tetra", "scene": "tetra", "size": 3, "resolution": [16, 16]}]})");
-  const CliRun run = run_raygate({"run", "--rev", base_, "--no-store", "--out", "r.json",
-                                  "--repo", repo_.path().string(), "--adapter", "adapter.json",
-                                  "--suite", "suite.json", "--cache-dir", ".raygate",
-                                  "--golden-dir", "no-goldens", "--warmup", "0",
+  const CliRun run = run_raygate({"run",          "--rev",
+                                  base_,          "--no-store",
+                                  "--out",        "r.json",
+                                  "--repo",       repo_.path().string(),
+                                  "--adapter",    "adapter.json",
+                                  "--suite",      "suite.json",
+                                  "--cache-dir",  ".raygate",
+                                  "--golden-dir", "no-goldens",
+                                  "--warmup",     "0",
                                   "--max-rounds", "1"},
                                  dir_);
   ASSERT_EQ(run.exit_code, 0) << run.out;

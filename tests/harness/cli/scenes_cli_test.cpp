@@ -10,8 +10,8 @@ TEST(ScenesCli, ListsThirteenScenes) {
   TempDir dir;
   const CliRun r = run_raygate({"scenes", "list"}, dir);
   ASSERT_EQ(r.exit_code, 0) << r.out;
-  for (const char* name : {"balls", "gears", "mount", "rings", "teapot", "tetra", "tree",
-                           "lattice", "shells", "jacks", "sombrero", "sample", "nurbtst"}) {
+  for (const char* name : {"balls", "gears", "mount", "rings", "teapot", "tetra", "tree", "lattice",
+                           "shells", "jacks", "sombrero", "sample", "nurbtst"}) {
     EXPECT_NE(r.out.find(std::string("\n") + name + " "), std::string::npos) << name;
   }
 }
@@ -35,7 +35,8 @@ TEST(ScenesCli, TessellateAndResolution) {
   EXPECT_NE(r.out.find("resolution 64 48\n"), std::string::npos);
   EXPECT_EQ(r.out.find("\ns "), std::string::npos);  // no spheres left
   std::size_t patches = 0;
-  for (std::size_t at = r.out.find("pp 3"); at != std::string::npos; at = r.out.find("pp 3", at + 1)) {
+  for (std::size_t at = r.out.find("pp 3"); at != std::string::npos;
+       at = r.out.find("pp 3", at + 1)) {
     ++patches;
   }
   EXPECT_EQ(patches, 10u * 12 * 2 * 2);  // 10 spheres x 12 res^2

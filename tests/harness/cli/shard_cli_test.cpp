@@ -20,14 +20,30 @@ namespace fs = std::filesystem;
 
 class ShardCli : public TracerRepoTest {
  protected:
-
   // raygate run of `rev` on the tiny suite, few rounds, as shard `shard`, into `out`.
   CliRun run_shard(const std::string& rev, const std::string& shard, const fs::path& out,
                    const std::string& rounds = "2") {
-    return run_raygate({"run", "--repo", repo_.path().string(), "--rev", rev, "--adapter",
-                        "make-nff", "--suite", suite_.string(), "--cache-dir", cache_.string(),
-                        "--golden-dir", "no-goldens", "--max-rounds", rounds, "--warmup", "0",
-                        "--shard", shard, "--out", out.string()},
+    return run_raygate({"run",
+                        "--repo",
+                        repo_.path().string(),
+                        "--rev",
+                        rev,
+                        "--adapter",
+                        "make-nff",
+                        "--suite",
+                        suite_.string(),
+                        "--cache-dir",
+                        cache_.string(),
+                        "--golden-dir",
+                        "no-goldens",
+                        "--max-rounds",
+                        rounds,
+                        "--warmup",
+                        "0",
+                        "--shard",
+                        shard,
+                        "--out",
+                        out.string()},
                        dir_);
   }
 

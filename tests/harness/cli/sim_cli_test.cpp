@@ -51,9 +51,9 @@ class SimCli : public TracerRepoTest {
   fs::path counting_valgrind() const {
     const fs::path bin = dir_.path() / "counting-bin";
     fs::create_directories(bin);
-    write_file_atomically(bin / "valgrind",
-                          "#!/bin/sh\necho \"$*\" >> \"" + calls_.string() +
-                              "\"\nPATH=\"" + std::getenv("PATH") + "\" exec valgrind \"$@\"\n");
+    write_file_atomically(bin / "valgrind", "#!/bin/sh\necho \"$*\" >> \"" + calls_.string() +
+                                                "\"\nPATH=\"" + std::getenv("PATH") +
+                                                "\" exec valgrind \"$@\"\n");
     fs::permissions(bin / "valgrind", fs::perms::owner_all);
     return bin;
   }
@@ -73,13 +73,11 @@ class SimCli : public TracerRepoTest {
 
   CliRun compare(const std::string& base, const std::string& head,
                  std::vector<std::string> extra = {}, const fs::path& path_first = {}) {
-    std::vector<std::string> args{"compare",     "--base",      base,
-                                  "--head",      head,          "--no-store",
-                                  "--out",       out_.string(), "--repo",
-                                  repo_.path().string(), "--adapter", "make-nff",
-                                  "--suite",     suite_.string(), "--cache-dir",
-                                  cache_.string(), "--golden-dir", "no-goldens",
-                                  "--timing",    "sim"};
+    std::vector<std::string> args{
+        "compare",       "--base",       base,          "--head",        head,
+        "--no-store",    "--out",        out_.string(), "--repo",        repo_.path().string(),
+        "--adapter",     "make-nff",     "--suite",     suite_.string(), "--cache-dir",
+        cache_.string(), "--golden-dir", "no-goldens",  "--timing",      "sim"};
     args.insert(args.end(), extra.begin(), extra.end());
     ProcessSpec spec = raygate_spec(args, dir_);
     if (!path_first.empty()) {
@@ -141,12 +139,12 @@ TEST_F(SimCli, TwiceSlowerHeadExitsOneAtPlusHundredPercent) {
   const std::string base = commit(sources_.fast, "tracer");
   // Parses and renders the scene twice (the second image checked, so it is not optimized
   // away): twice the work but the process's start-up and the image's writing, about 1%.
-  const std::string head = commit(
-      patched(sources_.fast, "  const std::vector<unsigned char> pixels = render(scene);\n",
-              "  const std::vector<unsigned char> pixels = render(scene);\n"
-              "  std::ifstream again(argv[1]);\n"
-              "  if (render(parse(again)) != pixels) return 3;\n"),
-      "do everything twice");
+  const std::string head =
+      commit(patched(sources_.fast, "  const std::vector<unsigned char> pixels = render(scene);\n",
+                     "  const std::vector<unsigned char> pixels = render(scene);\n"
+                     "  std::ifstream again(argv[1]);\n"
+                     "  if (render(parse(again)) != pixels) return 3;\n"),
+             "do everything twice");
   const CliRun r = compare(base, head);
   EXPECT_EQ(r.exit_code, 1) << r.out;
   const ChangeSummary& c = change();
@@ -193,11 +191,11 @@ TEST_F(SimCli, BisectFindsTheTenPercentCommitAmongEight) {
   commit(retracing(9), "license");
   repo_.write("README", "a small ray tracer for NFF scenes\n");
   const std::string bad = commit(retracing(9), "readme: small");
-  const CliRun r = run_raygate({"bisect", "--good", good, "--bad", bad, "--scene", "tetra",
-                                "--repo", repo_.path().string(), "--adapter", "make-nff",
-                                "--suite", suite_.string(), "--cache-dir", cache_.string(),
-                                "--golden-dir", "no-goldens", "--timing", "sim"},
-                               dir_);
+  const CliRun r =
+      run_raygate({"bisect", "--good", good, "--bad", bad, "--scene", "tetra", "--repo",
+                   repo_.path().string(), "--adapter", "make-nff", "--suite", suite_.string(),
+                   "--cache-dir", cache_.string(), "--golden-dir", "no-goldens", "--timing", "sim"},
+                  dir_);
   EXPECT_EQ(r.exit_code, 0) << r.out;
   EXPECT_TRUE(has(r.out, "bisecting 7 commits after")) << r.out;
   EXPECT_TRUE(has(r.out, "first bad commit: " + culprit)) << r.out;
@@ -208,9 +206,23 @@ TEST_F(SimCli, WithoutValgrindRaygateCannotMeasureAndSaysWhatToInstall) {
   const fs::path empty = dir_.path() / "no-valgrind-bin";
   fs::create_directories(empty);
   ProcessSpec spec;
-  spec.argv = {RAYGATE_EXE, "compare", "--base", sha, "--head", sha, "--no-store",
-               "--repo", repo_.path().string(), "--adapter", "make-nff", "--suite",
-               suite_.string(), "--cache-dir", cache_.string(), "--timing", "sim"};
+  spec.argv = {RAYGATE_EXE,
+               "compare",
+               "--base",
+               sha,
+               "--head",
+               sha,
+               "--no-store",
+               "--repo",
+               repo_.path().string(),
+               "--adapter",
+               "make-nff",
+               "--suite",
+               suite_.string(),
+               "--cache-dir",
+               cache_.string(),
+               "--timing",
+               "sim"};
   spec.stdout_path = dir_.path() / "cli.log";
   spec.stderr_path = spec.stdout_path;
   spec.working_directory = dir_.path();

@@ -82,7 +82,9 @@ TEST(Progress, ControlCharactersOfACommitAreShownNotObeyed) {
   {
     Progress progress(out.stream(), false);
     progress.line("  abc1234 fix\x1b[2J\x1b]0;owned\x07\rPASS: 0 failed: 4.0% -> bad");
-    progress.status("building def5678 caf\xE9 \xC2\x9B" "31m");
+    progress.status(
+        "building def5678 caf\xE9 \xC2\x9B"
+        "31m");
   }
   EXPECT_EQ(out.text(),
             "  abc1234 fix\\x1b[2J\\x1b]0;owned\\x07\\x0dPASS: 0 failed: 4.0% -> bad\n"

@@ -28,8 +28,9 @@ class ImageCheckTest : public ::testing::Test {
   GoldenEntry ci_tetra() const {
     const GoldenEntry* entry = manifest_.find("tetra");
     EXPECT_NE(entry, nullptr);
-    return GoldenEntry{"tetra", entry->scene, entry->size, entry->width, entry->height,
-                       entry->sampling, {}, {}, {}};
+    return GoldenEntry{
+        "tetra", entry->scene, entry->size, entry->width, entry->height, entry->sampling,
+        {},      {},           {}};
   }
 
   ImageCheck check(const fs::path& actual, const GoldenEntry& rendered) const {
@@ -125,8 +126,9 @@ TEST_F(ImageCheckTest, TruncatedPngFailsWithOneLine) {
     EXPECT_NE(c.error.find("cannot read image"), std::string::npos) << c.error;
     EXPECT_EQ(c.error.find('\n'), std::string::npos) << c.error;
   }
-  const ImageCheck against_base = check_image(Role::head, ImageReference::base, truncated, kGolden / "tetra.png", {},
-                                              dir_.path() / "evidence", "tetra.head-vs-base");
+  const ImageCheck against_base =
+      check_image(Role::head, ImageReference::base, truncated, kGolden / "tetra.png", {},
+                  dir_.path() / "evidence", "tetra.head-vs-base");
   EXPECT_EQ(against_base.verdict, ImageVerdict::fail) << against_base.error;
 }
 
@@ -134,8 +136,8 @@ TEST_F(ImageCheckTest, TruncatedPngFailsWithOneLine) {
 fs::path with_nan(const TempDir& dir, const std::string& name, int nan_pixels) {
   OIIO::ImageBuf image((kGolden / "tetra.png").string());
   EXPECT_TRUE(image.read(0, 0, true, OIIO::TypeDesc::FLOAT));
-  OIIO::ImageBuf rgb(OIIO::ImageSpec(image.spec().width, image.spec().height, 3,
-                                     OIIO::TypeDesc::FLOAT));
+  OIIO::ImageBuf rgb(
+      OIIO::ImageSpec(image.spec().width, image.spec().height, 3, OIIO::TypeDesc::FLOAT));
   OIIO::ImageBufAlgo::copy(rgb, image);
   for (int x = 0; x < nan_pixels; ++x) {
     const float nan[3] = {std::nanf(""), 0.5f, 0.5f};
@@ -151,7 +153,7 @@ fs::path with_nan(const TempDir& dir, const std::string& name, int nan_pixels) {
 fs::path grey_pfm(const TempDir& dir, const std::string& name, int nan_pixels) {
   constexpr int kSize = 8;
   std::string bytes = "PF\n8 8\n-1.0\n";  // negative scale: little-endian floats
-  for (int y = kSize - 1; y >= 0; --y) {      // rows bottom to top
+  for (int y = kSize - 1; y >= 0; --y) {  // rows bottom to top
     for (int x = 0; x < kSize; ++x) {
       const float rgb[3] = {y == 0 && x < nan_pixels ? std::nanf("") : 0.5f, 0.5f, 0.5f};
       bytes.append(reinterpret_cast<const char*>(rgb), sizeof rgb);
@@ -162,9 +164,9 @@ fs::path grey_pfm(const TempDir& dir, const std::string& name, int nan_pixels) {
 }
 
 TEST_F(ImageCheckTest, NanPixelsOfAPfmAreCountedAndFail) {
-  const ImageCheck c = check_image(Role::tracer, ImageReference::golden, grey_pfm(dir_, "nan.pfm", 3),
-                                   grey_pfm(dir_, "good.pfm", 0), {}, dir_.path() / "evidence",
-                                   "grey");
+  const ImageCheck c =
+      check_image(Role::tracer, ImageReference::golden, grey_pfm(dir_, "nan.pfm", 3),
+                  grey_pfm(dir_, "good.pfm", 0), {}, dir_.path() / "evidence", "grey");
   EXPECT_EQ(c.verdict, ImageVerdict::fail) << c.error;
   ASSERT_TRUE(c.metrics);
   EXPECT_EQ(c.metrics->nonfinite_pixels, 3);
@@ -183,9 +185,9 @@ TEST_F(ImageCheckTest, NanPixelsAreCountedAndFail) {
     EXPECT_EQ(text.find("max nan"), std::string::npos) << text;
   }
   // Without a golden too.
-  const ImageCheck alone = check_against_golden(Role::tracer, with_nan(dir_, "n.exr", 2),
-                                                dir_.path() / "none", GoldenManifest{},
-                                                ci_tetra(), {}, dir_.path() / "evidence");
+  const ImageCheck alone =
+      check_against_golden(Role::tracer, with_nan(dir_, "n.exr", 2), dir_.path() / "none",
+                           GoldenManifest{}, ci_tetra(), {}, dir_.path() / "evidence");
   EXPECT_EQ(alone.verdict, ImageVerdict::fail);
   EXPECT_NE(alone.error.find("2 NaN/Inf pixels"), std::string::npos) << alone.error;
 }

@@ -68,8 +68,8 @@ TEST(ImageCompare, SizeMismatchAndNonFiniteValuesFail) {
   EXPECT_TRUE(sized.size_mismatch);
   EXPECT_EQ(judge(sized, {}), ImageVerdict::fail);
   EXPECT_EQ(summarize(sized), "size 8x8 but expected 10x10");
-  const ImageMetrics nan =
-      compare_images(make_image(dir, "n.exr", {{0, 0, NAN, 0.5f, 0.5f}}), make_image(dir, "b.exr"), {});
+  const ImageMetrics nan = compare_images(make_image(dir, "n.exr", {{0, 0, NAN, 0.5f, 0.5f}}),
+                                          make_image(dir, "b.exr"), {});
   EXPECT_EQ(nan.nonfinite_values, 1);
   EXPECT_EQ(nan.nonfinite_pixels, 1);
   EXPECT_EQ(judge(nan, {}), ImageVerdict::fail);
@@ -88,8 +88,7 @@ TEST(ImageCompare, CountsNonFinitePixelsNotChannels) {
   EXPECT_EQ(m.nonfinite_y, 2);
   EXPECT_EQ(m.expected_nonfinite_pixels, 0);
   EXPECT_FALSE(m.identical());
-  const ImageMetrics reversed =
-      compare_images(make_image(dir, "b.exr"), dir.path() / "n.exr", {});
+  const ImageMetrics reversed = compare_images(make_image(dir, "b.exr"), dir.path() / "n.exr", {});
   EXPECT_EQ(reversed.nonfinite_pixels, 0);
   EXPECT_EQ(reversed.expected_nonfinite_pixels, 2);
 }

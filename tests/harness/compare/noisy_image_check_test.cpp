@@ -47,9 +47,10 @@ TEST(NoisyImageCheck, VerdictsMapOntoImageVerdicts) {
 TEST(NoisyImageCheck, ABiasedHeadFailsWithEvidence) {
   const TempDir dir;
   std::mt19937_64 rng(41);
-  const ImageCheck check = check_noisy_images(
-      Role::head, ImageReference::base, renders(dir.path(), "head", 6, 0.9, rng), renders(dir.path(), "base", 6, 1.0, rng),
-      noisy_thresholds_for(1), dir.path() / "evidence", "s.head-vs-base");
+  const ImageCheck check =
+      check_noisy_images(Role::head, ImageReference::base, renders(dir.path(), "head", 6, 0.9, rng),
+                         renders(dir.path(), "base", 6, 1.0, rng), noisy_thresholds_for(1),
+                         dir.path() / "evidence", "s.head-vs-base");
   EXPECT_EQ(check.verdict, ImageVerdict::fail) << check_detail(check);
   EXPECT_FALSE(check.metrics.has_value());
   ASSERT_TRUE(check.noisy.has_value());
@@ -65,8 +66,9 @@ TEST(NoisyImageCheck, SameImageOtherSeedsPasses) {
   const TempDir dir;
   std::mt19937_64 rng(43);
   const ImageCheck check = check_noisy_images(
-      Role::head, ImageReference::base, renders(dir.path(), "head", 40, 1.0, rng), renders(dir.path(), "base", 40, 1.0, rng),
-      noisy_thresholds_for(1), dir.path() / "evidence", "s");
+      Role::head, ImageReference::base, renders(dir.path(), "head", 40, 1.0, rng),
+      renders(dir.path(), "base", 40, 1.0, rng), noisy_thresholds_for(1), dir.path() / "evidence",
+      "s");
   EXPECT_EQ(check.verdict, ImageVerdict::pass) << check_detail(check);
   EXPECT_TRUE(check.evidence.empty());
   ASSERT_TRUE(check.noisy.has_value());
@@ -103,9 +105,9 @@ TEST(NoisyImageCheck, RunsThatAreAllTheSameImageAreNoted) {
   const TempDir dir;
   std::mt19937_64 rng(59);
   const std::vector<fs::path> one = renders(dir.path(), "same", 1, 1.0, rng);
-  const ImageCheck check = check_noisy_images(Role::head, ImageReference::base, {one[0], one[0], one[0]},
-                                              renders(dir.path(), "base", 4, 1.0, rng),
-                                              noisy_thresholds_for(1), dir.path(), "s");
+  const ImageCheck check = check_noisy_images(
+      Role::head, ImageReference::base, {one[0], one[0], one[0]},
+      renders(dir.path(), "base", 4, 1.0, rng), noisy_thresholds_for(1), dir.path(), "s");
   EXPECT_NE(check.error.find("runs' images are identical: is {seed} reaching"), std::string::npos)
       << check.error;
 }
@@ -118,8 +120,8 @@ class NoisyGoldenTest : public ::testing::Test {
     const NoisyImageStats stats = stats_of_images(renders(dir_.path(), "bless", 4, 1.0, rng));
     write_stats_images(stats, golden() / "s.mean.exr", golden() / "s.variance.exr");
     manifest_.suite = "ci";
-    manifest_.entries.push_back({"s", "s", 1, 32, 32, "", "", "s.mean.exr",
-                                 sha256_file_hex(golden() / "s.mean.exr")});
+    manifest_.entries.push_back(
+        {"s", "s", 1, 32, 32, "", "", "s.mean.exr", sha256_file_hex(golden() / "s.mean.exr")});
     manifest_.noise["s"] = {4, "s.variance.exr", sha256_file_hex(golden() / "s.variance.exr"),
                             stats.inflation};
     actual_ = renders(dir_.path(), "run", 4, 1.0, rng);

@@ -75,8 +75,12 @@ NoisyThresholds without_min_effect(double alpha) {
 // variance `variance`, `runs` runs, no inflation. What a comparison sees is then exactly known.
 NoisyImageStats flat_stats(int size, int runs, double mean, double variance) {
   const std::size_t values = static_cast<std::size_t>(size) * size * 3;
-  return {size, size, runs, std::vector<float>(values, static_cast<float>(mean)),
-          std::vector<float>(values, static_cast<float>(variance)), {}};
+  return {size,
+          size,
+          runs,
+          std::vector<float>(values, static_cast<float>(mean)),
+          std::vector<float>(values, static_cast<float>(variance)),
+          {}};
 }
 
 TEST(NoisyImageCompare, NormalHelpersMatchTables) {
@@ -100,7 +104,8 @@ TEST(NoisyImageCompare, DifferentSeedsOfTheSameImageFailAtMostAlphaOfTheTime) {
         compare_noisy(runs_of(truth, 8, 0.3, rng), runs_of(truth, 8, 0.3, rng), thresholds);
     if (c.verdict == NoisyVerdict::fail) ++false_alarms;
   }
-  std::printf("alpha 0.05, no minimum effect: %d false alarms in %d trials\n", false_alarms, kTrials);
+  std::printf("alpha 0.05, no minimum effect: %d false alarms in %d trials\n", false_alarms,
+              kTrials);
   EXPECT_LE(false_alarms, 27) << "of " << kTrials;
 }
 
@@ -112,7 +117,8 @@ TEST(NoisyImageCompare, AnAAComparisonWithEnoughSamplesPasses) {
   const RgbImage truth = expected_image();
   int passed = 0;
   for (int trial = 0; trial < 50; ++trial) {
-    const NoisyComparison c = compare_noisy(runs_of(truth, 32, 0.3, rng), runs_of(truth, 32, 0.3, rng), {});
+    const NoisyComparison c =
+        compare_noisy(runs_of(truth, 32, 0.3, rng), runs_of(truth, 32, 0.3, rng), {});
     ASSERT_NE(c.verdict, NoisyVerdict::fail) << summarize(c);
     if (c.verdict != NoisyVerdict::pass) continue;
     ++passed;
@@ -128,7 +134,8 @@ TEST(NoisyImageCompare, AnAAComparisonWithEnoughSamplesPasses) {
 TEST(NoisyImageCompare, AnAAComparisonWithTooFewSamplesIsInconclusive) {
   std::mt19937_64 rng(8);
   const RgbImage truth = expected_image();
-  const NoisyComparison c = compare_noisy(runs_of(truth, 3, 0.6, rng), runs_of(truth, 3, 0.6, rng), {});
+  const NoisyComparison c =
+      compare_noisy(runs_of(truth, 3, 0.6, rng), runs_of(truth, 3, 0.6, rng), {});
   ASSERT_EQ(c.verdict, NoisyVerdict::inconclusive) << summarize(c);
   EXPECT_GT(c.samples_factor, 1.0);
   EXPECT_GT(c.runs_needed, 3);
@@ -140,7 +147,8 @@ TEST(NoisyImageCompare, AThreePercentDimmerImageFails) {
   const RgbImage truth = expected_image();
   const RgbImage dimmer = scaled(truth, 0.97, {0, 0, kSize, kSize});
   for (int trial = 0; trial < 20; ++trial) {
-    const NoisyComparison c = compare_noisy(runs_of(dimmer, 8, 0.3, rng), runs_of(truth, 8, 0.3, rng), {});
+    const NoisyComparison c =
+        compare_noisy(runs_of(dimmer, 8, 0.3, rng), runs_of(truth, 8, 0.3, rng), {});
     ASSERT_EQ(c.verdict, NoisyVerdict::fail) << summarize(c);
     EXPECT_NEAR(c.image.change, -0.03, 0.01);
     EXPECT_LT(c.image.high, -0.01);  // shown beyond the tolerance
@@ -153,7 +161,8 @@ TEST(NoisyImageCompare, AWholeImageFailureSaysSo) {
   std::mt19937_64 rng(37);
   const RgbImage truth = expected_image();
   const RgbImage dimmer = scaled(truth, 0.97, {0, 0, kSize, kSize});
-  const NoisyComparison c = compare_noisy(runs_of(dimmer, 16, 0.05, rng), runs_of(truth, 16, 0.05, rng), {});
+  const NoisyComparison c =
+      compare_noisy(runs_of(dimmer, 16, 0.05, rng), runs_of(truth, 16, 0.05, rng), {});
   ASSERT_EQ(c.verdict, NoisyVerdict::fail);
   const std::string text = summarize(c);
   EXPECT_EQ(text.rfind("fail (beyond the ±1% image tolerance): the whole image ", 0), 0u) << text;
@@ -170,7 +179,8 @@ TEST(NoisyImageCompare, ATenPercentChangeInASmallRegionFailsThere) {
   const RgbImage changed = scaled(truth, 1.10, region);
   int found = 0;
   for (int trial = 0; trial < 20; ++trial) {
-    const NoisyComparison c = compare_noisy(runs_of(changed, 8, 0.3, rng), runs_of(truth, 8, 0.3, rng), {});
+    const NoisyComparison c =
+        compare_noisy(runs_of(changed, 8, 0.3, rng), runs_of(truth, 8, 0.3, rng), {});
     if (c.verdict != NoisyVerdict::fail) continue;
     ++found;
     const BiasedTile& worst = c.biased.front();
@@ -194,7 +204,8 @@ TEST(NoisyImageCompare, ATenPercentChangeInASmallRegionFailsThere) {
 TEST(NoisyImageCompare, TooFewSamplesIsInconclusiveAndSaysHowManyMore) {
   std::mt19937_64 rng(17);
   const RgbImage truth = expected_image();
-  const NoisyComparison c = compare_noisy(runs_of(truth, 3, 3.0, rng), runs_of(truth, 3, 3.0, rng), {});
+  const NoisyComparison c =
+      compare_noisy(runs_of(truth, 3, 3.0, rng), runs_of(truth, 3, 3.0, rng), {});
   ASSERT_EQ(c.verdict, NoisyVerdict::inconclusive) << summarize(c);
   EXPECT_GT(c.samples_factor, 1.5);
   EXPECT_EQ(summarize(c).rfind("inconclusive (", 0), 0u) << summarize(c);
@@ -204,7 +215,8 @@ TEST(NoisyImageCompare, TooFewSamplesIsInconclusiveAndSaysHowManyMore) {
 TEST(NoisyImageCompare, OneRunASideCannotMeasureItsNoise) {
   std::mt19937_64 rng(19);
   const RgbImage truth = expected_image();
-  const NoisyComparison c = compare_noisy(runs_of(truth, 1, 0.3, rng), runs_of(truth, 8, 0.3, rng), {});
+  const NoisyComparison c =
+      compare_noisy(runs_of(truth, 1, 0.3, rng), runs_of(truth, 8, 0.3, rng), {});
   EXPECT_EQ(c.verdict, NoisyVerdict::inconclusive);
   EXPECT_NE(summarize(c).find("at least 2"), std::string::npos) << summarize(c);
 }
@@ -217,7 +229,8 @@ TEST(NoisyImageCompare, ATinyBiasBelowTheMinimumEffectPasses) {
   const RgbImage slightly = scaled(truth, 1.005, {0, 0, kSize, kSize});
   const NoisyImageStats a = runs_of(slightly, 16, 0.02, rng);
   const NoisyImageStats b = runs_of(truth, 16, 0.02, rng);
-  EXPECT_EQ(compare_noisy(a, b, {}).verdict, NoisyVerdict::pass) << summarize(compare_noisy(a, b, {}));
+  EXPECT_EQ(compare_noisy(a, b, {}).verdict, NoisyVerdict::pass)
+      << summarize(compare_noisy(a, b, {}));
   EXPECT_EQ(compare_noisy(a, b, without_min_effect(0.01)).verdict, NoisyVerdict::fail);
 }
 
@@ -282,8 +295,8 @@ TEST(NoisyImageCompare, TheGearsCaseIsInconclusiveNotAPass) {
                                           flat_stats(48, kRuns, 0.5, variance), {});
   EXPECT_EQ(c.verdict, NoisyVerdict::inconclusive) << summarize(c);
   EXPECT_NEAR(c.image.change, -0.0203, 1e-4);
-  const double half_95 = (c.image.high - c.image.low) / 2 / normal_quantile(0.95) *
-                         normal_quantile(0.975);
+  const double half_95 =
+      (c.image.high - c.image.low) / 2 / normal_quantile(0.95) * normal_quantile(0.975);
   EXPECT_NEAR(c.image.change - half_95, -0.0342, 3e-4);
   EXPECT_NEAR(c.image.change + half_95, -0.0064, 3e-4);
   EXPECT_LT(c.image.low, -0.01);   // reaches beyond the tolerance...
@@ -291,8 +304,9 @@ TEST(NoisyImageCompare, TheGearsCaseIsInconclusiveNotAPass) {
   EXPECT_GT(c.samples_factor, 1.0);
   EXPECT_EQ(summarize(c).rfind("inconclusive (", 0), 0u) << summarize(c);
   EXPECT_NE(summarize(c).find("±1% image tolerance"), std::string::npos) << summarize(c);
-  const NoisyComparison more = compare_noisy(flat_stats(48, 10 * kRuns, 0.5 * (1 - 0.0203), variance),
-                                             flat_stats(48, 10 * kRuns, 0.5, variance), {});
+  const NoisyComparison more =
+      compare_noisy(flat_stats(48, 10 * kRuns, 0.5 * (1 - 0.0203), variance),
+                    flat_stats(48, 10 * kRuns, 0.5, variance), {});
   EXPECT_EQ(more.verdict, NoisyVerdict::fail) << summarize(more);
   EXPECT_LT(more.image.high, -0.01);
 }
@@ -318,16 +332,18 @@ NoisyImageStats sampled_stats(const RgbImage& truth, int runs, double relative_s
 TEST(NoisyImageCompare, NoPassWhileAnIntervalReachesBeyondTheTolerance) {
   std::mt19937_64 rng(61);
   const RgbImage truth = expected_image(32);
-  std::uniform_real_distribution<double> change(-0.03, 0.03), noise(0.05, 1.0), tolerance(0.005, 0.03);
+  std::uniform_real_distribution<double> change(-0.03, 0.03), noise(0.05, 1.0),
+      tolerance(0.005, 0.03);
   std::uniform_int_distribution<int> runs(2, 40);
   int passes = 0;
   for (int trial = 0; trial < 1500; ++trial) {
     NoisyThresholds thresholds;
     thresholds.tolerance = tolerance(rng);
     const double sd = noise(rng);
-    const NoisyComparison c = compare_noisy(
-        sampled_stats(truth, runs(rng), sd, {1 + change(rng), 1 + change(rng), 1 + change(rng)}, rng),
-        sampled_stats(truth, runs(rng), sd, {1, 1, 1}, rng), thresholds);
+    const NoisyComparison c =
+        compare_noisy(sampled_stats(truth, runs(rng), sd,
+                                    {1 + change(rng), 1 + change(rng), 1 + change(rng)}, rng),
+                      sampled_stats(truth, runs(rng), sd, {1, 1, 1}, rng), thresholds);
     if (c.verdict != NoisyVerdict::pass) continue;
     ++passes;
     for (const RelativeChange& i : {c.image, c.channels[0], c.channels[1], c.channels[2]}) {
@@ -359,15 +375,16 @@ TEST(NoisyImageCompare, ErrorRatesBySimulation) {
   const auto same = rates({1, 1, 1}, 16, 0.3);
   const auto at_tolerance = rates({1.01, 1, 1}, 16, 0.3);
   const auto twice = rates({0.98, 0.98, 0.98}, 16, 0.3);
-  std::printf("of %d: unchanged pass %d fail %d inconclusive %d; R +1%% (the tolerance) pass %d "
-              "fail %d inconclusive %d; -2%% pass %d fail %d inconclusive %d\n",
-              kTrials, same[0], same[1], same[2], at_tolerance[0], at_tolerance[1],
-              at_tolerance[2], twice[0], twice[1], twice[2]);
-  EXPECT_LE(same[1], 10);            // alpha 1%: 4 expected; 10 is the binomial's 99.9% bound
+  std::printf(
+      "of %d: unchanged pass %d fail %d inconclusive %d; R +1%% (the tolerance) pass %d "
+      "fail %d inconclusive %d; -2%% pass %d fail %d inconclusive %d\n",
+      kTrials, same[0], same[1], same[2], at_tolerance[0], at_tolerance[1], at_tolerance[2],
+      twice[0], twice[1], twice[2]);
+  EXPECT_LE(same[1], 10);  // alpha 1%: 4 expected; 10 is the binomial's 99.9% bound
   // The equivalence test's power at this sample size: about 92% (370 of 400 when written); an
   // unchanged image that does not pass is inconclusive, and a compare gives it more runs.
   EXPECT_GE(same[0], kTrials * 85 / 100);
-  EXPECT_LE(at_tolerance[0], 34);    // equivalence_alpha 5%: 20 expected; 99.9% bound 34
+  EXPECT_LE(at_tolerance[0], 34);  // equivalence_alpha 5%: 20 expected; 99.9% bound 34
   EXPECT_GE(twice[1], kTrials * 95 / 100);
   EXPECT_EQ(twice[0], 0);
 }

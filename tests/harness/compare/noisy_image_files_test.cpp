@@ -118,8 +118,9 @@ TEST(NoisyImageFiles, CostAgainstThePerPixelCheck) {
   EXPECT_EQ(judge(per_pixel, {}), ImageVerdict::fail);  // why the per-pixel rule cannot be used
   const double noisy_ms = std::chrono::duration<double, std::milli>(t1 - t0).count();
   const double pixel_ms = std::chrono::duration<double, std::milli>(t2 - t1).count();
-  std::printf("128x128, 9 vs 9 runs: statistical check %.1f ms, per-pixel check of one pair %.1f ms\n",
-              noisy_ms, pixel_ms);
+  std::printf(
+      "128x128, 9 vs 9 runs: statistical check %.1f ms, per-pixel check of one pair %.1f ms\n",
+      noisy_ms, pixel_ms);
 }
 
 }  // namespace

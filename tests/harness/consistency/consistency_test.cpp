@@ -131,8 +131,8 @@ TEST(Consistency, ThreeDocumentsGiveThreePairsAndOverall) {
 
 TEST(Consistency, MissingSceneIsReportedAndExcluded) {
   DocumentSpec b = machine("neolith", kB);
-  b.scenes.erase(b.scenes.begin() + 1);  // no gears
-  b.scenes.back().status = SceneStatus::failed;     // teapot failed: not measured either
+  b.scenes.erase(b.scenes.begin() + 1);          // no gears
+  b.scenes.back().status = SceneStatus::failed;  // teapot failed: not measured either
   const ConsistencyResult r = analyse({machine("straylight", kA), b});
   ASSERT_EQ(r.missing.size(), 2u);
   EXPECT_EQ(r.missing[0].id, "gears");

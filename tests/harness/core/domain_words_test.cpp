@@ -29,13 +29,14 @@ namespace fs = std::filesystem;
 // refused: the option's parser compares against its enum's to_string, as the domain's do.
 const std::vector<std::string>& domain_words() {
   static const std::vector<std::string> words{
-      "baseline", "tracer", "base", "head", "golden",              // roles, image references
-      "run", "compare",                                            // document kinds
-      "measured", "failed",                                        // scene statuses
-      "UNCHANGED", "IMPROVED", "REGRESSED", "INCONCLUSIVE",        // change verdicts
-      "MEASURED", "FAILED",                                        // speed verdicts
-      "pass", "warn", "fail", "missing", "error", "unmeasured",     // image verdicts, outcomes
-      "good", "bad", "skipped"};                                   // bisect steps
+      "baseline",   "tracer",   "base",      "head",         "golden",  // roles, image references
+      "run",        "compare",                                          // document kinds
+      "measured",   "failed",                                           // scene statuses
+      "UNCHANGED",  "IMPROVED", "REGRESSED", "INCONCLUSIVE",            // change verdicts
+      "MEASURED",   "FAILED",                                           // speed verdicts
+      "pass",       "warn",     "fail",      "missing",      "error",
+      "unmeasured",                          // image verdicts, outcomes
+      "good",       "bad",      "skipped"};  // bisect steps
   return words;
 }
 
@@ -43,8 +44,8 @@ const std::vector<std::string>& domain_words() {
 // its checker, and the tables that spell each enum once. (The store writes rows from
 // to_string() and reads none of these words back into records.)
 const std::set<std::string>& boundary_files() {
-  static const std::set<std::string> files{"results/results_json.cpp",
-                                           "results/results_check.cpp", "core/domain.cpp"};
+  static const std::set<std::string> files{"results/results_json.cpp", "results/results_check.cpp",
+                                           "core/domain.cpp"};
   return files;
 }
 
@@ -100,7 +101,7 @@ std::vector<std::string> word_comparisons(const std::string& source) {
     alternatives += (alternatives.empty() ? "" : "|") + word;
   }
   const std::regex comparison("(==|!=)\\s*\"(" + alternatives + ")\"|\"(" + alternatives +
-                             ")\"\\s*(==|!=)");
+                              ")\"\\s*(==|!=)");
   const std::string code = without_comments(source);
   std::vector<std::string> found;
   for (auto it = std::sregex_iterator(code.begin(), code.end(), comparison);

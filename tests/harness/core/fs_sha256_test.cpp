@@ -118,7 +118,7 @@ TEST(Fs, ReadingAFifoOrADeviceIsAUsageErrorNotAHang) {
     ADD_FAILURE() << "a FIFO was read";
   } catch (const UsageError& e) {
     EXPECT_NE(std::string(e.what()).find(fifo.string() + ": is a FIFO (named pipe), expected a "
-                                         "regular file"),
+                                                         "regular file"),
               std::string::npos)
         << e.what();
   }

@@ -63,8 +63,7 @@ TEST(JsonReader, ANumberPastADoublesRangeIsAUsageErrorNamingTheField) {
 
 TEST(JsonReader, ASyntaxErrorSaysWhereAndIsAUsageError) {
   const std::string message = refusal("{\n  \"a\": 1,\n  \"b\" 2\n}");
-  EXPECT_EQ(message.rfind("in.json:3:7: not JSON: syntax error while parsing object separator",
-                          0),
+  EXPECT_EQ(message.rfind("in.json:3:7: not JSON: syntax error while parsing object separator", 0),
             0u)
       << message;
   EXPECT_THROW(parse_json_input("", "empty.json"), UsageError);

@@ -33,8 +33,8 @@ TEST(PathComponent, RefusesNamesThatAreNotOneSafeComponent) {
   for (const std::string& name :
        {std::string(".."), std::string("."), std::string("../../x"), std::string("/tmp/x"),
         std::string("a/b"), std::string("a\\b"), nul, std::string(""),
-        std::string(kMaxComponentLength + 1, 'x'), std::string("sc\xc3\xa8ne"),
-        std::string("a b"), std::string("line\nbreak"), std::string("~"), std::string("*")}) {
+        std::string(kMaxComponentLength + 1, 'x'), std::string("sc\xc3\xa8ne"), std::string("a b"),
+        std::string("line\nbreak"), std::string("~"), std::string("*")}) {
     EXPECT_NE(refusal(name), "") << "accepted '" << name << "'";
   }
 }

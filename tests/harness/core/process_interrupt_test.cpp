@@ -66,8 +66,8 @@ TEST(ProcessCleanup, SetsidGrandchildIsSweptWhenRaygateIsTheSubreaper) {
   TempDir dir;
   // setsid leaves the child's process group and session: killing the group cannot reach it.
   const fs::path stray = dir.path() / "stray";
-  const ProcessResult r = run_process(shell(
-      "setsid sleep 30 </dev/null >/dev/null 2>&1 & echo $! > " + stray.string(), dir));
+  const ProcessResult r = run_process(
+      shell("setsid sleep 30 </dev/null >/dev/null 2>&1 & echo $! > " + stray.string(), dir));
   ASSERT_TRUE(r.succeeded());
   const pid_t pid = pid_in(stray);
   EXPECT_TRUE(ends(pid));
@@ -94,9 +94,9 @@ class ProcessInterrupt : public ::testing::Test {
     TempDir dir;
     const fs::path child = dir.path() / "child";
     const fs::path grandchild = dir.path() / "grandchild";
-    ProcessSpec spec = shell("sleep 30 & echo $! > " + grandchild.string() + "; echo $$ > " +
-                                 child.string() + "; wait",
-                             dir);
+    ProcessSpec spec = shell(
+        "sleep 30 & echo $! > " + grandchild.string() + "; echo $$ > " + child.string() + "; wait",
+        dir);
     Process p = Process::start(spec);
     const pid_t child_pid = pid_in(child);
     const pid_t grandchild_pid = pid_in(grandchild);
@@ -108,8 +108,7 @@ class ProcessInterrupt : public ::testing::Test {
     } catch (const Interrupted& e) {
       EXPECT_EQ(e.signal(), sig);
       EXPECT_EQ(to_int(e.code()), 128 + sig);
-      EXPECT_NE(std::string(e.what()).find("interrupted by " + signal_name(sig)),
-                std::string::npos)
+      EXPECT_NE(std::string(e.what()).find("interrupted by " + signal_name(sig)), std::string::npos)
           << e.what();
     }
     EXPECT_LT(std::chrono::steady_clock::now() - sent, 3s);
@@ -133,9 +132,8 @@ TEST_F(ProcessInterrupt, SighupKillsTheWholeGroupAndThrows) {
 TEST_F(ProcessInterrupt, AChildThatEndsCleanlyOnTheSignalStillDoesNotCount) {
   TempDir dir;
   const fs::path ready = dir.path() / "ready";
-  Process p = Process::start(shell("trap 'exit 0' TERM; echo $$ > " + ready.string() +
-                                       "; while :; do sleep 0.05; done",
-                                   dir));
+  Process p = Process::start(shell(
+      "trap 'exit 0' TERM; echo $$ > " + ready.string() + "; while :; do sleep 0.05; done", dir));
   pid_in(ready);
   request_interrupt(SIGINT);
   EXPECT_THROW(p.wait(), Interrupted);

@@ -60,9 +60,8 @@ TEST(Process, MissingProgramIsSpawnFailure) {
 TEST(Process, TimeoutKillsTheWholeProcessGroup) {
   TempDir dir;
   // The child starts a grandchild that would outlive it; both must be gone after the timeout.
-  ProcessSpec spec = shell("sleep 30 & echo $! > " + (dir.path() / "grandchild").string() +
-                               "; sleep 30",
-                           dir);
+  ProcessSpec spec =
+      shell("sleep 30 & echo $! > " + (dir.path() / "grandchild").string() + "; sleep 30", dir);
   spec.timeout = std::chrono::milliseconds(300);
   spec.kill_grace = std::chrono::milliseconds(200);
   const ProcessResult r = run_process(spec);
@@ -111,9 +110,7 @@ TEST(Process, LogsAreBoundedButTheChildIsNotBlocked) {
 TEST(Process, EnvironmentWorkingDirectoryAndStdin) {
   TempDir dir;
   std::filesystem::create_directory(dir.path() / "work");
-  {
-    std::ofstream(dir.path() / "input.txt") << "from stdin\n";
-  }
+  { std::ofstream(dir.path() / "input.txt") << "from stdin\n"; }
   ProcessSpec spec = shell("echo \"$RAYGATE_TEST_VAR\"; pwd; cat", dir);
   spec.environment["RAYGATE_TEST_VAR"] = "value with spaces";
   spec.working_directory = dir.path() / "work";

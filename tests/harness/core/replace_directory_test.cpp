@@ -43,9 +43,8 @@ TEST(ReplaceDirectory, ACompletedFillIsSwappedInAndTheOldIsRemoved) {
   write_file_atomically(target / "a.txt", "old a");
   write_file_atomically(target / "gone.txt", "only in the old set");
   ::chmod(target.c_str(), 0750);
-  replace_directory(target, [](const fs::path& fresh) {
-    write_file_atomically(fresh / "a.txt", "new a");
-  });
+  replace_directory(target,
+                    [](const fs::path& fresh) { write_file_atomically(fresh / "a.txt", "new a"); });
   EXPECT_EQ(read_file(target / "a.txt"), "new a");
   EXPECT_FALSE(fs::exists(target / "gone.txt"));
   EXPECT_EQ(fs::status(target).permissions(), fs::perms(0750));  // the old folder's
@@ -54,15 +53,13 @@ TEST(ReplaceDirectory, ACompletedFillIsSwappedInAndTheOldIsRemoved) {
 
 TEST(ReplaceDirectory, AMissingTargetIsCreatedAndALinkedTargetIsReplacedWhereItPoints) {
   TempDir dir;
-  replace_directory(dir.path() / "deep" / "new", [](const fs::path& fresh) {
-    write_file_atomically(fresh / "x", "x");
-  });
+  replace_directory(dir.path() / "deep" / "new",
+                    [](const fs::path& fresh) { write_file_atomically(fresh / "x", "x"); });
   EXPECT_EQ(read_file(dir.path() / "deep" / "new" / "x"), "x");
 
   fs::create_directory_symlink(dir.path() / "deep" / "new", dir.path() / "alias");
-  replace_directory(dir.path() / "alias", [](const fs::path& fresh) {
-    write_file_atomically(fresh / "x", "y");
-  });
+  replace_directory(dir.path() / "alias",
+                    [](const fs::path& fresh) { write_file_atomically(fresh / "x", "y"); });
   EXPECT_TRUE(fs::is_symlink(dir.path() / "alias"));  // still a link, to the new contents
   EXPECT_EQ(read_file(dir.path() / "alias" / "x"), "y");
 }
@@ -75,8 +72,8 @@ TEST(ReplaceDirectory, LinkTreeStartsANewVersionWithoutWritingThroughTheLinks) {
   fs::create_symlink("keep.png", target / "alias.png");
   replace_directory(target, [&](const fs::path& fresh) {
     link_tree(target, fresh);
-    EXPECT_EQ(fs::hard_link_count(fresh / "keep.png"), 2u);  // a link, not a copy
-    write_file_atomically(fresh / "keep.png", "changed");  // replaces the link's name
+    EXPECT_EQ(fs::hard_link_count(fresh / "keep.png"), 2u);   // a link, not a copy
+    write_file_atomically(fresh / "keep.png", "changed");     // replaces the link's name
     EXPECT_EQ(read_file(target / "keep.png"), "kept bytes");  // the old one is untouched
   });
   EXPECT_EQ(read_file(target / "keep.png"), "changed");

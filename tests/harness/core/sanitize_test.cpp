@@ -12,16 +12,19 @@ namespace {
 
 TEST(TerminalText, EscapeAndBellSequencesBecomeVisible) {
   // An ESC that would clear the screen and a title-setting OSC ended by BEL.
-  EXPECT_EQ(terminal_text("fix\x1b[2J\x1b]0;pwned\x07 done"),
-            "fix\\x1b[2J\\x1b]0;pwned\\x07 done");
+  EXPECT_EQ(terminal_text("fix\x1b[2J\x1b]0;pwned\x07 done"), "fix\\x1b[2J\\x1b]0;pwned\\x07 done");
   EXPECT_EQ(terminal_text("a\rb\bc\x7f"), "a\\x0db\\x08c\\x7f");
   EXPECT_EQ(terminal_text(std::string("nul\0end", 7)), "nul\\x00end");
 }
 
 TEST(TerminalText, C1ControlsAndBidiOverridesBecomeVisible) {
-  EXPECT_EQ(terminal_text("\xC2\x9B" "31m"), "\\u009b31m");  // CSI as one C1 character
+  EXPECT_EQ(terminal_text("\xC2\x9B"
+                          "31m"),
+            "\\u009b31m");  // CSI as one C1 character
   EXPECT_EQ(terminal_text("\xC2\x85"), "\\u0085");
-  EXPECT_EQ(terminal_text("abc\xE2\x80\xAE" "fed"), "abc\\u202efed");  // right-to-left override
+  EXPECT_EQ(terminal_text("abc\xE2\x80\xAE"
+                          "fed"),
+            "abc\\u202efed");  // right-to-left override
   EXPECT_EQ(terminal_text("\xE2\x81\xA6x\xE2\x81\xA9"), "\\u2066x\\u2069");
 }
 
@@ -42,7 +45,9 @@ TEST(MarkupText, EscapesWhatXml10ForbidsAndWhatCannotBeSeen) {
   EXPECT_EQ(markup_text("subject\x1b[31m red\x07"), "subject\\x1b[31m red\\x07");
   EXPECT_EQ(markup_text(std::string("a\0b\x0b\x0c", 5)), "a\\x00b\\x0b\\x0c");
   EXPECT_EQ(markup_text("\xEF\xBF\xBE\xEF\xBF\xBF"), "\\ufffe\\uffff");
-  EXPECT_EQ(markup_text("\xC2\x85 \xE2\x80\xAE" "x\x7f"), "\\u0085 \\u202ex\\x7f");
+  EXPECT_EQ(markup_text("\xC2\x85 \xE2\x80\xAE"
+                        "x\x7f"),
+            "\\u0085 \\u202ex\\x7f");
   EXPECT_TRUE(is_valid_utf8(markup_text("\xFF\xFE bad")));
 }
 

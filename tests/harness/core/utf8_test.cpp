@@ -38,7 +38,7 @@ TEST(Utf8, SurrogatesAndCodePointsBeyondUnicodeAreInvalid) {
   EXPECT_FALSE(is_valid_utf8("\xED\xA0\x80"));  // U+D800
   EXPECT_EQ(repaired_utf8("\xED\xA0\x80"), kFffd + kFffd + kFffd);
   EXPECT_EQ(repaired_utf8("\xED\xBF\xBF"), kFffd + kFffd + kFffd);  // U+DFFF
-  EXPECT_FALSE(is_valid_utf8("\xF4\x90\x80\x80"));                   // U+110000
+  EXPECT_FALSE(is_valid_utf8("\xF4\x90\x80\x80"));                  // U+110000
   EXPECT_EQ(repaired_utf8("\xF4\x90\x80\x80"), kFffd + kFffd + kFffd + kFffd);
   EXPECT_EQ(repaired_utf8("\xF5\x80"), kFffd + kFffd);
   EXPECT_EQ(repaired_utf8("\xFF\xFE"), kFffd + kFffd);
@@ -46,9 +46,9 @@ TEST(Utf8, SurrogatesAndCodePointsBeyondUnicodeAreInvalid) {
 
 TEST(Utf8, TruncatedSequencesBecomeOneReplacementEach) {
   EXPECT_FALSE(is_valid_utf8("\xE2\x82"));
-  EXPECT_EQ(repaired_utf8("\xE2\x82"), kFffd);                 // at the end
-  EXPECT_EQ(repaired_utf8("\xE2\x82x"), kFffd + "x");          // cut by ASCII
-  EXPECT_EQ(repaired_utf8("\xF0\x9F\x90"), kFffd);             // 3 of 4 bytes
+  EXPECT_EQ(repaired_utf8("\xE2\x82"), kFffd);                       // at the end
+  EXPECT_EQ(repaired_utf8("\xE2\x82x"), kFffd + "x");                // cut by ASCII
+  EXPECT_EQ(repaired_utf8("\xF0\x9F\x90"), kFffd);                   // 3 of 4 bytes
   EXPECT_EQ(repaired_utf8("\xF0\x9F\xC3\xA9"), kFffd + "\xC3\xA9");  // cut by a valid one
   EXPECT_EQ(repaired_utf8("\xC3"), kFffd);
 }

@@ -91,17 +91,17 @@ ResultsDocument compare_document(std::vector<SceneResult> scenes) {
 
 TEST(GateVerdict, TooFewRoundsDecideNothing) {
   // Five rounds cannot give a 95% interval for a median: whatever the numbers, INCONCLUSIVE.
-  const GateResult gate = evaluate_gate(
-      compare_document({compared("tetra", 0.40, 0.002, 0.45, 5)}), GatePolicy{});
+  const GateResult gate =
+      evaluate_gate(compare_document({compared("tetra", 0.40, 0.002, 0.45, 5)}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].speed, SpeedVerdict::inconclusive);
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::warn);
   EXPECT_EQ(gate.exit_code, 0);
 }
 
 TEST(GateVerdict, RegressionFailsWithItsNumbers) {
-  const GateResult gate = evaluate_gate(
-      compare_document({compared("mount", 0.079, 0.061, 0.098), compared("balls", 0.004, -0.006, 0.013)}),
-      GatePolicy{});
+  const GateResult gate = evaluate_gate(compare_document({compared("mount", 0.079, 0.061, 0.098),
+                                                          compared("balls", 0.004, -0.006, 0.013)}),
+                                        GatePolicy{});
   EXPECT_EQ(gate.exit_code, 1);
   ASSERT_EQ(gate.scenes.size(), 2u);
   EXPECT_EQ(gate.scenes[0].speed, SpeedVerdict::regressed);
@@ -118,7 +118,8 @@ TEST(GateVerdict, APerSceneLimitDecides) {
   policy.scenes["mount"] = policy.defaults;
   policy.scenes["mount"].max_slowdown = 0.10;
   policy.scenes["mount"].reason = "noisy";
-  const GateResult gate = evaluate_gate(compare_document({compared("mount", 0.079, 0.061, 0.098)}), policy);
+  const GateResult gate =
+      evaluate_gate(compare_document({compared("mount", 0.079, 0.061, 0.098)}), policy);
   EXPECT_EQ(gate.exit_code, 0);
   EXPECT_EQ(gate.scenes[0].speed, SpeedVerdict::unchanged);
 }
@@ -193,7 +194,8 @@ SceneResult failed(const std::string& id, Role role, bool base_ran) {
 }
 
 TEST(GateVerdict, HeadCrashingWhereBaseRanIsTheChangesFault) {
-  const GateResult gate = evaluate_gate(compare_document({failed("balls", Role::head, true)}), GatePolicy{});
+  const GateResult gate =
+      evaluate_gate(compare_document({failed("balls", Role::head, true)}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::fail);
   EXPECT_NE(gate.scenes[0].reasons[0].find("head failed where base ran"), std::string::npos);
   EXPECT_EQ(gate.exit_code, 1);
@@ -201,7 +203,8 @@ TEST(GateVerdict, HeadCrashingWhereBaseRanIsTheChangesFault) {
 
 TEST(GateVerdict, BaseOrBaselineFailingMeansNotMeasured) {
   for (const Role role : {Role::base, Role::baseline}) {
-    const GateResult gate = evaluate_gate(compare_document({failed("balls", role, false)}), GatePolicy{});
+    const GateResult gate =
+        evaluate_gate(compare_document({failed("balls", role, false)}), GatePolicy{});
     EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::unmeasured) << to_string(role);
     EXPECT_EQ(gate.exit_code, 3) << to_string(role);
   }
@@ -221,8 +224,9 @@ TEST(GateVerdict, ARegressionOutranksAnUnmeasuredScene) {
 // fail_on_inconclusive; the report says the comparison's line.
 TEST(GateVerdict, AnInconclusiveMonteCarloImageWarnsOrFailsAsPolicySays) {
   SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
-  ImageCheck check{Role::head, ImageReference::base, "a.exr", "b.exr",
-                   ImageVerdict::inconclusive, "", std::nullopt, {}, NoisyComparison{}};
+  ImageCheck check{
+      Role::head, ImageReference::base, "a.exr", "b.exr",          ImageVerdict::inconclusive,
+      "",         std::nullopt,         {},      NoisyComparison{}};
   check.noisy->tests = 123;
   check.noisy->image = {-0.0203, -0.0342, -0.0064};
   check.noisy->samples_factor = 2.0;
@@ -255,21 +259,40 @@ TEST(GateVerdict, ImagesFailWarnOrCannotBeChecked) {
   SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
   ImageMetrics metrics;
   metrics.max_error = 0.6;
-  scene.images.push_back({Role::head, ImageReference::golden, "a.png", "g.png", ImageVerdict::fail, "", metrics, {}});
   scene.images.push_back(
-      {Role::head, ImageReference::base, "a.png", "b.png", ImageVerdict::pass, "", ImageMetrics{}, {}});
+      {Role::head, ImageReference::golden, "a.png", "g.png", ImageVerdict::fail, "", metrics, {}});
+  scene.images.push_back({Role::head,
+                          ImageReference::base,
+                          "a.png",
+                          "b.png",
+                          ImageVerdict::pass,
+                          "",
+                          ImageMetrics{},
+                          {}});
   GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].image, ImageVerdict::fail);
   EXPECT_EQ(gate.exit_code, 1);
 
-  scene.images = {
-      {Role::tracer, ImageReference::golden, "a.png", "g.png", ImageVerdict::missing, "no golden image", {}, {}}};
+  scene.images = {{Role::tracer,
+                   ImageReference::golden,
+                   "a.png",
+                   "g.png",
+                   ImageVerdict::missing,
+                   "no golden image",
+                   {},
+                   {}}};
   gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::pass);  // a note for the document, not a warning
   EXPECT_EQ(gate.exit_code, 0);
 
-  scene.images = {
-      {Role::tracer, ImageReference::golden, "a.png", "g.png", ImageVerdict::error, "cannot read a.png", {}, {}}};
+  scene.images = {{Role::tracer,
+                   ImageReference::golden,
+                   "a.png",
+                   "g.png",
+                   ImageVerdict::error,
+                   "cannot read a.png",
+                   {},
+                   {}}};
   gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::unmeasured);
   EXPECT_EQ(gate.exit_code, 3);
@@ -299,18 +322,29 @@ TEST(GateVerdict, ADocumentWithNoScenesCannotPass) {
 // A tracer without goldens: every scene's "no goldens" check becomes one note with the count
 // and how to bless; no scene warns or fails for it. Different reasons stay apart.
 TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
-  const ImageCheck none{Role::head, ImageReference::golden, "a.png", "g", ImageVerdict::missing,
-                        "no goldens in g (none blessed yet)", {}, {}};
-  const ImageCheck same{
-      Role::head, ImageReference::base, "a.png", "b.png", ImageVerdict::pass, "", ImageMetrics{}, {}};
+  const ImageCheck none{Role::head,
+                        ImageReference::golden,
+                        "a.png",
+                        "g",
+                        ImageVerdict::missing,
+                        "no goldens in g (none blessed yet)",
+                        {},
+                        {}};
+  const ImageCheck same{Role::head, ImageReference::base, "a.png", "b.png", ImageVerdict::pass,
+                        "",         ImageMetrics{},       {}};
   std::vector<SceneResult> scenes;
   for (const char* id : {"balls", "gears", "tetra"}) {
     scenes.push_back(compared(id, 0.0, -0.01, 0.01));
     scenes.back().images = {none, same};
   }
-  scenes.back().images.push_back(
-      {Role::base, ImageReference::golden, "b.png", "g", ImageVerdict::missing, "no golden image for 'tetra'", {},
-       {}});
+  scenes.back().images.push_back({Role::base,
+                                  ImageReference::golden,
+                                  "b.png",
+                                  "g",
+                                  ImageVerdict::missing,
+                                  "no golden image for 'tetra'",
+                                  {},
+                                  {}});
   const GateResult gate = evaluate_gate(compare_document(scenes), GatePolicy{});
   EXPECT_EQ(gate.exit_code, 0);
   EXPECT_EQ(gate.count(GateOutcome::pass), 3u);
@@ -331,9 +365,22 @@ TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
 // change could not be checked (exit 3), it is not blamed on head (issue 25, class 8).
 TEST(GateVerdict, ABrokenBaseImageCouldNotBeCheckedItIsNotTheChangesFault) {
   SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
-  scene.images = {
-      {Role::base, ImageReference::golden, "b.png", "g", ImageVerdict::fail, "b.png has 12 NaN pixels", {}, {}},
-      {Role::head, ImageReference::base, "a.png", "b.png", ImageVerdict::error, "b.png: cannot compare", {}, {}}};
+  scene.images = {{Role::base,
+                   ImageReference::golden,
+                   "b.png",
+                   "g",
+                   ImageVerdict::fail,
+                   "b.png has 12 NaN pixels",
+                   {},
+                   {}},
+                  {Role::head,
+                   ImageReference::base,
+                   "a.png",
+                   "b.png",
+                   ImageVerdict::error,
+                   "b.png: cannot compare",
+                   {},
+                   {}}};
   const GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.exit_code, 3);
   ASSERT_EQ(gate.scenes.size(), 1u);
@@ -347,9 +394,14 @@ TEST(GateVerdict, ABrokenBaseImageCouldNotBeCheckedItIsNotTheChangesFault) {
 // An image that failed without metrics (unreadable) says why, and fails the change.
 TEST(GateVerdict, AnUnreadableImageFailsWithItsReason) {
   SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
-  scene.images = {
-      {Role::head, ImageReference::base, "a.ppm", "b.ppm", ImageVerdict::fail, "a.ppm: cannot read image: bad", {},
-       {}}};
+  scene.images = {{Role::head,
+                   ImageReference::base,
+                   "a.ppm",
+                   "b.ppm",
+                   ImageVerdict::fail,
+                   "a.ppm: cannot read image: bad",
+                   {},
+                   {}}};
   const GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.exit_code, 1);
   ASSERT_EQ(gate.scenes[0].reasons.size(), 1u);

@@ -52,7 +52,7 @@ TEST_F(HistoryFromStore, OneTableNewestCommitFirstWithEachSeriesTrend) {
 
   const std::string text = history_table(v);
   EXPECT_TRUE(has(text, "adapter cmake-nff: 3 commits, newest first")) << text;
-  EXPECT_TRUE(has(text, "0.990 ±1.0%")) << text;      // ratio and its CI half-width
+  EXPECT_TRUE(has(text, "0.990 ±1.0%")) << text;  // ratio and its CI half-width
   EXPECT_TRUE(has(text, "+10.0% ↑ vs " + fake_sha(2).substr(0, 7))) << text;
   const nlohmann::json json = history_json(v);
   EXPECT_EQ(json["tables"][0]["commits"].size(), 3u);
@@ -101,11 +101,13 @@ TEST_F(HistoryFromStore, TheTrendWindowEndsAtTheDocumentsOwnCommit) {
 // says what it measured, and rows of older documents, which do not, keep their own series.
 TEST_F(HistoryFromStore, AnotherBuildOfTheSameAdapterIsAnotherSeries) {
   ResultsDocument flagged = make_document(commit(4, "16", 1.0));
-  for (RevisionRecord& revision : flagged.revisions) revision.adapter_measurement = "0123456789abcdef";
+  for (RevisionRecord& revision : flagged.revisions)
+    revision.adapter_measurement = "0123456789abcdef";
   EXPECT_TRUE(trends_from_store(path, flagged).trends.empty());
   open_store(path.string())->add(flagged, "main");
   ResultsDocument again = make_document(commit(5, "18", 1.0));
-  for (RevisionRecord& revision : again.revisions) revision.adapter_measurement = "0123456789abcdef";
+  for (RevisionRecord& revision : again.revisions)
+    revision.adapter_measurement = "0123456789abcdef";
   open_store(path.string())->add(again, "main");
   const StoreTrends found = trends_from_store(path, again);
   ASSERT_EQ(found.trends.size(), 2u);

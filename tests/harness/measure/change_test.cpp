@@ -22,7 +22,8 @@ using testing::compare_rounds;
 
 TEST(MeasureMannWhitney, SeparatedSamples) {
   // U_a = 0; mean 4.5; var = 3*3/12 * 7 = 5.25; z = (4.5 - 0.5) / sqrt(5.25) = 1.74574.
-  const MannWhitneyResult r = mann_whitney_u(std::vector<double>{1, 2, 3}, std::vector<double>{4, 5, 6});
+  const MannWhitneyResult r =
+      mann_whitney_u(std::vector<double>{1, 2, 3}, std::vector<double>{4, 5, 6});
   EXPECT_DOUBLE_EQ(r.u, 0.0);
   EXPECT_NEAR(r.z, -1.7457431218879391, 1e-12);
   EXPECT_NEAR(r.p_value, 0.0808555983700523, 1e-12);  // R: wilcox.test(exact = FALSE) 0.08086
@@ -32,23 +33,28 @@ TEST(MeasureMannWhitney, TiesUseMidranksAndCorrectedVariance) {
   // Pooled ranks: 1 | 2 2 2 -> 3 | 3 3 -> 5.5 | 4 -> 7 | 5 -> 8. R_a = 1 + 3 + 3 + 5.5 = 12.5,
   // U_a = 12.5 - 10 = 2.5. Ties: (27 - 3) + (8 - 2) = 30; var = 16/12 (9 - 30/56) = 11.2857;
   // z = (5.5 - 0.5) / sqrt(var) = 1.48835; p = erfc(z / sqrt 2) = 0.13666.
-  const MannWhitneyResult r = mann_whitney_u(std::vector<double>{1, 2, 2, 3}, std::vector<double>{2, 3, 4, 5});
+  const MannWhitneyResult r =
+      mann_whitney_u(std::vector<double>{1, 2, 2, 3}, std::vector<double>{2, 3, 4, 5});
   EXPECT_DOUBLE_EQ(r.u, 2.5);
   EXPECT_NEAR(r.z, -1.4883513944689681, 1e-12);
   EXPECT_NEAR(r.p_value, 0.13665824773814753, 1e-12);
 }
 
 TEST(MeasureMannWhitney, SymmetricAndDegenerate) {
-  const MannWhitneyResult swapped = mann_whitney_u(std::vector<double>{4, 5, 6}, std::vector<double>{1, 2, 3});
+  const MannWhitneyResult swapped =
+      mann_whitney_u(std::vector<double>{4, 5, 6}, std::vector<double>{1, 2, 3});
   EXPECT_DOUBLE_EQ(swapped.u, 9.0);
   EXPECT_NEAR(swapped.p_value, 0.0808555983700523, 1e-12);
-  const MannWhitneyResult tied = mann_whitney_u(std::vector<double>{1, 1}, std::vector<double>{1, 1, 1});
+  const MannWhitneyResult tied =
+      mann_whitney_u(std::vector<double>{1, 1}, std::vector<double>{1, 1, 1});
   EXPECT_DOUBLE_EQ(tied.u, 3.0);
   EXPECT_DOUBLE_EQ(tied.p_value, 1.0);
-  const MannWhitneyResult centred = mann_whitney_u(std::vector<double>{1, 4}, std::vector<double>{2, 3});
+  const MannWhitneyResult centred =
+      mann_whitney_u(std::vector<double>{1, 4}, std::vector<double>{2, 3});
   EXPECT_DOUBLE_EQ(centred.u, 2.0);  // exactly the mean: p = 1, z = 0
   EXPECT_DOUBLE_EQ(centred.p_value, 1.0);
-  EXPECT_THROW(mann_whitney_u(std::vector<double>{}, std::vector<double>{1}), std::invalid_argument);
+  EXPECT_THROW(mann_whitney_u(std::vector<double>{}, std::vector<double>{1}),
+               std::invalid_argument);
 }
 
 TEST(MeasureChange, BaselineCancelsWithinARound) {
@@ -113,7 +119,7 @@ TEST(MeasureVerdict, NoisyIsInconclusive) {
 TEST(MeasureVerdict, SmallSignificantChangeUnderThresholdIsUnchanged) {
   Xoshiro256 rng(5);
   const ChangeSummary s = summarize_change(compare_rounds(rng, 40, 1.01, 0.003));
-  EXPECT_GT(s.change_interval.lower, 0.0);  // significant ...
+  EXPECT_GT(s.change_interval.lower, 0.0);                  // significant ...
   EXPECT_EQ(classify_change(s), ChangeVerdict::unchanged);  // ... but practically nothing
 }
 
@@ -196,8 +202,8 @@ TEST(MeasureRoundsToDecide, ProjectFromTheRoundsSpreadNotFromOneOutlier) {
   // The identity tracer's teapot after 8 rounds: every round within 0.7% of the others but one
   // at -20%. The equivalence sequence is the rounds' range, so its width says hundreds of
   // rounds; the rounds' spread (0.4%) says the sequence's ranks need only pass that one round.
-  const std::optional<std::size_t> teapot =
-      estimated_rounds_to_decide(sequence_summary(-0.001, {-0.2, 0.2}, {-0.2, 0.007}, 8, 0.004), 0.03);
+  const std::optional<std::size_t> teapot = estimated_rounds_to_decide(
+      sequence_summary(-0.001, {-0.2, 0.2}, {-0.2, 0.007}, 8, 0.004), 0.03);
   ASSERT_TRUE(teapot);
   EXPECT_GE(*teapot, 9u);
   EXPECT_LE(*teapot, 15u);
@@ -210,8 +216,9 @@ TEST(MeasureRoundsToDecide, ProjectFromTheRoundsSpreadNotFromOneOutlier) {
   // Closer to the limit, more rounds; a scene already as good as decided, one more.
   EXPECT_GT(*estimated_rounds_to_decide(sequence_summary(0.02, {-1, 1}, {-1, 1}, 10, 0.03), 0.03),
             at_spread(0.03));
-  EXPECT_EQ(estimated_rounds_to_decide(sequence_summary(0.0, {-0.1, 0.1}, {-0.029, 0.029}, 27), 0.03),
-            28u);
+  EXPECT_EQ(
+      estimated_rounds_to_decide(sequence_summary(0.0, {-0.1, 0.1}, {-0.029, 0.029}, 27), 0.03),
+      28u);
 }
 
 TEST(MeasureRoundsToDecide, TowardsAVerdictOfChangeTheDecisionSequenceMustClearZero) {
@@ -252,8 +259,8 @@ TEST(MeasureRoundsToDecide, WaitForTheBoundAndSayNothingOnTheLimitOrForOneLook) 
             min_values_for_median_sequence(0.05));
   EXPECT_GT(min_values_for_median_sequence(0.05), 5u);
   // A change on the limit has no room: no number of rounds decides it.
-  EXPECT_FALSE(estimated_rounds_to_decide(
-      sequence_summary(0.03, {-0.1, 0.2}, {0.0, 0.06}, 40, 0.01), 0.03));
+  EXPECT_FALSE(
+      estimated_rounds_to_decide(sequence_summary(0.03, {-0.1, 0.2}, {0.0, 0.06}, 40, 0.01), 0.03));
   // One-look summaries (older documents) are not estimated.
   ChangeSummary one_look = sequence_summary(0.01, {-0.1, 0.1}, {-0.05, 0.05}, 20, 0.01);
   one_look.interval_kind = ChangeIntervalKind::order_statistic;
@@ -284,8 +291,8 @@ TEST(MeasureRoundsToDecide, TheLargestSpreadThatDecidesAgreesWithTheProjection) 
 // which the same stream of rounds did decide.
 TEST(MeasureRoundsToDecide, AgreeWithWhenSimulatedScenesDecide) {
   const SequenceLevels levels{0.01 / 13, 0.05, 0.95};
-  for (const auto& [factor, log_sigma] : {std::pair{1.0, 0.01}, std::pair{1.0, 0.02},
-                                          std::pair{1.08, 0.02}, std::pair{1.06, 0.01}}) {
+  for (const auto& [factor, log_sigma] :
+       {std::pair{1.0, 0.01}, std::pair{1.0, 0.02}, std::pair{1.08, 0.02}, std::pair{1.06, 0.01}}) {
     std::vector<double> estimated;
     std::vector<double> decided;
     for (std::uint64_t seed = 1; seed <= 200; ++seed) {

@@ -95,9 +95,8 @@ TEST(MeasureConfidenceSequence, ErrorRateUnderVmNoiseHoldsAtEveryLook) {
   EXPECT_LE(sequence_alarms, 50) << "confidence sequence: " << sequence_alarms << " / 2000";
   // The one-look 95% interval, looked at after every round from the 6th, crosses far more
   // often than its 2.5%: the repeated-looks problem the sequence removes.
-  const int one_look_alarms = false_alarms(2000, noise, [](const std::vector<double>& logs) {
-    return median_interval(logs, 0.95);
-  });
+  const int one_look_alarms = false_alarms(
+      2000, noise, [](const std::vector<double>& logs) { return median_interval(logs, 0.95); });
   EXPECT_GT(one_look_alarms, 3 * 50) << "one look, 60 times: " << one_look_alarms << " / 2000";
 }
 

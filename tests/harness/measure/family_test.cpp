@@ -72,9 +72,8 @@ using RepeatsRule = std::function<int(const std::vector<double>& log_changes)>;
 // until its verdict at family/K is decided or `max_rounds` rounds, then Holm. threshold 0 makes
 // REGRESSED mean "significantly slower" alone, the hardest case for the false-alarm bound.
 // `repeats` chooses each round's runs per side (one by default).
-Outcome simulate(int compares, int scenes, double true_factor, double threshold,
-                 std::uint64_t seed, std::size_t max_rounds = 60,
-                 const RepeatsRule& repeats = {}) {
+Outcome simulate(int compares, int scenes, double true_factor, double threshold, std::uint64_t seed,
+                 std::size_t max_rounds = 60, const RepeatsRule& repeats = {}) {
   const double alpha = scene_sequence_alpha(kDefaultFamilySignificance, scenes);
   Outcome outcome;
   for (int c = 0; c < compares; ++c) {
@@ -84,8 +83,7 @@ Outcome simulate(int compares, int scenes, double true_factor, double threshold,
       FamilyScene scene{{}, threshold, 0.05};
       bool decided = false;
       while (scene.log_changes.size() < max_rounds && !decided) {
-        const CompareRound r =
-            rounds.next(true_factor, repeats ? repeats(scene.log_changes) : 1);
+        const CompareRound r = rounds.next(true_factor, repeats ? repeats(scene.log_changes) : 1);
         scene.log_changes.push_back(std::log(r.head_seconds / r.base_seconds));
         decided = sequence_verdict(scene, alpha) != ChangeVerdict::inconclusive;
       }

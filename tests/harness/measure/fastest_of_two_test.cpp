@@ -42,8 +42,8 @@ TEST(FastestOfTwo, TheQuartileSpreadSeesOneSidedNoiseTheMadMisses) {
   EXPECT_NEAR(quartile_spread(symmetric), mad_scaled(symmetric), 0.004);
   // Three rounds in ten slowed by 4-8%, the rest within 0.2%: the MAD sees the steady seven, the
   // upper quartile lies among the slowed.
-  const std::vector<double> one_sided{0.0, 0.001, -0.001, 0.05, 0.002, -0.002, 0.08, 0.0005,
-                                      0.04, -0.0005};
+  const std::vector<double> one_sided{0.0,    0.001, -0.001, 0.05, 0.002,
+                                      -0.002, 0.08,  0.0005, 0.04, -0.0005};
   EXPECT_LT(mad_scaled(one_sided), 0.005);
   EXPECT_GT(quartile_spread(one_sided), 0.03);
 }
@@ -96,7 +96,8 @@ TEST(FastestOfTwo, RoundsToComeAtASmallerSpreadAreProjectedToDecideSooner) {
   const std::size_t one_run = *estimated_rounds_to_decide(summary, 0.03);
   EXPECT_EQ(estimated_rounds_to_decide(summary, 0.03, summary.log_change_mad_scaled), one_run)
       << "the same spread later: the same projection";
-  const std::size_t quieter = *estimated_rounds_to_decide(summary, 0.03, 0.2 * summary.log_change_mad_scaled);
+  const std::size_t quieter =
+      *estimated_rounds_to_decide(summary, 0.03, 0.2 * summary.log_change_mad_scaled);
   EXPECT_LT(quieter, one_run);
   EXPECT_GT(quieter, rounds.size());
   EXPECT_GT(*estimated_rounds_to_decide(summary, 0.03, 2.0 * summary.log_change_mad_scaled),
@@ -133,8 +134,7 @@ TEST(FastestOfTwo, OnOneSidedNoiseTheProjectionHoldsAndTheFastestOfTwoCostsLess)
     if (classify_change(summary, 0.03) != ChangeVerdict::inconclusive) continue;
     const std::optional<double> spread = fastest_of_two_spread(rounds);
     ASSERT_TRUE(spread);
-    const std::optional<std::size_t> estimate =
-        estimated_rounds_to_decide(summary, 0.03, *spread);
+    const std::optional<std::size_t> estimate = estimated_rounds_to_decide(summary, 0.03, *spread);
     if (!estimate) continue;
     const std::vector<double> so_far = compare_log_changes(rounds);
     const std::size_t with_one = run_to_decision(1, so_far, stream);

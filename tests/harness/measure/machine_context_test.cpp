@@ -11,11 +11,21 @@
 namespace raygate {
 namespace {
 
-const char* const kFields[] = {"cpu_model",   "logical_cores",  "online_cpus",
-                               "allowed_cpus", "scaling_governors", "turbo_enabled",
-                               "kernel",      "compiler",       "load_average",
-                               "total_memory_bytes", "perf_instructions_available",
-                               "perf_error",  "perf_event_paranoid", "hostname", "ci"};
+const char* const kFields[] = {"cpu_model",
+                               "logical_cores",
+                               "online_cpus",
+                               "allowed_cpus",
+                               "scaling_governors",
+                               "turbo_enabled",
+                               "kernel",
+                               "compiler",
+                               "load_average",
+                               "total_memory_bytes",
+                               "perf_instructions_available",
+                               "perf_error",
+                               "perf_event_paranoid",
+                               "hostname",
+                               "ci"};
 
 TEST(MeasureMachineContext, FilledOnThisMachine) {
   const MachineContext context = probe_machine_context();
@@ -67,7 +77,7 @@ TEST(MeasureMachineContext, FakeSysTree) {
   write_file_atomically(cpu / "online", "0-1\n");
   write_file_atomically(cpu / "cpu0/cpufreq/scaling_governor", "performance\n");
   write_file_atomically(cpu / "cpu1/cpufreq/scaling_governor", "powersave\n");
-  write_file_atomically(cpu / "cpufreq/boost", "1\n");  // not a cpuN directory
+  write_file_atomically(cpu / "cpufreq/boost", "1\n");          // not a cpuN directory
   write_file_atomically(cpu / "intel_pstate/no_turbo", "1\n");  // wins over boost
   const MachineContext context = probe_machine_context(root.path());
   EXPECT_EQ(context.cpu_model, "Test CPU @ 3.00GHz");

@@ -41,7 +41,9 @@ TEST(MedianInterval, ALevelOutsideItsRangeIsRefusedByName) {
             "median interval: confidence must lie in (0, 1)");
   EXPECT_EQ(message([] { (void)min_values_for_median_interval(std::nan("")); }),
             "median interval: confidence must lie in (0, 1)");
-  EXPECT_EQ(message([] { (void)median_sequence_interval(std::vector<double>{1, 2, 3}, 0.5); }),
+  EXPECT_EQ(message([] {
+              (void)median_sequence_interval(std::vector<double>{1, 2, 3}, 0.5);
+            }),
             "confidence sequence: alpha per side must lie in (0, 0.5)");
 }
 

@@ -100,8 +100,8 @@ TEST(StoppingRule, DecideStoppingOnNumbersIsShouldStopWithTheTarget) {
   StoppingPolicy policy;
   for (const std::size_t rounds : {0u, 1u, 3u, 30u}) {
     for (const double width : {0.005, 0.02}) {
-      const bool decided = rounds >= policy.min_rounds && rounds > 0 &&
-                           width <= policy.target_relative_half_width;
+      const bool decided =
+          rounds >= policy.min_rounds && rounds > 0 && width <= policy.target_relative_half_width;
       EXPECT_EQ(decide_stopping(rounds, width, policy, 50.0),
                 should_stop({rounds, 50.0, decided}, policy));
     }

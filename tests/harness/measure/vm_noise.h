@@ -16,8 +16,8 @@
 namespace raygate::testing {
 
 struct VmNoise {
-  double log_sigma = 0.03;         // every run: log-normal, about +-6% at 2 sigma
-  double spike_chance = 0.05;      // a single run slowed by 10-35%
+  double log_sigma = 0.03;           // every run: log-normal, about +-6% at 2 sigma
+  double spike_chance = 0.05;        // a single run slowed by 10-35%
   double burst_start_chance = 0.02;  // per run: a burst of 3-8 runs, each +35%
 };
 

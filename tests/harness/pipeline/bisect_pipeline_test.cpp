@@ -72,7 +72,8 @@ TEST(BisectSearch, ABadEndThatIsNotWorseOrNotMeasurableEndsTheSearch) {
 TEST(BisectSearch, SkipsAroundTheCulpritLeaveARange) {
   const std::vector<Revision> candidates = history(8);
   ScriptedJudge judge{5, {3, 4}, {}};  // c3, c4 do not build; c5 is the culprit
-  const BisectResult result = bisect_search(candidates, [&](const Revision& r) { return judge(r); });
+  const BisectResult result =
+      bisect_search(candidates, [&](const Revision& r) { return judge(r); });
   EXPECT_EQ(result.outcome, BisectOutcome::hidden_by_skips);
   EXPECT_EQ(result.first_bad.sha, "c5");
   EXPECT_EQ(result.unmeasured, 2u);
@@ -214,8 +215,7 @@ TEST_F(BisectRangeTest, DivergedEndsAreRefusedWithTheirCommonAncestor) {
   repo_.switch_to("side");
   const std::string on_side = commit_tracer("2.0", "on side");
   const std::string why = refusal(on_side, on_main);
-  EXPECT_NE(why.find("diverged after " + base.substr(0, 7) + " common"), std::string::npos)
-      << why;
+  EXPECT_NE(why.find("diverged after " + base.substr(0, 7) + " common"), std::string::npos) << why;
 }
 
 TEST_F(BisectPipelineTest, AMergeOnlyRangeNamesTheMergeAndTheRangeItBroughtIn) {
@@ -237,9 +237,9 @@ TEST_F(BisectPipelineTest, AMergeOnlyRangeNamesTheMergeAndTheRangeItBroughtIn) {
   EXPECT_EQ(result.first_bad.sha, merge_sha);
   EXPECT_EQ(result.candidates, 1u);
   EXPECT_NE(result.merge_note.find("is a merge"), std::string::npos) << result.merge_note;
-  EXPECT_NE(result.merge_note.find("--good " + good.substr(0, 7) + " --bad " +
-                                   side_tip.substr(0, 7)),
-            std::string::npos)
+  EXPECT_NE(
+      result.merge_note.find("--good " + good.substr(0, 7) + " --bad " + side_tip.substr(0, 7)),
+      std::string::npos)
       << result.merge_note;
 }
 

@@ -54,8 +54,9 @@ class CalibratePipelineTest : public PipelineTest {
 
   Calibration calibrate(const std::string& rev, double target_seconds, const fs::path& out) {
     const Repository repository = Repository::open(repo_.path().string(), context_.cache_dir);
-    CalibrateRequest request{context_, baseline_, repository.location(),
-                             repository.checkout(rev), target_seconds, 1, 16, "", out};
+    CalibrateRequest request{
+        context_, baseline_, repository.location(), repository.checkout(rev), target_seconds, 1, 16,
+        "",       out};
     return calibrate_suite(request, io_);
   }
 };
@@ -103,10 +104,13 @@ TEST_F(CalibratePipelineTest, ACompareOnTheCalibratedSuiteSaysItsEstimateFirst) 
   const Repository repository = Repository::open(repo_.path().string(), context_.cache_dir);
   progress_.lines.clear();
   const double started = clock_.now_seconds();
-  const MeasuredDocument measured =
-      measure_compare({context_, baseline_, repository.location(), repository.checkout(base),
-                       repository.checkout(head), {}},
-                      io_);
+  const MeasuredDocument measured = measure_compare({context_,
+                                                     baseline_,
+                                                     repository.location(),
+                                                     repository.checkout(base),
+                                                     repository.checkout(head),
+                                                     {}},
+                                                    io_);
   const double took = clock_.now_seconds() - started;
   for (const SceneResult& scene : measured.document.scenes) {
     EXPECT_EQ(scene.entry.width, 45);
@@ -142,7 +146,7 @@ TEST_F(CalibratePipelineTest, NeverChoosesAPictureLargerThanTheSuites) {
 TEST_F(CalibratePipelineTest, RefusesBadRequestsBeforeBuilding) {
   const std::string sha = commit_tracer("1.0", "a tracer");
   EXPECT_THROW(calibrate(sha, 0.0, dir_.path() / "s.json"), UsageError);
-  EXPECT_THROW(calibrate(sha, 1.0, dir_.path()), UsageError);               // a directory
+  EXPECT_THROW(calibrate(sha, 1.0, dir_.path()), UsageError);                // a directory
   EXPECT_THROW(calibrate(sha, 1.0, dir_.path() / "suite.txt"), UsageError);  // not .json
   EXPECT_TRUE(executor_.calls().empty());
 }

@@ -37,8 +37,12 @@ class ComparePipelineTest : public PipelineTest {
 
   MeasuredDocument compare(const std::string& base, const std::string& head) {
     const Repository repository = Repository::open(repo_.path().string(), context_.cache_dir);
-    return measure_compare({context_, baseline_, repository.location(),
-                            repository.checkout(base), repository.checkout(head), {}},
+    return measure_compare({context_,
+                            baseline_,
+                            repository.location(),
+                            repository.checkout(base),
+                            repository.checkout(head),
+                            {}},
                            io_);
   }
 };
@@ -302,8 +306,7 @@ TEST_F(ComparePipelineTest, OpensWithWhatItCompares) {
   const std::string head = commit_tracer("2.0", "head");
   compare(base, head);
   ASSERT_FALSE(progress_.lines.empty());
-  EXPECT_EQ(progress_.lines.front().rfind("comparing fake-cost-tracer " + base.substr(0, 7), 0),
-            0u)
+  EXPECT_EQ(progress_.lines.front().rfind("comparing fake-cost-tracer " + base.substr(0, 7), 0), 0u)
       << progress_.lines.front();
   EXPECT_EQ(progress_.lines_with("(base) with").size(), 1u);
 }

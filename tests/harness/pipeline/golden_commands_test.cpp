@@ -20,8 +20,7 @@ TEST(GoldenCommands, TheBaselinesVerificationSaysEveryCount) {
   const GoldenOutcome all = baseline_verification_outcome(counted(13, 0, 0), 13);
   EXPECT_EQ(all.summary, "13 scenes: 13 identical, 0 different, 0 missing");
   EXPECT_EQ(all.exit_code, ExitCode::pass);
-  EXPECT_EQ(baseline_verification_outcome(counted(12, 1, 0), 13).exit_code,
-            ExitCode::regression);
+  EXPECT_EQ(baseline_verification_outcome(counted(12, 1, 0), 13).exit_code, ExitCode::regression);
   // Every golden of the baseline's set is expected: one missing is a usage problem first.
   EXPECT_EQ(baseline_verification_outcome(counted(11, 1, 1), 13).exit_code, ExitCode::usage);
 }

@@ -77,7 +77,8 @@ struct SimulatedScene {
   }
   NoisyVerdict judge(int runs) const {
     return compare_noisy(stats(head_sum, factor, runs), stats(base_sum, {1, 1, 1}, runs),
-                         noisy_thresholds_for(6)).verdict;
+                         noisy_thresholds_for(6))
+        .verdict;
   }
 };
 
@@ -107,14 +108,15 @@ TEST(ImageStop, RepeatedLooksKeepTheErrorRatesNearTheirLevels) {
   const auto edge = sequential({1.01, 1, 1}, false, kTrials, rng);
   const auto edge_every = sequential({1.01, 1, 1}, true, kTrials, rng);
   const auto changed = sequential({0.97, 0.97, 0.97}, false, kTrials, rng);
-  std::printf("up to 41 runs a side, stopped at the first decided look, %d trials each:\n"
-              "  unchanged: pass %d fail %d undecided %d\n"
-              "  R +1%% (the tolerance), looks at 2,3,5,8,...: pass %d fail %d undecided %d\n"
-              "  R +1%%, a look after every run: pass %d fail %d undecided %d\n"
-              "  -3%%: pass %d fail %d undecided %d\n",
-              kTrials, same[0], same[1], same[2], edge[0], edge[1], edge[2], edge_every[0],
-              edge_every[1], edge_every[2], changed[0], changed[1], changed[2]);
-  EXPECT_LE(same[1], 5);   // a false failure: alpha 1% split over 6 images, at 8 looks
+  std::printf(
+      "up to 41 runs a side, stopped at the first decided look, %d trials each:\n"
+      "  unchanged: pass %d fail %d undecided %d\n"
+      "  R +1%% (the tolerance), looks at 2,3,5,8,...: pass %d fail %d undecided %d\n"
+      "  R +1%%, a look after every run: pass %d fail %d undecided %d\n"
+      "  -3%%: pass %d fail %d undecided %d\n",
+      kTrials, same[0], same[1], same[2], edge[0], edge[1], edge[2], edge_every[0], edge_every[1],
+      edge_every[2], changed[0], changed[1], changed[2]);
+  EXPECT_LE(same[1], 5);  // a false failure: alpha 1% split over 6 images, at 8 looks
   EXPECT_GE(same[0], kTrials * 9 / 10);
   EXPECT_LE(edge[0], 25);  // 5% of one look is 10; 25 is the 99.9% bound at 7%
   EXPECT_LE(edge[0], edge_every[0]);

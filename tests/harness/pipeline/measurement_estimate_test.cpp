@@ -60,8 +60,9 @@ TEST(MeasurementEstimate, AFittingSuiteSaysOneLine) {
   EXPECT_EQ(e.shards_needed, 1u);
   const std::vector<std::string> lines = estimate_lines(e, compare_shape(13, 8.0), "from test");
   ASSERT_EQ(lines.size(), 1u);
-  EXPECT_EQ(lines[0], "estimate from test: 13 scenes x 26 s = 5.6 min for a budget of 8.0 min "
-                      "(--max-minutes 8)");
+  EXPECT_EQ(lines[0],
+            "estimate from test: 13 scenes x 26 s = 5.6 min for a budget of 8.0 min "
+            "(--max-minutes 8)");
 }
 
 TEST(MeasurementEstimate, ASuiteOverItsBudgetSaysWhatWould) {
@@ -136,9 +137,10 @@ TEST(MeasurementEstimate, TheWatchedRuleSaysTheEstimateAfterTheFirstRoundAndScen
   // 20 rounds in 60 s: 13 scenes like it take 13 minutes, over the budget of 8.
   EXPECT_EQ(rule(rounds, 60.0), StopDecision::stop_converged);
   ASSERT_EQ(progress.lines.size(), 3u);
-  EXPECT_EQ(progress.lines[1], "estimate from balls (decided in 20 rounds, 60 s), for scenes like "
-                               "it: 13 scenes x 60 s = 13.0 min for a budget of 8.0 min "
-                               "(--max-minutes 8)");
+  EXPECT_EQ(progress.lines[1],
+            "estimate from balls (decided in 20 rounds, 60 s), for scenes like "
+            "it: 13 scenes x 60 s = 13.0 min for a budget of 8.0 min "
+            "(--max-minutes 8)");
   EXPECT_NE(progress.lines[2].find("3 shards"), std::string::npos) << progress.lines[2];
   EXPECT_EQ(asked, 20);
   // Only the first scene is watched.

@@ -19,8 +19,8 @@ inline const TimedRoles kBaseHead{"base", "head"};
 inline const TimedRoles kBaselineTracer{"baseline", "tracer"};
 
 // A round in which each role ran `runs_each` times (its order says so) and kept these seconds.
-inline Round round_of(const TimedRoles& roles, double denominator_seconds,
-                      double numerator_seconds, int runs_each = 1) {
+inline Round round_of(const TimedRoles& roles, double denominator_seconds, double numerator_seconds,
+                      int runs_each = 1) {
   Round round;
   for (int k = 0; k < runs_each; ++k) {
     round.order.push_back(roles.denominator);

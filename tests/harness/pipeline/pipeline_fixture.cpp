@@ -54,8 +54,8 @@ void write_image(const fs::path& path) {
 void leave_outputs(const ProcessSpec& spec) {
   if (const auto image = argument_after(spec, "-o")) write_image(*image);
   if (const auto stats = argument_after(spec, "--stats")) {
-    write_file_atomically(*stats,
-                          R"({"parse_seconds": 0.1, "prepare_seconds": 0.1, "render_seconds": 0.8})");
+    write_file_atomically(
+        *stats, R"({"parse_seconds": 0.1, "prepare_seconds": 0.1, "render_seconds": 0.8})");
   }
 }
 

@@ -52,8 +52,8 @@ TEST(PublishOptions, ReportsAndThePolicyAreCarried) {
   options.reports = {"json:-", "markdown:summary.md"};
   GatePolicy policy;
   policy.fail_on_inconclusive = true;
-  const PublishRequest request = publish_request(options, "d.json", "/cache", policy,
-                                                 kQuietConsole);
+  const PublishRequest request =
+      publish_request(options, "d.json", "/cache", policy, kQuietConsole);
   ASSERT_EQ(request.reports.size(), 2u);
   EXPECT_EQ(request.reports[0].format, ReportFormat::json);
   EXPECT_EQ(request.reports[1].format, ReportFormat::markdown);

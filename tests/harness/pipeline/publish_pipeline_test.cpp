@@ -36,8 +36,8 @@ class PublishPipelineTest : public PipelineTest {
   int compare_and_publish(const std::string& base, const std::string& head) {
     const CompareTrees trees =
         locate_compare_trees(repo_.path().string(), base, "", head, context_.cache_dir);
-    measured_ = measure_compare(
-        {context_, baseline_, trees.repository, trees.base, trees.head, {}}, io_);
+    measured_ =
+        measure_compare({context_, baseline_, trees.repository, trees.base, trees.head, {}}, io_);
     request_.document_path = measured_.path;
     request_.store = store_;
     request_.policy = context_.policy;
@@ -114,8 +114,7 @@ TEST_F(PublishPipelineTest, AStoreThatCannotBeWrittenIsSaidAndTheReportsStillGoO
   EXPECT_EQ(compare_and_publish(base, head), to_int(ExitCode::regression));
   ASSERT_EQ(sink_.problems.size(), 1u);
   EXPECT_TRUE(sink_.problems[0].starts_with("raygate: warning: results not stored: "));
-  EXPECT_NE(sink_.problems[0].find("raygate import " + measured_.path.string()),
-            std::string::npos)
+  EXPECT_NE(sink_.problems[0].find("raygate import " + measured_.path.string()), std::string::npos)
       << sink_.problems[0];
   EXPECT_EQ(json_report().at("exit_code"), to_int(ExitCode::regression));
 }
@@ -129,9 +128,9 @@ TEST_F(PublishPipelineTest, AReportThatCannotBeWrittenEndsTheTableWithTheRealExi
   markdown_ = dir_.path() / "a-file" / "report.md";
   EXPECT_EQ(compare_and_publish(base, head), to_int(ExitCode::infrastructure));
   const std::string table = table_.str();
-  EXPECT_NE(table.find("problem: 1 output could not be written (--report markdown:" +
-                       markdown_.string()),
-            std::string::npos)
+  EXPECT_NE(
+      table.find("problem: 1 output could not be written (--report markdown:" + markdown_.string()),
+      std::string::npos)
       << table;
   EXPECT_NE(table.find("), exit 3\n"), std::string::npos) << table;
   EXPECT_EQ(table.find("exit 0"), std::string::npos) << table;
@@ -146,9 +145,9 @@ TEST_F(PublishPipelineTest, ABadReportSpecIsAUsageError) {
 
 TEST_F(PublishPipelineTest, ABaseBranchThatDoesNotExistIsRefused) {
   commit_tracer("2.0", "main");
-  EXPECT_THROW(locate_compare_trees(repo_.path().string(), "", "no-such-branch", "HEAD",
-                                    context_.cache_dir),
-               Error);
+  EXPECT_THROW(
+      locate_compare_trees(repo_.path().string(), "", "no-such-branch", "HEAD", context_.cache_dir),
+      Error);
 }
 
 }  // namespace

@@ -59,9 +59,10 @@ TEST(RunProgram, TheRightPathAPathOnPathAndARunTimePathPass) {
   const Built built;
   EXPECT_NO_THROW(require_run_program(adapter_running("{build}/renderer/tracer"), built.record,
                                       built.dir.path(), {}));
-  EXPECT_NO_THROW(require_run_program(adapter_running("povray"), built.record, built.dir.path(), {}));
-  EXPECT_NO_THROW(require_run_program(adapter_running("{workdir}/tracer"), built.record,
-                                      built.dir.path(), {}));
+  EXPECT_NO_THROW(
+      require_run_program(adapter_running("povray"), built.record, built.dir.path(), {}));
+  EXPECT_NO_THROW(
+      require_run_program(adapter_running("{workdir}/tracer"), built.record, built.dir.path(), {}));
 }
 
 TEST(BothSides, AFailedSideIsReportedWithHowTheOtherDid) {

@@ -94,8 +94,8 @@ TEST_F(RunPipelineTest, AMachineThatRefusesIdlePollingStillMeasuresAndSaysWhy) {
   const MeasuredDocument measured = run("HEAD");
   EXPECT_TRUE(measured.document.complete);
   EXPECT_EQ(measured.document.settings.cpu_idle, CpuIdle::os);
-  const std::string why = "cannot open " + context_.idle_poll_device.string() +
-                          ": No such file or directory";
+  const std::string why =
+      "cannot open " + context_.idle_poll_device.string() + ": No such file or directory";
   EXPECT_EQ(measured.document.settings.cpu_idle_refused, why);
   EXPECT_EQ(statuses_with(progress_, "note: idle CPUs not held polling (" + why + ")"), 1u);
   // Recorded, so a later reader of the document sees it too.
@@ -146,7 +146,8 @@ TEST_F(RunBesideOneSidedNoise, ScenesTakeTheFastestOfTwoAfterTenRounds) {
     const std::vector<Round>& rounds = scene.runs.rounds;
     ASSERT_GT(rounds.size(), 10u) << scene.entry.id;
     for (std::size_t i = 0; i < 10; ++i) EXPECT_EQ(runs_per_contender(rounds[i]), 1u) << i;
-    for (std::size_t i = 10; i < rounds.size(); ++i) EXPECT_EQ(runs_per_contender(rounds[i]), 2u) << i;
+    for (std::size_t i = 10; i < rounds.size(); ++i)
+      EXPECT_EQ(runs_per_contender(rounds[i]), 2u) << i;
     EXPECT_EQ(scene.runs.stop_reason, "stop_converged") << scene.entry.id;
     EXPECT_NEAR(scene.ratio(Role::tracer)->ratio, 2.0, 0.01) << scene.entry.id;
   }

@@ -133,7 +133,7 @@ TEST(PipelineStopping, SuiteBudgetKeepsAReserveForASecondVisit) {
   EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, 80.0);
   clock.advance(80.0);
   EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, 80.0);
-  clock.advance(20.0);  // this one decided early
+  clock.advance(20.0);                                       // this one decided early
   EXPECT_DOUBLE_EQ(budget.next_scene().max_seconds, 100.0);  // 300 s left for 1 + 2
   clock.advance(100.0);
   // Second pass: 200 s left for two undecided scenes without an estimate; the first has used
@@ -163,8 +163,8 @@ TEST(PipelineStopping, ASecondVisitGetsWhatItIsEstimatedToNeedWithAMargin) {
   // Never more than what is left of the whole budget.
   EXPECT_DOUBLE_EQ(budget.again(40.0, 4, 90.0).max_seconds, 40.0 + 100.0);
   // No estimate (a change on the limit): an even share.
-  EXPECT_DOUBLE_EQ(
-      budget.again(40.0, 4, std::numeric_limits<double>::infinity()).max_seconds, 40.0 + 25.0);
+  EXPECT_DOUBLE_EQ(budget.again(40.0, 4, std::numeric_limits<double>::infinity()).max_seconds,
+                   40.0 + 25.0);
 }
 
 TEST(PipelineStopping, TheReserveIsAQuarterOfTheScenesAndNoneForOne) {

@@ -128,7 +128,8 @@ Expected expected_of(const SceneResult& s) {
 }
 
 const std::regex kVerdict("\\b(REGRESSED|IMPROVED|UNCHANGED|INCONCLUSIVE)\\b");
-const std::regex kBounded(R"(([+-]\d+\.\d+)% \[([+-]\d+\.\d+)%, ([+-]\d+\.\d+)%\] (\d+(?:\.\d+)?% C[SI]))");
+const std::regex kBounded(
+    R"(([+-]\d+\.\d+)% \[([+-]\d+\.\d+)%, ([+-]\d+\.\d+)%\] (\d+(?:\.\d+)?% C[SI]))");
 const std::regex kUnbounded(R"(([+-]\d+\.\d+)%, no interval yet \(needs (\d+) rounds\))");
 const std::regex kExact(R"(([+-]\d+\.\d+)% exact \(simulated cycles\))");
 
@@ -241,14 +242,15 @@ void check_every_format(const ResultsDocument& document) {
     const std::string row = between(html, "<a href=\"#scene-" + id + "\">", "</tr>");
     expect_same(e, read_text(without_tags(row)), "html overview");
     // The scene's change plot: the number and the interval under it, verdict from its tag.
-    const std::string plot = without_tags(between(
-        html.substr(html.find("id=\"scene-" + id + "\"")), "change-plot", "</svg>"));
+    const std::string plot = without_tags(
+        between(html.substr(html.find("id=\"scene-" + id + "\"")), "change-plot", "</svg>"));
     if (e.interval) {
       expect_same(e, read_text(fmt::format("{} {}", plot, e.verdict)), "html change plot");
     }
     const std::string speed_out =
-        junit.select_node(fmt::format("//testcase[@classname='raygate.ci.{}'][@name='speed']", id)
-                              .c_str())
+        junit
+            .select_node(
+                fmt::format("//testcase[@classname='raygate.ci.{}'][@name='speed']", id).c_str())
             .node()
             .child("system-out")
             .text()
@@ -264,7 +266,8 @@ TEST(ReportAgreement, EveryFormatPrintsTheSameChangeIntervalNameAndVerdict) {
   ASSERT_EQ(document.scenes[0].change_verdict, ChangeVerdict::regressed);
   ASSERT_EQ(document.scenes[1].change_verdict, ChangeVerdict::unchanged);
   ASSERT_EQ(document.scenes[2].change_verdict, ChangeVerdict::inconclusive);
-  ASSERT_NE(document.scenes[1].change->equivalence_confidence, document.scenes[1].change->confidence);
+  ASSERT_NE(document.scenes[1].change->equivalence_confidence,
+            document.scenes[1].change->confidence);
   check_every_format(document);
 }
 

@@ -35,8 +35,13 @@ struct Browser {
   std::string run(const std::filesystem::path& page, std::vector<std::string> flags,
                   const std::string& name) const {
     ProcessSpec spec;
-    spec.argv = {exe.string(), "--headless", "--no-sandbox", "--disable-gpu",
-                 "--no-first-run", "--disable-extensions", "--user-data-dir=" + (dir / "profile").string()};
+    spec.argv = {exe.string(),
+                 "--headless",
+                 "--no-sandbox",
+                 "--disable-gpu",
+                 "--no-first-run",
+                 "--disable-extensions",
+                 "--user-data-dir=" + (dir / "profile").string()};
     spec.argv.insert(spec.argv.end(), flags.begin(), flags.end());
     spec.argv.push_back("file://" + page.string());
     spec.stdout_path = dir / (name + ".out");
@@ -75,10 +80,10 @@ TEST(ReportBrowser, RendersWithoutErrors) {
   std::filesystem::remove(shot);
   const Browser browser{chromium, f.dir.path()};
 
-  const std::string log = browser.run(
-      page, {"--enable-logging=stderr", "--v=0", "--hide-scrollbars", "--window-size=1280,2000",
-             "--screenshot=" + shot.string()},
-      "screenshot");
+  const std::string log = browser.run(page,
+                                      {"--enable-logging=stderr", "--v=0", "--hide-scrollbars",
+                                       "--window-size=1280,2000", "--screenshot=" + shot.string()},
+                                      "screenshot");
   EXPECT_EQ(log.find("Uncaught"), std::string::npos) << log;
   EXPECT_EQ(log.find(":CONSOLE"), std::string::npos) << "the page logged to the console:\n" << log;
   ASSERT_TRUE(std::filesystem::exists(shot)) << log;

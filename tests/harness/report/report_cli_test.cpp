@@ -49,8 +49,9 @@ TEST(ReportCli, PolicyChangesTheVerdict) {
   write_file_atomically(doc.dir.path() / "policy.json",
                         R"({"scenes": {"mount": {"max_slowdown": 0.10,
                             "reason": "known slow path, tracked in #12"}}})");
-  const CliRun r = run_raygate({"report", "doc.json", "--policy", "policy.json", "--format",
-                                "json", "-o", "r.json"}, doc.dir);
+  const CliRun r = run_raygate(
+      {"report", "doc.json", "--policy", "policy.json", "--format", "json", "-o", "r.json"},
+      doc.dir);
   ASSERT_EQ(r.exit_code, 0) << r.out;
   const auto json = nlohmann::json::parse(read_file(doc.dir.path() / "r.json"));
   EXPECT_EQ(json.at("counts").at("fail"), 1) << json.dump(1);  // only gears' image now

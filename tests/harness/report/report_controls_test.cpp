@@ -18,7 +18,9 @@ namespace {
 // "PASS" over the line, opens a CSI as one C1 character, reverses what follows, and ends on a
 // Latin-1 byte that is not UTF-8.
 const std::string kHostileSubject =
-    "fix\x1b[2J\x1b]0;owned\x07\rPASS \xC2\x9B" "31m \xE2\x80\xAE" "dexif caf\xE9";
+    "fix\x1b[2J\x1b]0;owned\x07\rPASS \xC2\x9B"
+    "31m \xE2\x80\xAE"
+    "dexif caf\xE9";
 
 // The compare fixture with that subject on head and an ESC in the host name.
 void make_hostile(Fixture& f) {
@@ -35,8 +37,8 @@ bool only_colour_escapes(const std::string& text) {
     std::size_t end = pos + 1;
     if (end >= text.size() || text[end] != '[') return false;
     ++end;
-    while (end < text.size() && (std::isdigit(static_cast<unsigned char>(text[end])) != 0 ||
-                                 text[end] == ';')) {
+    while (end < text.size() &&
+           (std::isdigit(static_cast<unsigned char>(text[end])) != 0 || text[end] == ';')) {
       ++end;
     }
     if (end >= text.size() || text[end] != 'm') return false;

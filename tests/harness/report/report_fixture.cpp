@@ -64,9 +64,9 @@ void set_change(SceneResult& s, double base, double head, double change, double 
   s.change_verdict = verdict;
 }
 
-ImageCheck check(Role role, ImageReference reference,
-                 const std::filesystem::path& actual, const std::filesystem::path& expected,
-                 const std::filesystem::path& dir, const std::string& stem) {
+ImageCheck check(Role role, ImageReference reference, const std::filesystem::path& actual,
+                 const std::filesystem::path& expected, const std::filesystem::path& dir,
+                 const std::string& stem) {
   return check_image(role, reference, actual, expected, ImageThresholds{}, dir / "evidence", stem);
 }
 
@@ -86,8 +86,10 @@ SceneResult passing(const std::filesystem::path& dir) {
   SceneResult s = scene("balls");
   set_change(s, 0.512, 0.514, 0.004, -0.006, 0.013, ChangeVerdict::unchanged);
   const auto golden = kGolden / "balls.png";
-  s.images.push_back(check(Role::head, ImageReference::golden, golden, golden, dir, "balls-head-golden"));
-  s.images.push_back(check(Role::base, ImageReference::golden, golden, golden, dir, "balls-base-golden"));
+  s.images.push_back(
+      check(Role::head, ImageReference::golden, golden, golden, dir, "balls-head-golden"));
+  s.images.push_back(
+      check(Role::base, ImageReference::golden, golden, golden, dir, "balls-base-golden"));
   return s;
 }
 
@@ -95,7 +97,8 @@ SceneResult regression(const std::filesystem::path& dir) {
   SceneResult s = scene("mount", 41.5);
   set_change(s, 0.731, 0.789, 0.079, 0.061, 0.098, ChangeVerdict::regressed);
   const auto golden = kGolden / "mount.png";
-  s.images.push_back(check(Role::head, ImageReference::golden, golden, golden, dir, "mount-head-golden"));
+  s.images.push_back(
+      check(Role::head, ImageReference::golden, golden, golden, dir, "mount-head-golden"));
   return s;
 }
 
@@ -104,8 +107,10 @@ SceneResult image_failure(const std::filesystem::path& dir) {
   set_change(s, 1.204, 1.207, 0.002, -0.008, 0.011, ChangeVerdict::unchanged);
   const auto golden = kGolden / "gears.png";
   const auto head = wrong_gears(dir);
-  s.images.push_back(check(Role::head, ImageReference::golden, head, golden, dir, "gears-head-golden"));
-  s.images.push_back(check(Role::base, ImageReference::golden, golden, golden, dir, "gears-base-golden"));
+  s.images.push_back(
+      check(Role::head, ImageReference::golden, head, golden, dir, "gears-head-golden"));
+  s.images.push_back(
+      check(Role::base, ImageReference::golden, golden, golden, dir, "gears-base-golden"));
   s.images.push_back(check(Role::head, ImageReference::base, head, golden, dir, "gears-head-base"));
   return s;
 }
@@ -130,8 +135,10 @@ ResultsDocument header(DocumentKind kind) {
   d.started_at = "2024-05-01T10:00:00Z";
   d.finished_at = "2024-05-01T10:12:00Z";
   d.complete = true;
-  d.machine = {{"cpu_model", "Test CPU @ 3.0GHz"}, {"logical_cores", 2},
-               {"kernel", "Linux 6.1.0 x86_64"}, {"hostname", "ci-runner-3"}};
+  d.machine = {{"cpu_model", "Test CPU @ 3.0GHz"},
+               {"logical_cores", 2},
+               {"kernel", "Linux 6.1.0 x86_64"},
+               {"hostname", "ci-runner-3"}};
   d.baseline.version = "raygate-baseline 0.1.0";
   d.suite = "ci";
   d.settings.schedule = ScheduleKind::alternate;
@@ -183,8 +190,8 @@ TrendSeries make_trend(const std::string& scene, int n) {
   TrendSeries series{scene, {}};
   for (int i = 0; i < n; ++i) {
     const double r = 0.73 + 0.004 * std::sin(i * 1.3) + (i == n - 1 ? 0.058 : 0.0);
-    series.points.push_back({"c0ffee" + std::to_string(i), "commit " + std::to_string(i), "",
-                             r, r * 0.994, r * 1.006, "", false, ""});
+    series.points.push_back({"c0ffee" + std::to_string(i), "commit " + std::to_string(i), "", r,
+                             r * 0.994, r * 1.006, "", false, ""});
   }
   return series;
 }

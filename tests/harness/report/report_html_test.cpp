@@ -58,8 +58,10 @@ TEST(HtmlReport, FailuresFirstWithBadgesAndReasons) {
   EXPECT_LT(mount, gears);
   EXPECT_LT(gears, tetra);
   EXPECT_LT(tetra, balls);
-  EXPECT_NE(html.find(R"(<section class="scene card gate-fail" id="scene-mount">)"), std::string::npos);
-  EXPECT_NE(html.find(R"(<span class="badge gate-unmeasured">not measured</span>)"), std::string::npos);
+  EXPECT_NE(html.find(R"(<section class="scene card gate-fail" id="scene-mount">)"),
+            std::string::npos);
+  EXPECT_NE(html.find(R"(<span class="badge gate-unmeasured">not measured</span>)"),
+            std::string::npos);
   EXPECT_NE(html.find("slower: head vs base +7.9%"), std::string::npos);
   EXPECT_NE(html.find("raygate: 2 regressions"), std::string::npos);
   EXPECT_NE(html.find("Test CPU @ 3.0GHz (2 cores)"), std::string::npos);

@@ -14,7 +14,8 @@ pugi::xml_node testcase(const pugi::xml_node& suite, const std::string& scene,
                         const std::string& part) {
   const std::string classname = "raygate.ci." + scene;
   for (const pugi::xml_node& node : suite.children("testcase")) {
-    if (classname == node.attribute("classname").value() && part == node.attribute("name").value()) {
+    if (classname == node.attribute("classname").value() &&
+        part == node.attribute("name").value()) {
       return node;
     }
   }
@@ -104,7 +105,8 @@ TEST(WriteReports, WritesEveryTargetWithoutColour) {
   ReportOptions options;
   options.colour = true;
   write_reports(*f.input,
-                {{ReportFormat::console, out / "report.txt"}, {ReportFormat::json, out / "r.json"},
+                {{ReportFormat::console, out / "report.txt"},
+                 {ReportFormat::json, out / "r.json"},
                  {ReportFormat::html, out / "report.html"}},
                 options);
   const std::string console = read_file(out / "report.txt");

@@ -39,9 +39,10 @@ TEST(ConsoleReport, CompareHasNumbersAndFailuresFirst) {
   const std::string text = f.render("console");
   at(text, "0.731 -> 0.789");
   // The policy line names the intervals the rows print, not a third confidence.
-  at(text, "max slowdown +3.0% (within the limit when the 90% CS lies within ±3%, slower when the "
-           "decision CS lies above 0, at most 1% false alarms per compare; CS = anytime-valid "
-           "confidence sequence, CI = one-look confidence interval)");
+  at(text,
+     "max slowdown +3.0% (within the limit when the 90% CS lies within ±3%, slower when the "
+     "decision CS lies above 0, at most 1% false alarms per compare; CS = anytime-valid "
+     "confidence sequence, CI = one-look confidence interval)");
   at(text, "+7.9% [+6.1%, +9.8%]");
   at(text, "REGRESSED");
   EXPECT_LT(at(text, "\nmount "), at(text, "\ngears "));
@@ -52,8 +53,9 @@ TEST(ConsoleReport, CompareHasNumbersAndFailuresFirst) {
   EXPECT_LT(at(text, "- slower: head vs base +7.9%"), at(text, "\ngears "));
   at(text, "- image head vs golden: max");
   at(text, "killed by SIGSEGV");
-  at(text, "raygate: 2 regressions (mount +7.9%, gears image; not measured: tetra; suite +2.8%), "
-           "exit 1");
+  at(text,
+     "raygate: 2 regressions (mount +7.9%, gears image; not measured: tetra; suite +2.8%), "
+     "exit 1");
   EXPECT_EQ(text.find('\033'), std::string::npos) << "no colour unless asked";
 }
 
@@ -127,9 +129,10 @@ TEST(ConsoleReport, TheClockLineSaysWhetherIdleCpusWereHeldPolling) {
      "polling\n");
   f.document.settings.cpu_idle = CpuIdle::os;
   f.document.settings.cpu_idle_refused = "cannot open /dev/cpu_dma_latency: Permission denied";
-  at(f.render("console"), "clock: process-cpu (measures in seconds); each round pinned to one "
-                          "CPU; idle CPUs not held polling (cannot open /dev/cpu_dma_latency: "
-                          "Permission denied)\n");
+  at(f.render("console"),
+     "clock: process-cpu (measures in seconds); each round pinned to one "
+     "CPU; idle CPUs not held polling (cannot open /dev/cpu_dma_latency: "
+     "Permission denied)\n");
   // --no-idle-poll, or a document from before: nothing said.
   f.document.settings.cpu_idle_refused.reset();
   EXPECT_EQ(f.render("console").find("idle CPUs"), std::string::npos);
@@ -186,7 +189,8 @@ TEST(MarkdownReport, HeadlineTableAndDetails) {
                        0),
             0u)
       << text;
-  at(text, "| **FAIL** | mount | 0.731 → 0.789 | +7.9% [+6.1%, +9.8%] 95% CI, 12 rounds | REGRESSED | pass |");
+  at(text,
+     "| **FAIL** | mount | 0.731 → 0.789 | +7.9% [+6.1%, +9.8%] 95% CI, 12 rounds | REGRESSED | pass |");
   EXPECT_LT(at(text, "| mount |"), at(text, "| gears |"));
   EXPECT_LT(at(text, "| tetra |"), at(text, "| balls |"));
   at(text, "- **mount** (fail): slower: head vs base +7.9%");
@@ -226,9 +230,10 @@ TEST(ConsoleReport, NoGoldensIsSaidOnce) {
   without_goldens(f);
   const std::string text = f.render("console");
   EXPECT_EQ(occurrences(text, "no goldens in golden/my-tracer"), 1u) << text;
-  at(text, "note: images not checked against goldens: no goldens in golden/my-tracer (none "
-           "blessed yet) (2 images); look at the images, then bless them: raygate golden bless "
-           "--from-run RESULTS.json");
+  at(text,
+     "note: images not checked against goldens: no goldens in golden/my-tracer (none "
+     "blessed yet) (2 images); look at the images, then bless them: raygate golden bless "
+     "--from-run RESULTS.json");
   at(text, "raygate: pass (2 scenes; suite score 0.439), exit 0");
 }
 

@@ -40,14 +40,17 @@ TEST(MergeNames, UnchangedShardsMerge) {
 }
 
 TEST(MergeNames, NamesThatWouldEscapeAFolderAreRefusedNamingTheField) {
-  EXPECT_NE(merge_error([](ResultsDocument& d) { d.scenes[0].entry.id = "../../x"; })
-                .find("merge: a.json: scenes[0].entry.id '../../x' may hold only"),
+  EXPECT_NE(merge_error([](ResultsDocument& d) {
+              d.scenes[0].entry.id = "../../x";
+            }).find("merge: a.json: scenes[0].entry.id '../../x' may hold only"),
             std::string::npos);
-  EXPECT_NE(merge_error([](ResultsDocument& d) { d.suite = "/tmp/x"; })
-                .find("merge: a.json: suite '/tmp/x'"),
+  EXPECT_NE(merge_error([](ResultsDocument& d) {
+              d.suite = "/tmp/x";
+            }).find("merge: a.json: suite '/tmp/x'"),
             std::string::npos);
-  EXPECT_NE(merge_error([](ResultsDocument& d) { d.revisions[0].adapter_name = "../../x"; })
-                .find("merge: a.json: revisions[0].adapter.name '../../x'"),
+  EXPECT_NE(merge_error([](ResultsDocument& d) {
+              d.revisions[0].adapter_name = "../../x";
+            }).find("merge: a.json: revisions[0].adapter.name '../../x'"),
             std::string::npos);
   EXPECT_NE(merge_error([](ResultsDocument& d) {
               d.settings.shard->suite_scenes[1] = "..";

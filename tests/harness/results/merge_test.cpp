@@ -20,16 +20,15 @@ namespace {
 
 using nlohmann::json;
 
-const std::vector<test::SceneSpec> kScenes{
-    {.id = "balls", .ratio = 1.2, .baseline_seconds = 1.2},
-    {.id = "gears", .ratio = 0.8, .baseline_seconds = 1.0},
-    {.id = "mount",
-     .ratio = 1.5,
-     .baseline_seconds = 0.9,
-     .max_error = 0.5,
-     .verdict = ImageVerdict::fail},
-    {.id = "rings", .ratio = 0.9, .baseline_seconds = 0.5},
-    {.id = "teapot", .ratio = 1.1, .baseline_seconds = 0.6}};
+const std::vector<test::SceneSpec> kScenes{{.id = "balls", .ratio = 1.2, .baseline_seconds = 1.2},
+                                           {.id = "gears", .ratio = 0.8, .baseline_seconds = 1.0},
+                                           {.id = "mount",
+                                            .ratio = 1.5,
+                                            .baseline_seconds = 0.9,
+                                            .max_error = 0.5,
+                                            .verdict = ImageVerdict::fail},
+                                           {.id = "rings", .ratio = 0.9, .baseline_seconds = 0.5},
+                                           {.id = "teapot", .ratio = 1.1, .baseline_seconds = 0.6}};
 
 std::vector<std::string> ids_of(const std::vector<test::SceneSpec>& scenes) {
   std::vector<std::string> ids;
@@ -169,8 +168,7 @@ TEST(Merge, RefusesInconsistentShardsNamingBothFilesAndTheField) {
        [](ResultsDocument& d) { d.baseline.source_sha256 = std::string(64, 'd'); }},
       {"suite", "suite", [](ResultsDocument& d) { d.suite = "full"; }},
       {"schema", "schema_version", [](ResultsDocument& d) { d.schema_version = 0; }},
-      {"shard count", "shard count",
-       [](ResultsDocument& d) { d.settings.shard->spec.count = 3; }},
+      {"shard count", "shard count", [](ResultsDocument& d) { d.settings.shard->spec.count = 3; }},
       {"selection", "settings.shard.suite_scenes",
        [](ResultsDocument& d) {
          d.settings.shard->suite_scenes = {"balls", "gears"};

@@ -39,8 +39,13 @@ NoisyComparison comparison(NoisyVerdict verdict) {
   if (verdict == NoisyVerdict::fail) {
     c.image = {-0.03, -0.033, -0.027};
     c.biased_count = 14;
-    c.biased.push_back({kWholeImage, {0, 0, 48, 48}, 1, {-0.03, -0.033, -0.027}, 0.01,
-                        -std::numeric_limits<double>::infinity(), 0.0});
+    c.biased.push_back({kWholeImage,
+                        {0, 0, 48, 48},
+                        1,
+                        {-0.03, -0.033, -0.027},
+                        0.01,
+                        -std::numeric_limits<double>::infinity(),
+                        0.0});
   }
   return c;
 }

@@ -33,7 +33,7 @@ struct DocumentSpec {
   std::string cpu_model = "Test CPU 3000";
   std::string baseline_sha256 = std::string(64, 'b');
   DocumentKind kind = DocumentKind::run;
-  std::string shard;                         // "K/N"
+  std::string shard;                      // "K/N"
   std::vector<Role> roles{Role::tracer};  // compare: {base, head}
   bool dirty = false;
   bool complete = true;

@@ -88,8 +88,14 @@ SceneResult measured_scene() {
   s.runs.stop_reason = "stop_converged";
   s.runs.seconds_spent = 9.5;
   s.ratios["tracer"] = make_ratio(0.5);
-  s.images.push_back(ImageCheck{Role::tracer, ImageReference::golden, "/w/t/warmup-1/image.png", "/g/balls.png",
-                                ImageVerdict::pass, "", make_metrics(true), {}});
+  s.images.push_back(ImageCheck{Role::tracer,
+                                ImageReference::golden,
+                                "/w/t/warmup-1/image.png",
+                                "/g/balls.png",
+                                ImageVerdict::pass,
+                                "",
+                                make_metrics(true),
+                                {}});
   return s;
 }
 
@@ -110,8 +116,14 @@ SceneResult failed_scene() {
   s.images[0].verdict = ImageVerdict::fail;
   s.images[0].metrics = make_metrics(false);
   s.images[0].evidence = {"/e/tetra.actual.png", "/e/tetra.expected.png", "/e/tetra.diff.png"};
-  s.images.push_back(ImageCheck{Role::head, ImageReference::base, "/h.png", "/b.png", ImageVerdict::error,
-                                "cannot read /h.png", std::nullopt, {}});
+  s.images.push_back(ImageCheck{Role::head,
+                                ImageReference::base,
+                                "/h.png",
+                                "/b.png",
+                                ImageVerdict::error,
+                                "cannot read /h.png",
+                                std::nullopt,
+                                {}});
   return s;
 }
 
@@ -171,8 +183,15 @@ ResultsDocument full_document() {
   RevisionRecord r;
   r.role = Role::tracer;
   r.repository = "/repos/tracer";
-  r.worktree = {"/cache/worktrees/y", "v1", "refs/tags/v1", std::string(40, 'c'), "ccccccc",
-                "first", "Ada Tester", "2023-11-14T22:14:20+00:00", false};
+  r.worktree = {"/cache/worktrees/y",
+                "v1",
+                "refs/tags/v1",
+                std::string(40, 'c'),
+                "ccccccc",
+                "first",
+                "Ada Tester",
+                "2023-11-14T22:14:20+00:00",
+                false};
   r.adapter_name = "make-nff";
   r.adapter_hash = std::string(64, 'd');
   r.adapter_file = "/adapters/make-nff.json";
@@ -421,7 +440,8 @@ TEST(ResultsJson, MissingKeyIsAUsageErrorNamingTheFileAndKey) {
   json j = to_json(full_document());
   j["scenes"][1].erase("rounds");
   const std::string message = usage_error(j);
-  EXPECT_NE(message.find("shard-7.json: $.scenes[1]: missing required key 'rounds'"), std::string::npos)
+  EXPECT_NE(message.find("shard-7.json: $.scenes[1]: missing required key 'rounds'"),
+            std::string::npos)
       << message;
 }
 

@@ -26,9 +26,9 @@ std::vector<SuiteScene> suite_of(int count) {
 
 // The ci suite's 13 scenes with their baseline seconds from docs/scenes.md, in suite order.
 const std::vector<std::pair<std::string, double>> kCiSeconds{
-    {"balls", 1.178},  {"gears", 0.995},   {"mount", 0.852},   {"rings", 0.528},
-    {"teapot", 0.615}, {"tetra", 0.488},   {"tree", 0.742},    {"lattice", 0.490},
-    {"shells", 0.502}, {"jacks", 0.611},   {"sombrero", 0.535}, {"sample", 0.457},
+    {"balls", 1.178},  {"gears", 0.995}, {"mount", 0.852},    {"rings", 0.528},
+    {"teapot", 0.615}, {"tetra", 0.488}, {"tree", 0.742},     {"lattice", 0.490},
+    {"shells", 0.502}, {"jacks", 0.611}, {"sombrero", 0.535}, {"sample", 0.457},
     {"nurbtst", 0.622}};
 
 std::string usage_message(const std::string& text) {
@@ -49,8 +49,8 @@ TEST(ShardSpec, ParsesKOfN) {
 }
 
 TEST(ShardSpec, RefusesWhatIsNotAShard) {
-  for (const std::string bad : {"0/3", "4/3", "x", "3", "1/0", "-1/3", "1/3x", " 1/3", "1/", "/3",
-                                "a/b", "1//3", ""}) {
+  for (const std::string bad :
+       {"0/3", "4/3", "x", "3", "1/0", "-1/3", "1/3x", " 1/3", "1/", "/3", "a/b", "1//3", ""}) {
     const std::string message = usage_message(bad);
     EXPECT_NE(message.find("--shard '" + bad + "'"), std::string::npos) << message;
     EXPECT_NE(message.find("1 <= K <= N"), std::string::npos) << message;

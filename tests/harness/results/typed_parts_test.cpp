@@ -167,8 +167,14 @@ ScalingAnalysis one_family() {
   FamilyScaling family;
   family.family = "balls";
   family.series_id = "0123456789abcdef";
-  family.points = {{"balls-1", 1, 11, 0.01, {{"base", 0.02}, {"head", 0.03}},
-                    {{"base", 2.0}, {"head", 3.0}}, 0.5, Interval{0.4, 0.6}}};
+  family.points = {{"balls-1",
+                    1,
+                    11,
+                    0.01,
+                    {{"base", 0.02}, {"head", 0.03}},
+                    {{"base", 2.0}, {"head", 3.0}},
+                    0.5,
+                    Interval{0.4, 0.6}}};
   family.baseline = line_fit(1.0);
   family.roles["base"] = {line_fit(1.0), line_fit(0.0)};
   ExponentChange change;

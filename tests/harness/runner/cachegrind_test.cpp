@@ -16,8 +16,7 @@ namespace fs = std::filesystem;
 const fs::path kRecorded = fs::path(RAYGATE_SOURCE_DIR) / "tests" / "fixtures" / "cachegrind";
 
 TEST(Cachegrind, ParsesTheSummaryOfARecordedFile) {
-  const SimulatedCounters c =
-      parse_cachegrind_output(read_file(kRecorded / "true.cg"), "true.cg");
+  const SimulatedCounters c = parse_cachegrind_output(read_file(kRecorded / "true.cg"), "true.cg");
   // summary: 131555 1091 1072 30123 1227 1022 10266 342 312
   EXPECT_EQ(c.ir, 131555u);
   EXPECT_EQ(c.i1mr, 1091u);
@@ -55,7 +54,8 @@ TEST(Cachegrind, DamagedOutputIsAnErrorWithFileAndLine) {
   expect_error("cmd: x\n" + events + "summary: 1 2 3\n", "out/cg.42:3: 3 counts for the 9 events");
   expect_error(events + "summary: 1 2 3 4 5 x 7 8 9\n", "out/cg.42:2: summary count 'x'");
   // Without --cache-sim=yes cachegrind counts instructions only.
-  expect_error("events: Ir\nsummary: 100\n", "no 'I1mr' event (was cachegrind run with --cache-sim=yes?)");
+  expect_error("events: Ir\nsummary: 100\n",
+               "no 'I1mr' event (was cachegrind run with --cache-sim=yes?)");
 }
 
 TEST(Cachegrind, ARunsCountersAreTheSumOfItsProcesses) {
@@ -88,12 +88,20 @@ TEST(Cachegrind, CommandTracesChildrenWithAFixedCacheGeometry) {
   TempDir dir("cachegrind-test");
   ProcessSpec spec;
   spec.argv = {"/bin/sh", "wrapper.sh"};
-  const ProcessSpec wrapped = under_cachegrind(spec, Cachegrind{"valgrind", "valgrind-3.19.0"},
-                                               dir.path() / "cg");
+  const ProcessSpec wrapped =
+      under_cachegrind(spec, Cachegrind{"valgrind", "valgrind-3.19.0"}, dir.path() / "cg");
   const std::vector<std::string> expected = {
-      "valgrind", "--tool=cachegrind", "--cache-sim=yes", "--branch-sim=no",
-      "--trace-children=yes", "--I1=32768,8,64", "--D1=32768,8,64", "--LL=8388608,16,64",
-      "--cachegrind-out-file=" + (dir.path() / "cg" / "cg.%p").string(), "/bin/sh", "wrapper.sh"};
+      "valgrind",
+      "--tool=cachegrind",
+      "--cache-sim=yes",
+      "--branch-sim=no",
+      "--trace-children=yes",
+      "--I1=32768,8,64",
+      "--D1=32768,8,64",
+      "--LL=8388608,16,64",
+      "--cachegrind-out-file=" + (dir.path() / "cg" / "cg.%p").string(),
+      "/bin/sh",
+      "wrapper.sh"};
   EXPECT_EQ(wrapped.argv, expected);
   EXPECT_TRUE(fs::is_directory(dir.path() / "cg"));
 }

@@ -92,9 +92,9 @@ class ContenderTest : public ::testing::Test {
                 const std::string& image_bytes, const std::string& output = "") const {
     const ProcessSpec spec = contender.command(scene_, run_dir_);
     write_file_atomically(spec.stdout_path, output);
-    const fs::path image =
-        contender.setup().adapter.image == "{image}" ? run_dir_ / "work" / "image.png"
-                                                     : run_dir_ / "work" / "trace.ppm";
+    const fs::path image = contender.setup().adapter.image == "{image}"
+                               ? run_dir_ / "work" / "image.png"
+                               : run_dir_ / "work" / "trace.ppm";
     if (image_bytes != "<none>") write_file_atomically(image, image_bytes);
     return contender.interpret(scene_, result, spec, run_dir_);
   }
@@ -174,8 +174,9 @@ TEST_F(ContenderTest, OneThreadTracerIsTimedByCpuSecondsAndWallIsKept) {
 TEST_F(ContenderTest, MissingImageIsAFailure) {
   const RunRecord r = run(tracer(kWorkdirImage), exited_with(0, 1.0), "<none>");
   EXPECT_FALSE(r.ok);
-  EXPECT_EQ(contains(r.failure, "fixed-name wrote no image at " +
-                                    (run_dir_ / "work" / "trace.ppm").string()), "");
+  EXPECT_EQ(contains(r.failure,
+                     "fixed-name wrote no image at " + (run_dir_ / "work" / "trace.ppm").string()),
+            "");
 }
 
 TEST_F(ContenderTest, EmptyImageIsAFailure) {
@@ -320,8 +321,8 @@ TEST_F(BaselineContenderTest, InProcessClockTimesByParsePreparePlusRenderSeconds
 // what perf left, exact): the baseline asks it as the tracer does, knowing nothing of it.
 TEST_F(BaselineContenderTest, AnyModeWrapsAndCollectsTheBaselineAsItDoesTheTracer) {
   const test::InstructionMode mode;
-  baseline_ = BaselineContender{"/opt/raygate-baseline", "center", std::chrono::seconds(9), "none",
-                                &mode};
+  baseline_ =
+      BaselineContender{"/opt/raygate-baseline", "center", std::chrono::seconds(9), "none", &mode};
   const ProcessSpec spec = baseline_.command(scene_, run_dir_);
   EXPECT_EQ(spec.argv.front(), "perf");
   EXPECT_EQ(spec.argv[8], "/opt/raygate-baseline");
@@ -383,10 +384,10 @@ TEST_F(BaselineContenderTest, MissingStatsIsAFailedRunNotAnException) {
 
 TEST_F(BaselineContenderTest, GarbledStatsIsAFailedRun) {
   for (const std::string& stats : {std::string("{\"parse_seconds\": 0.1,"),
-                                  std::string(R"({"parse_seconds": 0.1, "render_seconds": 1})"),
-                                  std::string(R"({"parse_seconds": "x", "prepare_seconds": 0,
+                                   std::string(R"({"parse_seconds": 0.1, "render_seconds": 1})"),
+                                   std::string(R"({"parse_seconds": "x", "prepare_seconds": 0,
                                                   "render_seconds": 1})"),
-                                  std::string(R"({"parse_seconds": 0, "prepare_seconds": 0,
+                                   std::string(R"({"parse_seconds": 0, "prepare_seconds": 0,
                                                   "render_seconds": 0})")}) {
     RunRecord r;
     EXPECT_NO_THROW(r = interpret(exited_with(0, 2.0), &stats)) << stats;

@@ -85,8 +85,9 @@ TEST(SystemExecutor, InterruptStopsEveryProcessOfARunTogether) {
     ::kill(::getpid(), SIGINT);  // both children run: the handler only records it
   });
   const auto started = std::chrono::steady_clock::now();
-  EXPECT_THROW(executor.run_together({shell("echo up; sleep 20", a), shell("echo up; sleep 20", b)}),
-               Interrupted);
+  EXPECT_THROW(
+      executor.run_together({shell("echo up; sleep 20", a), shell("echo up; sleep 20", b)}),
+      Interrupted);
   stopper.join();
   EXPECT_LT(std::chrono::steady_clock::now() - started, std::chrono::seconds(5));
   clear_interrupt_for_testing();

@@ -28,9 +28,9 @@ class FakeClock final : public Clock {
 
 // One process the fake executor was asked to run.
 struct Call {
-  std::string role;       // argv[0]
-  std::vector<int> cpus;  // its cpu_affinity
-  int batch = 0;          // executor call it came in; specs of one run_together share it
+  std::string role;           // argv[0]
+  std::vector<int> cpus;      // its cpu_affinity
+  int batch = 0;              // executor call it came in; specs of one run_together share it
   std::filesystem::path log;  // its stdout_path, which names the run directory
 };
 

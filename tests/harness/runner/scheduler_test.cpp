@@ -336,14 +336,14 @@ TEST_F(SchedulerTest, AContinuedSceneSkipsTheWarmupsAndCarriesOnItsRoundsAndSeco
 
 TEST_F(SchedulerTest, OnlyASceneMeasuredWithoutFailureContinues) {
   const std::vector<const Contender*> pair{&baseline_, &tracer_};
-  EXPECT_THROW(continue_scene(scene_, pair, options_, stop_after(2), executor_,
-                              clock_, dir_.path() / "scene", SceneRuns{}),
+  EXPECT_THROW(continue_scene(scene_, pair, options_, stop_after(2), executor_, clock_,
+                              dir_.path() / "scene", SceneRuns{}),
                std::invalid_argument);
   executor_.script("tracer", 2, killed_by(SIGSEGV));  // its warm-up runs, its first round crashes
   SceneRuns failed = measure_pair(stop_after(2));
   ASSERT_TRUE(failed.failed());
-  EXPECT_THROW(continue_scene(scene_, pair, options_, stop_after(2), executor_,
-                              clock_, dir_.path() / "scene", std::move(failed)),
+  EXPECT_THROW(continue_scene(scene_, pair, options_, stop_after(2), executor_, clock_,
+                              dir_.path() / "scene", std::move(failed)),
                std::invalid_argument);
 }
 
@@ -470,8 +470,9 @@ TEST_F(SchedulerTest, SuccessInNoMeasurableTimeIsAFailureOfThatSceneOnly) {
   EXPECT_NO_THROW(runs = measure_pair(ratio_stop_rule(policy, Role::tracer)));
   ASSERT_TRUE(runs.failed());
   EXPECT_EQ(runs.failed_role, Role::tracer);
-  EXPECT_EQ(runs.failed_run->failure, "tracer run took 0 s by its timing metric; a ratio needs a "
-                                      "positive time");
+  EXPECT_EQ(runs.failed_run->failure,
+            "tracer run took 0 s by its timing metric; a ratio needs a "
+            "positive time");
   EXPECT_EQ(runs.rounds.size(), 1u);
 }
 

@@ -38,15 +38,20 @@ TEST(Suite, CiCoversEveryScene) {
 }
 
 TEST(Suite, ErrorsNameTheJsonPath) {
-  EXPECT_NE(load_error(R"({"scenes": [{"scene": "ballz"}]})").find("$.scenes[0].scene: unknown SPD scene 'ballz'"),
+  EXPECT_NE(load_error(R"({"scenes": [{"scene": "ballz"}]})")
+                .find("$.scenes[0].scene: unknown SPD scene 'ballz'"),
             std::string::npos);
-  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "size": 99}]})").find("$.scenes[0].size: size 99 out of range 1..6"),
+  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "size": 99}]})")
+                .find("$.scenes[0].size: size 99 out of range 1..6"),
             std::string::npos);
-  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "resolution": [0, 5]}]})").find("$.scenes[0].resolution"),
+  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "resolution": [0, 5]}]})")
+                .find("$.scenes[0].resolution"),
             std::string::npos);
-  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "colour": 1}]})").find("unknown key 'colour'"),
-            std::string::npos);
-  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls"}, {"scene": "balls"}]})").find("duplicate id 'balls'"),
+  EXPECT_NE(
+      load_error(R"({"scenes": [{"scene": "balls", "colour": 1}]})").find("unknown key 'colour'"),
+      std::string::npos);
+  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls"}, {"scene": "balls"}]})")
+                .find("duplicate id 'balls'"),
             std::string::npos);
   EXPECT_NE(load_error("{not json").find("bad.json:1:"), std::string::npos);
   EXPECT_NE(load_error("{not json").find(": not JSON: syntax error"), std::string::npos);
@@ -84,17 +89,21 @@ TEST(Suite, ADuplicateKeyOrAnOutOfRangeNumberIsRefusedWhereItIs) {
 TEST(Suite, IdsAndNamesThatWouldEscapeTheCacheAreRefused) {
   const std::string climbing = load_error(R"({"scenes": [{"scene": "balls", "id": "../x"}]})");
   EXPECT_NE(climbing.find("bad.json: $.scenes[0].id '../x' may hold only letters"),
-            std::string::npos) << climbing;
+            std::string::npos)
+      << climbing;
   const std::string absolute = load_error(R"({"name": "/tmp/x", "scenes": [{"scene": "balls"}]})");
   EXPECT_NE(absolute.find("bad.json: $.name '/tmp/x' may hold only letters"), std::string::npos)
       << absolute;
   EXPECT_NE(load_error(R"({"name": "..", "scenes": [{"scene": "balls"}]})").find("$.name '..'"),
             std::string::npos);
-  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "id": ""}]})").find("$.scenes[0].id '' is empty"),
+  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "id": ""}]})")
+                .find("$.scenes[0].id '' is empty"),
             std::string::npos);
-  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "id": 7}]})").find("$.scenes[0].id: expected a string"),
+  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "id": 7}]})")
+                .find("$.scenes[0].id: expected a string"),
             std::string::npos);
-  EXPECT_NE(load_error(R"({"name": 7, "scenes": [{"scene": "balls"}]})").find("$.name: expected a string"),
+  EXPECT_NE(load_error(R"({"name": 7, "scenes": [{"scene": "balls"}]})")
+                .find("$.name: expected a string"),
             std::string::npos);
   try {
     load_suite("..", RAYGATE_SOURCE_DIR);

@@ -55,7 +55,8 @@ TEST(PowerFitTest, IntervalWidensWithNoiseAndIsStudentT) {
   for (double n : kSizes) sxx += (std::log(n) - mx) * (std::log(n) - mx);
   const std::vector<SizePoint> p = points([](double n) { return std::pow(n, 0.5); }, 3.0);
   for (const SizePoint& s : p) {
-    const double r = std::log(s.value) - (loud.log_prefactor + loud.exponent * std::log(s.primitives));
+    const double r =
+        std::log(s.value) - (loud.log_prefactor + loud.exponent * std::log(s.primitives));
     ss += r * r;
   }
   const double half = 2.7764 * std::sqrt(ss / 4 / sxx);
@@ -126,8 +127,9 @@ TEST(PowerFitTest, StudentQuantilesMatchTables) {
 }
 
 TEST(PowerFitTest, QualityNamesRoundTrip) {
-  for (const FitQuality q : {FitQuality::power_law, FitQuality::startup_dominated,
-                             FitQuality::curved, FitQuality::scattered, FitQuality::too_few_points}) {
+  for (const FitQuality q :
+       {FitQuality::power_law, FitQuality::startup_dominated, FitQuality::curved,
+        FitQuality::scattered, FitQuality::too_few_points}) {
     EXPECT_EQ(parse_fit_quality(to_string(q)), q);
   }
   EXPECT_EQ(parse_fit_quality("linear"), std::nullopt);

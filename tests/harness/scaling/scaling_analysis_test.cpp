@@ -110,8 +110,8 @@ TEST(ScalingAnalysisTest, AddedLinearWorkBehindAFixedCostIsJudgedAtTheLargeEnd) 
   const ExponentChange& c = *a.families[0].change;
   EXPECT_NE(c.fit.quality, FitQuality::power_law);
   ASSERT_TRUE(c.large_end);
-  const double expected = (std::log(1 + 1e-3 * 7382) - std::log(1 + 1e-3 * 821)) /
-                          (std::log(7382.0) - std::log(821.0));
+  const double expected =
+      (std::log(1 + 1e-3 * 7382) - std::log(1 + 1e-3 * 821)) / (std::log(7382.0) - std::log(821.0));
   EXPECT_NEAR(c.large_end->exponent, expected, 1e-9);
   EXPECT_GT(c.large_end->exponent, c.fit.exponent);
   // The interval: the widest slope the two sizes' ±2% intervals allow.
@@ -192,8 +192,8 @@ namespace {
 
 TEST(GrowthPolicyTest, MaxExponentIncreaseIsReadAndChecked) {
   EXPECT_DOUBLE_EQ(GatePolicy{}.max_exponent_increase, 0.1);
-  EXPECT_DOUBLE_EQ(parse_policy(R"({"max_exponent_increase": 0.25})", "p.json").max_exponent_increase,
-                   0.25);
+  EXPECT_DOUBLE_EQ(
+      parse_policy(R"({"max_exponent_increase": 0.25})", "p.json").max_exponent_increase, 0.25);
   EXPECT_THROW(parse_policy(R"({"max_exponent_increase": -1})", "p.json"), UsageError);
   std::string note;
   MeasurementSettings settings;

@@ -60,8 +60,7 @@ TEST(LoadResultsFile, RefusesDuplicateKeysAndOutOfRangeNumbers) {
   EXPECT_TRUE(has(twice, "twice.json:2:2: $: duplicate key 'schema_version'")) << twice;
   write_file_atomically(dir.path() / "huge.json", R"({"schema_version": 1e400})");
   const std::string huge = error_of([&] { load_results_file(dir.path() / "huge.json"); });
-  EXPECT_TRUE(has(huge, "huge.json:1:20: $.schema_version: number 1e400 is out of range"))
-      << huge;
+  EXPECT_TRUE(has(huge, "huge.json:1:20: $.schema_version: number 1e400 is out of range")) << huge;
 }
 
 TEST(CheckedShaPrefix, LowerCasesHexAndRefusesTheRest) {
@@ -88,9 +87,10 @@ TEST_F(ExportDocuments, OneFilePerDocumentAsItWasStored) {
   ASSERT_EQ(out.files.size(), 2u);
   EXPECT_FALSE(out.single_file);
   const std::string name = out.files[0].filename().string();
-  EXPECT_EQ(name, std::to_string(documents[0].id) + "-" +
-                      documents[0].document["revisions"][0]["worktree"]["short_sha"]
-                          .get<std::string>() + ".json");
+  EXPECT_EQ(name,
+            std::to_string(documents[0].id) + "-" +
+                documents[0].document["revisions"][0]["worktree"]["short_sha"].get<std::string>() +
+                ".json");
   EXPECT_EQ(read_file(out.files[0]), documents[0].document.dump(1) + "\n");
 }
 

@@ -52,14 +52,16 @@ std::vector<std::string> rows_of(const fs::path& path, const std::string& sql) {
 std::vector<std::string> schema_of(const fs::path& path) {
   std::vector<std::string> out;
   for (const char* table : {"documents", "revisions", "scene_results", "schema_migrations"}) {
-    const std::string info = std::string("SELECT name, type, \"notnull\", dflt_value, pk FROM "
-                                         "pragma_table_info('") + table + "')";
+    const std::string info = std::string(
+                                 "SELECT name, type, \"notnull\", dflt_value, pk FROM "
+                                 "pragma_table_info('") +
+                             table + "')";
     for (const std::string& c : rows_of(path, info)) out.push_back(table + (" " + c));
     for (const std::string& index :
          rows_of(path, std::string("SELECT name FROM pragma_index_list('") + table +
                            "') ORDER BY name")) {
-      const std::vector<std::string> columns = rows_of(
-          path, "SELECT group_concat(name) FROM pragma_index_info('" + index + "')");
+      const std::vector<std::string> columns =
+          rows_of(path, "SELECT group_concat(name) FROM pragma_index_info('" + index + "')");
       out.push_back(std::string(table) + " index " + index + " on " + columns.at(0));
     }
   }
@@ -121,10 +123,10 @@ TEST(StorePreviousVersion, ItsRowsReadBackAsThisRaygateWouldWriteThem) {
   for (const HistoryRow& row : rows) {
     const bool from_run = row.document_id == 1;
     const DocumentRows& expected = from_run ? run_rows : compare_rows;
-    const auto scene = std::find_if(expected.scenes.begin(), expected.scenes.end(),
-                                    [&row](const SceneRow& s) {
-                                      return s.scene_id == row.scene_id && s.role == row.role;
-                                    });
+    const auto scene =
+        std::find_if(expected.scenes.begin(), expected.scenes.end(), [&row](const SceneRow& s) {
+          return s.scene_id == row.scene_id && s.role == row.role;
+        });
     ASSERT_NE(scene, expected.scenes.end()) << row.scene_id << " " << row.role;
     // A series continues across the upgrade: the stored id is the one computed today.
     EXPECT_EQ(row.series_id, scene->series_id);

@@ -71,8 +71,7 @@ TEST(EveryTimingMode, ItsDocumentsRoundTripThroughEveryReader) {
 
       const CliRun report = run_raygate({"report", file}, dir);
       EXPECT_EQ(report.exit_code, 0) << report.out;
-      EXPECT_NE(report.out.find(fmt::format("(measures in {})", mode->unit())),
-                std::string::npos)
+      EXPECT_NE(report.out.find(fmt::format("(measures in {})", mode->unit())), std::string::npos)
           << report.out;
       for (const CounterSpec& counter : mode->counters()) {
         EXPECT_NE(report.out.find(std::string(counter.name) + " (median per run)"),

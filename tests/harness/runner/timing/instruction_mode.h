@@ -36,8 +36,8 @@ class InstructionMode final : public TimingMode {
 
   ProcessSpec wrap(ProcessSpec spec, const std::filesystem::path& run_dir,
                    const std::optional<Cachegrind>& /*simulator*/) const override {
-    std::vector<std::string> argv{"perf", "stat", "-x,", "-e", "instructions:u", "-o",
-                                  (run_dir / "perf.txt").string(), "--"};
+    std::vector<std::string> argv{
+        "perf", "stat", "-x,", "-e", "instructions:u", "-o", (run_dir / "perf.txt").string(), "--"};
     argv.insert(argv.end(), spec.argv.begin(), spec.argv.end());
     spec.argv = std::move(argv);
     return spec;

@@ -97,8 +97,8 @@ TEST(NewTimingMode, ItsDocumentIsCheckedByItsRegistrationAlone) {
     EXPECT_EQ(e.path(), "$.scenes[0].rounds[0].runs.baseline.counters.instructions.unit");
   }
   nlohmann::json unknown = json;
-  unknown["scenes"][1]["rounds"][0]["runs"]["tracer"]["counters"]["cycles"] = {
-      {"value", 1.0}, {"unit", "cycles"}};
+  unknown["scenes"][1]["rounds"][0]["runs"]["tracer"]["counters"]["cycles"] = {{"value", 1.0},
+                                                                               {"unit", "cycles"}};
   try {
     check_results_json(unknown, registered());
     FAIL() << "accepted an unknown counter";
@@ -109,7 +109,8 @@ TEST(NewTimingMode, ItsDocumentIsCheckedByItsRegistrationAlone) {
 
 TEST(NewTimingMode, ItsRunsRoundTripAndReportInItsUnit) {
   const nlohmann::json json = document_json();
-  const nlohmann::json& written = json.at("scenes").at(0).at("rounds").at(0).at("runs").at("tracer");
+  const nlohmann::json& written =
+      json.at("scenes").at(0).at("rounds").at(0).at("runs").at("tracer");
   const RunRecord run = written;
   EXPECT_EQ(run.counters.at("instructions"), (Counter{3.0e9, "instructions"}));
   EXPECT_EQ(nlohmann::json(run), written);

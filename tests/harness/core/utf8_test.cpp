@@ -13,7 +13,7 @@ const std::string kFffd(kReplacementCharacter);
 
 TEST(Utf8, ValidTextOfEveryLengthIsKeptByteForByte) {
   // 1, 2, 3 and 4 byte sequences, and the ends of each range.
-  for (const std::string text :
+  for (const std::string& text :
        {std::string(""), std::string("plain ascii"), std::string("caf\xC3\xA9"),
         std::string("\xE2\x82\xAC 5"), std::string("\xF0\x9F\x90\xA2 turtle"),
         std::string("\xC2\x80\xDF\xBF"), std::string("\xE0\xA0\x80\xEF\xBF\xBF"),

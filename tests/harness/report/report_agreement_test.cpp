@@ -288,7 +288,8 @@ TEST(ReportAgreement, RatioColumnsMoveWithTheChange) {
   const ResultsDocument document = compare_document(false);
   const GatePolicy policy;
   const GateResult gate = evaluate_gate(document, policy);
-  const std::string console = render({document, gate, policy, {}, {}}, ReportFormat::console);
+  const std::string console =
+      render({document, gate, policy, {}, {}, {}, 0}, ReportFormat::console);
   const std::regex ratios(R"((\d+\.\d+) -> (\d+\.\d+))");
   for (const SceneResult& scene : document.scenes) {
     const std::string line = line_starting(console, scene.entry.id + " ");

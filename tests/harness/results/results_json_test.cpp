@@ -95,7 +95,8 @@ SceneResult measured_scene() {
                                 ImageVerdict::pass,
                                 "",
                                 make_metrics(true),
-                                {}});
+                                {},
+                                std::nullopt});
   return s;
 }
 
@@ -123,7 +124,8 @@ SceneResult failed_scene() {
                                 ImageVerdict::error,
                                 "cannot read /h.png",
                                 std::nullopt,
-                                {}});
+                                {},
+                                std::nullopt});
   return s;
 }
 

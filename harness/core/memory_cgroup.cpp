@@ -203,14 +203,14 @@ std::optional<PeakMethod> parse_peak_method(std::string_view word) {
 
 std::string describe_peak_method(PeakMethod method) {
   switch (method) {
-    case PeakMethod::cgroup_v2: return "the whole process tree at once (cgroup v2 memory.peak)";
+    case PeakMethod::cgroup_v2: return "whole process tree at once (cgroup v2 memory.peak)";
     case PeakMethod::cgroup_v1:
-      return "the whole process tree at once (cgroup v1 memory.max_usage_in_bytes)";
+      return "whole process tree at once (cgroup v1 memory.max_usage_in_bytes)";
     case PeakMethod::largest_process:
-      return "its largest single process (no memory cgroup could be made here)";
+      return "largest single process (no memory cgroup could be made here)";
     case PeakMethod::raygate_process: break;
   }
-  return "raygate's own process (not the tracer's)";
+  return "own process as raygate saw it (not metered)";
 }
 
 std::optional<MemoryCgroup> MemoryCgroup::create(std::string* why_not) {

@@ -48,7 +48,8 @@ std::vector<MemoryRow> memory_rows(const ReportInput& input) {
   return rows;
 }
 
-// "the whole process tree at once (cgroup v2 memory.peak)": what the peaks are (issue 40).
+// "the tracer's whole process tree at once (cgroup v2 memory.peak)": what the peaks are (issue
+// 40).
 std::string method_note(const ReportInput& input) {
   std::vector<std::string> parts;
   for (const PeakMethod method : peak_methods(input.document)) {

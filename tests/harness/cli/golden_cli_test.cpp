@@ -59,6 +59,15 @@ TEST(GoldenCli, ChangedGoldenFailsWithEvidence) {
   const float white[3] = {1, 1, 1};
   buf.setpixel(10, 10, white);
   ASSERT_TRUE(buf.write((dir.path() / "golden" / "tetra.png").string(), OIIO::TypeDesc::UINT8));
+  // Blessed that way (its manifest hash follows it): a golden the baseline no longer renders.
+  // Without this the golden is refused as changed after its blessing (exit 3, golden tests).
+  const std::filesystem::path manifest = dir.path() / "golden" / "manifest.json";
+  std::string text = read_file(manifest);
+  const std::string old_hash = sha256_file_hex(kGolden / "tetra.png");
+  ASSERT_NE(text.find(old_hash), std::string::npos);
+  text.replace(text.find(old_hash), old_hash.size(),
+               sha256_file_hex(dir.path() / "golden" / "tetra.png"));
+  write_file_atomically(manifest, text);
   const CliRun r = run_raygate(
       {"golden", "verify", "tetra", "--golden-dir", "golden", "--work-dir", "work"}, dir);
   EXPECT_EQ(r.exit_code, 1) << r.out;

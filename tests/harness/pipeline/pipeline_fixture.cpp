@@ -42,12 +42,13 @@ std::optional<std::string> argument_after(const ProcessSpec& spec, const std::st
   return std::nullopt;
 }
 
-// A 2x2 grey PPM: every run renders the same picture, so image checks pass.
+// An 8x8 grey PPM, the suite's resolution: every run renders the same picture, so image checks
+// pass.
 void write_image(const fs::path& path) {
   fs::create_directories(path.parent_path());
   std::ofstream out(path, std::ios::binary);
-  out << "P6\n2 2\n255\n";
-  for (int i = 0; i < 12; ++i) out.put(static_cast<char>(128));
+  out << "P6\n8 8\n255\n";
+  for (int i = 0; i < 8 * 8 * 3; ++i) out.put(static_cast<char>(128));
 }
 
 // What a real run leaves: the image at -o, and the baseline's --stats file.

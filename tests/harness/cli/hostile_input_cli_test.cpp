@@ -120,9 +120,10 @@ TEST(HostileInput, BadFlagsAndFilesAreUsageErrors) {
   expect_usage_error(run_raygate({"run", "--adapter", "make-nff", "--baseline", "nope"}, dir),
                      "--baseline nope: not an executable file");
   fs::create_directories(dir.path() / "a-folder");
-  expect_usage_error(
-      run_raygate({"compare", "--adapter", "make-nff", "--baseline", "a-folder"}, dir),
-      "--baseline a-folder");
+  expect_usage_error(run_raygate({"compare", "--adapter", "make-nff", "--base", "main", "--head",
+                                  "main", "--baseline", "a-folder"},
+                                 dir),
+                     "--baseline a-folder");
   // libpq checks sslmode only when it connects, and calls a bad one a connection failure.
   const CliRun ssl = run_raygate(
       {"history", "--store", "postgresql://ci@localhost/raygate?sslmode=sometimes"}, dir);

@@ -41,9 +41,12 @@ struct StoppingPolicy {
 StoppingPolicy change_stopping_policy();
 
 // The rounds of a compare or bisect scene the baseline joins: the change needs none (the
-// baseline cancels within a round), each revision's normalized ratio a few; more would spend
-// most of a fast tracer's compare timing a program outside the verdict.
-inline constexpr std::size_t kChangeBaselineRounds = 3;
+// baseline cancels within a round), each revision's stored normalized ratio the fewest its 95%
+// interval can be drawn from (6: below that the interval is the rounds' range, which three
+// rounds make a 75% interval; pipeline/stored_ratio.h); more would spend most of a fast
+// tracer's compare timing a program outside the verdict. A ratio still imprecise after them
+// gets ratio rounds once the scenes are decided.
+inline constexpr std::size_t kChangeBaselineRounds = 6;
 
 // The longest a single run may take within `policy`'s budget: its own limit `own_seconds`, but
 // never past the seconds a scene may use (max_seconds) or the whole measurement

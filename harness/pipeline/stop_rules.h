@@ -52,7 +52,7 @@ BootstrapOptions change_bootstrap(const ScenePolicy& scene);
 // The first pass measures the scenes in order, each with what is left divided by the scenes left
 // plus `reserve_scenes`, so the time a scene saves by deciding early goes to the scenes after it
 // and about reserve / (scenes + reserve) of the budget stays for the second pass. The second
-// pass (pipeline/suite_measurement.h, SceneRevisits) visits the scenes still undecided, the
+// pass (pipeline/measurement_plan.h, MeasurementPlan::revisit_stop) visits the scenes still undecided, the
 // cheapest to decide first, each with what it is estimated to need and a margin
 // (kRevisitMargin), estimated anew after every visit (and doubled for each visit it outlived),
 // until the time is gone. Given in that

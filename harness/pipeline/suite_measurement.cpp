@@ -17,6 +17,7 @@
 #include "compare/noisy_image_check.h"
 #include "pipeline/document_output.h"
 #include "pipeline/run_images.h"
+#include "pipeline/suite_passes.h"
 #include "runner/baseline_cost_cache.h"
 #include "runner/cachegrind.h"
 #include "runner/deadline_executor.h"
@@ -28,14 +29,14 @@
 
 namespace raygate {
 
-namespace {
+using suite_pass::add_ratio_rounds;
+using suite_pass::keep;
+using suite_pass::revisit_scenes;
+using suite_pass::scene_dir;
+using suite_pass::summarize_ratios;
+using suite_pass::update_scores;
 
-void summarize_ratios(SceneResult& result, const SuiteMeasurement& m) {
-  if (result.runs.rounds.empty()) return;
-  for (const Role role : m.tracer_roles) {
-    result.ratios[role_name(role)] = summarize_ratio(round_samples(result.runs.rounds, role));
-  }
-}
+namespace {
 
 void check_images(SceneResult& result, const SuiteMeasurement& m, const GoldenManifest& manifest,
                   const std::string& sampling) {
@@ -55,11 +56,6 @@ void check_images(SceneResult& result, const SuiteMeasurement& m, const GoldenMa
                                                  m.policy.for_scene(result.entry.id).image,
                                                  m.work_dir / "evidence"));
   }
-}
-
-// The same computation `raygate merge` makes over shards (results/scores.h).
-void update_scores(ResultsDocument& document, const std::vector<Role>& roles) {
-  document.scores = suite_scores(document.scenes, roles);
 }
 
 // Remaining time: the mean time per finished scene for every scene not finished yet.
@@ -119,12 +115,6 @@ ResultsDocument new_document(DocumentKind kind, const MeasureContext& context,
 
 namespace {
 
-// The results document at m.out, or in the run folder when m.out cannot be written: a full
-// disk under -o must not end the measurement (pipeline/document_output.h).
-KeptDocument keep(const ResultsDocument& document, const SuiteMeasurement& m) {
-  return keep_document(document, m.out, m.work_dir / "results.json");
-}
-
 // The one line an interrupted measurement ends with: what was kept, and where.
 std::string kept_message(const Interrupted& stop, const ResultsDocument& document,
                          const SuiteMeasurement& m, const KeptDocument& kept) {
@@ -138,117 +128,8 @@ std::string kept_message(const Interrupted& stop, const ResultsDocument& documen
                      kept.path->string());
 }
 
-std::filesystem::path scene_dir(const SuiteMeasurement& m, const SuiteScene& entry) {
-  return join_component(m.work_dir / "scenes", entry.id, "scene id");
-}
-
-// What the second pass knows of each scene besides its rounds: whether no more time can go to
-// it, and how many visits ended undecided although its estimate said they would not.
-struct RevisitState {
-  bool spent = false;
-  int misses = 0;
-};
-
-// About how many seconds more the scene needs: its estimate, doubled for every visit it outlived.
-// The estimate projects from the rounds' spread (measure/change.h), which a scene with heavier
-// tails than its spread shows outlives visit after visit, one round at a time; backed off, it
-// gets longer visits and lets the other scenes go first (the identity tracer's nurbtst, estimated
-// a round short 15 times running, took 30 rounds in 2-round visits while balls waited).
-double backed_off_seconds(const SceneRevisits& revisits, const SceneResult& scene,
-                          const RevisitState& state) {
-  return std::ldexp(revisits.plan(scene).seconds, std::min(state.misses, 20));
-}
-
-// The scenes of `document` stopped undecided for lack of time, the cheapest to decide first (a
-// stable order: equal estimates keep the suite's order), leaving out those with no time left.
-std::vector<std::size_t> scenes_to_revisit(const ResultsDocument& document,
-                                           const SceneRevisits& revisits,
-                                           const std::vector<RevisitState>& states) {
-  std::vector<std::pair<double, std::size_t>> undecided;
-  for (std::size_t i = 0; i < document.scenes.size(); ++i) {
-    const SceneResult& scene = document.scenes[i];
-    if (states[i].spent || scene.runs.failed() || scene.runs.rounds.empty() ||
-        scene.runs.stop_reason != to_string(StopDecision::stop_budget_time)) {
-      continue;
-    }
-    undecided.emplace_back(backed_off_seconds(revisits, scene, states[i]), i);
-  }
-  std::stable_sort(undecided.begin(), undecided.end(),
-                   [](const auto& a, const auto& b) { return a.first < b.first; });
-  std::vector<std::size_t> order;
-  for (const auto& [seconds, index] : undecided) order.push_back(index);
-  return order;
-}
-
-// The second pass: while time is left, the undecided scene cheapest to decide gets what it is
-// estimated to need (SceneRevisits::stop), is judged again over all its rounds, and goes back
-// among the undecided if it is still one, its estimate now from more rounds and doubled for
-// each visit it outlived (backed_off_seconds). Estimated anew after every visit, a scene that
-// needed more than its estimate competes again instead of keeping the time, and the scenes
-// after it still get their turn. The document is kept after each visit as after the first
-// pass, with one line per visit ("[again 1, 3 undecided] balls ...").
-void revisit_scenes(ResultsDocument& document, const SuiteMeasurement& m, Executor& executor,
+void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, MeasurementPlan& plan,
                     PipelineIo& io) {
-  std::vector<RevisitState> states(document.scenes.size());
-  for (std::size_t visit = 1;; ++visit) {
-    throw_if_interrupted("between scenes");
-    const std::vector<std::size_t> order = scenes_to_revisit(document, *m.revisits, states);
-    if (order.empty()) return;
-    SceneResult& scene = document.scenes[order.front()];
-    RevisitState& revisit = states[order.front()];
-    const double seconds_needed = backed_off_seconds(*m.revisits, scene, revisit);
-    const std::optional<StopRule> stop = m.revisits->stop(scene, order.size(), seconds_needed);
-    if (!stop) {
-      revisit.spent = true;
-      continue;
-    }
-    ProgressState state{visit,
-                        visit + order.size() - 1,
-                        scene.entry.id + " (again)",
-                        scene.runs.rounds.size(),
-                        0.0,
-                        0.0,
-                        -1.0};
-    io.progress.update(state);
-    const RoundObserver observe = [&](const std::vector<Round>& rounds, double) {
-      state.round = rounds.size();
-      io.progress.update(state);
-    };
-    const std::size_t rounds_before = scene.runs.rounds.size();
-    const SceneInput input = prepare_scene_input(scene.entry, m);
-    ScheduleOptions schedule = m.schedule;
-    if (const std::size_t repeats = m.revisits->plan(scene).repeats; repeats > 0) {
-      schedule.repeats = repeats;
-    }
-    scene.runs = continue_scene(input, m.contenders, schedule, *stop, executor, io.clock,
-                                scene_dir(m, scene.entry), std::move(scene.runs), observe);
-    summarize_ratios(scene, m);
-    if (scene.runs.failed()) {
-      // As in the first pass, a scene whose run failed has no change to judge: the failure is
-      // its result.
-      scene.status = SceneStatus::failed;
-      scene.change.reset();
-      scene.change_verdict = ChangeVerdict::inconclusive;
-    } else {
-      m.revisits->rejudge(scene);
-    }
-    // A visit that ran no round had no time; a scene still without an estimate (a change on the
-    // limit) had its even share, and more of the same would not decide it.
-    if (scene.runs.rounds.size() == rounds_before ||
-        !std::isfinite(m.revisits->plan(scene).seconds)) {
-      revisit.spent = true;
-    }
-    if (scene.runs.stop_reason == to_string(StopDecision::stop_budget_time)) {
-      ++revisit.misses;
-    }
-    update_scores(document, m.tracer_roles);
-    keep(document, m);
-    io.progress.line(fmt::format("[again {}, {} undecided] {}", visit, order.size(),
-                                 scene_line(scene, m.tracer_roles)));
-  }
-}
-
-void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io) {
   Clock& clock = io.clock;
   ProgressSink& progress = io.progress;
   const GoldenManifest manifest = load_golden_manifest(m.golden_dir);
@@ -283,23 +164,26 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Pipeli
       progress.update(state);
     };
     ScheduleOptions schedule = m.schedule;
-    if (m.repeats) schedule.repeats_from_rounds = m.repeats(entry);
-    result.runs = measure_scene(input, m.contenders, schedule, m.stop(entry), executor, clock,
-                                scene_dir(m, entry), observe);
+    schedule.repeats_from_rounds = plan.repeats(entry);
+    result.runs = measure_scene(input, m.contenders, schedule, plan.first_visit_stop(entry),
+                                executor, clock, scene_dir(m, entry), observe);
     result.status = result.runs.failed() ? SceneStatus::failed : SceneStatus::measured;
     summarize_ratios(result, m);
     check_images(result, m, manifest, document.baseline.sampling);
-    if (m.finish_scene && !result.runs.failed()) m.finish_scene(result);
+    if (!result.runs.failed()) plan.finish_scene(result);
 
     document.scenes.push_back(std::move(result));
-    update_scores(document, m.tracer_roles);
+    update_scores(document, m);
     keep(document, m);
     elapsed_done = clock.now_seconds() - started;
     progress.line(fmt::format("[{}/{}] {}", index + 1, m.scenes.size(),
                               scene_line(document.scenes.back(), m.tracer_roles)));
   }
   // Only a whole-measurement budget leaves a scene undecided for want of its share.
-  if (m.revisits && m.budget_seconds > 0.0) revisit_scenes(document, m, executor, io);
+  if (plan.revisits() && m.budget_seconds > 0.0) {
+    revisit_scenes(document, m, plan, executor, io);
+  }
+  add_ratio_rounds(document, m, plan, executor, io);
 }
 
 }  // namespace
@@ -340,13 +224,14 @@ std::optional<IdlePollHold> hold_idle_polling(MeasurementSettings& settings,
 
 }  // namespace
 
-void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io) {
+void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, MeasurementPlan& plan,
+                   PipelineIo& io) {
   const std::optional<IdlePollHold> idle_polling = hold_idle_polling(document.settings, m, io);
   // Within it a signal is not fatal at once: the running child's group is killed, the scenes
   // finished so far are written, and Interrupted says where.
   const InterruptScope stop_here;
   try {
-    measure_scenes(document, m, io);
+    measure_scenes(document, m, plan, io);
   } catch (const Interrupted& stop) {
     document.complete = false;
     throw Interrupted(stop.signal(), kept_message(stop, document, m, keep(document, m)));
@@ -355,12 +240,11 @@ void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, Pipelin
 }
 
 MeasuredDocument measure_document(ResultsDocument document, const SuiteMeasurement& m,
-                                  const std::string& opening, PipelineIo& io) {
+                                  MeasurementPlan& plan, const std::string& opening,
+                                  PipelineIo& io) {
   io.progress.line(opening);
-  measure_suite(document, m, io);
-  if (m.finish_suite) {
-    for (const std::string& line : m.finish_suite(document)) io.progress.line(line);
-  }
+  measure_suite(document, m, plan, io);
+  for (const std::string& line : plan.finish_suite(document)) io.progress.line(line);
   document.finished_at = utc_timestamp();
   const ScalingAnalysis scaling = attach_scaling(document, scaling_limits(m.policy));
   for (const std::string& line : scaling_lines(scaling)) io.progress.line(line);

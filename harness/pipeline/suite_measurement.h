@@ -5,8 +5,6 @@
 #pragma once
 
 #include <filesystem>
-#include <functional>
-#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,6 +18,7 @@
 #include "runner/contender.h"
 #include "runner/scheduler.h"
 #include "pipeline/document_output.h"
+#include "pipeline/measurement_plan.h"
 #include "pipeline/measure_context.h"
 #include "pipeline/pipeline_io.h"
 #include "results/results.h"
@@ -27,44 +26,12 @@
 
 namespace raygate {
 
-// The second pass of a measurement (pipeline/stop_rules.h, SuiteBudget): the scenes left
-// undecided when their share of the time ran out get more rounds, continued where they stopped
-// (runner/scheduler.h, continue_scene), the cheapest to decide first, each estimated anew after
-// its visit, until the time is gone.
-// The second pass's plan for a scene's next visit.
-struct VisitPlan {
-  // About how many seconds more the scene needs to decide; infinity when no number of rounds is
-  // known to decide it (those go last).
-  double seconds = std::numeric_limits<double>::infinity();
-  // Runs of each contender per round in the visit, the fastest kept (ScheduleOptions::repeats):
-  // 2 where each side's fastest of two is estimated to decide the scene sooner for its double
-  // cost (measure/fastest_of_two.h); 0 keeps the measurement's own.
-  std::size_t repeats = 0;
-};
-
-struct SceneRevisits {
-  // The stopping rule of a scene's further rounds, given about how many seconds more it needs
-  // (the plan's seconds, backed off after visits that did not decide it); `scenes_left` counts it
-  // and the undecided scenes after it. nullopt: no time is left for it (--max-seconds reached).
-  std::function<std::optional<StopRule>(const SceneResult& scene, std::size_t scenes_left,
-                                        double seconds_to_decide)>
-      stop;
-  // What the scene's next visit needs, and how it runs.
-  std::function<VisitPlan(const SceneResult& scene)> plan;
-  // The scene's summaries again, over all its rounds (its image checks stay the first visit's).
-  std::function<void(SceneResult& scene)> rejudge;
-};
-
 struct SuiteMeasurement {
   std::vector<SuiteScene> scenes;
   std::vector<const Contender*> contenders;  // the baseline first
   std::vector<Role> tracer_roles;            // normalized against the baseline, image-checked
   std::vector<SceneFormat> formats{SceneFormat::nff};  // scene files the contenders read
   ScheduleOptions schedule;
-  std::function<StopRule(const SuiteScene&)> stop;  // the stopping rule of each scene
-  // How each scene's first-pass rounds choose their runs per contender (runner/scheduler.h,
-  // RepeatChooser); unset, or an empty chooser: `schedule`'s repeats.
-  std::function<RepeatChooser(const SuiteScene&)> repeats;
   GatePolicy policy;                            // image thresholds per scene
   ImageKind images = ImageKind::deterministic;  // the adapter's: how its images are judged
   std::filesystem::path golden_dir;
@@ -77,13 +44,6 @@ struct SuiteMeasurement {
   // The whole measurement's budget (--max-minutes), in seconds; 0: none. Every run started is
   // bounded by it (runner/deadline_executor.h), not only the stopping rule between rounds.
   double budget_seconds = 0.0;
-  // Unset: one pass over the scenes.
-  std::optional<SceneRevisits> revisits;
-  // Extra per-scene summaries after the ratios and golden checks (compare adds its change).
-  std::function<void(SceneResult&)> finish_scene;
-  // Once every scene is measured, before the complete document is written: judgements across
-  // scenes (compare: Holm over the family). Returns lines for the measurement's account.
-  std::function<std::vector<std::string>(ResultsDocument&)> finish_suite;
 };
 
 // A scene's files as the contenders read them (generated into m.scene_cache if not there).
@@ -103,12 +63,14 @@ SuiteMeasurement suite_measurement(const MeasureContext& context, const std::str
 ResultsDocument new_document(DocumentKind kind, const MeasureContext& context,
                              const BaselineTool& baseline);
 
-// Measures every scene into `document` (whose header the caller filled in), writing it to
+// Measures every scene into `document` (whose header the caller filled in) as `plan` decides,
+// in up to three passes (pipeline/measurement_plan.h), writing it to
 // m.out after each scene and once more, complete, at the end (to the run folder instead while
 // m.out cannot be written: pipeline/document_output.h). On SIGINT, SIGTERM or SIGHUP it stops
 // the running child, writes the scenes finished so far (complete: false) and throws Interrupted
 // saying what was kept and where.
-void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, PipelineIo& io);
+void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, MeasurementPlan& plan,
+                   PipelineIo& io);
 
 // A finished measurement: its document and where it was written; `unwritten` lists the final
 // writes that failed (-o on a full disk), for the command to report after storing the document.
@@ -118,11 +80,13 @@ struct MeasuredDocument {
   std::vector<FailedWrite> unwritten;
 };
 
-// The end run and compare share: `opening` said, measure_suite(), the finish time stamped, the
+// The end run and compare share: `opening` said, measure_suite(), the plan's judgement of the
+// suite (MeasurementPlan::finish_suite), the finish time stamped, the
 // growth of each scene family fitted and said when the suite measured one at 3 sizes or more
 // (scaling/), the complete document written to m.out.
 MeasuredDocument measure_document(ResultsDocument document, const SuiteMeasurement& m,
-                                  const std::string& opening, PipelineIo& io);
+                                  MeasurementPlan& plan, const std::string& opening,
+                                  PipelineIo& io);
 
 // The baseline as the context times it (its sampling and the clock matched to the tracer's); in
 // sim mode simulated under cachegrind, its costs cached in <cache-dir>/simulated-baseline under

@@ -1,5 +1,5 @@
-// How the second pass of a compare plans a scene's next visit (pipeline/suite_measurement.h,
-// SceneRevisits): about how many seconds more the scene needs, at the pace of its rounds so far,
+// How the second pass of a compare plans a scene's next visit (pipeline/measurement_plan.h,
+// MeasurementPlan::plan_visit): about how many seconds more the scene needs, at the pace of its rounds so far,
 // and whether it gets there sooner with each side's fastest of two runs per round.
 #pragma once
 
@@ -7,7 +7,7 @@
 #include <optional>
 
 #include "gate/policy.h"
-#include "pipeline/suite_measurement.h"
+#include "pipeline/measurement_plan.h"
 #include "results/results.h"
 
 namespace raygate {

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <string_view>
 
@@ -156,6 +157,96 @@ void check_options(std::span<const Contender* const> contenders, const ScheduleO
   }
 }
 
+// Whose run failed, and that run.
+struct FailedRun {
+  Role role;
+  RunRecord run;
+};
+
+// A round's runs, or those it had when one failed.
+struct RoundOutcome {
+  Round round;
+  std::optional<FailedRun> failure;
+};
+
+// A first visit's warm-ups: each contender `warmup_runs` times, none of them kept in a round.
+std::optional<FailedRun> run_warmups(const RunLauncher& launcher,
+                                     std::span<const Contender* const> contenders,
+                                     const ScheduleOptions& options, SceneRuns& out) {
+  for (int w = 1; w <= options.warmup_runs; ++w) {
+    for (const Contender* contender : contenders) {
+      RunRecord run =
+          launcher.run(*contender, fmt::format("warmup-{}", w), cpus_of_round(options, 0));
+      out.warmup[contender->name()].push_back(run);
+      if (!run.ok) return FailedRun{contender->role(), run};
+    }
+  }
+  return std::nullopt;
+}
+
+// A duet round: the pair starts together, each on its CPU of the round. With three contenders
+// (compare) the baseline runs alone first on the round's first CPU, when it joins the round, so
+// the two whose ratio the gate judges see the same interference; the baseline only normalizes.
+RoundOutcome duet_round(const RunLauncher& launcher, const std::vector<const Contender*>& roster,
+                        const ScheduleOptions& options, std::size_t index,
+                        const std::string& label) {
+  RoundOutcome out;
+  const std::vector<int> cpus =
+      rotated(std::vector<int>(options.duet_cpus.begin(), options.duet_cpus.begin() + 2), index);
+  std::span<const Contender* const> pair(roster);
+  if (roster.size() == 3) {
+    if (normalizer_runs_in(options, index)) {
+      const Contender& solo = *roster.front();
+      RunRecord run = launcher.run(solo, label, {cpus.front()});
+      if (!run.ok) return {std::move(out.round), FailedRun{solo.role(), run}};
+      out.round.order.push_back(solo.name());
+      out.round.runs[solo.name()] = std::move(run);
+    }
+    pair = pair.subspan(1);
+  }
+  const std::vector<RunRecord> runs = launcher.run_together(pair, label, cpus);
+  for (std::size_t i = 0; i < pair.size(); ++i) {
+    if (runs[i].ok) out.round.runs[pair[i]->name()] = runs[i];
+  }
+  for (std::size_t i = 0; i < pair.size(); ++i) {
+    if (!runs[i].ok) return {std::move(out.round), FailedRun{pair[i]->role(), runs[i]}};
+  }
+  // Order by CPU, so the document says which contender had which CPU this round.
+  for (std::size_t c = 0; c < cpus.size(); ++c) {
+    const auto it = std::find(cpus.begin(), cpus.end(), options.duet_cpus[c]);
+    out.round.order.push_back(pair[static_cast<std::size_t>(it - cpus.begin())]->name());
+  }
+  return out;
+}
+
+// An alternate round: the contenders one after another in the round's rotated order, each
+// `repeats` times interleaved, the round keeping each one's fastest run.
+RoundOutcome alternate_round(const RunLauncher& launcher,
+                             const std::vector<const Contender*>& roster,
+                             const ScheduleOptions& options, std::size_t index,
+                             const std::string& label, const SceneRuns& so_far) {
+  RoundOutcome out;
+  const std::vector<const Contender*> present =
+      normalizer_runs_in(options, index)
+          ? roster
+          : std::vector<const Contender*>(roster.begin() + 1, roster.end());
+  const std::vector<int> cpus = cpus_of_round(options, index);
+  const std::vector<const Contender*> sequence =
+      interleaved(rotated(present, index), repeats_of_round(options, so_far));
+  for (std::size_t n = 0; n < sequence.size(); ++n) {
+    const Contender& contender = *sequence[n];
+    // A repeat's run directory is "<round>-<k>", so no run overwrites another's files.
+    const std::size_t runs_before = static_cast<std::size_t>(
+        std::count(sequence.begin(), sequence.begin() + static_cast<long>(n), &contender));
+    RunRecord run = launcher.run(
+        contender, runs_before == 0 ? label : fmt::format("{}-{}", label, runs_before + 1), cpus);
+    if (!run.ok) return {std::move(out.round), FailedRun{contender.role(), run}};
+    out.round.order.push_back(contender.name());
+    keep_fastest(out.round.runs, contender.name(), std::move(run));
+  }
+  return out;
+}
+
 // measure_scene() from `earlier`'s rounds on: a first visit (no rounds yet) starts with the
 // warm-ups; a later one continues the round numbering, the rotation and the CPU alternation
 // where the first visit left them, and adds its seconds to the earlier ones.
@@ -168,82 +259,28 @@ SceneRuns run_scene(const SceneInput& scene, std::span<const Contender* const> c
   const double started = clock.now_seconds();
   SceneRuns out = std::move(earlier);
   const double spent_before = out.seconds_spent;
-  const bool first_visit = out.rounds.empty();
   out.stop_reason.clear();
-  auto fail = [&](Role role, const RunRecord& run,
-                  std::map<std::string, RunRecord> partial_round = {}) {
-    out.failed_role = role;
-    out.failed_run = run;
+  auto fail = [&](FailedRun failure, std::map<std::string, RunRecord> partial_round = {}) {
+    out.failed_role = failure.role;
+    out.failed_run = std::move(failure.run);
     out.partial_round = std::move(partial_round);
     out.stop_reason = "failed";
     out.seconds_spent = spent_before + clock.now_seconds() - started;
     return out;
   };
-
-  for (int w = 1; first_visit && w <= options.warmup_runs; ++w) {
-    for (const Contender* contender : contenders) {
-      RunRecord run =
-          launcher.run(*contender, fmt::format("warmup-{}", w), cpus_of_round(options, 0));
-      out.warmup[contender->name()].push_back(run);
-      if (!run.ok) return fail(contender->role(), run);
+  if (out.rounds.empty()) {
+    if (std::optional<FailedRun> failure = run_warmups(launcher, contenders, options, out)) {
+      return fail(std::move(*failure));
     }
   }
-
   const std::vector<const Contender*> roster(contenders.begin(), contenders.end());
   for (std::size_t index = out.rounds.size();; ++index) {
     const std::string label = fmt::format("round-{:03}", index + 1);
-    Round round;
-    if (options.kind == ScheduleKind::duet) {
-      const std::vector<int> cpus = rotated(
-          std::vector<int>(options.duet_cpus.begin(), options.duet_cpus.begin() + 2), index);
-      // Three contenders (compare): the baseline runs alone on the round's first CPU, then base
-      // and head start together, so the two whose ratio the gate judges see the same
-      // interference; the baseline only normalizes.
-      std::span<const Contender* const> pair(roster);
-      if (roster.size() == 3 && !normalizer_runs_in(options, index)) {
-        pair = pair.subspan(1);  // a round the baseline does not join: base and head only
-      } else if (roster.size() == 3) {
-        const Contender& solo = *roster.front();
-        RunRecord run = launcher.run(solo, label, {cpus.front()});
-        if (!run.ok) return fail(solo.role(), run, round.runs);
-        round.order.push_back(solo.name());
-        round.runs[solo.name()] = std::move(run);
-        pair = pair.subspan(1);
-      }
-      const std::vector<RunRecord> runs = launcher.run_together(pair, label, cpus);
-      for (std::size_t i = 0; i < pair.size(); ++i) {
-        if (runs[i].ok) round.runs[pair[i]->name()] = runs[i];
-      }
-      for (std::size_t i = 0; i < pair.size(); ++i) {
-        if (!runs[i].ok) return fail(pair[i]->role(), runs[i], round.runs);
-      }
-      // Order by CPU, so the document says which contender had which CPU this round.
-      for (std::size_t c = 0; c < cpus.size(); ++c) {
-        const auto it = std::find(cpus.begin(), cpus.end(), options.duet_cpus[c]);
-        round.order.push_back(pair[static_cast<std::size_t>(it - cpus.begin())]->name());
-      }
-    } else {
-      const std::vector<const Contender*> present =
-          normalizer_runs_in(options, index)
-              ? roster
-              : std::vector<const Contender*>(roster.begin() + 1, roster.end());
-      const std::vector<int> cpus = cpus_of_round(options, index);
-      const std::vector<const Contender*> sequence =
-          interleaved(rotated(present, index), repeats_of_round(options, out));
-      for (std::size_t n = 0; n < sequence.size(); ++n) {
-        const Contender& contender = *sequence[n];
-        // A repeat's run directory is "<round>-<k>", so no run overwrites another's files.
-        const std::size_t runs_before = static_cast<std::size_t>(
-            std::count(sequence.begin(), sequence.begin() + static_cast<long>(n), &contender));
-        RunRecord run = launcher.run(
-            contender, runs_before == 0 ? label : fmt::format("{}-{}", label, runs_before + 1),
-            cpus);
-        if (!run.ok) return fail(contender.role(), run, round.runs);
-        round.order.push_back(contender.name());
-        keep_fastest(round.runs, contender.name(), std::move(run));
-      }
-    }
-    out.rounds.push_back(std::move(round));
+    RoundOutcome outcome = options.kind == ScheduleKind::duet
+                               ? duet_round(launcher, roster, options, index, label)
+                               : alternate_round(launcher, roster, options, index, label, out);
+    if (outcome.failure) return fail(std::move(*outcome.failure), std::move(outcome.round.runs));
+    out.rounds.push_back(std::move(outcome.round));
     out.seconds_spent = spent_before + clock.now_seconds() - started;
     if (on_round) on_round(out.rounds, out.seconds_spent);
     const StopDecision decision = stop(out.rounds, out.seconds_spent);

@@ -6,12 +6,18 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <csignal>
 #include <map>
 
 #include "core/interrupt.h"
 #include "gate/verdict.h"
 #include "measure/confidence_sequence.h"
+#include "measure/simulated_cost.h"
+#include "measure/stopping_policy.h"
+#include "pipeline/compare_family.h"
+#include "pipeline/stop_rules.h"
+#include "pipeline/stored_ratio.h"
 #include "pipeline_fixture.h"
 #include "results/results.h"
 
@@ -72,6 +78,54 @@ TEST_F(ComparePipelineTest, ASlowerHeadIsRegressedOnEveryScene) {
     EXPECT_DOUBLE_EQ(scene.ratio(Role::head)->ratio, 2.4);
   }
   EXPECT_TRUE(std::filesystem::exists(path));
+}
+
+// The baseline joins a scene's first 6 rounds; where base's ratio over them is still wider than
+// +-2% (a tracer whose times wander), the scene gets ratio rounds after the decisions, the
+// baseline in each, up to 12 of them; the change stays judged on the rounds it was decided on.
+TEST_F(ComparePipelineTest, AnImpreciseStoredRatioGetsRatioRoundsThatLeaveTheVerdict) {
+  const std::string base = commit_tracer("2.0", "base");
+  const std::string head = commit_tracer("2.4", "head: 20% slower");
+  std::vector<double> wandering;  // a few percent, no two runs alike
+  for (int k = 0; k < 97; ++k) wandering.push_back(1.0 + 0.05 * std::sin(1.7 * k));
+  set_tracer_noise(wandering);
+  context_.schedule.normalizer_rounds = kChangeBaselineRounds;
+  const auto [document, path, unwritten] = compare(base, head);
+  ASSERT_EQ(document.scenes.size(), 2u);
+  for (const SceneResult& scene : document.scenes) {
+    EXPECT_EQ(scene.change_verdict, ChangeVerdict::regressed) << scene.entry.id;
+    const std::vector<Round>& rounds = scene.runs.rounds;
+    // The rounds before the ratio rounds: up to the last one the baseline did not join.
+    std::size_t decided_on = 0;
+    for (std::size_t i = 0; i < rounds.size(); ++i) {
+      if (!rounds[i].runs.contains("baseline")) decided_on = i + 1;
+    }
+    ASSERT_GT(decided_on, kChangeBaselineRounds) << scene.entry.id;
+    ASSERT_GT(rounds.size(), decided_on) << scene.entry.id << ": no ratio rounds";
+    EXPECT_EQ(scene.runs.stop_reason, "stop_converged") << "the change's, not the ratio rounds'";
+    const std::vector<CompareRound> samples = compare_samples(rounds);
+    const ScenePolicy& policy = context_.policy.for_scene(scene.entry.id);
+    const auto judged_on = [&](std::size_t n) {
+      return measured_change(std::span<const CompareRound>(samples.data(), n),
+                             change_bootstrap(policy), false,
+                             scene_levels(policy, scene_decision_alpha(context_.policy, 2)));
+    };
+    const ChangeSummary decided = judged_on(decided_on);
+    EXPECT_DOUBLE_EQ(scene.change->change_interval.lower, decided.change_interval.lower);
+    EXPECT_DOUBLE_EQ(scene.change->change_interval.upper, decided.change_interval.upper);
+    const ChangeSummary on_all = judged_on(rounds.size());
+    EXPECT_TRUE(on_all.log_change_median != decided.log_change_median ||
+                on_all.change_interval.lower != decided.change_interval.lower ||
+                on_all.change_interval.upper != decided.change_interval.upper)
+        << "the test needs ratio rounds that would move the change";
+    const RatioSummary* stored = scene.ratio(Role::base);
+    ASSERT_NE(stored, nullptr);
+    EXPECT_EQ(stored->rounds, round_samples(rounds, Role::base).size());
+    EXPECT_GT(stored->rounds, kChangeBaselineRounds);
+    EXPECT_LE(stored->rounds, kStoredRatioMaxRounds);
+  }
+  EXPECT_EQ(progress_.lines_with("[ratio 1/").size(), 1u);
+  EXPECT_EQ(progress_.lines_with("stored ratios (base against the baseline").size(), 1u);
 }
 
 TEST_F(ComparePipelineTest, AnEqualHeadIsUnchangedAndItsImageMatchesBase) {

@@ -1,0 +1,81 @@
+#include "pipeline/stored_ratio.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <vector>
+
+#include "measure/median_interval.h"
+#include "pipeline/stop_rules.h"
+
+namespace raygate {
+
+double stored_ratio_confidence(const GatePolicy& policy, const std::string& scene_id) {
+  return change_bootstrap(policy.for_scene(scene_id)).confidence;
+}
+
+std::size_t stored_ratio_fewest_rounds(double confidence) {
+  return min_values_for_median_interval(confidence);
+}
+
+bool stored_ratio_precise(const RatioSummary& ratio, double confidence) {
+  return ratio.rounds >= stored_ratio_fewest_rounds(confidence) &&
+         ratio.relative_half_width <= kStoredRatioHalfWidth;
+}
+
+std::size_t stored_ratio_rounds_left(const SceneResult& scene) {
+  const std::size_t joined = round_samples(scene.runs.rounds, Role::base).size();
+  return joined >= kStoredRatioMaxRounds ? 0 : kStoredRatioMaxRounds - joined;
+}
+
+StopRule stored_ratio_stop_rule(const StoppingPolicy& policy, double confidence) {
+  return stop_rule(policy, [confidence](const std::vector<Round>& rounds) {
+    const std::vector<RoundSample> samples = round_samples(rounds, Role::base);
+    return !samples.empty() &&
+           stored_ratio_precise(summarize_ratio(samples, confidence), confidence);
+  });
+}
+
+namespace {
+
+// "balls 0.412 [0.398, 0.431] (+-4.0%) from 6 baseline rounds (why)"
+std::string imprecise_text(const SceneResult& scene, const RatioSummary& ratio,
+                           const std::map<std::string, std::string>& why_by_scene) {
+  const auto why = why_by_scene.find(scene.entry.id);
+  return fmt::format("{} {:.3f} [{:.3f}, {:.3f}] (+-{:.1f}%) from {} baseline rounds ({})",
+                     scene.entry.id, ratio.ratio, ratio.ratio_interval.lower,
+                     ratio.ratio_interval.upper, 100.0 * ratio.relative_half_width, ratio.rounds,
+                     why == why_by_scene.end() ? "no ratio rounds" : why->second);
+}
+
+}  // namespace
+
+std::string stored_ratio_line(const ResultsDocument& document, const GatePolicy& policy,
+                              const std::map<std::string, std::string>& why_by_scene) {
+  std::size_t measured = 0;
+  std::size_t fewest = 0;
+  std::size_t most = 0;
+  std::vector<std::string> imprecise;
+  for (const SceneResult& scene : document.scenes) {
+    const RatioSummary* ratio = scene.ratio(Role::base);
+    if (ratio == nullptr || ratio->rounds == 0) continue;
+    fewest = measured == 0 ? ratio->rounds : std::min(fewest, ratio->rounds);
+    most = std::max(most, ratio->rounds);
+    ++measured;
+    if (!stored_ratio_precise(*ratio, stored_ratio_confidence(policy, scene.entry.id))) {
+      imprecise.push_back(imprecise_text(scene, *ratio, why_by_scene));
+    }
+  }
+  if (measured == 0) return "";
+  std::string line = fmt::format(
+      "stored ratios (base against the baseline, what history trends): CI within +-{:.0f}% on {} "
+      "of {} scenes, from {} baseline rounds",
+      100.0 * kStoredRatioHalfWidth, measured - imprecise.size(), measured,
+      fewest == most ? fmt::format("{}", most) : fmt::format("{}-{}", fewest, most));
+  for (std::size_t i = 0; i < imprecise.size(); ++i) {
+    line += (i == 0 ? "; not: " : "; ") + imprecise[i];
+  }
+  return line;
+}
+
+}  // namespace raygate

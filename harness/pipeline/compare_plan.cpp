@@ -154,6 +154,17 @@ bool ComparePlan::wants_ratio_rounds(const SceneResult& scene) const {
 
 std::optional<StopRule> ComparePlan::ratio_rounds_stop(const SceneResult& scene,
                                                        std::size_t scenes_left) {
+  const double confidence = stored_ratio_confidence(context_.policy, scene.entry.id);
+  const RatioSummary& ratio = *scene.ratio(Role::base);
+  if (const std::size_t needed = stored_ratio_rounds_needed(ratio, confidence);
+      needed > kStoredRatioMaxRounds) {
+    ratio_why_[scene.entry.id] = fmt::format(
+        "its rounds differ by {:.1f}%: about {} baseline rounds would make it +-{:.0f}%, and "
+        "ratio rounds stop at {}",
+        100.0 * ratio.log_ratio_mad_scaled, needed, 100.0 * kStoredRatioHalfWidth,
+        kStoredRatioMaxRounds);
+    return std::nullopt;
+  }
   StoppingPolicy share = budget_.again(scene.runs.seconds_spent, scenes_left);
   const std::size_t rounds = scene.runs.rounds.size();
   // Within --max-rounds and the budget, as every round of the scene.
@@ -172,7 +183,7 @@ std::optional<StopRule> ComparePlan::ratio_rounds_stop(const SceneResult& scene,
   }
   share.min_rounds = 1;
   share.max_rounds = rounds_allowed;
-  return stored_ratio_stop_rule(share, stored_ratio_confidence(context_.policy, scene.entry.id));
+  return stored_ratio_stop_rule(share, confidence);
 }
 
 void ComparePlan::rejudge_after_ratio_rounds(SceneResult& scene, std::size_t rounds_before,

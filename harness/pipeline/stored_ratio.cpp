@@ -3,9 +3,11 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 #include "measure/median_interval.h"
+#include "measure/probability.h"
 #include "pipeline/stop_rules.h"
 
 namespace raygate {
@@ -21,6 +23,15 @@ std::size_t stored_ratio_fewest_rounds(double confidence) {
 bool stored_ratio_precise(const RatioSummary& ratio, double confidence) {
   return ratio.rounds >= stored_ratio_fewest_rounds(confidence) &&
          ratio.relative_half_width <= kStoredRatioHalfWidth;
+}
+
+std::size_t stored_ratio_rounds_needed(const RatioSummary& ratio, double confidence) {
+  const double z = normal_quantile(0.5 + confidence / 2.0);
+  const double root = z * 1.2533 * ratio.log_ratio_mad_scaled / kStoredRatioHalfWidth;
+  const double rounds = std::ceil(root * root);
+  const double fewest = static_cast<double>(stored_ratio_fewest_rounds(confidence));
+  // Capped well above any round limit, so a wild spread cannot overflow the count.
+  return static_cast<std::size_t>(std::clamp(rounds, fewest, 1e6));
 }
 
 std::size_t stored_ratio_rounds_left(const SceneResult& scene) {

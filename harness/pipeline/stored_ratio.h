@@ -41,6 +41,14 @@ bool stored_ratio_precise(const RatioSummary& ratio, double confidence);
 // estimate before measuring (pipeline/measurement_estimate.h).
 std::size_t stored_ratio_fewest_rounds(double confidence);
 
+// About how many baseline rounds would make `ratio` precise at `confidence`, projected from its
+// rounds' spread (log_ratio_mad_scaled, sigma): the median's interval is about
+// z * 1.2533 * sigma / sqrt(n) either side, so n = (z * 1.2533 * sigma / 0.02)^2, and never fewer
+// than stored_ratio_fewest_rounds. Ratio rounds are spent only where this is at most
+// kStoredRatioMaxRounds: on a runner whose rounds differ by 5%, a ratio within +-2% would take
+// about 60 baseline rounds, and a compare is no place to spend them.
+std::size_t stored_ratio_rounds_needed(const RatioSummary& ratio, double confidence);
+
 // How many more rounds the scene's ratio rounds may take before the baseline has joined
 // kStoredRatioMaxRounds of its rounds.
 std::size_t stored_ratio_rounds_left(const SceneResult& scene);

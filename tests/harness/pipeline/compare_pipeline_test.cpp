@@ -26,6 +26,13 @@ namespace {
 
 std::vector<double> one_run_in_four_slowed();
 
+// Factors for set_tracer_noise(): within +-`amplitude`, no two runs alike.
+std::vector<double> wandering(double amplitude) {
+  std::vector<double> factors;
+  for (int k = 0; k < 97; ++k) factors.push_back(1.0 + amplitude * std::sin(1.7 * k));
+  return factors;
+}
+
 class ComparePipelineTest : public PipelineTest {
  protected:
   // An A/A compare of two scenes in 6 minutes under one_run_in_four_slowed(), the second pass
@@ -86,9 +93,7 @@ TEST_F(ComparePipelineTest, ASlowerHeadIsRegressedOnEveryScene) {
 TEST_F(ComparePipelineTest, AnImpreciseStoredRatioGetsRatioRoundsThatLeaveTheVerdict) {
   const std::string base = commit_tracer("2.0", "base");
   const std::string head = commit_tracer("2.4", "head: 20% slower");
-  std::vector<double> wandering;  // a few percent, no two runs alike
-  for (int k = 0; k < 97; ++k) wandering.push_back(1.0 + 0.05 * std::sin(1.7 * k));
-  set_tracer_noise(wandering);
+  set_tracer_noise(wandering(0.025));
   context_.schedule.normalizer_rounds = kChangeBaselineRounds;
   const auto [document, path, unwritten] = compare(base, head);
   ASSERT_EQ(document.scenes.size(), 2u);
@@ -126,6 +131,28 @@ TEST_F(ComparePipelineTest, AnImpreciseStoredRatioGetsRatioRoundsThatLeaveTheVer
   }
   EXPECT_EQ(progress_.lines_with("[ratio 1/").size(), 1u);
   EXPECT_EQ(progress_.lines_with("stored ratios (base against the baseline").size(), 1u);
+}
+
+// Rounds that differ by several percent would need dozens of baseline rounds for a ratio within
+// +-2%: none are spent, and the closing line says what it would take.
+TEST_F(ComparePipelineTest, ATooNoisyStoredRatioGetsNoRatioRoundsAndTheLineSaysWhy) {
+  const std::string base = commit_tracer("2.0", "base");
+  const std::string head = commit_tracer("2.4", "head: 20% slower");
+  set_tracer_noise(wandering(0.08));
+  context_.schedule.normalizer_rounds = kChangeBaselineRounds;
+  const auto [document, path, unwritten] = compare(base, head);
+  for (const SceneResult& scene : document.scenes) {
+    EXPECT_EQ(round_samples(scene.runs.rounds, Role::base).size(), kChangeBaselineRounds);
+  }
+  EXPECT_TRUE(progress_.lines_with("[ratio ").empty());
+  const std::vector<std::string> line = progress_.lines_with("stored ratios");
+  ASSERT_EQ(line.size(), 1u);
+  EXPECT_NE(line[0].find("CI within +-2% on 0 of 2 scenes, from 6 baseline rounds"),
+            std::string::npos)
+      << line[0];
+  EXPECT_NE(line[0].find("baseline rounds would make it +-2%, and ratio rounds stop at 12)"),
+            std::string::npos)
+      << line[0];
 }
 
 TEST_F(ComparePipelineTest, AnEqualHeadIsUnchangedAndItsImageMatchesBase) {

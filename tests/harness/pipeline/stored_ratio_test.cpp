@@ -41,6 +41,20 @@ TEST(StoredRatio, PreciseMeansWithinTwoPercentEitherSide) {
   EXPECT_FALSE(stored_ratio_precise(ratio_of({0.48, 0.5, 0.5, 0.5, 0.5, 0.51}), 0.95));
 }
 
+TEST(StoredRatio, TheRoundsNeededGrowWithTheSquareOfTheSpread) {
+  RatioSummary ratio;
+  ratio.log_ratio_mad_scaled = 0.0;
+  EXPECT_EQ(stored_ratio_rounds_needed(ratio, 0.95), 6u);  // never fewer than an interval needs
+  ratio.log_ratio_mad_scaled = 0.01;                       // (1.96 x 1.2533 x 1% / 2%)^2 = 1.5 -> 6
+  EXPECT_EQ(stored_ratio_rounds_needed(ratio, 0.95), 6u);
+  ratio.log_ratio_mad_scaled = 0.02;  // 6.03 -> 7
+  EXPECT_EQ(stored_ratio_rounds_needed(ratio, 0.95), 7u);
+  ratio.log_ratio_mad_scaled = 0.05;  // 37.7 -> 38
+  EXPECT_EQ(stored_ratio_rounds_needed(ratio, 0.95), 38u);
+  ratio.log_ratio_mad_scaled = 1e30;
+  EXPECT_EQ(stored_ratio_rounds_needed(ratio, 0.95), 1000000u);
+}
+
 TEST(StoredRatio, RatioRoundsStopAtTwelveBaselineRounds) {
   SceneResult scene;
   for (int i = 0; i < 20; ++i) scene.runs.rounds.push_back(round_of(0.5, i < 6 ? 1.0 : 0.0));

@@ -44,65 +44,64 @@ class ProgressOutput {
 
 ProgressState state_of_round_7() { return {3, 13, "mount", 7, 0.512, 0.008, 100}; }
 
-TEST(TerminalProgress, PlainLogsGetOnlyTheFinishedSceneLines) {
+// What a TerminalProgress wrote by the time it is gone (its destructor clears a line it left).
+template <typename Write>
+std::string written(bool interactive, Write write) {
   ProgressOutput out;
   {
-    TerminalProgress progress(out.stream(), false);
-    progress.update(state_of_round_7());
-    progress.line("[3/13] mount  done");
+    TerminalProgress progress(out.stream(), interactive);
+    write(progress);
   }
-  EXPECT_EQ(out.text(), "[3/13] mount  done\n");
+  return out.text();
+}
+
+// One progress update on a terminal, then the line cleared.
+std::string shown_on_a_terminal(const ProgressState& state) {
+  return written(true, [&](TerminalProgress& progress) { progress.update(state); });
+}
+
+void round_7_then_done(TerminalProgress& progress) {
+  progress.update(state_of_round_7());
+  progress.line("[3/13] mount  done");
+}
+
+TEST(TerminalProgress, PlainLogsGetOnlyTheFinishedSceneLines) {
+  EXPECT_EQ(written(false, round_7_then_done), "[3/13] mount  done\n");
 }
 
 TEST(TerminalProgress, TerminalLineIsRewrittenInPlaceAndClearedForSceneLines) {
-  ProgressOutput out;
-  {
-    TerminalProgress progress(out.stream(), true);
-    progress.update(state_of_round_7());
-    progress.line("[3/13] mount  done");
-  }
-  EXPECT_EQ(out.text(),
+  EXPECT_EQ(written(true, round_7_then_done),
             "\r\033[K[3/13] mount      round  7  ratio 0.512 ±0.8%  ETA 1m40s"
             "\r\033[K[3/13] mount  done\n");
 }
 
 TEST(TerminalProgress, UnknownRatioAndEtaAreLeftOut) {
-  ProgressOutput out;
-  {
-    TerminalProgress progress(out.stream(), true);
-    progress.update({1, 2, "balls", 0, 0.0, 0.0, -1.0});
-  }  // the destructor clears the line it left
-  EXPECT_EQ(out.text(), "\r\033[K[1/2] balls      round  0\r\033[K");
+  EXPECT_EQ(shown_on_a_terminal({1, 2, "balls", 0, 0.0, 0.0, -1.0}),
+            "\r\033[K[1/2] balls      round  0\r\033[K");
 }
 
 TEST(TerminalProgress, ControlCharactersOfACommitAreShownNotObeyed) {
   // A subject that would clear the screen, set the window title and ring the bell, then a
   // carriage return that would overwrite the line with a forged verdict.
-  ProgressOutput out;
-  {
-    TerminalProgress progress(out.stream(), false);
+  const std::string text = written(false, [](TerminalProgress& progress) {
     progress.line("  abc1234 fix\x1b[2J\x1b]0;owned\x07\rPASS: 0 failed: 4.0% -> bad");
     progress.status(
         "building def5678 caf\xE9 \xC2\x9B"
         "31m");
-  }
-  EXPECT_EQ(out.text(),
+  });
+  EXPECT_EQ(text,
             "  abc1234 fix\\x1b[2J\\x1b]0;owned\\x07\\x0dPASS: 0 failed: 4.0% -> bad\n"
             "building def5678 caf\xEF\xBF\xBD \\u009b31m\n");
 }
 
 TEST(TerminalProgress, TheRewrittenLineKeepsItsOwnEscapesOnly) {
-  ProgressOutput out;
-  {
-    TerminalProgress progress(out.stream(), true);
-    progress.update({1, 1, "odd\x1b[8m", 2, 0.0, 0.0, -1.0});
-  }
-  EXPECT_EQ(out.text(), "\r\033[K[1/1] odd\\x1b[8m    round  2\r\033[K");  // padded before
+  EXPECT_EQ(shown_on_a_terminal({1, 1, "odd\x1b[8m", 2, 0.0, 0.0, -1.0}),
+            "\r\033[K[1/1] odd\\x1b[8m    round  2\r\033[K");  // padded before
 }
 
-// A closed terminal fails every write (EIO); so does an unbuffered /dev/full (ENOSPC). TerminalProgress
-// is only for whoever watches: it must drop what cannot be shown, never throw, least of all
-// from its destructor, which would end raygate with SIGABRT instead of the hang-up's 129.
+// A closed terminal fails every write (EIO); so does an unbuffered /dev/full (ENOSPC).
+// TerminalProgress is only for whoever watches: it must drop what cannot be shown, never throw,
+// least of all from its destructor, which would end raygate with SIGABRT instead of the hang-up's 129.
 TEST(TerminalProgress, AStreamThatFailsEveryWriteIsDroppedNotThrown) {
   std::FILE* full = std::fopen("/dev/full", "w");
   ASSERT_NE(full, nullptr);

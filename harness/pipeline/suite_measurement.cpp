@@ -243,7 +243,8 @@ void revisit_scenes(ResultsDocument& document, const SuiteMeasurement& m, Execut
     }
     update_scores(document, m.tracer_roles);
     keep(document, m);
-    io.progress.line(fmt::format("[again {}, {} undecided] {}", visit, order.size(),
+    io.progress.line(fmt::format("[second pass {}, {} undecided] {}", visit,
+                                 count_text(order.size(), "scene"),
                                  scene_line(scene, m.tracer_roles)));
   }
 }

@@ -166,7 +166,8 @@ TEST(GateVerdict, AnUndecidedCompareSaysHowNoisyTheRunnerWas) {
   EXPECT_EQ(gate.notes[0],
             "runner noise: the rounds of a scene differed by 4.1% (head/base per round, scaled "
             "MAD, median of 3 scenes); in the 10 rounds a scene typically got, an unchanged scene "
-            "is decided within the 3.0% limit below about 1.9%. A quieter runner or a longer "
+            "is shown within the 3.0% limit (UNCHANGED) only when its rounds differ by less than "
+            "about 1.9%. A quieter runner or a longer "
             "--max-minutes decides more; raygate doctor measures a runner's noise.");
   // Nothing to say when every scene is decided, or for documents before confidence sequences.
   EXPECT_TRUE(evaluate_gate(compare_document({sequenced("balls", 0.0, {-0.01, 0.01}, 10, 0.004)}),

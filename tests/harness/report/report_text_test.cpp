@@ -232,7 +232,7 @@ TEST(ConsoleReport, NoGoldensIsSaidOnce) {
   EXPECT_EQ(occurrences(text, "no goldens in golden/my-tracer"), 1u) << text;
   at(text,
      "note: images not checked against goldens: no goldens in golden/my-tracer (none "
-     "blessed yet) (2 images); look at the images, then bless them: raygate golden bless "
+     "blessed yet) (2 scenes); look at the images, then bless them: raygate golden bless "
      "--from-run RESULTS.json");
   at(text, "raygate: pass (2 scenes; suite score 0.439), exit 0");
 }

@@ -248,6 +248,28 @@ std::string cell_text(ColumnKind kind, const ResultsDocument& document, const Sc
   return "";
 }
 
+namespace {
+
+// Where the runs were pinned: an adapter's pin_cpus pins its tracer, --pin every run, and by
+// default each round of a one-thread tracer runs on one CPU.
+std::string pinning_text(const MeasurementSettings& s) {
+  if (s.pin_cpus && !s.pin_cpus->empty()) {
+    const std::vector<int>& cpus = *s.pin_cpus;
+    const std::string where =
+        fmt::format("CPU{} {}", cpus.size() == 1 ? "" : "s", fmt::join(cpus, ","));
+    switch (s.pinned_by.value_or(PinnedBy::none)) {
+      case PinnedBy::adapter:
+        return "; the tracer pinned to " + where + " (its adapter's pin_cpus)";
+      case PinnedBy::option: return "; every run pinned to " + where + " (--pin)";
+      case PinnedBy::none: return "; pinned to " + where;
+    }
+  }
+  if (s.round_cpus && !s.round_cpus->empty()) return "; each round pinned to one CPU";
+  return "";
+}
+
+}  // namespace
+
 std::string clock_line(const ResultsDocument& document) {
   const MeasurementSettings& s = document.settings;
   const std::string tracer = s.tracer_clock.value_or("");
@@ -260,7 +282,7 @@ std::string clock_line(const ResultsDocument& document) {
     line += ", baseline " + baseline;
   }
   line += " (measures in " + s.measure_unit() + ")";
-  if (s.round_cpus && !s.round_cpus->empty()) line += "; each round pinned to one CPU";
+  line += pinning_text(s);
   if (s.cpu_idle == CpuIdle::poll) line += "; idle CPUs held polling";
   if (s.cpu_idle_refused) line += "; idle CPUs not held polling (" + *s.cpu_idle_refused + ")";
   return line;

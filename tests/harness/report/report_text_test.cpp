@@ -152,6 +152,26 @@ TEST(Reports, EveryFormatNamesTheClock) {
   at(f.render("junit"), "name=\"clock\" value=\"" + clock + "\"");
 }
 
+// Issue 40: an adapter's pin_cpus was in the Markdown settings only; the clock line of every
+// format says where the runs were pinned and who asked.
+TEST(Reports, TheClockLineSaysWhereTheRunsWerePinned) {
+  Fixture f(true);
+  f.document.settings.tracer_clock = "process-cpu";
+  f.document.settings.pin_cpus = std::vector<int>{0};
+  f.document.settings.pinned_by = PinnedBy::adapter;
+  const std::string adapter =
+      "process-cpu (measures in seconds); the tracer pinned to CPU 0 (its adapter's pin_cpus)";
+  at(f.render("console"), "clock: " + adapter + "\n");
+  at(f.render("markdown"),
+     "- clock: process-cpu (measures in seconds); the tracer pinned to CPU 0 (its adapter's "
+     "pin\\_cpus)\n");
+  at(f.render("html"), "the tracer pinned to CPU 0 (its adapter&#39;s pin_cpus)");
+  f.document.settings.pin_cpus = std::vector<int>{2, 3};
+  f.document.settings.pinned_by = PinnedBy::option;
+  at(f.render("console"),
+     "clock: process-cpu (measures in seconds); every run pinned to CPUs 2,3 (--pin)\n");
+}
+
 // The unit is the document's (settings.unit), and a counter a mode recorded is printed beside
 // the clock with its unit, whatever its name: a new mode's counter needs no report code.
 TEST(Reports, EveryFormatPrintsTheUnitAndTheCounters) {

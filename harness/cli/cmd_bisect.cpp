@@ -11,7 +11,7 @@
 #include "cli/console.h"
 #include "cli/measure_options.h"
 #include "cli/subcommand.h"
-#include "cli/terminal_progress.h"
+#include "pipeline/terminal_progress.h"
 #include "core/error.h"
 #include "core/exit_codes.h"
 #include "core/sanitize.h"

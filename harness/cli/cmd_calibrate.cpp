@@ -9,7 +9,7 @@
 #include "cli/console.h"
 #include "cli/measure_options.h"
 #include "cli/subcommand.h"
-#include "cli/terminal_progress.h"
+#include "pipeline/terminal_progress.h"
 #include "pipeline/calibrate.h"
 #include "pipeline/measure_options.h"
 #include "pipeline/revision_setup.h"
@@ -54,23 +54,9 @@ int calibrate_command(const CalibrateArgs& args, const Console& console) {
 
 void add_calibrate_command(CLI::App& command, int& exit_code) {
   CalibrateArgs& args = bind_command<CalibrateArgs>(command, calibrate_command, exit_code);
-  MeasureOptions& m = args.measure;
-  command.add_option("--repo", m.repo, "the tracer's git repository: a path or a URL")
-      ->capture_default_str();
-  command
-      .add_option("--adapter", m.adapter,
-                  "adapter file, or the name of a shipped adapter (povray, ...)")
-      ->required();
+  add_tracer_options(command, args.measure);
   command.add_option("--rev", args.rev, "revision to time")->capture_default_str();
   command.add_option("--worktree", args.worktree, "time this directory as it is");
-  command.add_option("--suite", m.suite, "the suite to size (name or file)")->capture_default_str();
-  command.add_option("--scene", m.scenes, "only these suite scene ids (repeatable)");
-  command.add_option("--cache-dir", m.cache_dir, "worktrees, builds, scenes and run files")
-      ->capture_default_str();
-  command.add_option("--baseline", m.baseline,
-                     "raygate-baseline executable (its hash keys "
-                     "the build cache)");
-  command.add_option("--jobs", m.jobs, "parallel build jobs (default: all allowed CPUs)");
   add_bounded_option(command, "--target-seconds", args.target_seconds, 0.001, 3600.0,
                      "wall seconds one render of each scene should take")
       ->required();

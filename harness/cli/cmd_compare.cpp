@@ -7,7 +7,7 @@
 #include "cli/measure_options.h"
 #include "cli/report_options.h"
 #include "cli/subcommand.h"
-#include "cli/terminal_progress.h"
+#include "pipeline/terminal_progress.h"
 #include "core/error.h"
 #include "pipeline/compare_measurement.h"
 #include "pipeline/revision_setup.h"

@@ -10,7 +10,7 @@
 
 #include "cli/commands.h"
 #include "cli/subcommand.h"
-#include "cli/terminal_progress.h"
+#include "pipeline/terminal_progress.h"
 #include "pipeline/golden_commands.h"
 
 namespace raygate::cli {
@@ -18,14 +18,14 @@ namespace {
 
 // The per-scene lines are the results: plain, on standard output.
 int run_verify(const GoldenOptions& options) {
-  Progress lines(stdout, false);
+  TerminalProgress lines(stdout, false);
   const GoldenOutcome outcome = verify_goldens(options, lines);
   fmt::print("{}\n", outcome.summary);
   return to_int(outcome.exit_code);
 }
 
 int run_bless(const GoldenOptions& options) {
-  Progress lines(stdout, false);
+  TerminalProgress lines(stdout, false);
   bless_goldens(options, lines);
   return 0;
 }

@@ -10,7 +10,7 @@
 #include "cli/measure_options.h"
 #include "cli/report_options.h"
 #include "cli/subcommand.h"
-#include "cli/terminal_progress.h"
+#include "pipeline/terminal_progress.h"
 #include "pipeline/run_measurement.h"
 #include "runner/baseline_tool.h"
 

@@ -20,10 +20,13 @@
 #include "core/sanitize.h"
 #include "core/strays.h"
 #include "report/reporter.h"
+#include "report/terminal.h"
 
 namespace {
 
 namespace cli = raygate::cli;
+using raygate::bounded_message;
+using raygate::say_last_words;
 
 // A subcommand as `raygate --help` lists it, and the function that binds its options.
 struct Command {
@@ -84,24 +87,6 @@ std::vector<Command> commands() {
        cli::add_scaling_command}};
 }
 
-// A message as long as what a user pasted (a 100,000-character --rev, a value for a number) is
-// cut: what the user gave is echoed back only as far as it helps, and a CI log stays readable.
-// Long enough for any message raygate itself composes (a build's log tail included).
-std::string bounded(std::string text) {
-  constexpr std::size_t kMaxChars = 16 * 1024;
-  if (text.size() <= kMaxChars) return text;
-  const std::size_t cut = text.size() - kMaxChars;
-  text.resize(kMaxChars);
-  return text + fmt::format("... ({} more characters not shown)", cut);
-}
-
-// The last words, on standard error. Never throws: after a hang-up the terminal is gone and
-// every write fails (EIO), and the exit code must still say what happened.
-void say(const std::string& line) {
-  std::fputs((bounded(line) + "\n").c_str(), stderr);
-  std::fflush(stderr);
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -122,7 +107,7 @@ int main(int argc, char** argv) {
   }
   cli::refuse_non_finite_numbers(app);
   app.failure_message([](const CLI::App* command, const CLI::Error& e) {
-    return bounded(CLI::FailureMessage::simple(command, e));
+    return bounded_message(CLI::FailureMessage::simple(command, e));
   });
   try {
     // Before parsing: the command line overrides these (cli/project_config.h).
@@ -137,26 +122,27 @@ int main(int argc, char** argv) {
   } catch (const raygate::Interrupted& e) {
     // One line: what was kept, and where. Messages quote revisions, branch names and paths: a
     // terminal must not obey their bytes.
-    say(fmt::format("raygate: {}", raygate::terminal_text(e.what())));
+    say_last_words(fmt::format("raygate: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(e.code());
   } catch (const raygate::Error& e) {
-    say(fmt::format("raygate: error: {}", raygate::terminal_text(e.what())));
+    say_last_words(fmt::format("raygate: error: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(e.code());
   } catch (const std::filesystem::filesystem_error& e) {
     // The system refused a path (permissions, a symlink loop, a full disk): raygate could not
     // do its work, and says on what, rather than calling it a bug of its own.
     // ("filesystem error: cannot create directories: Permission denied [/srv/cache]")
-    say(fmt::format("raygate: error: {}", raygate::terminal_text(e.what())));
+    say_last_words(fmt::format("raygate: error: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(raygate::ExitCode::infrastructure);
   } catch (const std::exception& e) {
-    say(fmt::format("raygate: internal error: {}", raygate::terminal_text(e.what())));
+    say_last_words(fmt::format("raygate: internal error: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(raygate::ExitCode::infrastructure);
   }
   if (const int sig = raygate::interrupt_signal(); sig != 0) {
     // The signal came after the last child ended: the work is done and kept, but the caller
     // asked to stop and learns that it did.
     const raygate::Interrupted stop(sig, "");
-    say(fmt::format("raygate: interrupted by {} after the work was done; all of it was kept",
+    say_last_words(
+        fmt::format("raygate: interrupted by {} after the work was done; all of it was kept",
                     raygate::signal_name(sig)));
     return raygate::to_int(stop.code());
   }

@@ -7,7 +7,7 @@
 
 namespace raygate::cli {
 
-void add_measure_options(CLI::App& command, MeasureArgs& args) {
+void add_tracer_options(CLI::App& command, MeasureArgs& args) {
   command.add_option("--repo", args.repo, "the tracer's git repository: a path or a URL")
       ->capture_default_str();
   command
@@ -15,15 +15,19 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
                   "adapter file, or the name of a shipped adapter (raygate-baseline-bbox, ...)")
       ->required();
   command.add_option("--suite", args.suite, "suite name or file")->capture_default_str();
-  command.add_option("--scene", args.scenes, "measure only these suite scene ids (repeatable)");
+  command.add_option("--scene", args.scenes, "only these suite scene ids (repeatable)");
   command
       .add_option("--cache-dir", args.cache_dir, "worktrees, builds, scenes and run files go here")
       ->capture_default_str();
-  command.add_option("--golden-dir", args.golden_dir,
-                     "golden images (default: golden/<adapter name>/, or the set whose manifest "
-                     "shares it with the adapter; a tracer without goldens is checked against "
-                     "none)");
   command.add_option("--baseline", args.baseline, "raygate-baseline executable to use");
+  add_bounded_option(command, "--jobs", args.jobs, 0, 4096,
+                     "parallel build jobs; 0 = all allowed CPUs");
+}
+
+namespace {
+
+// Where and how the programs run: the schedule, CPUs, idle CPUs, warm-up, repeats and the clock.
+void add_schedule_options(CLI::App& command, MeasureArgs& args) {
   command
       .add_option("--schedule", args.schedule,
                   "alternate: one program at a time, order alternating per round; duet: "
@@ -45,6 +49,20 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
       ->capture_default_str();
   add_bounded_option(command, "--warmup", args.warmup, 0, 10,
                      "untimed runs per program before the rounds");
+  command.add_option("--timing", args.metric, timing_choices_help())
+      ->check(CLI::IsMember(timing_mode_choices()));
+  // No default shown: not given, it is one run, and each scene chooses (see the help).
+  command
+      .add_option("--repeats", args.repeats,
+                  "runs of each program per round, interleaved; the round keeps each one's "
+                  "fastest (steadier on a busy machine, at that many times the runs). Default: "
+                  "one, and a scene whose rounds show that the fastest of two gets there sooner "
+                  "takes it (from the scene's 11th round on, in run and in compare)")
+      ->check(CLI::Range(1, 10));
+}
+
+// When a scene, and the whole measurement, stops (measure/stopping_policy.h).
+void add_stopping_options(CLI::App& command, MeasureArgs& args) {
   add_bounded_option(command, "--target", args.stopping.target_relative_half_width, 0.0001, 1.0,
                      "stop a scene once the ratio's 95% CI half-width is below this fraction");
   add_bounded_option(command, "--min-rounds", args.stopping.min_rounds, 2, 1000,
@@ -56,18 +74,18 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
   add_bounded_option(command, "--max-minutes", args.stopping.max_minutes, 0.0, 1e6,
                      "time budget of the whole measurement, shared by the scenes still to "
                      "measure; 0 = none");
-  command.add_option("--timing", args.metric, timing_choices_help())
-      ->check(CLI::IsMember(timing_mode_choices()));
-  // No default shown: not given, it is one run, and each scene chooses (see the help).
-  command
-      .add_option("--repeats", args.repeats,
-                  "runs of each program per round, interleaved; the round keeps each one's "
-                  "fastest (steadier on a busy machine, at that many times the runs). Default: "
-                  "one, and a scene whose rounds show that the fastest of two gets there sooner "
-                  "takes it (from the scene's 11th round on, in run and in compare)")
-      ->check(CLI::Range(1, 10));
-  add_bounded_option(command, "--jobs", args.jobs, 0, 4096,
-                     "parallel build jobs; 0 = all allowed CPUs");
+}
+
+}  // namespace
+
+void add_measure_options(CLI::App& command, MeasureArgs& args) {
+  add_tracer_options(command, args);
+  command.add_option("--golden-dir", args.golden_dir,
+                     "golden images (default: golden/<adapter name>/, or the set whose manifest "
+                     "shares it with the adapter; a tracer without goldens is checked against "
+                     "none)");
+  add_schedule_options(command, args);
+  add_stopping_options(command, args);
   command.add_option("--policy", args.policy,
                      "gate policy file: slowdown limit, significance, image thresholds "
                      "(docs/gate.md)");

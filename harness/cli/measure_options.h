@@ -15,6 +15,10 @@ namespace raygate::cli {
 // The options bind straight into the pipeline's record of them (pipeline/measure_options.h).
 using MeasureArgs = MeasureOptions;
 
+// Where the tracer is and which scenes of which suite: --repo, --adapter (required), --suite,
+// --scene, --cache-dir, --baseline, --jobs. Every command that builds a tracer takes them.
+void add_tracer_options(CLI::App& command, MeasureArgs& args);
+
 // run's: where the tracer is, how to build it, which scenes, the schedule and stopping policy.
 void add_measure_options(CLI::App& command, MeasureArgs& args);
 

@@ -94,76 +94,90 @@ std::string consistency_table(const ConsistencyResult& result) {
   return out;
 }
 
+namespace {
+
+// Each document as read: who measured it, which baseline and which tracer revision.
+json document_json(const DocumentRatios& d) {
+  return {{"label", d.label},
+          {"path", d.path},
+          {"kind", std::string(to_string(d.kind))},
+          {"role", std::string(to_string(d.role))},
+          {"hostname", d.hostname},
+          {"cpu_model", d.cpu_model},
+          {"baseline",
+           {{"version", d.baseline_version},
+            {"source_sha256", d.baseline_source_sha256},
+            {"mode", d.baseline_mode}}},
+          {"tracer",
+           {{"sha", d.tracer_sha},
+            {"dirty", d.tracer_dirty},
+            {"adapter", d.adapter_name},
+            {"adapter_hash", d.adapter_hash}}},
+          {"scenes_measured", d.scenes.size()}};
+}
+
+json pair_json(const ConsistencyResult& result, const PairFit& p) {
+  return {{"a", result.documents[p.a].label},
+          {"b", result.documents[p.b].label},
+          {"scenes", p.scenes},
+          {"r2", finite_number(p.r2)},
+          {"slope", finite_number(p.slope)},
+          {"intercept", finite_number(p.intercept)},
+          {"mean_abs_relative_difference", finite_number(p.mean_abs_relative_difference)},
+          {"passes", p.passes}};
+}
+
+json scene_json(const ConsistencyResult& result, const SceneConsistency& s) {
+  json intervals = json::array();
+  for (const Interval& i : s.intervals) {
+    intervals.push_back({finite_number(i.lower), finite_number(i.upper)});
+  }
+  return {{"id", s.id},
+          {"ratios", s.ratios},
+          {"intervals", intervals},
+          {"mean_ratio", s.mean_ratio},
+          {"cv", s.cv},
+          {"mean_deviation", s.mean_deviation},
+          {"max_deviation", s.max_deviation},
+          {"max_deviation_document", result.documents[s.max_deviation_document].label},
+          {"intervals_overlap", s.intervals_overlap},
+          {"unstable", s.unstable},
+          {"reasons", s.reasons}};
+}
+
+json missing_json(const ConsistencyResult& result, const MissingScene& m) {
+  json from = json::array();
+  for (std::size_t i : m.missing_from) from.push_back(result.documents[i].label);
+  return {{"id", m.id}, {"missing_from", from}};
+}
+
+// One array of `items`, each as `to_json` writes it.
+template <typename Item, typename ToJson>
+json array_of(const std::vector<Item>& items, ToJson to_json) {
+  json array = json::array();
+  for (const Item& item : items) array.push_back(to_json(item));
+  return array;
+}
+
+}  // namespace
+
 json consistency_json(const ConsistencyResult& result) {
-  json documents = json::array();
-  for (const DocumentRatios& d : result.documents) {
-    documents.push_back({{"label", d.label},
-                         {"path", d.path},
-                         {"kind", std::string(to_string(d.kind))},
-                         {"role", std::string(to_string(d.role))},
-                         {"hostname", d.hostname},
-                         {"cpu_model", d.cpu_model},
-                         {"baseline",
-                          {{"version", d.baseline_version},
-                           {"source_sha256", d.baseline_source_sha256},
-                           {"mode", d.baseline_mode}}},
-                         {"tracer",
-                          {{"sha", d.tracer_sha},
-                           {"dirty", d.tracer_dirty},
-                           {"adapter", d.adapter_name},
-                           {"adapter_hash", d.adapter_hash}}},
-                         {"scenes_measured", d.scenes.size()}});
-  }
-  json pairs = json::array();
-  for (const PairFit& p : result.pairs) {
-    pairs.push_back(
-        {{"a", result.documents[p.a].label},
-         {"b", result.documents[p.b].label},
-         {"scenes", p.scenes},
-         {"r2", finite_number(p.r2)},
-         {"slope", finite_number(p.slope)},
-         {"intercept", finite_number(p.intercept)},
-         {"mean_abs_relative_difference", finite_number(p.mean_abs_relative_difference)},
-         {"passes", p.passes}});
-  }
-  json scenes = json::array();
   json unstable = json::array();
-  for (const SceneConsistency& s : result.scenes) {
-    json intervals = json::array();
-    for (const Interval& i : s.intervals) {
-      intervals.push_back({finite_number(i.lower), finite_number(i.upper)});
-    }
-    scenes.push_back({{"id", s.id},
-                      {"ratios", s.ratios},
-                      {"intervals", intervals},
-                      {"mean_ratio", s.mean_ratio},
-                      {"cv", s.cv},
-                      {"mean_deviation", s.mean_deviation},
-                      {"max_deviation", s.max_deviation},
-                      {"max_deviation_document", result.documents[s.max_deviation_document].label},
-                      {"intervals_overlap", s.intervals_overlap},
-                      {"unstable", s.unstable},
-                      {"reasons", s.reasons}});
-    if (s.unstable) unstable.push_back(s.id);
-  }
-  json missing = json::array();
-  for (const MissingScene& m : result.missing) {
-    json from = json::array();
-    for (std::size_t i : m.missing_from) from.push_back(result.documents[i].label);
-    missing.push_back({{"id", m.id}, {"missing_from", from}});
-  }
-  return {{"documents", documents},
+  for (const SceneConsistency* s : result.unstable_scenes()) unstable.push_back(s->id);
+  return {{"documents", array_of(result.documents, document_json)},
           {"options",
            {{"min_r2", result.options.min_r2},
             {"max_deviation", result.options.max_deviation},
             {"allow_mixed", result.options.allow_mixed}}},
           {"mixed", result.mixed},
           {"notes", result.notes},
-          {"pairs", pairs},
+          {"pairs", array_of(result.pairs, [&](const PairFit& p) { return pair_json(result, p); })},
           {"overall_r2", finite_number(result.overall_r2)},
           {"min_pair_r2", finite_number(result.min_pair_r2)},
-          {"scenes", scenes},
-          {"missing", missing},
+          {"scenes", array_of(result.scenes,
+                              [&](const SceneConsistency& s) { return scene_json(result, s); })},
+          {"missing", array_of(result.missing,
+                               [&](const MissingScene& m) { return missing_json(result, m); })},
           {"unstable", unstable},
           {"machine_independent", result.machine_independent()},
           {"exit_code", result.exit_code()}};

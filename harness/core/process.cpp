@@ -150,62 +150,121 @@ std::string ProcessResult::describe() const {
   return out.str();
 }
 
+namespace {
+
+// The child's standard output and error, and raygate-meter's report when metered: [0] is read
+// by raygate, [1] is the child's, closed here once the child holds it (else no end of file).
+struct ChildPipes {
+  int out[2] = {-1, -1};
+  int err[2] = {-1, -1};
+  int meter[2] = {-1, -1};
+
+  void close_child_ends() {
+    close_fd(out[1]);
+    close_fd(err[1]);
+    close_fd(meter[1]);
+  }
+};
+
+ChildPipes open_child_pipes(bool metered) {
+  ChildPipes pipes;
+  if (::pipe2(pipes.out, O_CLOEXEC) != 0 || ::pipe2(pipes.err, O_CLOEXEC) != 0) {
+    throw InfraError(std::string("cannot create pipes: ") + std::strerror(errno));
+  }
+  if (metered && ::pipe2(pipes.meter, O_CLOEXEC) != 0) {
+    throw InfraError(std::string("cannot create a pipe: ") + std::strerror(errno));
+  }
+  return pipes;
+}
+
+// What the child's descriptors are: standard input from a file (or /dev/null, so a tracer
+// never waits on a terminal), output and error into raygate's pipes, the meter's report fd, and
+// the working directory.
+class SpawnFileActions {
+ public:
+  SpawnFileActions(const ProcessSpec& spec, const ChildPipes& pipes)
+      : stdin_path_(spec.stdin_path.empty() ? "/dev/null" : spec.stdin_path.string()) {
+    posix_spawn_file_actions_init(&actions_);
+    posix_spawn_file_actions_addopen(&actions_, 0, stdin_path_.c_str(), O_RDONLY, 0);
+    posix_spawn_file_actions_adddup2(&actions_, pipes.out[1], 1);
+    posix_spawn_file_actions_adddup2(&actions_, pipes.err[1], 2);
+    if (spec.metered) posix_spawn_file_actions_adddup2(&actions_, pipes.meter[1], kMeterReportFd);
+    if (!spec.working_directory.empty()) {
+      posix_spawn_file_actions_addchdir_np(&actions_, spec.working_directory.c_str());
+    }
+  }
+  ~SpawnFileActions() { posix_spawn_file_actions_destroy(&actions_); }
+  SpawnFileActions(const SpawnFileActions&) = delete;
+  SpawnFileActions& operator=(const SpawnFileActions&) = delete;
+  const posix_spawn_file_actions_t* get() const { return &actions_; }
+
+ private:
+  std::string stdin_path_;
+  posix_spawn_file_actions_t actions_{};
+};
+
+// How the child starts: no signal blocked, and the signals raygate catches or ignores back at
+// their defaults, so it starts as it would alone (under nohup too); in a process group of its
+// own, so a timeout kills the tracer's children too.
+class SpawnAttributes {
+ public:
+  SpawnAttributes() {
+    posix_spawnattr_init(&attributes_);
+    sigset_t no_signals;
+    sigset_t default_signals;
+    sigemptyset(&no_signals);
+    sigemptyset(&default_signals);
+    for (const int sig : {SIGPIPE, SIGINT, SIGTERM, SIGHUP}) sigaddset(&default_signals, sig);
+    posix_spawnattr_setsigmask(&attributes_, &no_signals);
+    posix_spawnattr_setsigdefault(&attributes_, &default_signals);
+    posix_spawnattr_setpgroup(&attributes_, 0);
+    posix_spawnattr_setflags(&attributes_, POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK |
+                                               POSIX_SPAWN_SETSIGDEF);
+  }
+  ~SpawnAttributes() { posix_spawnattr_destroy(&attributes_); }
+  SpawnAttributes(const SpawnAttributes&) = delete;
+  SpawnAttributes& operator=(const SpawnAttributes&) = delete;
+  const posix_spawnattr_t* get() const { return &attributes_; }
+
+ private:
+  posix_spawnattr_t attributes_{};
+};
+
+// The command line as started: metered, raygate-meter runs the program (joining `cgroup` first
+// where there is one) and reports on its fd 3.
+std::vector<std::string> spawned_argv(const ProcessSpec& spec, const std::filesystem::path& meter,
+                                      const std::optional<MemoryCgroup>& cgroup) {
+  std::vector<std::string> argv = spec.argv;
+  if (!spec.metered) return argv;
+  argv.insert(argv.begin(), {meter.string(), std::to_string(kMeterReportFd)});
+  if (cgroup) argv.insert(argv.begin() + 1, {"--cgroup", cgroup->procs_file().string()});
+  return argv;
+}
+
+ProcessResult spawn_failure(std::string error) {
+  ProcessResult result;
+  result.spawn_error = std::move(error);
+  return result;
+}
+
+}  // namespace
+
 Process Process::start(const ProcessSpec& spec) {
   Process p;
   p.spec_ = spec;
   throw_if_interrupted("before starting " + (spec.argv.empty() ? "a process" : spec.argv[0]));
   if (spec.argv.empty()) {
-    p.early_result_ = ProcessResult{};
-    p.early_result_->spawn_error = "empty command";
+    p.early_result_ = spawn_failure("empty command");
     return p;
   }
   const std::filesystem::path meter = spec.metered ? meter_executable() : "";
   p.stdout_log_ = open_log(spec.stdout_path);
   p.stderr_log_ = spec.stderr_path == spec.stdout_path ? -1 : open_log(spec.stderr_path);
-
-  int out_pipe[2];
-  int err_pipe[2];
-  if (::pipe2(out_pipe, O_CLOEXEC) != 0 || ::pipe2(err_pipe, O_CLOEXEC) != 0) {
-    throw InfraError(std::string("cannot create pipes: ") + std::strerror(errno));
-  }
-  int meter_pipe[2] = {-1, -1};
-  if (spec.metered && ::pipe2(meter_pipe, O_CLOEXEC) != 0) {
-    throw InfraError(std::string("cannot create a pipe: ") + std::strerror(errno));
-  }
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  const std::string stdin_path = spec.stdin_path.empty() ? "/dev/null" : spec.stdin_path.string();
-  posix_spawn_file_actions_addopen(&actions, 0, stdin_path.c_str(), O_RDONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, out_pipe[1], 1);
-  posix_spawn_file_actions_adddup2(&actions, err_pipe[1], 2);
-  if (spec.metered) posix_spawn_file_actions_adddup2(&actions, meter_pipe[1], kMeterReportFd);
-  if (!spec.working_directory.empty()) {
-    posix_spawn_file_actions_addchdir_np(&actions, spec.working_directory.c_str());
-  }
-  posix_spawnattr_t attr;
-  posix_spawnattr_init(&attr);
-  sigset_t no_signals;
-  sigset_t default_signals;
-  sigemptyset(&no_signals);
-  sigemptyset(&default_signals);
-  sigaddset(&default_signals, SIGPIPE);
-  sigaddset(&default_signals, SIGINT);
-  sigaddset(&default_signals, SIGTERM);
-  sigaddset(&default_signals, SIGHUP);  // under nohup too, a tracer starts as it would alone
-  posix_spawnattr_setsigmask(&attr, &no_signals);
-  posix_spawnattr_setsigdefault(&attr, &default_signals);
-  posix_spawnattr_setpgroup(&attr, 0);  // own group: a timeout kills the tracer's children too
-  posix_spawnattr_setflags(&attr,
-                           POSIX_SPAWN_SETPGROUP | POSIX_SPAWN_SETSIGMASK | POSIX_SPAWN_SETSIGDEF);
-
-  std::vector<std::string> argv_strings = spec.argv;
-  if (spec.metered) {
-    argv_strings.insert(argv_strings.begin(), {meter.string(), std::to_string(kMeterReportFd)});
-    p.cgroup_ = MemoryCgroup::create();
-    if (p.cgroup_) {
-      argv_strings.insert(argv_strings.begin() + 1, {"--cgroup", p.cgroup_->procs_file().string()});
-    }
-  }
+  ChildPipes pipes = open_child_pipes(spec.metered);
+  const SpawnFileActions actions(spec, pipes);
+  const SpawnAttributes attributes;
+  if (spec.metered) p.cgroup_ = MemoryCgroup::create();
+  std::vector<std::string> argv_strings = spawned_argv(spec, meter, p.cgroup_);
   std::vector<std::string> env_strings = build_environment(spec);
   std::vector<char*> argv = c_strings(argv_strings);
   std::vector<char*> envp = c_strings(env_strings);
@@ -215,21 +274,17 @@ Process Process::start(const ProcessSpec& spec) {
     const std::lock_guard table(child_table_mutex());  // no sweep takes it before it is listed
     ScopedAffinity affinity(spec.cpu_affinity);
     p.started_ = Clock::now();
-    spawn_status = ::posix_spawnp(&p.pid_, argv[0], &actions, &attr, argv.data(), envp.data());
+    spawn_status =
+        ::posix_spawnp(&p.pid_, argv[0], actions.get(), attributes.get(), argv.data(), envp.data());
     if (spawn_status == 0) p.group_slot_ = register_child_group(p.pid_);
   }
-  posix_spawn_file_actions_destroy(&actions);
-  posix_spawnattr_destroy(&attr);
-  ::close(out_pipe[1]);
-  ::close(err_pipe[1]);
-  if (spec.metered) ::close(meter_pipe[1]);
-  p.meter_fd_ = meter_pipe[0];
-  p.stdout_fd_ = out_pipe[0];
-  p.stderr_fd_ = err_pipe[0];
+  pipes.close_child_ends();
+  p.meter_fd_ = pipes.meter[0];
+  p.stdout_fd_ = pipes.out[0];
+  p.stderr_fd_ = pipes.err[0];
   if (spawn_status != 0) {
     p.pid_ = -1;
-    p.early_result_ = ProcessResult{};
-    p.early_result_->spawn_error = spec.argv[0] + ": " + std::strerror(spawn_status);
+    p.early_result_ = spawn_failure(spec.argv[0] + ": " + std::strerror(spawn_status));
     close_fd(p.stdout_fd_);
     close_fd(p.stderr_fd_);
     close_fd(p.meter_fd_);

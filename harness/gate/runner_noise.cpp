@@ -44,8 +44,8 @@ std::optional<std::string> runner_noise_note(const ResultsDocument& document,
                 : std::nullopt;
   if (decides_below) {
     note += fmt::format(
-        "; in the {} rounds a scene typically got, an unchanged scene is decided "
-        "within the {:.1f}% limit below about {:.1f}%",
+        "; in the {} rounds a scene typically got, an unchanged scene is shown within the "
+        "{:.1f}% limit (UNCHANGED) only when its rounds differ by less than about {:.1f}%",
         typical_rounds, 100 * thresholds.front(), 100 * *decides_below);
   }
   // Not "--repeats 2": compare already gives the fastest of two to the scenes it pays for, and

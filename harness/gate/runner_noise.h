@@ -14,8 +14,9 @@
 namespace raygate {
 
 // "runner noise: the rounds of a scene differed by 5.8% (head/base per round, scaled MAD, median
-// of 13 scenes); in the 18 rounds a scene typically got, an unchanged scene is decided within
-// the 3.0% limit below about 3.5%. A quieter runner, ..." when some scene measured on
+// of 13 scenes); in the 18 rounds a scene typically got, an unchanged scene is shown within the
+// 3.0% limit (UNCHANGED) only when its rounds differ by less than about 3.5%. A quieter runner,
+// ..." when some scene measured on
 // confidence sequences is INCONCLUSIVE; nullopt otherwise (all decided, a run, sim mode, or a
 // document from before confidence sequences).
 std::optional<std::string> runner_noise_note(const ResultsDocument& document,

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <set>
 
 #include "core/exit_codes.h"
 #include "core/format.h"
@@ -82,16 +83,31 @@ void judge_memory(const SceneResult& scene, const ScenePolicy& policy, bool fail
 }
 
 // The same "no golden" words from many scenes (a tracer without goldens), counted to say once.
-using MissingGoldens = std::vector<std::pair<std::string, std::size_t>>;
+// Images without a golden, by why: a compare has two per scene (base and head), so the note
+// counts scenes, and images only where they are more.
+struct MissingGolden {
+  std::string why;
+  std::size_t images = 0;
+  std::set<std::string> scenes;
+};
+using MissingGoldens = std::vector<MissingGolden>;
 
-void count_missing(MissingGoldens& missing, const std::string& why) {
-  for (auto& [text, scenes] : missing) {
-    if (text == why) {
-      ++scenes;
-      return;
-    }
+void count_missing(MissingGoldens& missing, const std::string& why, const std::string& scene) {
+  auto found = std::find_if(missing.begin(), missing.end(),
+                            [&](const MissingGolden& m) { return m.why == why; });
+  if (found == missing.end()) found = missing.insert(missing.end(), MissingGolden{why, 0, {}});
+  ++found->images;
+  found->scenes.insert(scene);
+}
+
+// "2 scenes", or "4 images: 2 scenes × base and head".
+std::string missing_count(const MissingGolden& m, const ResultsDocument& document) {
+  const std::string scenes = count_text(m.scenes.size(), "scene");
+  if (m.images == m.scenes.size()) return scenes;
+  if (is_compare(document.kind) && m.images == 2 * m.scenes.size()) {
+    return fmt::format("{} images: {} × base and head", m.images, scenes);
   }
-  missing.emplace_back(why, 1);
+  return fmt::format("{} images of {}", m.images, scenes);
 }
 
 void judge_images(const SceneResult& scene, bool fail_on_inconclusive, SceneGate& gate,
@@ -119,7 +135,7 @@ void judge_images(const SceneResult& scene, bool fail_on_inconclusive, SceneGate
       raise_image(gate, check.failed() ? GateOutcome::fail : GateOutcome::warn,
                   fmt::format("{}: {}", who, what));
     } else if (check.verdict == ImageVerdict::missing) {
-      count_missing(missing, check.error);  // not the scene's fault: a note for the document
+      count_missing(missing, check.error, scene.entry.id);  // a note for the document
     } else if (check.verdict == ImageVerdict::error) {
       raise_image(gate, GateOutcome::unmeasured, fmt::format("{}: {}", who, check.error));
     }
@@ -131,11 +147,11 @@ std::vector<std::string> missing_golden_notes(const MissingGoldens& missing,
                                               const ResultsDocument& document) {
   const std::string role = is_compare(document.kind) ? " --role head" : "";
   std::vector<std::string> notes;
-  for (const auto& [why, checks] : missing) {
+  for (const MissingGolden& m : missing) {
     notes.push_back(fmt::format(
-        "images not checked against goldens: {} ({} {}); look at the images, then bless them: "
+        "images not checked against goldens: {} ({}); look at the images, then bless them: "
         "raygate golden bless --from-run RESULTS.json{}",
-        why, checks, checks == 1 ? "image" : "images", role));
+        m.why, missing_count(m, document), role));
   }
   return notes;
 }

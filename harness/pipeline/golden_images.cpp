@@ -298,8 +298,11 @@ void bless_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progre
   }
 }
 
-void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress) {
-  const ResultsDocument document = read_results(request.results);
+namespace {
+
+// The revision whose images become goldens, its adapter name checked: it names a folder.
+const RevisionRecord& blessed_revision(const ResultsDocument& document,
+                                       const BlessFromRun& request) {
   const std::string results = request.results.string();
   const RevisionRecord* revision = document.revision(request.role);
   if (revision == nullptr) {
@@ -308,23 +311,58 @@ void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress)
   }
   checked_component(revision->adapter_name,
                     results + ": revisions[" + role_name(request.role) + "].adapter.name");
-  const std::filesystem::path golden_dir =
-      request.golden_dir.empty()
-          ? locate_tools(request.baseline).data_root / "golden" / revision->adapter_name
-          : request.golden_dir;
-  GoldenManifest manifest = load_golden_manifest(golden_dir);
-  check_manifest_suite(manifest, golden_dir, document.suite);
-  check_manifest_adapter(manifest, golden_dir, revision->adapter_name);
-  const ChosenImages chosen = chosen_images(document, request);
+  return *revision;
+}
 
+// The manifest says where its goldens came from: this run's baseline, tracer and document.
+void record_run_provenance(GoldenManifest& manifest, const ResultsDocument& document,
+                           const RevisionRecord& revision, const std::string& results) {
   manifest.suite = document.suite;
   manifest.baseline_version = document.baseline.version;
   manifest.baseline_source_sha256 = document.baseline.source_sha256;
-  manifest.tracer = GoldenProvenance{revision->adapter_name,      revision->adapter_hash,
-                                     revision->worktree.revision, revision->worktree.sha,
-                                     revision->worktree.dirty,    results,
-                                     document.started_at};
-  if (run_image_kind(document, *revision) == ImageKind::monte_carlo) {
+  manifest.tracer =
+      GoldenProvenance{revision.adapter_name, revision.adapter_hash,   revision.worktree.revision,
+                       revision.worktree.sha, revision.worktree.dirty, results,
+                       document.started_at};
+}
+
+// A deterministic tracer's goldens: each scene's chosen image as it is. Every image is decoded
+// before any is blessed, so one that cannot be read leaves the goldens as they were.
+std::vector<Blessing> deterministic_blessings(const ChosenImages& chosen,
+                                              const std::string& sampling) {
+  std::vector<Blessing> blessings;
+  for (const auto& [scene, image] : chosen) {
+    const SuiteScene& e = scene->entry;
+    OIIO_NAMESPACE::ImageBuf decoded(image.string());
+    if (!decoded.init_spec(image.string(), 0, 0)) {
+      throw UsageError(image.string() + ": cannot read image: " + decoded.geterror());
+    }
+    // The hash is provenance only: goldens are compared by decoded pixels, never by bytes.
+    blessings.push_back(
+        {e.id + image.extension().string(),
+         image,
+         {e.id, e.scene, e.size, decoded.spec().width, decoded.spec().height, sampling, "", {}, {}},
+         std::nullopt,
+         {}});
+  }
+  return blessings;
+}
+
+}  // namespace
+
+void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress) {
+  const ResultsDocument document = read_results(request.results);
+  const RevisionRecord& revision = blessed_revision(document, request);
+  const std::filesystem::path golden_dir =
+      request.golden_dir.empty()
+          ? locate_tools(request.baseline).data_root / "golden" / revision.adapter_name
+          : request.golden_dir;
+  GoldenManifest manifest = load_golden_manifest(golden_dir);
+  check_manifest_suite(manifest, golden_dir, document.suite);
+  check_manifest_adapter(manifest, golden_dir, revision.adapter_name);
+  const ChosenImages chosen = chosen_images(document, request);
+  record_run_provenance(manifest, document, revision, request.results.string());
+  if (run_image_kind(document, revision) == ImageKind::monte_carlo) {
     const TempDir stats_dir("raygate-bless");
     const std::vector<Blessing> blessings =
         monte_carlo_blessings(chosen, request.role, document.baseline.sampling, stats_dir.path());
@@ -335,30 +373,9 @@ void bless_goldens_from_run(const BlessFromRun& request, ProgressSink& progress)
     }
     return;
   }
-  // Every image decoded before any is blessed; then one swap for all of them.
-  std::vector<Blessing> blessings;
-  for (const auto& [scene, image] : chosen) {
-    const SuiteScene& e = scene->entry;
-    OIIO_NAMESPACE::ImageBuf decoded(image.string());
-    if (!decoded.init_spec(image.string(), 0, 0)) {
-      throw UsageError(image.string() + ": cannot read image: " + decoded.geterror());
-    }
-    // The hash is provenance only: goldens are compared by decoded pixels, never by bytes.
-    blessings.push_back({e.id + image.extension().string(),
-                         image,
-                         {e.id,
-                          e.scene,
-                          e.size,
-                          decoded.spec().width,
-                          decoded.spec().height,
-                          document.baseline.sampling,
-                          "",
-                          {},
-                          {}},
-                         std::nullopt,
-                         {}});
-  }
-  swap_in_goldens(golden_dir, manifest, blessings);
+  const std::vector<Blessing> blessings =
+      deterministic_blessings(chosen, document.baseline.sampling);
+  swap_in_goldens(golden_dir, manifest, blessings);  // one swap for all of them
   for (const Blessing& b : blessings) {
     progress.line(fmt::format("blessed   {:<12} {} (from {})", b.entry.id,
                               (golden_dir / b.file).string(), b.image.string()));

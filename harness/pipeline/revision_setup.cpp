@@ -90,6 +90,16 @@ PreparedRevision prepare_revision(Role role, const std::string& repository,
   return prepared_revision(role, repository, worktree, context, build_record);
 }
 
+namespace {
+
+// CMake configured this build folder: it left its cache there.
+bool configured_by_cmake(const std::filesystem::path& build_dir) {
+  std::error_code ec;
+  return std::filesystem::is_regular_file(build_dir / "CMakeCache.txt", ec);
+}
+
+}  // namespace
+
 void require_run_program(const Adapter& adapter, const BuildRecord& build,
                          const std::filesystem::path& repo_root,
                          const std::filesystem::path& raygate_source) {
@@ -118,9 +128,12 @@ void require_run_program(const Adapter& adapter, const BuildRecord& build,
     message += "\n  the build made these executables:";
     for (const std::filesystem::path& path : made) message += "\n    {build}/" + path.string();
   }
-  message +=
-      "\n  a CMake add_subdirectory(x) target lands in {build}/x/; fixing `run` reuses this "
-      "build (adapters/README.md)";
+  // Where CMake puts a subproject's target is the usual surprise; a Makefile or other build
+  // puts its programs where its own rules say, so the hint would mislead there.
+  message += configured_by_cmake(build.build_dir)
+                 ? "\n  a CMake add_subdirectory(x) target lands in {build}/x/; fixing `run` "
+                   "reuses this build (adapters/README.md)"
+                 : "\n  fixing `run` reuses this build (adapters/README.md)";
   throw InfraError(message);
 }
 

@@ -7,6 +7,7 @@
 #include <optional>
 #include <utility>
 
+#include "core/format.h"
 #include "core/interrupt.h"
 #include "core/path_component.h"
 #include "results/scores.h"
@@ -134,7 +135,8 @@ void revisit_scenes(ResultsDocument& document, const SuiteMeasurement& m, Measur
     if (scene.runs.rounds.size() == runs_before && !scene.runs.failed()) continue;
     update_scores(document, m);
     keep(document, m);
-    io.progress.line(fmt::format("[again {}, {} undecided] {}", visit, order.size(),
+    io.progress.line(fmt::format("[second pass {}, {} undecided] {}", visit,
+                                 count_text(order.size(), "scene"),
                                  scene_line(scene, m.tracer_roles)));
   }
 }

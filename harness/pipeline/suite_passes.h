@@ -33,7 +33,8 @@ std::filesystem::path scene_dir(const SuiteMeasurement& m, const SuiteScene& ent
 
 // The second pass (MeasurementPlan::revisits): while time is left, the undecided scene cheapest
 // to decide gets what it is estimated to need, is judged again over all its rounds, and goes
-// back among the undecided if it is still one. One line per visit ("[again 1, 3 undecided]").
+// back among the undecided if it is still one. One line per visit ("[second pass 1, 3 scenes
+// undecided]").
 void revisit_scenes(ResultsDocument& document, const SuiteMeasurement& m, MeasurementPlan& plan,
                     Executor& executor, PipelineIo& io);
 

@@ -117,7 +117,7 @@ void add_header(const ReportInput& input, Spans& spans) {
     spans.push_back(dim("counters: " + counters));
     spans.push_back(plain("\n"));
   }
-  spans.push_back(dim("policy: " + policy_line(input.policy, input.document.kind)));
+  spans.push_back(dim("policy: " + policy_line(input.policy, input.document)));
   spans.push_back(plain("\n"));
   spans.push_back(dim("columns: " + columns_line(d)));
   spans.push_back(plain("\n\n"));

@@ -63,7 +63,7 @@ std::string scaling_section(const ResultsDocument& document);
 // <section> of one scene: badge, reasons, numbers, plots, images, metrics.
 std::string scene_section(const ReportInput& input, const SceneView& view);
 
-std::string_view page_style();
+std::string page_style();
 std::string_view page_script();
 
 }  // namespace raygate::report::html

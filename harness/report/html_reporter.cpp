@@ -78,8 +78,8 @@ std::string meta_list(const ReportInput& input) {
   }
   rows += meta_row("baseline", escape(fmt::format("{} · accel {} · {} timing", d.baseline.version,
                                                   d.baseline.accel, d.baseline.timing)));
-  rows += meta_row("policy", escape(policy_line(input.policy, input.document.kind)) +
-                                 overrides_html(input.policy));
+  rows += meta_row(
+      "policy", escape(policy_line(input.policy, input.document)) + overrides_html(input.policy));
   rows += meta_row("measured", escape(fmt::format("{} → {}{}", d.started_at, d.finished_at,
                                                   d.complete ? "" : " (incomplete)")));
   return R"(<dl class="meta">)" + rows + "</dl>";

@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "core/format.h"
+#include "measure/descriptive.h"
 #include "report/html_parts.h"
 
 namespace raygate::report::html {
@@ -188,7 +189,45 @@ std::string speed_plots(const ReportInput& input, const SceneView& view) {
   return out;
 }
 
-// "15 rounds (the baseline in 3)", then each program's median cost, in the document's unit.
+// Base's and head's times in the rounds that ran both (a document from disk may lack a side).
+std::pair<std::vector<double>, std::vector<double>> compare_sides(const SceneResult& scene) {
+  std::pair<std::vector<double>, std::vector<double>> sides;
+  for (const Round& round : scene.runs.rounds) {
+    const auto base = round.runs.find(role_name(Role::base));
+    const auto head = round.runs.find(role_name(Role::head));
+    if (base == round.runs.end() || head == round.runs.end()) continue;
+    sides.first.push_back(base->second.seconds);
+    sides.second.push_back(head->second.seconds);
+  }
+  return sides;
+}
+
+// Each program's median cost, in the document's unit, and over which rounds. In a compare the
+// change is the median of the per-round head/base, and the baseline ran in only a few rounds:
+// base's and head's medians over those few could read +16% beside a change of +0.8%. So base and
+// head are given over every round, the baseline over its own, and the line says which number
+// the change is.
+std::string medians_fact(const ResultsDocument& d, const SceneResult& scene,
+                         const RatioSummary& primary) {
+  const std::string baseline = cost_text(d, primary.baseline_median_seconds);
+  const auto [base, head] = compare_sides(scene);
+  if (is_compare(d.kind) && scene.change && !base.empty()) {
+    return fmt::format(
+        "medians over the {}: base {}, head {} (the change, {}, is the median of each round's "
+        "head/base, not the ratio of these two); the baseline {} over the {} it joined",
+        count_text(base.size(), "round"), cost_text(d, median(base)), cost_text(d, median(head)),
+        signed_percent(scene.change->change), baseline, count_text(primary.rounds, "round"));
+  }
+  std::string medians = "medians: baseline " + baseline;
+  for (const Role role : ratio_roles(d)) {
+    if (const RatioSummary* r = scene.ratio(role)) {
+      medians += fmt::format(", {} {}", to_string(role), cost_text(d, r->tracer_median_seconds));
+    }
+  }
+  return medians;
+}
+
+// "15 rounds (the baseline in 3)", then each program's median cost (medians_fact).
 std::vector<std::string> round_facts(const ResultsDocument& d, const SceneResult& scene) {
   std::vector<std::string> facts;
   const RatioSummary* primary = scene.ratio(primary_role(d));
@@ -199,13 +238,7 @@ std::vector<std::string> round_facts(const ResultsDocument& d, const SceneResult
   } else {
     facts.push_back(count_text(primary->rounds, "round"));
   }
-  std::string medians = "medians: baseline " + cost_text(d, primary->baseline_median_seconds);
-  for (const Role role : ratio_roles(d)) {
-    if (const RatioSummary* r = scene.ratio(role)) {
-      medians += fmt::format(", {} {}", to_string(role), cost_text(d, r->tracer_median_seconds));
-    }
-  }
-  facts.push_back(medians);
+  facts.push_back(medians_fact(d, scene, *primary));
   return facts;
 }
 

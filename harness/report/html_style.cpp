@@ -5,7 +5,10 @@
 
 namespace raygate::report::html {
 
-std::string_view page_style() {
+namespace {
+
+// The palette and the page: colours as variables, so the verdict colours below stay one set.
+std::string_view theme_style() {
   return R"css(
 :root{--fg:#1f2328;--muted:#656d76;--line:#d8dee4;--soft:#eef1f4;--bg:#f3f5f7;--card:#fff;
 --accent:#0969da;--pass:#1a7f37;--pass-bg:#dafbe1;--warn:#9a6700;--warn-bg:#fff8c5;
@@ -25,7 +28,12 @@ h3{font-size:12px;text-transform:uppercase;letter-spacing:.07em;color:var(--mute
 code,.num,.sha{font-family:var(--mono);font-size:13px}
 a{color:var(--accent)}
 .muted{color:var(--muted)}
-.banner{display:flex;gap:16px;align-items:center;padding:14px 18px;border-radius:10px;
+)css";
+}
+
+// The verdict banner, the metadata list and the verdict badges and tags.
+std::string_view banner_style() {
+  return R"css(.banner{display:flex;gap:16px;align-items:center;padding:14px 18px;border-radius:10px;
 margin-bottom:18px;border:1px solid var(--line)}
 .big-badge{font-weight:800;text-transform:uppercase;letter-spacing:.08em;color:#fff;
 padding:8px 16px;border-radius:8px;font-size:15px;white-space:nowrap;background:var(--muted)}
@@ -55,7 +63,12 @@ border:1px solid var(--line);color:var(--muted);background:#f6f8fa}
 .tag.speed-FAILED,.tag.v-error{color:var(--unm);border-color:#e3c8fb;background:var(--unm-bg)}
 .verdict{font-weight:700;font-size:13px}
 .v-pass{color:var(--pass)}.v-warn,.v-inconclusive{color:var(--warn)}.v-missing{color:var(--muted);font-weight:400}.v-fail{color:var(--fail)}.v-error{color:var(--unm)}
-table{border-collapse:collapse;width:100%}
+)css";
+}
+
+// Tables and the summary counts of the overview.
+std::string_view tables_style() {
+  return R"css(table{border-collapse:collapse;width:100%}
 th{text-align:left;font-size:11px;text-transform:uppercase;letter-spacing:.06em;color:var(--muted);
 font-weight:700;border-bottom:1px solid var(--line);padding:6px 10px}
 td{padding:7px 10px;border-bottom:1px solid var(--soft);vertical-align:middle}
@@ -69,7 +82,12 @@ table.scenes tr.gate-warn td:first-child{box-shadow:inset 3px 0 var(--warn)}
 .count b{font-size:17px;margin-right:3px;color:var(--fg)}
 .count.gate-fail b{color:var(--fail)}.count.gate-warn b{color:var(--warn)}
 .count.gate-pass b{color:var(--pass)}.count.gate-unmeasured b{color:var(--unm)}
-.scene{border-left:6px solid var(--line)}
+)css";
+}
+
+// One scene's card: its coloured edge, the reasons list and the two-column body.
+std::string_view scenes_style() {
+  return R"css(.scene{border-left:6px solid var(--line)}
 .scene.gate-pass{border-left-color:var(--pass)}.scene.gate-warn{border-left-color:var(--warn)}
 .scene.gate-fail{border-left-color:var(--fail)}.scene.gate-unmeasured{border-left-color:var(--unm)}
 .scene-head{display:flex;align-items:center;gap:10px;flex-wrap:wrap}
@@ -84,7 +102,12 @@ font-size:12.5px;background:#f6f8fa}
 @media (max-width:960px){.scene-body{grid-template-columns:1fr}}
 .facts{color:var(--muted);font-size:13px;margin:6px 0 0}
 .failure{background:var(--unm-bg);padding:10px 14px;border-radius:8px;font-size:14px;margin-bottom:8px}
-.gallery{display:flex;flex-wrap:wrap;gap:14px}
+)css";
+}
+
+// The image gallery: checkered frames for transparency, the swap-on-hover outline.
+std::string_view images_style() {
+  return R"css(.gallery{display:flex;flex-wrap:wrap;gap:14px}
 .shot{margin:0;width:168px}
 .frame{border:1px solid var(--line);border-radius:8px;overflow:hidden;line-height:0;
 background:repeating-conic-gradient(#e9ecef 0 25%,#fff 0 50%) 0 0/14px 14px}
@@ -99,7 +122,12 @@ body[data-js=ready] .hint{display:inline}
 .no-image{line-height:1.4;padding:26px 10px;font-size:12px;color:var(--muted);text-align:center;
 background:#fff;word-break:break-all}
 table.metrics{margin-top:18px;font-size:13px}
-svg.plot{display:block;max-width:100%;height:auto;margin:2px 0 4px;overflow:visible}
+)css";
+}
+
+// The SVG plots of a scene's ratio and of the scaling fits.
+std::string_view plots_style() {
+  return R"css(svg.plot{display:block;max-width:100%;height:auto;margin:2px 0 4px;overflow:visible}
 .svg-axis{stroke:#8c959f;stroke-width:1}
 .svg-grid{stroke:#eaeef2;stroke-width:1}
 .svg-tick{font-size:11px;fill:var(--muted)}
@@ -120,7 +148,12 @@ svg.plot{display:block;max-width:100%;height:auto;margin:2px 0 4px;overflow:visi
 .scl-base{stroke:#bf8700;fill:#bf8700}.scl-head .scl-fit{stroke-dasharray:6 3}
 .scaling-plot circle{stroke:#fff;stroke-width:1}.scaling-plot text{stroke:none}
 ul.scaling-fits{font-size:13px;margin:4px 0 14px;padding-left:18px}
-.trend-band{fill:#ddf4ff}
+)css";
+}
+
+// The history trends (ratio and memory) and the page's footer.
+std::string_view trends_style() {
+  return R"css(.trend-band{fill:#ddf4ff}
 .trend-line{fill:none;stroke:var(--accent);stroke-width:2}
 .trend-point{fill:var(--accent);stroke:#fff;stroke-width:1.5}
 .trend-point.marked{fill:#0550ae;stroke-width:2}
@@ -139,6 +172,21 @@ ul.scaling-fits{font-size:13px;margin:4px 0 14px;padding-left:18px}
 .sha{fill:var(--muted)}
 footer{color:var(--muted);font-size:12px;text-align:center;padding:8px 0 24px}
 )css";
+}
+
+}  // namespace
+
+// In the order the page uses them; each part a few dozen rules, so a change finds its place.
+std::string page_style() {
+  std::string style;
+  style += theme_style();
+  style += banner_style();
+  style += tables_style();
+  style += scenes_style();
+  style += images_style();
+  style += plots_style();
+  style += trends_style();
+  return style;
 }
 
 std::string_view page_script() {

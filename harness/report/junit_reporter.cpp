@@ -46,7 +46,7 @@ void add_properties(pugi::xml_node suite, const ReportInput& input) {
   if (const std::string clock = clock_line(d); !clock.empty()) {
     add_property(properties, "clock", clock);
   }
-  add_property(properties, "policy", policy_line(input.policy, input.document.kind));
+  add_property(properties, "policy", policy_line(input.policy, input.document));
 }
 
 std::string joined(const std::vector<std::string>& lines) {

@@ -117,7 +117,7 @@ std::string details(const ReportInput& input) {
   if (const std::string counters = counters_line(d); !counters.empty()) {
     text += fmt::format("- counters: {}\n", md(counters));
   }
-  text += fmt::format("- policy: {}\n", md(policy_line(input.policy, input.document.kind)));
+  text += fmt::format("- policy: {}\n", md(policy_line(input.policy, input.document)));
   for (const auto& [id, scene] : input.policy.scenes) {
     text += fmt::format("  - override {}: {}\n", md(id), md(scene.reason));
   }

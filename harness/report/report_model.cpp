@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "core/format.h"
 
@@ -248,6 +249,28 @@ std::string cell_text(ColumnKind kind, const ResultsDocument& document, const Sc
   return "";
 }
 
+namespace {
+
+// Where the runs were pinned: an adapter's pin_cpus pins its tracer, --pin every run, and by
+// default each round of a one-thread tracer runs on one CPU.
+std::string pinning_text(const MeasurementSettings& s) {
+  if (s.pin_cpus && !s.pin_cpus->empty()) {
+    const std::vector<int>& cpus = *s.pin_cpus;
+    const std::string where =
+        fmt::format("CPU{} {}", cpus.size() == 1 ? "" : "s", fmt::join(cpus, ","));
+    switch (s.pinned_by.value_or(PinnedBy::none)) {
+      case PinnedBy::adapter:
+        return "; the tracer pinned to " + where + " (its adapter's pin_cpus)";
+      case PinnedBy::option: return "; every run pinned to " + where + " (--pin)";
+      case PinnedBy::none: return "; pinned to " + where;
+    }
+  }
+  if (s.round_cpus && !s.round_cpus->empty()) return "; each round pinned to one CPU";
+  return "";
+}
+
+}  // namespace
+
 std::string clock_line(const ResultsDocument& document) {
   const MeasurementSettings& s = document.settings;
   const std::string tracer = s.tracer_clock.value_or("");
@@ -260,7 +283,7 @@ std::string clock_line(const ResultsDocument& document) {
     line += ", baseline " + baseline;
   }
   line += " (measures in " + s.measure_unit() + ")";
-  if (s.round_cpus && !s.round_cpus->empty()) line += "; each round pinned to one CPU";
+  line += pinning_text(s);
   if (s.cpu_idle == CpuIdle::poll) line += "; idle CPUs held polling";
   if (s.cpu_idle_refused) line += "; idle CPUs not held polling (" + *s.cpu_idle_refused + ")";
   return line;
@@ -327,8 +350,64 @@ std::string revision_line(const ResultsDocument& document, Role role) {
   return line;
 }
 
-std::string policy_line(const GatePolicy& policy, DocumentKind kind) {
+namespace {
+
+// The scenes whose decision sequence is at 1 - 2 x family/K, by K: each scene's share of the
+// compare's false alarms (measure/family.h). Read back from the levels the scenes carry; empty
+// when some level is not such a share (a document from another raygate), so nothing is claimed.
+std::map<long, std::vector<std::string>> scenes_by_share(const ResultsDocument& d, double family) {
+  std::map<long, std::vector<std::string>> by_share;
+  for (const SceneResult& scene : d.scenes) {
+    const std::optional<ChangeSummary>& c = scene.change;
+    if (!c || c->exact || c->interval_kind != ChangeIntervalKind::confidence_sequence) continue;
+    const double share = (1.0 - c->confidence) / 2.0;
+    const double scenes = family / share;
+    if (!(share > 0.0) || !(std::abs(scenes - std::round(scenes)) < 1e-6 * scenes)) return {};
+    by_share[std::lround(scenes)].push_back(scene.entry.id);
+  }
+  return by_share;
+}
+
+// Why each sequence has the level it has (pipeline/stop_rules.h scene_levels): UNCHANGED's is
+// 1 - 2 x the significance; a decision sequence's 1 - 2 x family/K, its share of the compare's
+// false alarms over K scenes, or Holm's larger family/(K - r) for a scene judged after r others
+// were REGRESSED. "levels: 90% CS = 1 − 2 × the 5% significance; 99.5% = 1 - 2 x 1%/4 ...".
+std::string levels_text(const GatePolicy& policy, const ResultsDocument& d) {
+  const double significance = policy.defaults.significance;
+  const auto level = [](double confidence) {
+    return interval_name({{}, confidence, ChangeIntervalKind::confidence_sequence});
+  };
+  std::string text = fmt::format("levels: {} = 1 − 2 × the {:.4g}% significance",
+                                 level(1.0 - 2.0 * significance), 100.0 * significance);
+  const double family = d.settings.family_significance.value_or(policy.family_significance);
+  const auto by_share = scenes_by_share(d, family);
+  if (by_share.empty()) return text;
+  const long most = by_share.rbegin()->first;
+  for (auto it = by_share.rbegin(); it != by_share.rend(); ++it) {
+    const auto& [scenes, ids] = *it;
+    const std::string confidence = level(1.0 - 2.0 * family / static_cast<double>(scenes));
+    if (scenes == most) {
+      text += fmt::format("; {} = 1 − 2 × {:.4g}%/{} (each scene's share of the {:.4g}% over {})",
+                          confidence, 100.0 * family, scenes, 100.0 * family,
+                          count_text(static_cast<std::size_t>(scenes), "scene"));
+    } else {
+      // No verdict word (see policy_line): "found slower".
+      const long slower = most - scenes;
+      text += fmt::format(
+          "; {} for {} = 1 − 2 × {:.4g}%/{} (Holm: a larger share once {} {} found "
+          "slower)",
+          confidence, fmt::join(ids, ", "), 100.0 * family, scenes, slower,
+          slower == 1 ? "other scene was" : "others were");
+    }
+  }
+  return text;
+}
+
+}  // namespace
+
+std::string policy_line(const GatePolicy& policy, const ResultsDocument& document) {
   const ScenePolicy& d = policy.defaults;
+  const DocumentKind kind = document.kind;
   std::string line;
   if (is_compare(kind)) {
     // The equivalence sequence's level, the one UNCHANGED rows name (measure/change.h).
@@ -338,9 +417,9 @@ std::string policy_line(const GatePolicy& policy, DocumentKind kind) {
     // search a comment for REGRESSED).
     line = fmt::format(
         "max slowdown {} (within the limit when the {} lies within ±{:.4g}%, slower when the "
-        "decision CS lies above 0, at most {:.4g}% false alarms per compare; {}); ",
+        "decision CS lies above 0, at most {:.4g}% false alarms per compare; {}; {}); ",
         signed_percent(d.max_slowdown), interval_name(equivalence), 100.0 * d.max_slowdown,
-        100.0 * policy.family_significance, kIntervalLegend);
+        100.0 * policy.family_significance, kIntervalLegend, levels_text(policy, document));
   }
   line += fmt::format("image fail over {:.4g} on more than {:.4g}% of pixels, warn over {:.4g}",
                       d.image.fail_threshold, d.image.fail_percent, d.image.warn_threshold);

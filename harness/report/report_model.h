@@ -113,8 +113,9 @@ std::string machine_line(const nlohmann::json& machine);
 std::string revision_line(const ResultsDocument& document, Role role);
 // "max slowdown +3.0% (...); image fail over 0.004 on more than 0.02% of pixels, warn over
 // 0.004". A document without a change (`run`) is judged on its images only: its line leaves
-// the slowdown limit out.
-std::string policy_line(const GatePolicy& policy, DocumentKind kind);
+// the slowdown limit out. A compare's adds why each confidence sequence has its level (the
+// significance; each scene's share of the false alarms, and Holm's larger shares).
+std::string policy_line(const GatePolicy& policy, const ResultsDocument& document);
 
 // The image of `role` per the document's image checks, or its first successful run.
 std::filesystem::path role_image(const SceneResult& scene, Role role);

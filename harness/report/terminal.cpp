@@ -39,4 +39,17 @@ void Console::warning(const std::string& text) const {
 
 void Console::problem(const std::string& text) const { std::fputs(text.c_str(), stderr); }
 
+std::string bounded_message(std::string text) {
+  constexpr std::size_t kMaxChars = 16 * 1024;
+  if (text.size() <= kMaxChars) return text;
+  const std::size_t cut = text.size() - kMaxChars;
+  text.resize(kMaxChars);
+  return text + fmt::format("... ({} more characters not shown)", cut);
+}
+
+void say_last_words(const std::string& line) {
+  std::fputs((bounded_message(line) + "\n").c_str(), stderr);
+  std::fflush(stderr);
+}
+
 }  // namespace raygate

@@ -50,6 +50,16 @@ class Console final : public MessageSink {
   bool no_color_;
 };
 
+// A message cut to a length a CI log and a terminal stay readable at: what a user pasted (a
+// 100,000-character --rev, a value for a number) is echoed back only as far as it helps. Long
+// enough for any message raygate itself composes (a build's log tail included).
+std::string bounded_message(std::string text);
+
+// The last words of a command (its error, or what an interrupt kept), bounded, on standard
+// error. Never throws: after a hang-up the terminal is gone and every write fails (EIO), and
+// the exit code must still say what happened.
+void say_last_words(const std::string& line);
+
 // A command's result on standard output: `json()` (indented one space) with --format json, else
 // `text()`; only the one asked for is computed. The JSON boundary repairs invalid UTF-8 (a store
 // may hold it) to U+FFFD instead of throwing; text is made safe for a terminal.

@@ -482,6 +482,20 @@ void check_machine(const JsonField& machine) {
   }
 }
 
+// The settings' shard records of a merged document carry each shard's machine, which the
+// reports and consistency read as they read the document's own: checked the same way.
+void check_settings(const JsonField& settings) {
+  // null: what a document built in memory without settings (tests, tools) wrote before the
+  // settings were typed; read as none. The fields are checked as they are read (settings_json).
+  if (settings.value().is_null()) return;
+  object(settings);
+  if (const auto merged = find_non_null(settings, "merged_shards")) {
+    for (const JsonField& shard : array(*merged).elements()) {
+      if (const auto machine = find(shard, "machine")) check_machine(*machine);
+    }
+  }
+}
+
 }  // namespace
 
 void check_results_json(const nlohmann::json& document, const TimingModeList& modes) {
@@ -491,10 +505,7 @@ void check_results_json(const nlohmann::json& document, const TimingModeList& mo
   check_strings(d, {"raygate_version", "started_at", "finished_at", "suite"});
   d.member("complete").as_bool();
   check_machine(d.member("machine"));
-  // null: what a document built in memory without settings (tests, tools) wrote before the
-  // settings were typed; read as none. The fields are checked as they are read (settings_json).
-  if (const JsonField settings = d.member("settings"); !settings.value().is_null())
-    object(settings);
+  check_settings(d.member("settings"));
   if (const auto shard = find(d, "shard")) shard->as_string();
   const JsonField baseline = object(d.member("baseline"));
   check_strings(baseline, {"version", "source_sha256"});

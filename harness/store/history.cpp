@@ -22,11 +22,19 @@ auto recency(const HistoryRow& row) {
   return std::make_tuple(when.value_or(0), row.measured_at, row.document_id);
 }
 
+// "root:" and 12 digits of a root commit; other repository keys as they are.
+std::string repository_part(const HistoryRow& row) {
+  const std::string& key = row.repository_key;
+  return "repository " + (key.starts_with("root:") ? key.substr(0, 17) : key);
+}
+
 // The parts of a column's series that differ among `same_scene` (columns of one scene id).
-std::string distinguishing_parts(const SeriesColumn& column,
-                                 const std::vector<const SeriesColumn*>& same_scene) {
+std::string visible_parts(const SeriesColumn& column,
+                          const std::vector<const SeriesColumn*>& same_scene) {
   using Part = std::string (*)(const HistoryRow&);
   const std::vector<Part> parts = {
+      repository_part,
+      [](const HistoryRow& r) { return "adapter " + r.adapter_name; },
       [](const HistoryRow& r) { return "suite " + r.suite; },
       [](const HistoryRow& r) { return r.scene_settings; },
       [](const HistoryRow& r) { return "timing " + r.timing; },
@@ -42,12 +50,39 @@ std::string distinguishing_parts(const SeriesColumn& column,
                     [&](const SeriesColumn* other) { return part(other->sample) != mine; });
     if (differs) out += (out.empty() ? "" : ", ") + mine;
   }
-  // Same visible parts (e.g. a repository or adapter outside this table): the id tells them apart.
-  return out.empty() ? "series " + column.series_id.substr(0, 8) : out;
+  return out;
+}
+
+// The commits a series was measured at, oldest to newest: "3f2a1bc..9e8d7c6", or one.
+std::string commit_span(const std::string& series_id, const std::vector<HistoryRow>& rows) {
+  const HistoryRow* oldest = nullptr;
+  const HistoryRow* newest = nullptr;
+  for (const HistoryRow& row : rows) {
+    if (row.series_id != series_id) continue;
+    if (oldest == nullptr || recency(row) < recency(*oldest)) oldest = &row;
+    if (newest == nullptr || recency(*newest) < recency(row)) newest = &row;
+  }
+  if (oldest == nullptr) return "";
+  if (oldest->short_sha == newest->short_sha) return oldest->short_sha;
+  return oldest->short_sha + ".." + newest->short_sha;
+}
+
+// What tells a column's series from the others of its scene id. When every part a row shows is
+// the same, what differs is how the adapter builds or runs the tracer (the series key's
+// measurement: flags, run command), or the row is from before series were kept: said in words,
+// with the commits each covers, not as a hash.
+std::string distinguishing_parts(const SeriesColumn& column,
+                                 const std::vector<const SeriesColumn*>& same_scene,
+                                 const std::vector<HistoryRow>& rows) {
+  if (std::string parts = visible_parts(column, same_scene); !parts.empty()) return parts;
+  if (column.series_id.starts_with("unknown-")) {
+    return "stored before series were kept, document " + column.series_id.substr(8);
+  }
+  return "adapter settings of " + commit_span(column.series_id, rows);
 }
 
 // Labels each column with its scene id, and what sets it apart when a scene id has several.
-void label_columns(std::vector<SeriesColumn>& columns) {
+void label_columns(std::vector<SeriesColumn>& columns, const std::vector<HistoryRow>& rows) {
   std::map<std::string, std::vector<const SeriesColumn*>> by_scene;
   for (const SeriesColumn& column : columns) by_scene[column.scene_id].push_back(&column);
   std::vector<std::string> labels;
@@ -55,7 +90,8 @@ void label_columns(std::vector<SeriesColumn>& columns) {
     const auto& same_scene = by_scene[column.scene_id];
     labels.push_back(same_scene.size() == 1
                          ? column.scene_id
-                         : column.scene_id + " [" + distinguishing_parts(column, same_scene) + "]");
+                         : column.scene_id + " [" + distinguishing_parts(column, same_scene, rows) +
+                               "]");
   }
   for (std::size_t i = 0; i < columns.size(); ++i) columns[i].label = labels[i];
 }
@@ -143,7 +179,7 @@ std::vector<SeriesColumn> series_columns(const std::vector<HistoryRow>& rows) {
            std::tie(b.scene_id, b.sample.suite, b.sample.scene_settings, b.sample.timing,
                     b.sample.baseline_sha256, b.sample.baseline_accel, b.series_id);
   });
-  label_columns(columns);
+  label_columns(columns, rows);
   return columns;
 }
 

@@ -166,7 +166,8 @@ TEST(GateVerdict, AnUndecidedCompareSaysHowNoisyTheRunnerWas) {
   EXPECT_EQ(gate.notes[0],
             "runner noise: the rounds of a scene differed by 4.1% (head/base per round, scaled "
             "MAD, median of 3 scenes); in the 10 rounds a scene typically got, an unchanged scene "
-            "is decided within the 3.0% limit below about 1.9%. A quieter runner or a longer "
+            "is shown within the 3.0% limit (UNCHANGED) only when its rounds differ by less than "
+            "about 1.9%. A quieter runner or a longer "
             "--max-minutes decides more; raygate doctor measures a runner's noise.");
   // Nothing to say when every scene is decided, or for documents before confidence sequences.
   EXPECT_TRUE(evaluate_gate(compare_document({sequenced("balls", 0.0, {-0.01, 0.01}, 10, 0.004)}),
@@ -354,11 +355,36 @@ TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
   }
   ASSERT_EQ(gate.notes.size(), 2u);
   EXPECT_EQ(gate.notes[0],
-            "images not checked against goldens: no goldens in g (none blessed yet) (3 images); "
+            "images not checked against goldens: no goldens in g (none blessed yet) (3 scenes); "
             "look at the images, then bless them: raygate golden bless --from-run RESULTS.json "
             "--role head");
-  EXPECT_NE(gate.notes[1].find("no golden image for 'tetra' (1 image)"), std::string::npos)
+  EXPECT_NE(gate.notes[1].find("no golden image for 'tetra' (1 scene)"), std::string::npos)
       << gate.notes[1];
+}
+
+// Issue 40: a compare of 2 scenes without goldens said "(4 images)"; base and head each have an
+// image per scene, and the note says so.
+TEST(GateVerdict, MissingGoldensOfACompareCountScenesAndBothSides) {
+  std::vector<SceneResult> scenes;
+  for (const char* id : {"balls", "gears"}) {
+    scenes.push_back(compared(id, 0.0, -0.01, 0.01));
+    for (const Role role : {Role::base, Role::head}) {
+      scenes.back().images.push_back({role,
+                                      ImageReference::golden,
+                                      "a.png",
+                                      "g",
+                                      ImageVerdict::missing,
+                                      "no goldens in g (none blessed yet)",
+                                      {},
+                                      {},
+                                      {}});
+    }
+  }
+  const GateResult gate = evaluate_gate(compare_document(scenes), GatePolicy{});
+  ASSERT_FALSE(gate.notes.empty());
+  EXPECT_NE(gate.notes[0].find("(none blessed yet) (4 images: 2 scenes × base and head);"),
+            std::string::npos)
+      << gate.notes[0];
 }
 
 // A broken base image (NaN pixels, no goldens at all) is a reference that cannot be used: the

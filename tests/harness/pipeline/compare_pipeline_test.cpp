@@ -200,7 +200,8 @@ TEST_F(ComparePipelineTest, AnUndecidedChangeGetsRoundsUntilTheBudget) {
   });
   ASSERT_NE(noise, notes.end());
   EXPECT_NE(noise->find("median of 2 scenes); in the 10 rounds a scene typically got, an "
-                        "unchanged scene is decided within the 3.0% limit below about 1.9%. "),
+                        "unchanged scene is shown within the 3.0% limit (UNCHANGED) only when "
+                        "its rounds differ by less than about 1.9%. "),
             std::string::npos)
       << *noise;
 }
@@ -215,12 +216,12 @@ TEST_F(ComparePipelineTest, ScenesTheirShareLeftUndecidedGetASecondVisit) {
   const double started = clock_.now_seconds();
   const auto [document, path, unwritten] = compare(base, head);
   ASSERT_EQ(document.scenes.size(), 2u);
-  EXPECT_EQ(progress_.lines_with("[again ").size(), 2u);
+  EXPECT_EQ(progress_.lines_with("[second pass ").size(), 2u);
   for (const SceneResult& scene : document.scenes) {
     EXPECT_EQ(scene.change_verdict, ChangeVerdict::unchanged) << scene.entry.id;
     EXPECT_EQ(scene.runs.stop_reason, "stop_converged") << scene.entry.id;
     EXPECT_EQ(scene.runs.warmup.at("head").size(), 1u) << "warmed up once, on the first visit";
-    EXPECT_EQ(progress_.lines_with("[again ").size(), 2u);
+    EXPECT_EQ(progress_.lines_with("[second pass ").size(), 2u);
     EXPECT_EQ(progress_.lines_with("] " + scene.entry.id).size(), 2u) << scene.entry.id;
   }
   EXPECT_LE(clock_.now_seconds() - started, 90.0 + 5.0)
@@ -258,8 +259,8 @@ TEST_F(ComparePipelineTest, TheSecondPassVisitsAgainAndBacksOffAScenesThatOutliv
     return {lines[0].substr(name, lines[0].find(' ', name) - name),
             std::stoul(lines[0].substr(begin, end - begin))};
   };
-  const Visit first = visit_in("[again 1, 2 undecided]");
-  const Visit second = visit_in("[again 2, 2 undecided]");
+  const Visit first = visit_in("[second pass 1, 2 scenes undecided]");
+  const Visit second = visit_in("[second pass 2, 2 scenes undecided]");
   ASSERT_FALSE(first.scene.empty());
   ASSERT_FALSE(second.scene.empty());
   EXPECT_NE(second.scene, first.scene) << "backed off: the other scene goes next";
@@ -268,7 +269,7 @@ TEST_F(ComparePipelineTest, TheSecondPassVisitsAgainAndBacksOffAScenesThatOutliv
                                                    {"balls", visit_in("[2/2] balls").rounds}};
   std::vector<Visit> visits;
   for (std::size_t k = 1; k < 20; ++k) {
-    const Visit visit = visit_in(fmt::format("[again {}, 2 undecided]", k));
+    const Visit visit = visit_in(fmt::format("[second pass {}, 2 scenes undecided]", k));
     if (visit.scene.empty()) break;
     visits.push_back(visit);
   }
@@ -302,7 +303,7 @@ std::vector<double> one_run_in_four_slowed() {
 
 TEST_F(ComparePipelineTest, TheSecondPassGivesOneSidedNoiseTheFastestOfTwo) {
   const MeasuredDocument measured = compare_beside_one_sided_noise(true);
-  const std::vector<std::string> visits = progress_.lines_with("[again ");
+  const std::vector<std::string> visits = progress_.lines_with("[second pass ");
   ASSERT_FALSE(visits.empty());
   EXPECT_NE(visits.front().find("of them the fastest of 2 runs"), std::string::npos)
       << visits.front();
@@ -348,7 +349,7 @@ TEST_F(ComparePipelineTest, AnInterruptInTheSecondPassKeepsTheRoundsOfItsVisits)
   std::size_t rounds_at_signal = 0;
   std::string revisited;
   progress_.on_line = [&](const std::string& text) {
-    if (text.rfind("[again 1,", 0) != 0) return;
+    if (text.rfind("[second pass 1,", 0) != 0) return;
     const std::size_t name = text.find("] ") + 2;
     revisited = text.substr(name, text.find(' ', name) - name);
     const std::size_t end = text.find(" rounds, ");
@@ -367,7 +368,7 @@ TEST_F(ComparePipelineTest, AnInterruptInTheSecondPassKeepsTheRoundsOfItsVisits)
     EXPECT_EQ(stop.signal(), SIGINT);
     message = stop.what();
   }
-  EXPECT_EQ(progress_.lines_with("[again ").size(), 1u) << "no visit after the signal";
+  EXPECT_EQ(progress_.lines_with("[second pass ").size(), 1u) << "no visit after the signal";
   const std::size_t from = message.find("kept 2 of 2 scenes in ");
   ASSERT_NE(from, std::string::npos) << message;
   const std::size_t path_begin = from + std::string("kept 2 of 2 scenes in ").size();

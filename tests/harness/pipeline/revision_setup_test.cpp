@@ -41,6 +41,7 @@ struct Built {
 
 TEST(RunProgram, AWrongPathIsNamedOnceWithWhatTheBuildMade) {
   const Built built;
+  write_file_atomically(built.record.build_dir / "CMakeCache.txt", "CMAKE_BUILD_TYPE=Release\n");
   try {
     require_run_program(adapter_running("{build}/tracer"), built.record, built.dir.path(), {});
     FAIL() << "a missing run program was accepted";
@@ -52,6 +53,21 @@ TEST(RunProgram, AWrongPathIsNamedOnceWithWhatTheBuildMade) {
               std::string::npos)
         << message;
     EXPECT_NE(message.find("add_subdirectory"), std::string::npos);
+  }
+}
+
+// Issue 40: the CMake hint was printed for a Makefile project too. Only a build folder CMake
+// configured (its CMakeCache.txt) gets it.
+TEST(RunProgram, TheCMakeHintIsForACMakeBuildOnly) {
+  const Built built;  // no CMakeCache.txt: a Makefile's build
+  try {
+    require_run_program(adapter_running("{build}/tracer"), built.record, built.dir.path(), {});
+    FAIL() << "a missing run program was accepted";
+  } catch (const InfraError& e) {
+    const std::string message = e.what();
+    EXPECT_EQ(message.find("CMake"), std::string::npos) << message;
+    EXPECT_EQ(message.find("add_subdirectory"), std::string::npos) << message;
+    EXPECT_NE(message.find("fixing `run` reuses this build"), std::string::npos) << message;
   }
 }
 

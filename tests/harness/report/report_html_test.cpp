@@ -157,6 +157,32 @@ TEST(HtmlReport, NoMannWhitneyOnTheBaselinesFewRounds) {
   EXPECT_NE(html.find("medians: baseline 1.500 s, base "), std::string::npos);
 }
 
+// Issue 40: "medians: baseline 1.894 s, base 1.911 s, head ..." beside a change of -6.9%. Base's
+// and head's medians are over every round the change used, and the line says the change is the
+// median of each round's head/base, so the two cannot be read as disagreeing.
+TEST(HtmlReport, TheMediansAreOverTheChangesRoundsAndSayWhatTheChangeIs) {
+  Fixture f(true);
+  SceneResult& scene = f.document.scenes[0];
+  ASSERT_TRUE(scene.change.has_value());
+  scene.change->change = 0.008;
+  scene.change->rounds = 9;
+  for (std::size_t i = 0; i < 9; ++i) {
+    Round round;
+    for (const auto& [role, seconds] : {std::pair{Role::base, 0.100}, {Role::head, 0.1008}}) {
+      round.order.push_back(role_name(role));
+      round.runs[role_name(role)].seconds = seconds + 0.001 * static_cast<double>(i);
+    }
+    scene.runs.rounds.push_back(round);
+  }
+  const std::string html = f.render("html");
+  EXPECT_NE(html.find("medians over the 9 rounds: base 0.104 s, head 0.105 s (the change, +0.8%, "
+                      "is the median of each round&#39;s head/base, not the ratio of these two); "
+                      "the baseline 1.500 s over the 12 rounds it joined"),
+            std::string::npos)
+      << html;
+  EXPECT_EQ(count(html, "medians over the "), 1u) << "only the scene with rounds";
+}
+
 TEST(HtmlReport, MissingImageIsShownNotFatal) {
   Fixture f(true);
   f.document.scenes[1].images[0].actual = f.dir.path() / "gone.png";

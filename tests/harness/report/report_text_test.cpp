@@ -42,7 +42,8 @@ TEST(ConsoleReport, CompareHasNumbersAndFailuresFirst) {
   at(text,
      "max slowdown +3.0% (within the limit when the 90% CS lies within ±3%, slower when the "
      "decision CS lies above 0, at most 1% false alarms per compare; CS = anytime-valid "
-     "confidence sequence, CI = one-look confidence interval)");
+     "confidence sequence, CI = one-look confidence interval; levels: 90% CS = 1 − 2 × the 5% "
+     "significance)");
   at(text, "+7.9% [+6.1%, +9.8%]");
   at(text, "REGRESSED");
   EXPECT_LT(at(text, "\nmount "), at(text, "\ngears "));
@@ -119,6 +120,36 @@ TEST(ConsoleReport, RunShowsRatioWithInterval) {
   EXPECT_EQ(text.find("max slowdown"), std::string::npos) << text;
 }
 
+// Issue 40: the deciding intervals read 90%, 99.5% and 99.33% with nothing saying why. The
+// policy line of every format derives each level from the levels the scenes carry: the
+// significance, each scene's share of the compare's false alarms, Holm's larger share.
+TEST(Reports, ThePolicyLineSaysWhyEachLevelIsWhatItIs) {
+  Fixture f(true);
+  f.document.settings.family_significance = 0.01;
+  SceneResult* first = nullptr;  // judged after another was found slower: Holm's share
+  std::size_t changes = 0;
+  for (SceneResult& scene : f.document.scenes) {
+    if (!scene.change) continue;
+    if (first == nullptr) first = &scene;
+    scene.change->interval_kind = ChangeIntervalKind::confidence_sequence;
+    scene.change->confidence = 1.0 - 2.0 * 0.01 / (first == &scene ? 3.0 : 4.0);
+    scene.change->equivalence_confidence = 0.9;
+    ++changes;
+  }
+  ASSERT_GE(changes, 2u);
+  const std::string levels =
+      "levels: 90% CS = 1 − 2 × the 5% significance; 99.5% CS = 1 − 2 × 1%/4 (each scene's "
+      "share of the 1% over 4 scenes); 99.33% CS for " +
+      first->entry.id +
+      " = 1 − 2 × 1%/3 (Holm: a larger share once 1 other scene was found slower))";
+  at(f.render("console"), levels);
+  at(f.render("markdown"), levels);
+  at(f.render("junit"), "levels: 90% CS = 1 − 2 × the 5% significance; 99.5% CS");
+  // A level that is no share of the family (another raygate's document) is not explained.
+  first->change->confidence = 0.97;
+  EXPECT_EQ(f.render("console").find("99.5% CS ="), std::string::npos);
+}
+
 TEST(ConsoleReport, TheClockLineSaysWhetherIdleCpusWereHeldPolling) {
   Fixture f(true);
   f.document.settings.tracer_clock = "process-cpu";
@@ -150,6 +181,26 @@ TEST(Reports, EveryFormatNamesTheClock) {
   at(f.render("html"), "<dt>clock</dt>");
   at(f.render("html"), clock);
   at(f.render("junit"), "name=\"clock\" value=\"" + clock + "\"");
+}
+
+// Issue 40: an adapter's pin_cpus was in the Markdown settings only; the clock line of every
+// format says where the runs were pinned and who asked.
+TEST(Reports, TheClockLineSaysWhereTheRunsWerePinned) {
+  Fixture f(true);
+  f.document.settings.tracer_clock = "process-cpu";
+  f.document.settings.pin_cpus = std::vector<int>{0};
+  f.document.settings.pinned_by = PinnedBy::adapter;
+  const std::string adapter =
+      "process-cpu (measures in seconds); the tracer pinned to CPU 0 (its adapter's pin_cpus)";
+  at(f.render("console"), "clock: " + adapter + "\n");
+  at(f.render("markdown"),
+     "- clock: process-cpu (measures in seconds); the tracer pinned to CPU 0 (its adapter's "
+     "pin\\_cpus)\n");
+  at(f.render("html"), "the tracer pinned to CPU 0 (its adapter&#39;s pin_cpus)");
+  f.document.settings.pin_cpus = std::vector<int>{2, 3};
+  f.document.settings.pinned_by = PinnedBy::option;
+  at(f.render("console"),
+     "clock: process-cpu (measures in seconds); every run pinned to CPUs 2,3 (--pin)\n");
 }
 
 // The unit is the document's (settings.unit), and a counter a mode recorded is printed beside
@@ -232,7 +283,7 @@ TEST(ConsoleReport, NoGoldensIsSaidOnce) {
   EXPECT_EQ(occurrences(text, "no goldens in golden/my-tracer"), 1u) << text;
   at(text,
      "note: images not checked against goldens: no goldens in golden/my-tracer (none "
-     "blessed yet) (2 images); look at the images, then bless them: raygate golden bless "
+     "blessed yet) (2 scenes); look at the images, then bless them: raygate golden bless "
      "--from-run RESULTS.json");
   at(text, "raygate: pass (2 scenes; suite score 0.439), exit 0");
 }

@@ -47,6 +47,19 @@ struct BadDocument {
 
 const double kNaN = std::numeric_limits<double>::quiet_NaN();
 
+// One shard record of settings.merged_shards (results/measurement_settings.h MergedShard).
+json merged_shard(json machine) {
+  return {{"index", 1},
+          {"count", 2},
+          {"document", "shard-1.json"},
+          {"raygate_version", "0.1.0"},
+          {"started_at", "2026-11-28T10:00:00Z"},
+          {"finished_at", "2026-11-28T10:05:00Z"},
+          {"complete", true},
+          {"scenes", {"balls"}},
+          {"machine", std::move(machine)}};
+}
+
 const std::vector<BadDocument>& bad_documents() {
   static const std::vector<BadDocument> rows = {
       {"unknown kind", false, [](json& j) { j["kind"] = "weird"; }, "$.kind",
@@ -214,6 +227,15 @@ const std::vector<BadDocument>& bad_documents() {
        "$.machine.load_average", "expected [1, 5, 15] minutes' load"},
       {"machine cores negative", false, [](json& j) { j["machine"]["online_cpus"] = -2; },
        "$.machine.online_cpus", "out of range"},
+      // A merged document's shards' machines, read as the document's own is.
+      {"merged shard's machine of the wrong type", false,
+       [](json& j) { j["settings"]["merged_shards"] = json::array({merged_shard(5)}); },
+       "$.settings.merged_shards[0].machine", "expected an object, found number 5"},
+      {"merged shard's machine hostname a number", false,
+       [](json& j) {
+         j["settings"]["merged_shards"] = json::array({merged_shard({{"hostname", 7}})});
+       },
+       "$.settings.merged_shards[0].machine.hostname", "expected a string, found number 7"},
       // The settings a gate and a report trust: in range, and a number where one is required
       // (null is how a NaN was written).
       {"negative time budget", false, [](json& j) { j["settings"]["max_minutes"] = -5; },
@@ -248,6 +270,9 @@ TEST(ResultsCheck, ValidRunAndCompareDocumentsAreRead) {
   json older = run_document();
   older["baseline"]["timing"] = "in-process-cpu";
   EXPECT_NO_THROW(results_from_json(older, "older.json"));
+  json merged = run_document();
+  merged["settings"]["merged_shards"] = json::array({merged_shard({{"hostname", "ci-1"}})});
+  EXPECT_NO_THROW(results_from_json(merged, "merged.json"));
   const ResultsDocument compare = results_from_json(compare_document(), "compare.json");
   ASSERT_TRUE(compare.scenes[0].change.has_value());
   EXPECT_EQ(compare.scenes[0].change_verdict, ChangeVerdict::unchanged);

@@ -4,6 +4,8 @@
 // drift compares a series only with itself; history filters by the parts.
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "core/fs.h"
 #include "results_fixture.h"
 #include "store/drift.h"
@@ -177,6 +179,37 @@ TEST_F(StoreSeries, ASceneWithSeveralSeriesInOneTableGetsAColumnEach) {
   EXPECT_EQ(scene_trend(lines, columns[0]).ratios, std::vector<double>{1.0});
   EXPECT_EQ(scene_trend(lines, columns[1]).ratios, std::vector<double>{1.5});
   EXPECT_EQ(scene_trend(lines, columns[1]).label, "teapot [suite full]");
+}
+
+// Issue 40: two series of one scene that differ only in how the adapter builds or runs the
+// tracer (the series key's measurement) were told apart by 8 digits of their id. Their labels
+// say what differs and which commits each covers.
+TEST_F(StoreSeries, SeriesThatDifferOnlyInTheAdapterAreNamedByTheirCommits) {
+  for (const auto& [seed, measurement] : {std::pair{1, "O2"}, {2, "O2"}, {3, "O3"}}) {
+    ResultsDocument document = make_document(teapot(seed, seed, 1.0, kRepoA));
+    document.revisions.at(0).adapter_measurement = measurement;
+    store->add(document, "main");
+  }
+  const std::vector<SeriesColumn> columns = series_columns(store->history({}));
+  ASSERT_EQ(columns.size(), 2u);
+  std::set<std::string> labels;
+  for (const SeriesColumn& column : columns) labels.insert(column.label);
+  const auto short_sha = [](int seed) { return fake_sha(seed).substr(0, 7); };
+  EXPECT_EQ(labels, (std::set<std::string>{
+                        "teapot [adapter settings of " + short_sha(1) + ".." + short_sha(2) + "]",
+                        "teapot [adapter settings of " + short_sha(3) + "]"}));
+}
+
+// Store-wide (raygate alert), one scene of two repositories: the repository tells them apart.
+TEST_F(StoreSeries, SeriesOfTwoRepositoriesAreNamedByTheRepository) {
+  store->add(make_document(teapot(1, 1, 1.0, kRepoA)), "main");
+  store->add(make_document(teapot(2, 2, 1.0, kRepoB)), "main");
+  std::set<std::string> labels;
+  for (const SeriesColumn& column : series_columns(store->history({}))) {
+    labels.insert(column.label);
+  }
+  EXPECT_EQ(labels, (std::set<std::string>{"teapot [repository " + kRepoA.substr(0, 17) + "]",
+                                           "teapot [repository " + kRepoB.substr(0, 17) + "]"}));
 }
 
 TEST_F(StoreSeries, DriftComparesASeriesOnlyWithItself) {

@@ -1,5 +1,5 @@
-// What a long measurement says while it runs: the command line's ProgressSink. On a terminal:
-// one line, rewritten in place ("[3/13] mount  round 7  ratio 0.512 ±0.8%  ETA 1m40s").
+// What a long measurement says while it runs: the measuring commands' ProgressSink. On a
+// terminal: one line, rewritten in place ("[3/13] mount  round 7  ratio 0.512 ±0.8%  ETA 1m40s").
 // Elsewhere (CI logs): one plain line per finished scene, nothing rewritten, so logs stay
 // readable. All of it is chatter: the command line passes standard error (docs/cli.md), or no
 // stream with --quiet. Every text passes core/sanitize.h's terminal_text here, the one place
@@ -12,14 +12,15 @@
 #include "pipeline/pipeline_io.h"
 #include "runner/executor.h"
 
-namespace raygate::cli {
+namespace raygate {
 
-class Progress final : public ProgressSink {
+class TerminalProgress final : public ProgressSink {
  public:
   // interactive: rewrite one line (use is_terminal(stream) to decide). A null stream says
   // nothing (--quiet).
-  Progress(std::FILE* stream, bool interactive) : stream_(stream), interactive_(interactive) {}
-  ~Progress() override;
+  TerminalProgress(std::FILE* stream, bool interactive)
+      : stream_(stream), interactive_(interactive) {}
+  ~TerminalProgress() override;
 
   void update(const ProgressState& state) override;
   // A finished scene's line; on a terminal it replaces the progress line.
@@ -45,8 +46,8 @@ struct TerminalIo {
 
   SystemExecutor executor;
   SteadyClock clock;
-  Progress progress;
+  TerminalProgress progress;
   PipelineIo io{executor, clock, progress};
 };
 
-}  // namespace raygate::cli
+}  // namespace raygate

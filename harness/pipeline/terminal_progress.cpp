@@ -1,4 +1,4 @@
-#include "cli/terminal_progress.h"
+#include "pipeline/terminal_progress.h"
 
 #include <fmt/core.h>
 #include <unistd.h>
@@ -7,11 +7,11 @@
 
 #include "core/sanitize.h"
 
-namespace raygate::cli {
+namespace raygate {
 
 namespace {
 
-// Progress is for whoever watches. When nobody can (the terminal was closed: writes fail with
+// TerminalProgress is for whoever watches. When nobody can (the terminal was closed: writes fail with
 // EIO), it is dropped; fmt::print would throw, and from the destructor that ends raygate with
 // SIGABRT instead of the hang-up's exit code and the line saying what was kept.
 void put(std::FILE* stream, const std::string& text) {
@@ -21,16 +21,16 @@ void put(std::FILE* stream, const std::string& text) {
 
 }  // namespace
 
-Progress::~Progress() { clear(); }
+TerminalProgress::~TerminalProgress() { clear(); }
 
-void Progress::clear() {
+void TerminalProgress::clear() {
   if (stream_ != nullptr && interactive_ && dirty_) {
     put(stream_, "\r\033[K");
     dirty_ = false;
   }
 }
 
-void Progress::update(const ProgressState& s) {
+void TerminalProgress::update(const ProgressState& s) {
   if (stream_ == nullptr || !interactive_) return;  // CI logs get the per-scene lines only
   std::string text =
       fmt::format("[{}/{}] {:<10} round {:>2}", s.scene_index, s.scene_count, s.scene_id, s.round);
@@ -42,13 +42,13 @@ void Progress::update(const ProgressState& s) {
   dirty_ = true;
 }
 
-void Progress::line(const std::string& text) {
+void TerminalProgress::line(const std::string& text) {
   if (stream_ == nullptr) return;
   clear();
   put(stream_, terminal_text(text) + "\n");  // subjects are the commit author's bytes
 }
 
-void Progress::status(const std::string& text) { line(text); }
+void TerminalProgress::status(const std::string& text) { line(text); }
 
 std::string format_duration(double seconds) {
   const long total = std::lround(std::max(0.0, seconds));
@@ -57,4 +57,4 @@ std::string format_duration(double seconds) {
   return fmt::format("{}h{:02}m", total / 3600, (total % 3600) / 60);
 }
 
-}  // namespace raygate::cli
+}  // namespace raygate

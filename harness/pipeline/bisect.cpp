@@ -50,7 +50,7 @@ struct Bisector {
                                     request.baseline.source_hash(), context.jobs, io.progress);
     }
     const MeasuredDocument measured = measure_prepared_compare(
-        {context, request.baseline, repository, good, tree, {}}, *good_built,
+        {context, request.baseline, repository, good, tree, {}, false}, *good_built,
         prepared_revision(Role::head, repository, tree, context, build), io);
     const SceneResult& scene = measured.document.scenes.front();
     if (scene.runs.failed()) {

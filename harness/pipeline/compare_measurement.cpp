@@ -77,7 +77,7 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
   const TracerContender base_runs(base.setup);
   const TracerContender head_runs(head.setup);
   m.contenders = {&baseline_runs, &base_runs, &head_runs};
-  ComparePlan plan(context, m, base_runs, head_runs, io);
+  ComparePlan plan(context, m, base_runs, head_runs, io, request.ratio_rounds);
 
   ResultsDocument document = new_document(DocumentKind::compare, context, request.baseline);
   document.revisions = {base.record, head.record};

@@ -23,6 +23,9 @@ struct CompareRequest {
   Worktree base;
   Worktree head;
   std::filesystem::path out;  // results document; "" = in the run's work directory
+  // Ratio rounds for stored ratios still imprecise (pipeline/stored_ratio.h); bisect's steps
+  // store no ratio and spend no time on them.
+  bool ratio_rounds = true;
 };
 
 // Builds both (InfraError with the log tail if either build fails), measures, and returns the

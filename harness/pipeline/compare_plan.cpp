@@ -62,7 +62,8 @@ std::size_t compare_family_size(const MeasureContext& context, const SuiteMeasur
 }
 
 ComparePlan::ComparePlan(const MeasureContext& context, const SuiteMeasurement& m,
-                         const Contender& base, const Contender& head, PipelineIo& io)
+                         const Contender& base, const Contender& head, PipelineIo& io,
+                         bool ratio_rounds)
     : context_(context),
       m_(m),
       base_(base),
@@ -75,7 +76,8 @@ ComparePlan::ComparePlan(const MeasureContext& context, const SuiteMeasurement& 
                 fewest_compare_rounds(context, alpha_), 2, io.progress),
       noisy_images_(m.images == ImageKind::monte_carlo
                         ? std::optional(NoisyImageFamily{family_size_})
-                        : std::nullopt) {}
+                        : std::nullopt),
+      ratio_rounds_(ratio_rounds) {}
 
 StopRule ComparePlan::scene_stop_rule(const StoppingPolicy& share,
                                       const std::string& scene_id) const {
@@ -148,7 +150,7 @@ void ComparePlan::rejudge(SceneResult& scene) { judge_change(scene, scene.runs.r
 
 bool ComparePlan::wants_ratio_rounds(const SceneResult& scene) const {
   const RatioSummary* ratio = scene.ratio(Role::base);
-  return !exact_timing(context_) && ratio != nullptr &&
+  return ratio_rounds_ && !exact_timing(context_) && ratio != nullptr &&
          !stored_ratio_precise(*ratio, stored_ratio_confidence(context_.policy, scene.entry.id));
 }
 

@@ -31,8 +31,9 @@ std::size_t compare_family_size(const MeasureContext& context, const SuiteMeasur
 class ComparePlan final : public MeasurementPlan {
  public:
   // `m` and the contenders outlive the plan; `base` and `head` are re-run by --explain.
+  // `ratio_rounds`: a stored ratio still imprecise gets ratio rounds (not in bisect's steps).
   ComparePlan(const MeasureContext& context, const SuiteMeasurement& m, const Contender& base,
-              const Contender& head, PipelineIo& io);
+              const Contender& head, PipelineIo& io, bool ratio_rounds = true);
 
   StopRule first_visit_stop(const SuiteScene& scene) override;
   RepeatChooser repeats(const SuiteScene& scene) const override;
@@ -68,6 +69,7 @@ class ComparePlan final : public MeasurementPlan {
   MeasurementEstimate estimate_;
   // A Monte Carlo image still inconclusive keeps its scene measuring (pipeline/image_stop.h).
   std::optional<NoisyImageFamily> noisy_images_;
+  bool ratio_rounds_;
   // Why a scene's stored ratio stayed imprecise, by scene id, for the closing line.
   std::map<std::string, std::string> ratio_why_;
 };

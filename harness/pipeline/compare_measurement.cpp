@@ -44,8 +44,8 @@ void judge_change(SceneResult& scene, const GatePolicy& gate_policy, double alph
   scene.change_verdict = classify_change(*scene.change, policy.max_slowdown);
   // The document's ratios are the change's: head's through the change (ratio_through_change).
   if (scene.change->base.rounds > 0) {
-    scene.ratios[role_name(Role::base)] = scene.change->base;
-    scene.ratios[role_name(Role::head)] = scene.change->head;
+    scene.ratios[Role::base] = scene.change->base;
+    scene.ratios[Role::head] = scene.change->head;
   }
 }
 

@@ -33,7 +33,7 @@ namespace {
 void summarize_ratios(SceneResult& result, const SuiteMeasurement& m) {
   if (result.runs.rounds.empty()) return;
   for (const Role role : m.tracer_roles) {
-    result.ratios[role_name(role)] = summarize_ratio(round_samples(result.runs.rounds, role));
+    result.ratios[role] = summarize_ratio(round_samples(result.runs.rounds, role));
   }
 }
 

@@ -35,8 +35,7 @@ int run_command(const RunArgs& args, const Console& console) {
   const MeasuredDocument measured =
       measure_run({context, baseline, tree.repository, tree.worktree, args.out}, terminal.io);
   const ResultsDocument& document = measured.document;
-  if (const auto score = document.scores.find(role_name(Role::tracer));
-      score != document.scores.end()) {
+  if (const auto score = document.scores.find(Role::tracer); score != document.scores.end()) {
     console.info(
         fmt::format("suite score (geometric mean of normalized ratios): {:.3f} [{:.3f}, "
                     "{:.3f}] over {} scenes",

@@ -20,7 +20,7 @@ namespace raygate {
 enum class Role { baseline, tracer, base, head };
 
 std::string_view to_string(Role role);
-// The word as a string: rounds, ratios and scores are keyed by it, as on disk.
+// The word as a string: a round's runs are keyed by it (runner/scheduler.h), as on disk.
 std::string role_name(Role role);
 // nullopt for anything but the four words (the caller names the field).
 std::optional<Role> parse_role(std::string_view word);

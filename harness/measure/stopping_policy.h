@@ -41,12 +41,13 @@ struct StoppingPolicy {
 StoppingPolicy change_stopping_policy();
 
 // The rounds of a compare or bisect scene the baseline joins: the change needs none (the
-// baseline cancels within a round), each revision's stored normalized ratio the fewest its 95%
-// interval can be drawn from (6: below that the interval is the rounds' range, which three
-// rounds make a 75% interval; pipeline/stored_ratio.h); more would spend most of a fast
-// tracer's compare timing a program outside the verdict. A ratio still imprecise after them
-// gets ratio rounds once the scenes are decided.
-inline constexpr std::size_t kChangeBaselineRounds = 6;
+// baseline cancels within a round), each revision's normalized ratio a few; more would spend
+// most of a fast tracer's compare timing a program outside the verdict. Three make the ratio's
+// interval their range, a 75% interval; a scene whose rounds say a few more would make its
+// stored ratio precise gets them as ratio rounds once the scenes are decided
+// (pipeline/stored_ratio.h). Six in every scene cost nff-tracer's compare about 70 s more on
+// this VM (2026-11-28) and made no ratio precise there.
+inline constexpr std::size_t kChangeBaselineRounds = 3;
 
 // The longest a single run may take within `policy`'s budget: its own limit `own_seconds`, but
 // never past the seconds a scene may use (max_seconds) or the whole measurement

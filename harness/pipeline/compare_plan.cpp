@@ -43,18 +43,6 @@ void check_head_image(SceneResult& scene, const ScenePolicy& policy,
                                      policy.image, evidence_dir, scene.entry.id + ".head-vs-base"));
 }
 
-// The estimate's shape: the baseline joins the rounds its stored ratio needs at the least (the
-// ratio rounds of a scene whose first rounds left it imprecise), not only --baseline-rounds.
-EstimateShape compare_estimate_shape(const MeasureContext& context, std::size_t scenes) {
-  EstimateShape shape = estimate_shape(context, scenes, "compare");
-  if (shape.normalizer_rounds > 0 && !exact_timing(context) && !context.scenes.empty()) {
-    const double confidence = stored_ratio_confidence(context.policy, context.scenes.front().id);
-    shape.normalizer_rounds =
-        std::max(shape.normalizer_rounds, stored_ratio_fewest_rounds(confidence));
-  }
-  return shape;
-}
-
 }  // namespace
 
 std::size_t compare_family_size(const MeasureContext& context, const SuiteMeasurement& m) {
@@ -72,7 +60,7 @@ ComparePlan::ComparePlan(const MeasureContext& context, const SuiteMeasurement& 
       family_size_(compare_family_size(context, m)),
       alpha_(scene_decision_alpha(context.policy, family_size_)),
       budget_(context.stopping, m.scenes.size(), io.clock, revisit_reserve_scenes(m.scenes.size())),
-      estimate_(compare_estimate_shape(context, m.scenes.size()),
+      estimate_(estimate_shape(context, m.scenes.size(), "compare"),
                 fewest_compare_rounds(context, alpha_), 2, io.progress),
       noisy_images_(m.images == ImageKind::monte_carlo
                         ? std::optional(NoisyImageFamily{family_size_})
@@ -123,8 +111,8 @@ void ComparePlan::judge_change(SceneResult& scene, std::size_t change_rounds) co
   }
   // The document's ratios are the change's.
   if (scene.change->base.rounds > 0) {
-    scene.ratios[role_name(Role::base)] = scene.change->base;
-    scene.ratios[role_name(Role::head)] = scene.change->head;
+    scene.ratios[Role::base] = scene.change->base;
+    scene.ratios[Role::head] = scene.change->head;
   }
 }
 

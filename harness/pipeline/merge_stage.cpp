@@ -9,7 +9,8 @@ namespace raygate {
 namespace {
 
 void say_scores(const ResultsDocument& document, const PublishSink& sink) {
-  for (const auto& [role, score] : document.scores) {
+  for (const auto& [key, score] : document.scores) {
+    const std::string_view role = to_string(key);
     sink.info(
         fmt::format("suite score {} (geometric mean of normalized ratios): {:.3f} "
                     "[{:.3f}, {:.3f}] over {} scenes",

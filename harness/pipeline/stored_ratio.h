@@ -37,8 +37,7 @@ double stored_ratio_confidence(const GatePolicy& policy, const std::string& scen
 // three rounds make a 75% interval)?
 bool stored_ratio_precise(const RatioSummary& ratio, double confidence);
 
-// The fewest baseline rounds a precise stored ratio has at `confidence` (6 at 95%), for the
-// estimate before measuring (pipeline/measurement_estimate.h).
+// The fewest baseline rounds a precise stored ratio has at `confidence` (6 at 95%).
 std::size_t stored_ratio_fewest_rounds(double confidence);
 
 // About how many baseline rounds would make `ratio` precise at `confidence`, projected from its

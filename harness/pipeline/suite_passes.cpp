@@ -17,7 +17,7 @@ namespace raygate::suite_pass {
 void summarize_ratios(SceneResult& scene, const SuiteMeasurement& m) {
   if (scene.runs.rounds.empty()) return;
   for (const Role role : m.tracer_roles) {
-    scene.ratios[role_name(role)] = summarize_ratio(round_samples(scene.runs.rounds, role));
+    scene.ratios[role] = summarize_ratio(round_samples(scene.runs.rounds, role));
   }
 }
 

@@ -27,7 +27,8 @@ std::vector<Series> series_of(const FamilyScaling& family) {
   }
   out.push_back(baseline);
   for (const auto& [role, fits] : family.roles) {
-    Series s{role, "scl-" + role, {}, fits.time};
+    const std::string word(to_string(role));
+    Series s{word, "scl-" + word, {}, fits.time};
     for (const ScalingPoint& p : family.points) {
       s.points.emplace_back(static_cast<double>(p.primitives), p.seconds.at(role));
     }
@@ -116,7 +117,8 @@ std::string family_block(const FamilyScaling& family) {
   }
   html += loglog_svg(family) + "<ul class=\"scaling-fits\">";
   html += fmt::format("<li><b>baseline</b> {}</li>", escape(describe_fit(family.baseline)));
-  for (const auto& [role, fits] : family.roles) {
+  for (const auto& [key, fits] : family.roles) {
+    const std::string_view role = to_string(key);
     html += fmt::format("<li><b>{0}</b> {1}</li><li><b>{0} ratio</b> {2}</li>", escape(role),
                         escape(describe_fit(fits.time)), escape(describe_fit(fits.ratio)));
   }

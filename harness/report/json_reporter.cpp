@@ -30,7 +30,8 @@ json revisions(const ResultsDocument& d) {
 
 json ratios(const SceneResult& scene) {
   json out = json::object();
-  for (const auto& [role, r] : scene.ratios) {
+  for (const auto& [key, r] : scene.ratios) {
+    const std::string role(to_string(key));
     out[role] = {{"ratio", finite_number(r.ratio)},
                  {"interval", interval(r.ratio_interval)},
                  {"relative_half_width", finite_number(r.relative_half_width)},

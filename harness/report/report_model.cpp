@@ -138,7 +138,7 @@ Headline headline(const ReportInput& input, const std::vector<SceneView>& views)
   }
   if (const auto change = suite_change(input.document)) {
     line.detail += fmt::format("; suite {}", signed_percent(*change));
-  } else if (const auto score = input.document.scores.find(role_name(Role::tracer));
+  } else if (const auto score = input.document.scores.find(Role::tracer);
              score != input.document.scores.end() && score->second.score > 0.0) {
     line.detail += fmt::format("; suite score {:.3f}", score->second.score);
   }

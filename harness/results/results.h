@@ -60,8 +60,8 @@ struct SceneResult {
   std::string scene_sha256;  // of the NFF file measured
   SceneStatus status = SceneStatus::measured;
   SceneRuns runs;
-  std::map<std::string, RatioSummary> ratios;  // by role_name(), each against the baseline
-  std::optional<ChangeSummary> change;         // compare: head against base
+  std::map<Role, RatioSummary> ratios;  // by revision role, each against the baseline
+  std::optional<ChangeSummary> change;  // compare: head against base
   // compare: the change's verdict under the policy it was measured with (with `change` only).
   ChangeVerdict change_verdict = ChangeVerdict::inconclusive;
   std::vector<ImageCheck> images;
@@ -85,7 +85,7 @@ struct ResultsDocument {
   MeasurementSettings settings;  // schedule, stopping policy, clocks, limits, pinning, shard
   std::vector<RevisionRecord> revisions;
   std::vector<SceneResult> scenes;
-  std::map<std::string, SuiteScore> scores;  // by role: geometric mean over measured scenes
+  std::map<Role, SuiteScore> scores;  // by role: geometric mean over measured scenes
   // Growth exponents per scene family (results/scaling_record.h; fitted by scaling/), when the
   // suite measured a family at 3 sizes or more; absent (null in JSON) otherwise.
   std::optional<ScalingAnalysis> scaling;

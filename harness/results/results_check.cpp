@@ -14,6 +14,7 @@
 #include "compare/image_check.h"
 #include "compare/noisy_image_compare.h"
 #include "measure/change.h"
+#include "core/domain.h"
 #include "core/memory_cgroup.h"
 #include "core/json_field.h"
 #include "runner/timing/timing_check.h"
@@ -116,9 +117,10 @@ std::string word_at(const JsonField& parent, std::string_view key,
   return word;
 }
 
-void require_role(const JsonField& field, const std::string& role,
-                  const std::set<std::string>& roles) {
-  if (roles.count(role) == 0) field.fail(fmt::format("unknown role \"{}\"", role));
+// The word read as its Role (core/domain.h), which must be one of `roles`.
+void require_role(const JsonField& field, const std::string& word, const std::set<Role>& roles) {
+  const std::optional<Role> role = parse_role(word);
+  if (!role || roles.count(*role) == 0) field.fail(fmt::format("unknown role \"{}\"", word));
 }
 
 void check_strings(const JsonField& object, std::initializer_list<std::string_view> keys) {
@@ -161,7 +163,7 @@ void check_run(const JsonField& run) {
   }
 }
 
-void check_runs_by_role(const JsonField& runs, const std::set<std::string>& roles) {
+void check_runs_by_role(const JsonField& runs, const std::set<Role>& roles) {
   for (const std::string& role : object(runs).keys()) {
     const JsonField field = runs.member(role);
     require_role(field, role, roles);
@@ -317,7 +319,7 @@ NoisyVerdict check_noisy(const JsonField& mc) {
   return *verdict;
 }
 
-void check_image(const JsonField& image, const std::set<std::string>& roles) {
+void check_image(const JsonField& image, const std::set<Role>& roles) {
   object(image);
   const JsonField role = image.member("role");
   require_role(role, role.as_string(), roles);
@@ -353,8 +355,8 @@ void check_scene_entry(const JsonField& entry) {
 // documents merged or written by older versions mix them, and a word raygate does not know is
 // what would mislead a reader.
 struct Roles {
-  std::set<std::string> revisions{"tracer", "base", "head"};
-  std::set<std::string> runs{"tracer", "base", "head", "baseline"};
+  std::set<Role> revisions{Role::tracer, Role::base, Role::head};
+  std::set<Role> runs{Role::tracer, Role::base, Role::head, Role::baseline};
 };
 
 void check_rounds(const JsonField& rounds, const Roles& roles) {

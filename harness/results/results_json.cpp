@@ -17,6 +17,7 @@
 #include "results/scaling_json.h"
 #include "results/settings_json.h"
 #include "results/summary_json.h"
+#include "results/typed_fields.h"
 
 namespace raygate {
 
@@ -124,7 +125,7 @@ void to_json(json& j, const SceneResult& s) {
            {"failure", nullptr},
            {"warmup", s.runs.warmup},
            {"rounds", s.runs.rounds},
-           {"ratios", s.ratios},
+           {"ratios", typed_fields::role_object(s.ratios, typed_fields::record_json<RatioSummary>)},
            {"change", nullptr},
            {"images", s.images}};
   if (s.runs.failed_run) {
@@ -137,7 +138,13 @@ void to_json(json& j, const SceneResult& s) {
   }
   if (s.explanation) j["explanation"] = *s.explanation;  // only when there is one (issue 27)
 }
-void from_json(const json& j, SceneResult& s) {
+
+namespace {
+
+// Read with its JSON path, so a ratio under a word that names no role is refused where it is.
+SceneResult scene_from(const JsonField& field) {
+  const json& j = field.value();
+  SceneResult s;
   s.entry = j.at("scene").get<SuiteScene>();
   s.scene_sha256 = j.at("scene_sha256").get<std::string>();
   s.status = word_at(j, "status", parse_scene_status, "scenes.status");
@@ -152,7 +159,7 @@ void from_json(const json& j, SceneResult& s) {
   if (j.contains("partial_round")) {
     s.runs.partial_round = j.at("partial_round").get<std::map<std::string, RunRecord>>();
   }
-  s.ratios = j.at("ratios").get<std::map<std::string, RatioSummary>>();
+  s.ratios = typed_fields::by_role(field.member("ratios"), typed_fields::record_of<RatioSummary>);
   if (const json& change = j.at("change"); !change.is_null()) {
     s.change = change.get<ChangeSummary>();
     s.change_verdict = word_at(change, "verdict", change_verdict_named, "change.verdict");
@@ -161,7 +168,10 @@ void from_json(const json& j, SceneResult& s) {
   if (const auto found = j.find("explanation"); found != j.end()) {
     s.explanation = found->get<Explanation>();
   }
+  return s;
 }
+
+}  // namespace
 
 void to_json(json& j, const RevisionRecord& r) {
   j = json{
@@ -206,7 +216,7 @@ void from_json(const json& j, BaselineRecord& b) {
 }
 
 const RatioSummary* SceneResult::ratio(Role role) const {
-  const auto found = ratios.find(role_name(role));
+  const auto found = ratios.find(role);
   return found == ratios.end() ? nullptr : &found->second;
 }
 
@@ -231,7 +241,7 @@ nlohmann::json to_json(const ResultsDocument& d) {
          {"settings", to_json(d.settings)},
          {"revisions", d.revisions},
          {"scenes", d.scenes},
-         {"scores", d.scores}};
+         {"scores", typed_fields::role_object(d.scores, typed_fields::record_json<SuiteScore>)}};
   if (d.scaling) j["scaling"] = to_json(*d.scaling);
   return j;
 }
@@ -279,8 +289,10 @@ ResultsDocument results_from_json(const nlohmann::json& j, const std::string& or
     const JsonField root(j, "$");
     d.settings = settings_from_json(root.member("settings"));
     d.revisions = j.at("revisions").get<std::vector<RevisionRecord>>();
-    d.scenes = j.at("scenes").get<std::vector<SceneResult>>();
-    d.scores = j.at("scores").get<std::map<std::string, SuiteScore>>();
+    for (const JsonField& scene : root.member("scenes").elements()) {
+      d.scenes.push_back(scene_from(scene));
+    }
+    d.scores = typed_fields::by_role(root.member("scores"), typed_fields::record_of<SuiteScore>);
     if (root.has("scaling") && !j.at("scaling").is_null()) {
       d.scaling = scaling_from_json(root.member("scaling"));
     }

@@ -76,9 +76,12 @@ PowerFit fit_from(const JsonField& j) {
 }
 
 json point_json(const ScalingPoint& p) {
-  json j{{"scene", p.scene_id},        {"size", p.size},
-         {"primitives", p.primitives}, {"baseline_seconds", p.baseline_seconds},
-         {"seconds", p.seconds},       {"ratios", p.ratios}};
+  json j{{"scene", p.scene_id},
+         {"size", p.size},
+         {"primitives", p.primitives},
+         {"baseline_seconds", p.baseline_seconds},
+         {"seconds", role_object(p.seconds, record_json<double>)},
+         {"ratios", role_object(p.ratios, record_json<double>)}};
   if (p.change) j["change"] = *p.change;
   if (p.change_interval)
     j["change_interval"] = {p.change_interval->lower, p.change_interval->upper};
@@ -91,8 +94,8 @@ ScalingPoint point_from(const JsonField& j) {
   p.size = int_of(j.member("size"));
   p.primitives = whole(j.member("primitives"), 0, std::numeric_limits<std::int64_t>::max());
   p.baseline_seconds = number_or_nan(j.member("baseline_seconds"));
-  p.seconds = number_map(j.member("seconds"));
-  p.ratios = number_map(j.member("ratios"));
+  p.seconds = by_role(j.member("seconds"), number_or_nan);
+  p.ratios = by_role(j.member("ratios"), number_or_nan);
   p.change = if_present(j, "change", number_or_nan);
   p.change_interval = if_present(j, "change_interval", interval_from);
   return p;
@@ -143,10 +146,9 @@ ExponentChange change_from(const JsonField& j) {
 json family_json(const FamilyScaling& f) {
   json points = json::array();
   for (const ScalingPoint& p : f.points) points.push_back(point_json(p));
-  json roles = json::object();
-  for (const auto& [role, fits] : f.roles) {
-    roles[role] = json{{"time", fit_json(fits.time)}, {"ratio", fit_json(fits.ratio)}};
-  }
+  const json roles = role_object(f.roles, [](const RoleScaling& fits) {
+    return json{{"time", fit_json(fits.time)}, {"ratio", fit_json(fits.ratio)}};
+  });
   json j{{"family", f.family},
          {"series_id", f.series_id},
          {"points", points},
@@ -162,11 +164,9 @@ FamilyScaling family_from(const JsonField& j) {
   f.series_id = j.member("series_id").as_string();
   for (const JsonField& p : j.member("points").elements()) f.points.push_back(point_from(p));
   f.baseline = fit_from(j.member("baseline"));
-  const JsonField roles = j.member("roles");
-  for (const std::string& role : roles.keys()) {
-    const JsonField fits = roles.member(role);
-    f.roles[role] = RoleScaling{fit_from(fits.member("time")), fit_from(fits.member("ratio"))};
-  }
+  f.roles = by_role(j.member("roles"), [](const JsonField& fits) {
+    return RoleScaling{fit_from(fits.member("time")), fit_from(fits.member("ratio"))};
+  });
   f.change = if_present(j, "change", change_from);
   return f;
 }

@@ -14,6 +14,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/domain.h"
 #include "measure/bootstrap.h"
 #include "measure/change.h"
 
@@ -57,8 +58,8 @@ struct ScalingPoint {
   int size = 0;
   std::int64_t primitives = 0;
   double baseline_seconds = 0.0;            // median over rounds
-  std::map<std::string, double> seconds;    // by role (tracer; base, head): median over rounds
-  std::map<std::string, double> ratios;     // by role: the normalized ratio
+  std::map<Role, double> seconds;           // by role (tracer; base, head): median over rounds
+  std::map<Role, double> ratios;            // by role: the normalized ratio
   std::optional<double> change;             // compare: head against base, +0.05 = 5% slower
   std::optional<Interval> change_interval;  // compare: its 95% interval (measure/change.h)
 };
@@ -97,7 +98,7 @@ struct FamilyScaling {
   std::string series_id;  // of the family's sizes for the measured revision (results/series.h)
   std::vector<ScalingPoint> points;  // by size
   PowerFit baseline;
-  std::map<std::string, RoleScaling> roles;
+  std::map<Role, RoleScaling> roles;
   std::optional<ExponentChange> change;
 };
 

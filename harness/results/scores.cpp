@@ -4,9 +4,9 @@
 
 namespace raygate {
 
-std::map<std::string, SuiteScore> suite_scores(const std::vector<SceneResult>& scenes,
-                                               const std::vector<Role>& roles) {
-  std::map<std::string, SuiteScore> scores;
+std::map<Role, SuiteScore> suite_scores(const std::vector<SceneResult>& scenes,
+                                        const std::vector<Role>& roles) {
+  std::map<Role, SuiteScore> scores;
   for (const Role role : roles) {
     std::vector<std::vector<RoundSample>> per_scene;
     for (const SceneResult& scene : scenes) {
@@ -14,7 +14,7 @@ std::map<std::string, SuiteScore> suite_scores(const std::vector<SceneResult>& s
         per_scene.push_back(round_samples(scene.runs.rounds, role));
       }
     }
-    if (!per_scene.empty()) scores[role_name(role)] = suite_score(per_scene);
+    if (!per_scene.empty()) scores[role] = suite_score(per_scene);
   }
   return scores;
 }

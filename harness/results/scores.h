@@ -5,7 +5,6 @@
 #pragma once
 
 #include <map>
-#include <string>
 #include <vector>
 
 #include "results/results.h"
@@ -13,9 +12,8 @@
 namespace raygate {
 
 // By role (each of `roles` with at least one measured scene); scenes in the order given.
-// Keyed by the role's word, as the document's "scores" are.
-std::map<std::string, SuiteScore> suite_scores(const std::vector<SceneResult>& scenes,
-                                               const std::vector<Role>& roles);
+std::map<Role, SuiteScore> suite_scores(const std::vector<SceneResult>& scenes,
+                                        const std::vector<Role>& roles);
 
 // The roles a document's scores are over: its revisions' roles (tracer; base and head).
 std::vector<Role> scored_roles(const ResultsDocument& document);

@@ -1,14 +1,18 @@
-// Reading the typed parts of a results document (settings, scaling) from JSON with the JSONPath
-// of every value (core/json_field.h), so a wrong type names the exact spot: the few shapes those
-// parts use, beyond JsonField's own accessors. Internal to the JSON boundary of results/.
+// Reading the typed parts of a results document (settings, scaling, the maps by role) from JSON
+// with the JSONPath of every value (core/json_field.h), so a wrong type names the exact spot: the
+// few shapes those parts use, beyond JsonField's own accessors. Internal to the JSON boundary of
+// results/.
 #pragma once
 
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "core/domain.h"
 #include "core/json_field.h"
 
 namespace raygate::typed_fields {
@@ -53,11 +57,37 @@ inline std::vector<std::string> string_list(const JsonField& field) {
   return out;
 }
 
-// An object of numbers (or nulls) by key.
-inline std::map<std::string, double> number_map(const JsonField& field) {
-  std::map<std::string, double> out;
-  for (const std::string& key : field.keys()) out[key] = number_or_nan(field.member(key));
+// An object keyed by role words (ratios, scores, scaling fits) as a map by Role: the words
+// exist only here and in role_object. A key that names no role fails at its own path.
+template <typename Read>
+auto by_role(const JsonField& field, Read read)
+    -> std::map<Role, decltype(read(std::declval<const JsonField&>()))> {
+  std::map<Role, decltype(read(std::declval<const JsonField&>()))> out;
+  for (const std::string& word : field.keys()) {
+    const JsonField value = field.member(word);
+    const std::optional<Role> role = parse_role(word);
+    if (!role) value.fail("unknown role \"" + word + "\" (tracer, base, head or baseline)");
+    out.emplace(*role, read(value));
+  }
   return out;
+}
+
+// The inverse: each role's value written under its word.
+template <typename Value, typename Write>
+nlohmann::json role_object(const std::map<Role, Value>& values, Write write) {
+  nlohmann::json out = nlohmann::json::object();
+  for (const auto& [role, value] : values) out[std::string(to_string(role))] = write(value);
+  return out;
+}
+
+// A record with its own nlohmann from_json / to_json (summary_json.h), read or written as is.
+template <typename Value>
+Value record_of(const JsonField& field) {
+  return field.value().get<Value>();
+}
+template <typename Value>
+nlohmann::json record_json(const Value& value) {
+  return value;
 }
 
 }  // namespace raygate::typed_fields

@@ -141,7 +141,7 @@ FamilyScaling analyse_family(const ResultsDocument& document,
   family.baseline =
       fit_points(family.points, [](const ScalingPoint& p) { return p.baseline_seconds; });
   for (const auto& entry : family.points.front().seconds) {
-    const std::string& role = entry.first;
+    const Role role = entry.first;
     RoleScaling fits;
     fits.time =
         fit_points(family.points, [&](const ScalingPoint& p) { return p.seconds.at(role); });

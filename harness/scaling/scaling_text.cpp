@@ -73,8 +73,9 @@ std::vector<std::string> scaling_lines(const ScalingAnalysis& analysis) {
                                 f.points.back().primitives));
     lines.push_back(fmt::format("  {:<16} {}", "baseline", describe_fit(f.baseline)));
     for (const auto& [role, fits] : f.roles) {
-      lines.push_back(fmt::format("  {:<16} {}", role, describe_fit(fits.time)));
-      lines.push_back(fmt::format("  {:<16} {}", role + " ratio", describe_fit(fits.ratio)));
+      lines.push_back(fmt::format("  {:<16} {}", to_string(role), describe_fit(fits.time)));
+      lines.push_back(
+          fmt::format("  {:<16} {}", role_name(role) + " ratio", describe_fit(fits.ratio)));
     }
     if (f.change) lines.push_back("  " + describe_change(f.family, *f.change));
   }

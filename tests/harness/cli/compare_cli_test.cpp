@@ -66,7 +66,7 @@ TEST_F(CompareCli, SlowerHeadRegressesWithItsNumbersInEveryReport) {
   EXPECT_EQ(d.scenes[0].change_verdict, ChangeVerdict::regressed);
   ASSERT_TRUE(d.scenes[0].change);
   EXPECT_GT(d.scenes[0].change->change, 1.0);  // four passes: far more than +100%
-  // The baseline joins the first rounds only (--baseline-rounds, default 6), and the ratio rounds
+  // The baseline joins the first rounds only (--baseline-rounds, default 3), and the ratio rounds
   // at the end that a stored ratio still imprecise gets (pipeline/stored_ratio.h); base and head
   // every one.
   const std::vector<Round>& rounds = d.scenes[0].runs.rounds;

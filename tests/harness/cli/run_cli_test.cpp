@@ -178,8 +178,8 @@ TEST_F(RunCli, MeasuresARevisionIntoACompleteDocument) {
     // An empty golden dir: reported, not failed.
     EXPECT_EQ(s.images[0].verdict, ImageVerdict::missing);
   }
-  ASSERT_TRUE(d.scores.contains("tracer"));
-  EXPECT_EQ(d.scores.at("tracer").scenes, 2u);
+  ASSERT_TRUE(d.scores.contains(Role::tracer));
+  EXPECT_EQ(d.scores.at(Role::tracer).scenes, 2u);
   EXPECT_TRUE(has(r.out, "tetra")) << r.out;
   EXPECT_TRUE(has(r.out, "results: " + (dir_.path() / "r.json").string())) << r.out;
 }

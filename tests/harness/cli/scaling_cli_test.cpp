@@ -118,8 +118,8 @@ TEST_F(ScalingCli, LinearPrimaryRaysFailTheGateOnTheExponentAndSayByHowMuch) {
   EXPECT_EQ(balls.change->verdict, ChangeVerdict::regressed);
   EXPECT_GT(balls.change->judged().exponent, 0.1);
   // The BVH tracer grows far more slowly than the baseline, which tests every primitive.
-  EXPECT_LT(balls.roles.at("base").time.exponent, balls.baseline.exponent);
-  EXPECT_GT(balls.roles.at("head").time.exponent, balls.roles.at("base").time.exponent);
+  EXPECT_LT(balls.roles.at(Role::base).time.exponent, balls.baseline.exponent);
+  EXPECT_GT(balls.roles.at(Role::head).time.exponent, balls.roles.at(Role::base).time.exponent);
 
   // The same document judged again: a policy that allows the exponent to rise passes it
   // (the per-scene speed verdicts are not `raygate scaling`'s to judge).

@@ -92,8 +92,8 @@ TEST_F(ShardCli, TwoShardsMergeIntoOneDocumentAndAnotherRevisionIsRefused) {
   EXPECT_TRUE(d.complete);
   EXPECT_TRUE(d.shard.empty());
   EXPECT_EQ(scene_ids(d), (std::vector<std::string>{"tetra", "balls"}));
-  ASSERT_TRUE(d.scores.contains("tracer"));
-  EXPECT_EQ(d.scores.at("tracer").scenes, 2u);
+  ASSERT_TRUE(d.scores.contains(Role::tracer));
+  EXPECT_EQ(d.scores.at(Role::tracer).scenes, 2u);
   ASSERT_TRUE(d.settings.merged_shards.has_value());
   EXPECT_EQ(d.settings.merged_shards->size(), 2u);
 

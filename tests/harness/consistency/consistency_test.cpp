@@ -148,7 +148,7 @@ TEST(Consistency, CompareDocumentsUseTheHeadRatio) {
   spec.kind = DocumentKind::compare;
   spec.roles = {Role::base, Role::head};
   ResultsDocument document = make_document(spec);
-  for (SceneResult& scene : document.scenes) scene.ratios["base"].ratio = 9.0;
+  for (SceneResult& scene : document.scenes) scene.ratios[Role::base].ratio = 9.0;
   const DocumentRatios d = document_ratios(document, "cmp.json", "A");
   EXPECT_EQ(d.role, Role::head);
   EXPECT_DOUBLE_EQ(d.scenes.at("balls").ratio, 0.5);

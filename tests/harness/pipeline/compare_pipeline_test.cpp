@@ -87,9 +87,9 @@ TEST_F(ComparePipelineTest, ASlowerHeadIsRegressedOnEveryScene) {
   EXPECT_TRUE(std::filesystem::exists(path));
 }
 
-// The baseline joins a scene's first 6 rounds; where base's ratio over them is still wider than
-// +-2% (a tracer whose times wander), the scene gets ratio rounds after the decisions, the
-// baseline in each, up to 12 of them; the change stays judged on the rounds it was decided on.
+// The baseline joins a scene's first 3 rounds; where base's ratio over them is not yet a 95%
+// interval within +-2% and its spread says 12 would make it one, the scene gets ratio rounds
+// after the decisions, the baseline in each, up to 12 of them; the change stays judged on the rounds it was decided on.
 TEST_F(ComparePipelineTest, AnImpreciseStoredRatioGetsRatioRoundsThatLeaveTheVerdict) {
   const std::string base = commit_tracer("2.0", "base");
   const std::string head = commit_tracer("2.4", "head: 20% slower");
@@ -147,7 +147,7 @@ TEST_F(ComparePipelineTest, ATooNoisyStoredRatioGetsNoRatioRoundsAndTheLineSaysW
   EXPECT_TRUE(progress_.lines_with("[ratio ").empty());
   const std::vector<std::string> line = progress_.lines_with("stored ratios");
   ASSERT_EQ(line.size(), 1u);
-  EXPECT_NE(line[0].find("CI within +-2% on 0 of 2 scenes, from 6 baseline rounds"),
+  EXPECT_NE(line[0].find("CI within +-2% on 0 of 2 scenes, from 3 baseline rounds"),
             std::string::npos)
       << line[0];
   EXPECT_NE(line[0].find("baseline rounds would make it +-2%, and ratio rounds stop at 12)"),

@@ -39,7 +39,7 @@ TEST_F(RunPipelineTest, MeasuresEverySceneToTheRatioOfTheCommittedCost) {
     EXPECT_EQ(scene.runs.rounds.size(), context_.stopping.min_rounds);
     EXPECT_EQ(scene.runs.stop_reason, "stop_converged");
   }
-  EXPECT_DOUBLE_EQ(document.scores.at("tracer").score, 2.5);
+  EXPECT_DOUBLE_EQ(document.scores.at(Role::tracer).score, 2.5);
   ASSERT_EQ(document.revisions.size(), 1u);
   EXPECT_EQ(document.revisions[0].role, Role::tracer);
   EXPECT_EQ(document.revisions[0].worktree.sha, sha);

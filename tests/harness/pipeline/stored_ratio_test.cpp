@@ -79,7 +79,7 @@ TEST(StoredRatio, TheStopRuleAsksForPrecisionOverTheRoundsTheBaselineJoined) {
 SceneResult measured_scene(const std::string& id, const std::vector<double>& base_seconds) {
   SceneResult scene;
   scene.entry.id = id;
-  scene.ratios["base"] = ratio_of(base_seconds);
+  scene.ratios[Role::base] = ratio_of(base_seconds);
   return scene;
 }
 

@@ -62,8 +62,8 @@ SceneResult scene(const std::string& id, const ChangeSummary& change) {
   s.status = SceneStatus::measured;
   s.runs.stop_reason = "decided";
   s.change = change;
-  s.ratios["base"] = change.base;
-  s.ratios["head"] = change.head;
+  s.ratios[Role::base] = change.base;
+  s.ratios[Role::head] = change.head;
   s.change_verdict = classify_change(change);
   return s;
 }

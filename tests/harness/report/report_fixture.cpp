@@ -52,14 +52,14 @@ SceneResult scene(const std::string& id, double seconds_spent = 20.0) {
 
 void set_change(SceneResult& s, double base, double head, double change, double lo, double hi,
                 ChangeVerdict verdict) {
-  s.ratios["base"] = ratio(base, 0.006);
-  s.ratios["head"] = ratio(head, 0.006);
+  s.ratios[Role::base] = ratio(base, 0.006);
+  s.ratios[Role::head] = ratio(head, 0.006);
   ChangeSummary c;
   c.rounds = 12;
   c.change = change;
   c.change_interval = {lo, hi};
-  c.base = s.ratios["base"];
-  c.head = s.ratios["head"];
+  c.base = s.ratios[Role::base];
+  c.head = s.ratios[Role::head];
   s.change = c;
   s.change_verdict = verdict;
 }
@@ -154,13 +154,13 @@ ResultsDocument make_run_document(const std::filesystem::path& dir) {
   d.revisions.push_back(revision(Role::tracer, "1111111abcdef", "Tracer at main"));
   for (const std::string id : {"balls", "tetra"}) {
     SceneResult s = scene(id);
-    s.ratios["tracer"] = ratio(id == "balls" ? 0.512 : 0.377, 0.008);
+    s.ratios[Role::tracer] = ratio(id == "balls" ? 0.512 : 0.377, 0.008);
     const auto golden = kGolden / (id + ".png");
     s.images.push_back(
         check(Role::tracer, ImageReference::golden, golden, golden, dir, id + "-tracer-golden"));
     d.scenes.push_back(s);
   }
-  d.scores["tracer"] = {2, 0.439, {0.435, 0.443}};
+  d.scores[Role::tracer] = {2, 0.439, {0.435, 0.443}};
   return d;
 }
 
@@ -169,8 +169,8 @@ ResultsDocument make_compare_document(const std::filesystem::path& dir) {
   d.revisions.push_back(revision(Role::base, "2222222abcdef", "Merge pull request #41"));
   d.revisions.push_back(revision(Role::head, "3333333abcdef", kNastySubject));
   d.scenes = {passing(dir), regression(dir), image_failure(dir), unmeasured()};
-  d.scores["base"] = {3, 0.77, {0.76, 0.78}};
-  d.scores["head"] = {3, 0.79, {0.78, 0.80}};
+  d.scores[Role::base] = {3, 0.77, {0.76, 0.78}};
+  d.scores[Role::head] = {3, 0.79, {0.78, 0.80}};
   return d;
 }
 

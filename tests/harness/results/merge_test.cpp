@@ -100,14 +100,14 @@ TEST(Merge, EqualsTheSingleJobThatMeasuredEveryScene) {
     for (std::size_t i = 0; i < d.scenes.size(); ++i) {
       EXPECT_EQ(d.scenes[i].entry.id, whole.scenes[i].entry.id) << "suite order";
     }
-    const SuiteScore& score = d.scores.at("tracer");
-    const SuiteScore& expected = whole.scores.at("tracer");
+    const SuiteScore& score = d.scores.at(Role::tracer);
+    const SuiteScore& expected = whole.scores.at(Role::tracer);
     EXPECT_EQ(score.scenes, expected.scenes);
     EXPECT_DOUBLE_EQ(score.score, expected.score);
     EXPECT_DOUBLE_EQ(score.interval.lower, expected.interval.lower);
     EXPECT_DOUBLE_EQ(score.interval.upper, expected.interval.upper);
     // Neither shard alone has the suite's score.
-    EXPECT_NE(inputs[0].document.scores.at("tracer").score, expected.score);
+    EXPECT_NE(inputs[0].document.scores.at(Role::tracer).score, expected.score);
 
     const GateResult gate = evaluate_gate(d, GatePolicy{});
     const GateResult expected_gate = evaluate_gate(whole, GatePolicy{});
@@ -143,7 +143,7 @@ TEST(Merge, RoundTripsThroughTheJsonReader) {
   const ResultsDocument back = read_results(dir.path() / "merged.json");
   EXPECT_EQ(to_json(back), to_json(d));
   EXPECT_EQ(back.scenes.size(), 5u);
-  EXPECT_EQ(back.scores.at("tracer").scenes, 5u);
+  EXPECT_EQ(back.scores.at(Role::tracer).scenes, 5u);
 }
 
 struct Inconsistency {

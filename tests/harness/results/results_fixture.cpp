@@ -91,7 +91,7 @@ SceneResult scene(const SceneSpec& s, const std::vector<Role>& roles) {
       round.runs[word].max_rss_kib =
           role == Role::head && s.head_peak_kib > 0 ? s.head_peak_kib : s.peak_kib;
     }
-    r.ratios[word] = ratio_summary(s);
+    r.ratios[role] = ratio_summary(s);
     r.images.push_back(image(s, role));
   }
   r.runs.rounds = {round};
@@ -149,7 +149,7 @@ ResultsDocument make_document(const DocumentSpec& spec) {
   for (const Role role : spec.roles) {
     const double n = static_cast<double>(spec.scenes.size());
     const double score = spec.scenes.empty() ? 0.0 : std::exp(log_sum / n);
-    d.scores[role_name(role)] = {spec.scenes.size(), score, {score * 0.99, score * 1.01}};
+    d.scores[role] = {spec.scenes.size(), score, {score * 0.99, score * 1.01}};
   }
   return d;
 }

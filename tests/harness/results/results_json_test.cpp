@@ -87,7 +87,7 @@ SceneResult measured_scene() {
   s.runs.rounds[1].runs["tracer"].reported_seconds = 1.625;
   s.runs.stop_reason = "stop_converged";
   s.runs.seconds_spent = 9.5;
-  s.ratios["tracer"] = make_ratio(0.5);
+  s.ratios[Role::tracer] = make_ratio(0.5);
   s.images.push_back(ImageCheck{Role::tracer,
                                 ImageReference::golden,
                                 "/w/t/warmup-1/image.png",
@@ -200,7 +200,7 @@ ResultsDocument full_document() {
   r.build = make_build();
   d.revisions.push_back(r);
   d.scenes = {measured_scene(), failed_scene(), compared_scene()};
-  d.scores["tracer"] = SuiteScore{2, 0.5, {0.48, 0.52}};
+  d.scores[Role::tracer] = SuiteScore{2, 0.5, {0.48, 0.52}};
   return d;
 }
 
@@ -381,13 +381,13 @@ TEST(ResultsJson, InfinitePsnrIsWrittenAsNullAndReadBackAsInfinity) {
 // lower above upper once written again; found by fuzzing the round trip).
 TEST(ResultsJson, AnUnboundedIntervalSurvivesTheRoundTrip) {
   ResultsDocument d = full_document();
-  d.scenes[0].ratios["tracer"].ratio_interval = {0.5, std::numeric_limits<double>::infinity()};
-  d.scores["tracer"].interval = {-std::numeric_limits<double>::infinity(), 0.52};
+  d.scenes[0].ratios[Role::tracer].ratio_interval = {0.5, std::numeric_limits<double>::infinity()};
+  d.scores[Role::tracer].interval = {-std::numeric_limits<double>::infinity(), 0.52};
   const json j = to_json(d);
   EXPECT_TRUE(j["scenes"][0]["ratios"]["tracer"]["ratio_interval"]["upper"].is_null());
   const ResultsDocument back = results_from_json(j, "memory");
-  EXPECT_TRUE(std::isinf(back.scenes[0].ratios.at("tracer").ratio_interval.upper));
-  EXPECT_LT(back.scores.at("tracer").interval.lower, 0.0);
+  EXPECT_TRUE(std::isinf(back.scenes[0].ratios.at(Role::tracer).ratio_interval.upper));
+  EXPECT_LT(back.scores.at(Role::tracer).interval.lower, 0.0);
   EXPECT_EQ(to_json(back).dump(), j.dump());
 }
 

@@ -171,12 +171,12 @@ ScalingAnalysis one_family() {
                     1,
                     11,
                     0.01,
-                    {{"base", 0.02}, {"head", 0.03}},
-                    {{"base", 2.0}, {"head", 3.0}},
+                    {{Role::base, 0.02}, {Role::head, 0.03}},
+                    {{Role::base, 2.0}, {Role::head, 3.0}},
                     0.5,
                     Interval{0.4, 0.6}}};
   family.baseline = line_fit(1.0);
-  family.roles["base"] = {line_fit(1.0), line_fit(0.0)};
+  family.roles[Role::base] = {line_fit(1.0), line_fit(0.0)};
   ExponentChange change;
   change.fit = line_fit(0.3);
   change.fit.r_squared = std::nan("");  // written null, read back as NaN
@@ -198,7 +198,7 @@ TEST(TypedScaling, ParsedOnceWithTheDocumentAndWrittenBackTheSame) {
   ASSERT_TRUE(balls.change.has_value());
   EXPECT_EQ(balls.change->verdict, ChangeVerdict::regressed);
   EXPECT_TRUE(std::isnan(balls.change->fit.r_squared));
-  EXPECT_EQ(balls.points[0].ratios.at("head"), 3.0);
+  EXPECT_EQ(balls.points[0].ratios.at(Role::head), 3.0);
   EXPECT_EQ(to_json(d).at("scaling").dump(), file.at("scaling").dump());
 }
 

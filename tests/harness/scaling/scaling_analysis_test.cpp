@@ -45,8 +45,8 @@ ResultsDocument compare_document(double extra, int sizes = 4, double (*added)(do
     s.status = SceneStatus::measured;
     const double baseline = 1e-4 * n, base = 0.01 * std::pow(n, 0.2),
                  head = 0.01 * std::pow(n, 0.2 + extra) * (added ? added(n) : 1.0);
-    s.ratios["base"] = ratio(base, baseline);
-    s.ratios["head"] = ratio(head, baseline);
+    s.ratios[Role::base] = ratio(base, baseline);
+    s.ratios[Role::head] = ratio(head, baseline);
     s.change = ChangeSummary{};
     s.change->change = head / base - 1;
     s.change->change_interval = {s.change->change - 0.02, s.change->change + 0.02};
@@ -56,8 +56,8 @@ ResultsDocument compare_document(double extra, int sizes = 4, double (*added)(do
   SceneResult lone;
   lone.entry = {"tetra", "tetra", 3, 64, 64};
   lone.status = SceneStatus::measured;
-  lone.ratios["base"] = ratio(0.1, 0.2);
-  lone.ratios["head"] = ratio(0.1, 0.2);
+  lone.ratios[Role::base] = ratio(0.1, 0.2);
+  lone.ratios[Role::head] = ratio(0.1, 0.2);
   d.scenes.push_back(lone);
   return d;
 }
@@ -70,8 +70,8 @@ TEST(ScalingAnalysisTest, FitsEachFamilyForBaselineRolesAndRatios) {
   ASSERT_EQ(balls.points.size(), 4u);
   EXPECT_EQ(balls.points[3].primitives, 7382);
   EXPECT_NEAR(balls.baseline.exponent, 1.0, 1e-9);
-  EXPECT_NEAR(balls.roles.at("base").time.exponent, 0.2, 1e-9);
-  EXPECT_NEAR(balls.roles.at("head").ratio.exponent, -0.8, 1e-9);
+  EXPECT_NEAR(balls.roles.at(Role::base).time.exponent, 0.2, 1e-9);
+  EXPECT_NEAR(balls.roles.at(Role::head).ratio.exponent, -0.8, 1e-9);
   EXPECT_EQ(balls.series_id.size(), 16u);
 }
 
@@ -130,7 +130,7 @@ TEST(ScalingAnalysisTest, ARunHasNoChange) {
   ResultsDocument d = compare_document(0.0);
   d.kind = DocumentKind::run;
   for (SceneResult& s : d.scenes) {
-    s.ratios = {{"tracer", s.ratios.at("base")}};
+    s.ratios = {{Role::tracer, s.ratios.at(Role::base)}};
     s.change.reset();
   }
   const ScalingAnalysis a = analyse_scaling(d, {}, balls_count);

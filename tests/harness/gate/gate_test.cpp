@@ -260,8 +260,15 @@ TEST(GateVerdict, ImagesFailWarnOrCannotBeChecked) {
   SceneResult scene = compared("gears", 0.0, -0.01, 0.01);
   ImageMetrics metrics;
   metrics.max_error = 0.6;
-  scene.images.push_back(
-      {Role::head, ImageReference::golden, "a.png", "g.png", ImageVerdict::fail, "", metrics, {}});
+  scene.images.push_back({Role::head,
+                          ImageReference::golden,
+                          "a.png",
+                          "g.png",
+                          ImageVerdict::fail,
+                          "",
+                          metrics,
+                          {},
+                          std::nullopt});
   scene.images.push_back({Role::head,
                           ImageReference::base,
                           "a.png",
@@ -269,7 +276,8 @@ TEST(GateVerdict, ImagesFailWarnOrCannotBeChecked) {
                           ImageVerdict::pass,
                           "",
                           ImageMetrics{},
-                          {}});
+                          {},
+                          std::nullopt});
   GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].image, ImageVerdict::fail);
   EXPECT_EQ(gate.exit_code, 1);
@@ -281,7 +289,8 @@ TEST(GateVerdict, ImagesFailWarnOrCannotBeChecked) {
                    ImageVerdict::missing,
                    "no golden image",
                    {},
-                   {}}};
+                   {},
+                   std::nullopt}};
   gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::pass);  // a note for the document, not a warning
   EXPECT_EQ(gate.exit_code, 0);
@@ -293,7 +302,8 @@ TEST(GateVerdict, ImagesFailWarnOrCannotBeChecked) {
                    ImageVerdict::error,
                    "cannot read a.png",
                    {},
-                   {}}};
+                   {},
+                   std::nullopt}};
   gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::unmeasured);
   EXPECT_EQ(gate.exit_code, 3);
@@ -330,9 +340,10 @@ TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
                         ImageVerdict::missing,
                         "no goldens in g (none blessed yet)",
                         {},
-                        {}};
-  const ImageCheck same{Role::head, ImageReference::base, "a.png", "b.png", ImageVerdict::pass,
-                        "",         ImageMetrics{},       {}};
+                        {},
+                        std::nullopt};
+  const ImageCheck same{Role::head, ImageReference::base, "a.png", "b.png",     ImageVerdict::pass,
+                        "",         ImageMetrics{},       {},      std::nullopt};
   std::vector<SceneResult> scenes;
   for (const char* id : {"balls", "gears", "tetra"}) {
     scenes.push_back(compared(id, 0.0, -0.01, 0.01));
@@ -345,7 +356,8 @@ TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
                                   ImageVerdict::missing,
                                   "no golden image for 'tetra'",
                                   {},
-                                  {}});
+                                  {},
+                                  std::nullopt});
   const GateResult gate = evaluate_gate(compare_document(scenes), GatePolicy{});
   EXPECT_EQ(gate.exit_code, 0);
   EXPECT_EQ(gate.count(GateOutcome::pass), 3u);
@@ -398,7 +410,8 @@ TEST(GateVerdict, ABrokenBaseImageCouldNotBeCheckedItIsNotTheChangesFault) {
                    ImageVerdict::fail,
                    "b.png has 12 NaN pixels",
                    {},
-                   {}},
+                   {},
+                   std::nullopt},
                   {Role::head,
                    ImageReference::base,
                    "a.png",
@@ -406,7 +419,8 @@ TEST(GateVerdict, ABrokenBaseImageCouldNotBeCheckedItIsNotTheChangesFault) {
                    ImageVerdict::error,
                    "b.png: cannot compare",
                    {},
-                   {}}};
+                   {},
+                   std::nullopt}};
   const GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.exit_code, 3);
   ASSERT_EQ(gate.scenes.size(), 1u);
@@ -427,7 +441,8 @@ TEST(GateVerdict, AnUnreadableImageFailsWithItsReason) {
                    ImageVerdict::fail,
                    "a.ppm: cannot read image: bad",
                    {},
-                   {}}};
+                   {},
+                   std::nullopt}};
   const GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
   EXPECT_EQ(gate.exit_code, 1);
   ASSERT_EQ(gate.scenes[0].reasons.size(), 1u);

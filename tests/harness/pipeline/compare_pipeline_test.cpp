@@ -48,6 +48,16 @@ class ComparePipelineTest : public PipelineTest {
     return measured;
   }
 
+  // A head 20% slower than base, the tracer's runs wandering within +-`amplitude`, the baseline
+  // in the first kChangeBaselineRounds rounds as compare's default has it.
+  MeasuredDocument compare_slower_head_with_noise(double amplitude) {
+    const std::string base = commit_tracer("2.0", "base");
+    const std::string head = commit_tracer("2.4", "head: 20% slower");
+    set_tracer_noise(wandering(amplitude));
+    context_.schedule.normalizer_rounds = kChangeBaselineRounds;
+    return compare(base, head);
+  }
+
   MeasuredDocument compare(const std::string& base, const std::string& head) {
     const Repository repository = Repository::open(repo_.path().string(), context_.cache_dir);
     return measure_compare({context_,
@@ -89,13 +99,10 @@ TEST_F(ComparePipelineTest, ASlowerHeadIsRegressedOnEveryScene) {
 
 // The baseline joins a scene's first 3 rounds; where base's ratio over them is not yet a 95%
 // interval within +-2% and its spread says 12 would make it one, the scene gets ratio rounds
-// after the decisions, the baseline in each, up to 12 of them; the change stays judged on the rounds it was decided on.
+// after the decisions, the baseline in each, up to 12 of them; the change stays judged on the
+// rounds it was decided on.
 TEST_F(ComparePipelineTest, AnImpreciseStoredRatioGetsRatioRoundsThatLeaveTheVerdict) {
-  const std::string base = commit_tracer("2.0", "base");
-  const std::string head = commit_tracer("2.4", "head: 20% slower");
-  set_tracer_noise(wandering(0.025));
-  context_.schedule.normalizer_rounds = kChangeBaselineRounds;
-  const auto [document, path, unwritten] = compare(base, head);
+  const auto [document, path, unwritten] = compare_slower_head_with_noise(0.025);
   ASSERT_EQ(document.scenes.size(), 2u);
   for (const SceneResult& scene : document.scenes) {
     EXPECT_EQ(scene.change_verdict, ChangeVerdict::regressed) << scene.entry.id;
@@ -136,11 +143,7 @@ TEST_F(ComparePipelineTest, AnImpreciseStoredRatioGetsRatioRoundsThatLeaveTheVer
 // Rounds that differ by several percent would need dozens of baseline rounds for a ratio within
 // +-2%: none are spent, and the closing line says what it would take.
 TEST_F(ComparePipelineTest, ATooNoisyStoredRatioGetsNoRatioRoundsAndTheLineSaysWhy) {
-  const std::string base = commit_tracer("2.0", "base");
-  const std::string head = commit_tracer("2.4", "head: 20% slower");
-  set_tracer_noise(wandering(0.08));
-  context_.schedule.normalizer_rounds = kChangeBaselineRounds;
-  const auto [document, path, unwritten] = compare(base, head);
+  const auto [document, path, unwritten] = compare_slower_head_with_noise(0.08);
   for (const SceneResult& scene : document.scenes) {
     EXPECT_EQ(round_samples(scene.runs.rounds, Role::base).size(), kChangeBaselineRounds);
   }

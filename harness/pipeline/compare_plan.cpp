@@ -17,12 +17,14 @@ namespace raygate {
 
 namespace {
 
-// A Monte Carlo tracer's images: every run of head against every run of base, within noise.
+// A Monte Carlo tracer's images: head's runs against base's, within noise, judged on the runs of
+// the last look the stop rule took (pipeline/image_stop.h), at a look's share of the rates.
 ImageCheck check_noisy_change(const SceneResult& scene, std::size_t family_size, double tolerance,
                               const std::filesystem::path& evidence_dir) {
-  return check_noisy_images(Role::head, ImageReference::base, run_images(scene.runs, Role::head),
-                            run_images(scene.runs, Role::base),
-                            noisy_thresholds_for(family_size, tolerance), evidence_dir,
+  const SceneRuns looked = image_look_runs(scene.runs);
+  return check_noisy_images(Role::head, ImageReference::base, run_images(looked, Role::head),
+                            run_images(looked, Role::base),
+                            image_look_thresholds(family_size, tolerance), evidence_dir,
                             scene.entry.id + ".head-vs-base");
 }
 

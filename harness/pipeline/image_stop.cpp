@@ -1,5 +1,6 @@
 #include "pipeline/image_stop.h"
 
+#include <limits>
 #include <utility>
 
 #include "compare/noisy_image_check.h"
@@ -9,15 +10,36 @@ namespace raygate {
 
 std::size_t last_image_look(std::size_t rounds) {
   std::size_t last = 0;
-  for (std::size_t look = 2; look <= rounds; look = (3 * look + 1) / 2) last = look;  // ceil(1.5x)
+  std::size_t looks = 0;
+  for (std::size_t look = 2; look <= rounds && looks < kImageLooks; look = (3 * look + 1) / 2) {
+    last = look;  // the next is ceil(1.5x)
+    ++looks;
+  }
   return last;
 }
 
+NoisyThresholds image_look_thresholds(std::size_t images_in_family, double tolerance) {
+  NoisyThresholds thresholds = noisy_thresholds_for(images_in_family, tolerance);
+  thresholds.alpha /= static_cast<double>(kImageLooks);
+  thresholds.equivalence_alpha /= static_cast<double>(kImageLooks);
+  return thresholds;
+}
+
+SceneRuns image_look_runs(const SceneRuns& runs) {
+  SceneRuns looked;
+  const std::size_t look = last_image_look(runs.rounds.size());
+  looked.rounds.assign(runs.rounds.begin(), runs.rounds.begin() + static_cast<long>(look));
+  return looked;
+}
+
 SceneVerdict noisy_image_verdict(const NoisyImageFamily& family, double tolerance) {
-  const NoisyThresholds thresholds = noisy_thresholds_for(family.images, tolerance);
-  return [thresholds](const std::vector<Round>& rounds) {
+  const NoisyThresholds thresholds = image_look_thresholds(family.images, tolerance);
+  const std::size_t final_look = last_image_look(std::numeric_limits<std::size_t>::max());
+  return [thresholds, final_look](const std::vector<Round>& rounds) {
     const std::size_t look = last_image_look(rounds.size());
     if (look == 0) return false;
+    // Past the last look more runs would not be judged: the image does not keep the scene.
+    if (look == final_look && rounds.size() > look) return true;
     SceneRuns so_far;
     so_far.rounds.assign(rounds.begin(), rounds.begin() + static_cast<long>(look));
     const std::vector<std::filesystem::path> head = run_images(so_far, Role::head);

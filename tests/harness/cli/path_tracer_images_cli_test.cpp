@@ -31,7 +31,7 @@ bool has(const std::string& text, const std::string& part) {
 }
 
 // Tiny on purpose: 48x48 pixels at the tracer's 16 samples per pixel render in a few
-// hundredths of a second, so 8 runs a side cost less than the two builds of a compare.
+// hundredths of a second, so 9 runs a side cost less than the two builds of a compare.
 constexpr const char* kSuite = R"({
   "name": "mc-test",
   "scenes": [
@@ -119,9 +119,9 @@ class PathTracerImages : public ::testing::Test {
             "--warmup",
             "1",
             "--min-rounds",
-            "7",
+            "8",
             "--max-rounds",
-            "7",
+            "8",
             "--timing",
             "cpu"};
   }
@@ -174,7 +174,8 @@ TEST_F(PathTracerImages, NoiseOnlyChangesPassAndBiasedOnesFailSayingWhere) {
       if (!change.biased) {
         EXPECT_EQ(check.verdict, ImageVerdict::pass) << detail;
         EXPECT_TRUE(has(detail, "pass (within the ±1% image tolerance)")) << detail;
-        EXPECT_TRUE(has(detail, "8 vs 8 runs")) << detail;  // a warm-up and 7 rounds
+        // The runs of the last look, 8 rounds (pipeline/image_stop.h); not the warm-up.
+        EXPECT_TRUE(has(detail, "8 vs 8 runs")) << detail;
       }
       if (check.verdict == ImageVerdict::fail) {
         any_failed = true;
@@ -197,11 +198,11 @@ TEST_F(PathTracerImages, GoldensStoreTheRunsStatisticsAndJudgeWithinNoise) {
   const CliRun bless =
       run_raygate({"golden", "bless", "--from-run", "first.json", "--golden-dir", "goldens"}, dir_);
   ASSERT_EQ(bless.exit_code, 0) << bless.out;
-  EXPECT_TRUE(has(bless.out, "mean and variance of 8 runs")) << bless.out;
+  EXPECT_TRUE(has(bless.out, "mean and variance of 9 runs")) << bless.out;  // a warm-up and 8 rounds
   const GoldenManifest manifest = load_golden_manifest(dir_.path() / "goldens");
   ASSERT_EQ(manifest.entries.size(), 2u);
   ASSERT_EQ(manifest.noise.count("balls"), 1u);
-  EXPECT_EQ(manifest.noise.at("balls").runs, 8);
+  EXPECT_EQ(manifest.noise.at("balls").runs, 9);
   EXPECT_TRUE(fs::exists(dir_.path() / "goldens" / "balls.variance.exr"));
 
   // Other seeds (another commit's stream salt): the same picture within noise.

@@ -198,7 +198,8 @@ TEST_F(PathTracerImages, GoldensStoreTheRunsStatisticsAndJudgeWithinNoise) {
   const CliRun bless =
       run_raygate({"golden", "bless", "--from-run", "first.json", "--golden-dir", "goldens"}, dir_);
   ASSERT_EQ(bless.exit_code, 0) << bless.out;
-  EXPECT_TRUE(has(bless.out, "mean and variance of 9 runs")) << bless.out;  // a warm-up and 8 rounds
+  EXPECT_TRUE(has(bless.out, "mean and variance of 9 runs"))
+      << bless.out;  // a warm-up and 8 rounds
   const GoldenManifest manifest = load_golden_manifest(dir_.path() / "goldens");
   ASSERT_EQ(manifest.entries.size(), 2u);
   ASSERT_EQ(manifest.noise.count("balls"), 1u);

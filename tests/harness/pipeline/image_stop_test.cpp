@@ -125,9 +125,9 @@ enum class Looks { shared, full_level };
 std::array<int, 4> sequential(std::array<double, 3> factor, Looks looks, int trials,
                               std::mt19937_64& rng) {
   const int max_runs = static_cast<int>(last_image_look(1000));
-  const NoisyThresholds thresholds =
-      looks == Looks::shared ? image_look_thresholds(6, kDefaultImageTolerance)
-                             : noisy_thresholds_for(6, kDefaultImageTolerance);
+  const NoisyThresholds thresholds = looks == Looks::shared
+                                         ? image_look_thresholds(6, kDefaultImageTolerance)
+                                         : noisy_thresholds_for(6, kDefaultImageTolerance);
   std::array<int, 4> counts{};  // pass, fail, still inconclusive; runs
   for (int trial = 0; trial < trials; ++trial) {
     SimulatedScene scene(factor);

@@ -8,6 +8,7 @@
 
 #include "compare/image_compare.h"
 #include "compare/noisy_image_files.h"
+#include "compare/run_folder.h"
 #include "core/error.h"
 
 namespace raygate {
@@ -87,6 +88,11 @@ std::optional<ImageCheck> unusable_actual(ImageCheck check,
     return check;
   }
   for (const std::filesystem::path& image : actual) {
+    if (std::optional<std::string> gone = vanished_run_folder(image)) {
+      check.verdict = ImageVerdict::error;  // could not be checked: exit 3, not a regression
+      check.error = std::move(*gone);
+      return check;
+    }
     if (std::optional<std::string> problem = broken_image(image)) {
       check.verdict = ImageVerdict::fail;
       check.error = std::move(*problem);
@@ -111,7 +117,10 @@ ImageCheck judged(ImageCheck check, const std::vector<std::filesystem::path>& ac
   try {
     actual = stats_of_images(actual_images);
   } catch (const Error& e) {
-    check.verdict = ImageVerdict::fail;
+    // Read a moment ago: a folder deleted since makes the check impossible, not failed.
+    const auto gone = std::find_if(actual_images.begin(), actual_images.end(),
+                                   [](const auto& image) { return vanished_run_folder(image); });
+    check.verdict = gone == actual_images.end() ? ImageVerdict::fail : ImageVerdict::error;
     check.error = e.what();
     return check;
   }

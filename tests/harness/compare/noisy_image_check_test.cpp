@@ -101,6 +101,21 @@ TEST(NoisyImageCheck, AnUnreadableReferenceIsAnError) {
   EXPECT_NE(check.error.find("base0.exr: cannot read image"), std::string::npos) << check.error;
 }
 
+// A run folder deleted while raygate ran (the sweep of 2026-11-28 found the Monte Carlo check
+// called it a regression, exit 1): the check could not be made, verdict error (exit 3).
+TEST(NoisyImageCheck, ARunFolderDeletedWhileMeasuringIsAnErrorNotAFailure) {
+  const TempDir dir;
+  std::mt19937_64 rng(59);
+  fs::create_directories(dir.path() / "runs");
+  const std::vector<fs::path> head = renders(dir.path() / "runs", "head", 3, 1.0, rng);
+  const std::vector<fs::path> base = renders(dir.path(), "base", 3, 1.0, rng);
+  fs::remove_all(dir.path() / "runs");
+  const ImageCheck check = check_noisy_images(Role::head, ImageReference::base, head, base,
+                                              noisy_thresholds_for(1), dir.path(), "s");
+  EXPECT_EQ(check.verdict, ImageVerdict::error) << check_detail(check);
+  EXPECT_NE(check.error.find("the run's folder is gone"), std::string::npos) << check.error;
+}
+
 TEST(NoisyImageCheck, RunsThatAreAllTheSameImageAreNoted) {
   const TempDir dir;
   std::mt19937_64 rng(59);

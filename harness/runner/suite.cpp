@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
+#include <limits>
 #include <set>
 
 #include "core/error.h"
@@ -26,11 +28,23 @@ void check_keys(const Suite& suite, const json& object, const std::string& where
   }
 }
 
+// A whole number that fits an int, read without wrapping (1e12 read as an int became
+// -727379968, and was reported as that).
+int whole_number(const Suite& suite, const json& value, const std::string& where) {
+  if (!value.is_number_integer()) fail(suite, where, "expected an integer");
+  const bool fits = value.is_number_unsigned()
+                        ? value.get<std::uint64_t>() <=
+                              static_cast<std::uint64_t>(std::numeric_limits<int>::max())
+                        : value.get<std::int64_t>() >= std::numeric_limits<int>::min() &&
+                              value.get<std::int64_t>() <= std::numeric_limits<int>::max();
+  if (!fits) fail(suite, where, "expected an integer, found " + value.dump() + " (too large)");
+  return value.get<int>();
+}
+
 int read_int(const Suite& suite, const json& object, const std::string& key,
              const std::string& where) {
   if (!object.contains(key)) return 0;
-  if (!object[key].is_number_integer()) fail(suite, where + "." + key, "expected an integer");
-  return object[key].get<int>();
+  return whole_number(suite, object[key], where + "." + key);
 }
 
 SuiteScene read_scene(const Suite& suite, const json& entry, const std::string& where) {
@@ -54,8 +68,8 @@ SuiteScene read_scene(const Suite& suite, const json& entry, const std::string& 
     if (!r.is_array() || r.size() != 2 || !r[0].is_number_integer() || !r[1].is_number_integer()) {
       fail(suite, where + ".resolution", "expected [width, height]");
     }
-    s.width = r[0].get<int>();
-    s.height = r[1].get<int>();
+    s.width = whole_number(suite, r[0], where + ".resolution[0]");
+    s.height = whole_number(suite, r[1], where + ".resolution[1]");
     if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384) {
       fail(suite, where + ".resolution", "each side must be in 1..16384");
     }

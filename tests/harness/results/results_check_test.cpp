@@ -136,6 +136,10 @@ const std::vector<BadDocument>& bad_documents() {
        "$.scenes[0].rounds[0].runs.tracer.max_rss_kib", "out of range"},
       {"a zero-sized image", false, [](json& j) { j["scenes"][0]["scene"]["width"] = 0; },
        "$.scenes[0].scene.width", "out of range"},
+      // Read into an int: 10^12 once came out as -727379968 in scaling's message.
+      {"a size too large for an int", false,
+       [](json& j) { j["scenes"][0]["scene"]["size"] = 1000000000000; }, "$.scenes[0].scene.size",
+       "out of range"},
       {"percent over 100", false,
        [](json& j) { j["scenes"][0]["images"][0]["metrics"]["percent_over_fail"] = 250.0; },
        "$.scenes[0].images[0].metrics.percent_over_fail", "out of range"},

@@ -120,6 +120,17 @@ TEST(ConsoleReport, RunShowsRatioWithInterval) {
   EXPECT_EQ(text.find("max slowdown"), std::string::npos) << text;
 }
 
+// The sweep of 2026-11-28: a Monte Carlo run's policy line printed the per-pixel thresholds,
+// while its images were judged within the image tolerance.
+TEST(ConsoleReport, AMonteCarloRunsPolicyLineNamesTheRuleItsImagesWereJudgedBy) {
+  Fixture f(false);
+  f.document.settings.images = ImageKind::monte_carlo;
+  f.document.settings.image_tolerance = 0.02;
+  const std::string text = f.render("console");
+  at(text, "policy: images (Monte Carlo) pass within the ±2% image tolerance");
+  EXPECT_EQ(text.find("image fail over"), std::string::npos) << text;
+}
+
 // Issue 40: the deciding intervals read 90%, 99.5% and 99.33% with nothing saying why. The
 // policy line of every format derives each level from the levels the scenes carry: the
 // significance, each scene's share of the compare's false alarms, Holm's larger share.

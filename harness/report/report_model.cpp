@@ -7,6 +7,7 @@
 #include <map>
 
 #include "core/format.h"
+#include "report/ratio_interval_text.h"
 
 namespace raygate::report {
 namespace {
@@ -299,8 +300,7 @@ std::string ratio_text(const ResultsDocument& document, const SceneResult& scene
   }
   const RatioSummary* tracer = scene.ratio(Role::tracer);
   if (tracer == nullptr) return "";
-  return fmt::format("{:.3f} [{:.3f}, {:.3f}], {}{}", tracer->ratio, tracer->ratio_interval.lower,
-                     tracer->ratio_interval.upper, count_text(tracer->rounds, "round"),
+  return fmt::format("{}, {}{}", ratio_interval_text(*tracer), count_text(tracer->rounds, "round"),
                      fastest_of_text(scene.runs.rounds));
 }
 

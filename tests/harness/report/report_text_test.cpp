@@ -2,6 +2,8 @@
 // numbers, put failures first with their reasons, and stay within their limits.
 #include <gtest/gtest.h>
 
+#include "report/ratio_interval_text.h"
+
 #include "report_fixture.h"
 
 namespace raygate::test {
@@ -118,6 +120,18 @@ TEST(ConsoleReport, RunShowsRatioWithInterval) {
   // A run is judged on its images: its policy line does not promise a slowdown limit.
   at(text, "policy: image fail over 0.004 on more than 0.02% of pixels, warn over 0.004");
   EXPECT_EQ(text.find("max slowdown"), std::string::npos) << text;
+}
+
+// The sweep of 2026-11-28: one round's ratio was shown as a zero-width "95% CI".
+TEST(ConsoleReport, ARatioFromOneRoundHasNoInterval) {
+  RatioSummary ratio;
+  ratio.ratio = 0.94;
+  ratio.ratio_interval = {0.94, 0.94};
+  ratio.rounds = 1;
+  EXPECT_EQ(ratio_interval_text(ratio), "0.940 (1 round: no interval)");
+  ratio.rounds = 2;
+  ratio.ratio_interval = {0.9, 0.98};
+  EXPECT_EQ(ratio_interval_text(ratio), "0.940 [0.900, 0.980]");
 }
 
 // The sweep of 2026-11-28: a Monte Carlo run's policy line printed the per-pixel thresholds,

@@ -1,6 +1,6 @@
 #include "gate/verdict.h"
 
-#include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <set>
@@ -171,6 +171,22 @@ bool failed_growth(const GateResult& result) {
                      [](const SceneGate& g) { return g.outcome == GateOutcome::fail; });
 }
 
+// A policy's scene overrides that name no scene of the document: a misspelt id has no effect,
+// which would otherwise go unsaid (the sweep of 2026-11-28); a shard's document names them too.
+std::optional<std::string> unused_overrides_note(const ResultsDocument& document,
+                                                 const GatePolicy& policy) {
+  std::vector<std::string> unused;
+  for (const auto& [id, scene_policy] : policy.scenes) {
+    const bool used = std::any_of(document.scenes.begin(), document.scenes.end(),
+                                  [&](const SceneResult& s) { return s.entry.id == id; });
+    if (!used) unused.push_back("'" + id + "'");
+  }
+  if (unused.empty()) return std::nullopt;
+  return fmt::format(
+      "the policy's overrides for {} match no scene of this document: no effect here",
+      fmt::join(unused, ", "));
+}
+
 }  // namespace
 
 std::size_t GateResult::count(GateOutcome outcome) const {
@@ -197,6 +213,9 @@ GateResult evaluate_gate(const ResultsDocument& document, const GatePolicy& poli
   result.notes = missing_golden_notes(missing, document);
   if (std::optional<std::string> noise = runner_noise_note(document, policy)) {
     result.notes.push_back(std::move(*noise));
+  }
+  if (std::optional<std::string> unused = unused_overrides_note(document, policy)) {
+    result.notes.push_back(std::move(*unused));
   }
   result.problems = document_problems(document);
   if (result.count(GateOutcome::fail) > 0 || failed_growth(result)) {

@@ -177,6 +177,21 @@ TEST(GateVerdict, AnUndecidedCompareSaysHowNoisyTheRunnerWas) {
                   .notes.empty());
 }
 
+// The sweep of 2026-11-28: a policy's override for a misspelt scene had no effect, unsaid.
+TEST(GateVerdict, APolicyOverrideForNoSceneOfTheDocumentIsNoted) {
+  const ResultsDocument document =
+      compare_document({sequenced("balls", 0.0, {-0.01, 0.01}, 10, 0.004)});
+  GatePolicy policy;
+  policy.scenes["balls"] = policy.defaults;
+  EXPECT_TRUE(evaluate_gate(document, policy).notes.empty());
+  policy.scenes["ballz"] = policy.defaults;
+  const GateResult gate = evaluate_gate(document, policy);
+  ASSERT_EQ(gate.notes.size(), 1u);
+  EXPECT_EQ(gate.notes[0],
+            "the policy's overrides for 'ballz' match no scene of this document: no effect here");
+  EXPECT_EQ(gate.exit_code, 0);
+}
+
 SceneResult failed(const std::string& id, Role role, bool base_ran) {
   SceneResult scene;
   scene.entry.id = id;

@@ -155,8 +155,7 @@ std::optional<std::string> no_golden(const std::filesystem::path& golden_dir,
   if (!same_settings(*entry, rendered)) {
     return "the golden of '" + id + "' in " + golden_dir.string() + " is " +
            describe_settings(*entry) + ", but this suite renders " + describe_settings(rendered) +
-           "; bless goldens for this suite in a directory of their own (raygate golden bless "
-           "--suite SUITE --golden-dir DIR)";
+           "; bless this suite's goldens into a directory of their own (--golden-dir DIR)";
   }
   return std::nullopt;
 }

@@ -154,7 +154,7 @@ std::string verdict_word(int exit_code) {
 
 std::string image_verdict_text(ImageVerdict verdict) {
   // "missing" read as "the image is missing"; what it means is that nobody blessed one yet.
-  if (verdict == ImageVerdict::missing) return "no golden yet";
+  if (verdict == ImageVerdict::missing) return "no golden";
   return std::string(to_string(verdict));
 }
 

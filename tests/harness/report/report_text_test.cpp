@@ -122,6 +122,19 @@ TEST(ConsoleReport, RunShowsRatioWithInterval) {
   EXPECT_EQ(text.find("max slowdown"), std::string::npos) << text;
 }
 
+// The sweep of 2026-11-28: "[-0.7%, +3.0%]" beside UNCHANGED within ±3% (the bound was +2.984%):
+// a bound that would print as the limit, or as zero, gets the digits that tell it apart.
+TEST(ConsoleReport, ABoundNextToTheLimitIsPrintedWithTheDigitsThatTellItApart) {
+  Fixture f(true);
+  for (SceneResult& scene : f.document.scenes) {
+    if (scene.entry.id == "balls") scene.change->change_interval = {-0.007, 0.02984};
+    if (scene.entry.id == "mount") scene.change->change_interval = {0.0004, 0.098};
+  }
+  const std::string text = f.render("console");
+  at(text, "+0.4% [-0.70%, +2.98%]");
+  at(text, "+7.9% [+0.04%, +9.80%]");
+}
+
 // The sweep of 2026-11-28: one round's ratio was shown as a zero-width "95% CI".
 TEST(ConsoleReport, ARatioFromOneRoundHasNoInterval) {
   RatioSummary ratio;

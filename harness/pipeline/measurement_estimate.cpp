@@ -8,6 +8,7 @@
 #include "core/domain.h"
 #include "core/format.h"
 #include "measure/confidence_sequence.h"
+#include "pipeline/calibrate.h"
 
 namespace raygate {
 
@@ -72,6 +73,9 @@ Estimate estimate_measurement(const RoundCost& cost, const EstimateShape& shape,
       const double per_render = cost.tracers_seconds / static_cast<double>(tracer_count);
       e.tracer_render_seconds_to_fit =
           per_render * shape.budget_seconds / (kAdviceMargin * e.total_seconds);
+      // Below what calibrate can size a suite for, a smaller suite is no advice: the budget is
+      // the problem (--max-minutes 1e-300 advised --target-seconds 5e-301).
+      if (e.tracer_render_seconds_to_fit < kMinTargetSeconds) e.tracer_render_seconds_to_fit = 0.0;
     }
   }
   return e;

@@ -107,6 +107,12 @@ int main(int argc, char** argv) {
   }
   cli::refuse_non_finite_numbers(app);
   app.failure_message([](const CLI::App* command, const CLI::Error& e) {
+    // `raygate nosuchcmd` said only "A subcommand is required": name the word it did not know.
+    if (command->get_parent() == nullptr && command->get_subcommands().empty() &&
+        !command->remaining().empty()) {
+      return bounded_message("unknown command '" + raygate::terminal_text(command->remaining()[0]) +
+                             "'\nRun with --help for the commands.\n");
+    }
     return bounded_message(CLI::FailureMessage::simple(command, e));
   });
   try {

@@ -106,7 +106,10 @@ void require_word(const JsonField& field, std::string_view word,
     if (word == k) return;
   }
   std::string list;
-  for (const std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+  for (const std::string_view k : known) {
+    // An allowed empty word is shown as one, not as a trailing ", ".
+    list += (list.empty() ? "" : ", ") + (k.empty() ? std::string("\"\"") : std::string(k));
+  }
   field.fail(fmt::format("unknown value \"{}\" (one of: {})", word, list));
 }
 

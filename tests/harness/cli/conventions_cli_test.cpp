@@ -214,5 +214,15 @@ TEST_F(Conventions, AnEmptyRepoAFolderAsStoreAndAFileAsCacheAreUsageErrors) {
   EXPECT_THAT(pins.err, HasSubstr("--no-pin and --pin exclude each other"));
 }
 
+// The sweep of 2026-11-28: `raygate nosuchcmd` said only "A subcommand is required".
+TEST_F(Conventions, AnUnknownCommandIsNamed) {
+  const CliStreams unknown = run_raygate_streams({"nosuchcmd"}, dir);
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_THAT(unknown.err, HasSubstr("unknown command 'nosuchcmd'"));
+  const CliStreams none = run_raygate_streams({}, dir);
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_THAT(none.err, HasSubstr("A subcommand is required"));
+}
+
 }  // namespace
 }  // namespace raygate::test

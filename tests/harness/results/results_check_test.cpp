@@ -69,7 +69,9 @@ const std::vector<BadDocument>& bad_documents() {
       {"unknown scene status", false, [](json& j) { j["scenes"][1]["status"] = "exploded"; },
        "$.scenes[1].status", "unknown value \"exploded\""},
       {"unknown stop reason", false, [](json& j) { j["scenes"][0]["stop_reason"] = "bored"; },
-       "$.scenes[0].stop_reason", "unknown value \"bored\""},
+       "$.scenes[0].stop_reason",
+       "unknown value \"bored\" (one of: stop_converged, stop_budget_rounds, stop_budget_time, "
+       "failed, continue, \"\")"},
       {"a scene listed twice", false, [](json& j) { j["scenes"].push_back(j["scenes"][0]); },
        "$.scenes[2].scene.id", "scene \"balls\" is listed twice"},
       {"unknown change verdict", true,

@@ -32,12 +32,22 @@ void raise_image(SceneGate& gate, GateOutcome outcome, std::string reason) {
   raise(gate, &gate.image_outcome, outcome, std::move(reason));
 }
 
+// "head: tracer killed by SIGSEGV (log: ...)" when the failure is the process's end; "baseline
+// exited with status 0, but raygate-baseline took no measurable ... (log: ...)" when it ended
+// well and failed after (a tiny run's "exited with status 0: ..." read as if 0 were the problem).
+std::string failure_text(Role role, const RunRecord& run) {
+  if (run.failure.find(run.outcome) != std::string::npos) {
+    return fmt::format("{}: {} (log: {})", to_string(role), run.failure, run.log.string());
+  }
+  return fmt::format("{} {}, but {} (log: {})", to_string(role), run.outcome, run.failure,
+                     run.log.string());
+}
+
 // A crash of head where base ran is the change's doing; anything else failing is not.
 void judge_failure(const ResultsDocument& document, const SceneResult& scene, SceneGate& gate) {
   const RunRecord& run = *scene.runs.failed_run;
   gate.speed = SpeedVerdict::failed;
-  const std::string what = fmt::format("{} {}: {} (log: {})", to_string(scene.runs.failed_role),
-                                       run.outcome, run.failure, run.log.string());
+  const std::string what = failure_text(scene.runs.failed_role, run);
   const bool head_only = is_compare(document.kind) && scene.runs.failed_role == Role::head &&
                          scene.runs.first_run(Role::base) != nullptr;
   raise_speed(gate, head_only ? GateOutcome::fail : GateOutcome::unmeasured,

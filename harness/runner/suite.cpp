@@ -83,6 +83,12 @@ SuiteScene read_scene(const Suite& suite, const json& entry, const std::string& 
   return s;
 }
 
+std::string scene_ids(const Suite& suite) {
+  std::string ids;
+  for (const SuiteScene& s : suite.scenes) ids += (ids.empty() ? "" : ", ") + s.id;
+  return ids;
+}
+
 }  // namespace
 
 Suite load_suite(const std::string& name_or_path, const std::filesystem::path& data_root) {
@@ -138,7 +144,14 @@ std::vector<SuiteScene> select_scenes(const Suite& suite, const std::vector<std:
         found = true;
       }
     }
-    if (!found) throw UsageError("suite '" + suite.name + "' has no scene '" + id + "'");
+    if (!found) {
+      // A name the user typed, echoed back in a few dozen characters (100,000 were 16 KB).
+      const std::string shown =
+          id.size() > 60 ? id.substr(0, 60) + "... (" + std::to_string(id.size()) + " characters)"
+                         : id;
+      throw UsageError("suite '" + suite.name + "' has no scene '" + shown +
+                       "'; its scenes: " + scene_ids(suite));
+    }
   }
   return out;
 }

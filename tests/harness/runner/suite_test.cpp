@@ -142,6 +142,16 @@ TEST(Suite, UnknownSuiteNameAndSceneSelection) {
   const Suite suite = load_suite("ci", RAYGATE_SOURCE_DIR);
   EXPECT_EQ(select_scenes(suite, {"tetra"}).size(), 1u);
   EXPECT_THROW(select_scenes(suite, {"no-such-scene"}), UsageError);
+  // The sweep of 2026-11-28: a 100,000-character --scene was echoed whole (16 KB).
+  try {
+    select_scenes(suite, {std::string(100000, 'x')});
+    FAIL() << "accepted";
+  } catch (const UsageError& e) {
+    const std::string message = e.what();
+    EXPECT_LT(message.size(), 400u) << message;
+    EXPECT_NE(message.find("... (100000 characters)'; its scenes: balls, gears"), std::string::npos)
+        << message;
+  }
 }
 
 }  // namespace

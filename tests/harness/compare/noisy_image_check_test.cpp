@@ -158,6 +158,13 @@ class NoisyGoldenTest : public ::testing::Test {
     write_rgb_image(variance, golden() / "s.variance.exr");
     manifest_.noise["s"].variance_sha256 = sha256_file_hex(golden() / "s.variance.exr");
   }
+  // Every variance times `factor`, the manifest's hash to match.
+  void scale_variance(float factor) {
+    RgbImage variance = read_rgb_image(golden() / "s.variance.exr");
+    for (float& v : variance.rgb) v *= factor;
+    write_rgb_image(variance, golden() / "s.variance.exr");
+    manifest_.noise["s"].variance_sha256 = sha256_file_hex(golden() / "s.variance.exr");
+  }
   TempDir dir_;
   GoldenManifest manifest_;
   std::vector<fs::path> actual_;
@@ -203,6 +210,26 @@ TEST_F(NoisyGoldenTest, AnInflationThatCouldNeverFailIsRefused) {
     EXPECT_EQ(c.verdict, ImageVerdict::error) << factor;
     EXPECT_NE(c.error.find("'s': noise.inflation factor "), std::string::npos) << c.error;
     EXPECT_NE(c.error.find("must lie in [1, 1e+08]"), std::string::npos) << c.error;
+  }
+}
+
+// A variance so large that the golden's own whole-image mean is uncertain by more than the mean
+// (the sweep's x 1e30) cannot tell its picture from black: refused. The golden's error here is
+// about 0.5% of its mean; x 1e4 (about 47%) still judges, x 1e6 (about 470%) does not.
+TEST_F(NoisyGoldenTest, AVarianceTooLargeToTellThePictureFromBlackIsRefused) {
+  scale_variance(1e4f);
+  ImageCheck c = check();
+  EXPECT_NE(c.verdict, ImageVerdict::error) << check_detail(c);
+  for (const float factor : {1e2f, 1e24f}) {  // x 1e6, then x 1e30 in all
+    scale_variance(factor);
+    c = check();
+    EXPECT_EQ(c.verdict, ImageVerdict::error) << factor;
+    EXPECT_NE(c.error.find("s.variance.exr: with this variance the golden's whole-image mean of "
+                           "channel "),
+              std::string::npos)
+        << c.error;
+    EXPECT_NE(c.error.find("could not tell its picture from a black one"), std::string::npos)
+        << c.error;
   }
 }
 

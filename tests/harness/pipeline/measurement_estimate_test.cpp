@@ -92,6 +92,7 @@ TEST(MeasurementEstimate, NoCalibrateAdviceBelowWhatCalibrateCanSizeFor) {
   const Estimate e = estimate_measurement({1.0, 2.0, 1.0}, shape, 14, 2);
   EXPECT_FALSE(e.fits_budget);
   EXPECT_EQ(e.tracer_render_seconds_to_fit, 0.0);
+  EXPECT_EQ(e.shards_needed, 13u);  // every scene its own shard, not 5e300 (UB before, under UBSan)
   const std::vector<std::string> lines = estimate_lines(e, shape, "from test");
   ASSERT_EQ(lines.size(), 2u);
   EXPECT_EQ(lines[1].find("calibrate"), std::string::npos) << lines[1];

@@ -442,8 +442,16 @@ int bound_decimals(const Interval& interval, double threshold) {
 
 std::string change_with_interval(const ChangeSummary& summary, ChangeVerdict verdict,
                                  double threshold) {
-  // Counted in simulated cycles, every count repeated: the change is a fact, not an estimate.
-  if (summary.exact) return signed_percent(summary.change, 3) + " exact (simulated cycles)";
+  // Counted in simulated cycles, every count repeated: the change is a fact, not an estimate;
+  // counts within the tolerance bound it by the runs' extremes.
+  if (summary.exact) {
+    const Interval& bound = summary.change_interval;
+    if (bound.lower == bound.upper) {
+      return signed_percent(summary.change, 3) + " exact (simulated cycles)";
+    }
+    return fmt::format("{} [{}, {}] counted (simulated cycles)", signed_percent(summary.change, 3),
+                       signed_percent(bound.lower, 3), signed_percent(bound.upper, 3));
+  }
   const DecidingInterval decided = deciding_interval(summary, verdict, threshold);
   if (const std::size_t needed = rounds_to_bound(summary, decided); summary.rounds < needed) {
     return fmt::format("{}, no interval yet (needs {} rounds)", signed_percent(summary.change),

@@ -60,8 +60,8 @@ struct ChangeSummary {
   RatioSummary base;
   RatioSummary head;
   MannWhitneyResult mann_whitney;  // a = head's per-round ratios, b = base's
-  // Counted, not sampled (--timing sim, measure/simulated_cost.h): every run of each contender
-  // cost exactly the same, so `change` is exact and its interval a point, however few rounds.
+  // Counted, not sampled (--timing sim, measure/simulated_cost.h): each contender's runs cost the
+  // same (or within 0.25%): `change` is counted, its interval a point (or the runs' extremes).
   bool exact = false;
 };
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include "measure/counted_spread.h"
+
 namespace raygate {
 
 namespace {
@@ -66,13 +68,25 @@ std::optional<ChangeSummary> exact_change(std::span<const CompareRound> rounds) 
     base.push_back(round.base_seconds);
     head.push_back(round.head_seconds);
   }
-  if (!all_equal(baseline) || !all_equal(base) || !all_equal(head)) return std::nullopt;
-  // Every round is the same round, so the median of the log-changes is that round's and the
-  // observed range a point: summarize_change already yields the exact numbers.
+  const double spread =
+      std::max({relative_spread(baseline), relative_spread(base), relative_spread(head)});
+  if (!counts_agree(spread)) return std::nullopt;
   ChangeSummary summary = summarize_change(rounds);
-  summary.change = head.front() / base.front() - 1.0;
-  summary.change_interval = {summary.change, summary.change};
   summary.exact = true;
+  if (spread == 0.0) {
+    // Every round is the same round: the change is a fact and its interval a point.
+    summary.change = head.front() / base.front() - 1.0;
+    summary.change_interval = {summary.change, summary.change};
+    return summary;
+  }
+  // Counts within the tolerance: if no two runs of a contender differ by more than it, each
+  // contender's mean cost lies within the tolerance of its every run, so the change lies between
+  // the runs' extremes widened by the tolerance, whatever two or three runs did not show.
+  const auto [base_low, base_high] = std::minmax_element(base.begin(), base.end());
+  const auto [head_low, head_high] = std::minmax_element(head.begin(), head.end());
+  const double t = kCountedSpreadTolerance;
+  summary.change_interval = {*head_low * (1.0 - t) / (*base_high * (1.0 + t)) - 1.0,
+                             *head_high * (1.0 + t) / (*base_low * (1.0 - t)) - 1.0};
   return summary;
 }
 

@@ -45,10 +45,10 @@ void from_json(const nlohmann::json& json, SimulatedCounters& counters);
 // rounds ((max - min) / min), the spread to report when runs disagree; 0 when all are equal.
 double relative_spread(std::span<const double> costs);
 
-// The exact change of head against base when every contender's cost was identical in every round
-// (at least two rounds: one run proves nothing): change = cost(head) / cost(base) - 1, its
-// interval a point. nullopt when any run differed; the caller then falls back to the statistics
-// of timed rounds (docs/simulated-timing.md).
+// The counted change of head against base when each contender's costs repeated (at least two
+// rounds: one run proves nothing): exactly, cost(head) / cost(base) - 1 with a point interval;
+// within kCountedSpreadTolerance (measure/counted_spread.h), bounded by the runs' extremes. nullopt
+// when they differ more; the caller then uses the statistics of timed rounds (simulated-timing.md).
 std::optional<ChangeSummary> exact_change(std::span<const CompareRound> rounds);
 
 // The change of a compare scene: exact when `counted` (sim mode) and every run repeated its

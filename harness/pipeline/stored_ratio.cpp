@@ -63,6 +63,13 @@ std::string imprecise_text(const SceneResult& scene, const RatioSummary& ratio,
 
 std::string stored_ratio_line(const ResultsDocument& document, const GatePolicy& policy,
                               const std::map<std::string, std::string>& why_by_scene) {
+  // Counted costs (--timing sim) repeat, so two rounds' range bounds the ratio: it is not a
+  // sample's interval, and the fewest rounds a median interval needs do not apply.
+  const bool counted = document.settings.timing_source == TimingSource::simulated;
+  const auto precise = [&](const RatioSummary& ratio, const std::string& scene_id) {
+    if (counted) return ratio.rounds >= 2 && ratio.relative_half_width <= kStoredRatioHalfWidth;
+    return stored_ratio_precise(ratio, stored_ratio_confidence(policy, scene_id));
+  };
   std::size_t measured = 0;
   std::size_t fewest = 0;
   std::size_t most = 0;
@@ -73,7 +80,7 @@ std::string stored_ratio_line(const ResultsDocument& document, const GatePolicy&
     fewest = measured == 0 ? ratio->rounds : std::min(fewest, ratio->rounds);
     most = std::max(most, ratio->rounds);
     ++measured;
-    if (!stored_ratio_precise(*ratio, stored_ratio_confidence(policy, scene.entry.id))) {
+    if (!precise(*ratio, scene.entry.id)) {
       imprecise.push_back(imprecise_text(scene, *ratio, why_by_scene));
     }
   }
@@ -83,6 +90,7 @@ std::string stored_ratio_line(const ResultsDocument& document, const GatePolicy&
       "of {} scenes, from {} baseline rounds",
       100.0 * kStoredRatioHalfWidth, measured - imprecise.size(), measured,
       fewest == most ? fmt::format("{}", most) : fmt::format("{}-{}", fewest, most));
+  if (counted) line += " (counted in simulated cycles: the range of their counts)";
   for (std::size_t i = 0; i < imprecise.size(); ++i) {
     line += (i == 0 ? "; not: " : "; ") + imprecise[i];
   }

@@ -150,9 +150,11 @@ std::string change_bar_svg(const ChangeCell& cell, double threshold, const std::
   std::string note = cell.exact
                          ? "exact (simulated cycles)"
                          : fmt::format("no interval yet (needs {} rounds)", cell.rounds_needed);
-  if (cell.interval && !cell.exact) {
-    note = fmt::format("[{}, {}] {}", signed_percent(interval.lower),
-                       signed_percent(interval.upper), cell.interval_name);
+  if (cell.interval) {
+    const int decimals = cell.exact ? 3 : 1;
+    note = fmt::format("[{}, {}] {}", signed_percent(interval.lower, decimals),
+                       signed_percent(interval.upper, decimals),
+                       cell.exact ? "counted (simulated cycles)" : cell.interval_name);
   }
   out += text(302, y + 18, "svg-interval", note);
   out += text(x(threshold) + 3, 16, "svg-note", "limit " + signed_percent(threshold));

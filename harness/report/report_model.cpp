@@ -191,6 +191,10 @@ std::optional<ChangeCell> change_cell(const SceneResult& scene, const SceneGate&
   cell.verdict = change_verdict_of(gate.speed).value_or(scene.change_verdict);
   if (c.exact) {
     cell.interval_name = "exact";
+    if (c.change_interval.lower != c.change_interval.upper) {  // counts within the tolerance
+      cell.interval = c.change_interval;
+      cell.interval_name = "counted";
+    }
     cell.text = change_with_interval(c, cell.verdict, gate.speed_limit);
     return cell;
   }

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "measure/counted_spread.h"
 
 namespace raygate {
 
@@ -158,13 +159,22 @@ std::string determinism_note(const SceneRuns& runs) {
   }
   if (costs.empty()) return {};
   std::string spreads;
+  double widest = 0.0;
   for (const auto& [role, values] : costs) {
     if (const double spread = relative_spread(values); spread > 0.0) {
       spreads += fmt::format("{}{} {:.4g}%", spreads.empty() ? "" : ", ", role, 100 * spread);
+      widest = std::max(widest, spread);
     }
   }
   if (spreads.empty()) return "simulated cycles, counts repeat exactly";
-  return "simulated cycles differ between runs (spread: " + spreads + "): timed statistics";
+  if (counts_agree(widest)) {
+    return fmt::format("simulated cycles repeat within {:g}% (spread: {}): counted",
+                       100 * kCountedSpreadTolerance, spreads);
+  }
+  return fmt::format(
+      "simulated cycles differ between runs by more than {:g}% (spread: {}): timed "
+      "statistics",
+      100 * kCountedSpreadTolerance, spreads);
 }
 
 std::filesystem::path cachegrind_dir(const std::filesystem::path& run_dir) {

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
 #include <vector>
 
 namespace raygate {
@@ -74,11 +75,39 @@ TEST(SimulatedCost, ExactChangeDecidesAfterTwoRounds) {
 
 TEST(SimulatedCost, CountsThatDifferOrOneRoundGiveNoExactChange) {
   EXPECT_FALSE(exact_change(rounds({1000.0}, {1010.0})));
-  EXPECT_FALSE(exact_change(rounds({1000.0, 1000.5}, {1010.0, 1010.0})));
-  EXPECT_FALSE(exact_change(rounds({1000.0, 1000.0}, {1010.0, 1011.0})));
+  EXPECT_FALSE(exact_change(rounds({1000.0, 1003.0}, {1010.0, 1010.0})));  // 0.3% apart
+  EXPECT_FALSE(exact_change(rounds({1000.0, 1000.0}, {1010.0, 1013.0})));
   std::vector<CompareRound> baseline_moved = rounds({1000.0, 1000.0}, {1010.0, 1010.0});
-  baseline_moved[1].baseline_seconds = 1001.0;
+  baseline_moved[1].baseline_seconds = 1003.0;
   EXPECT_FALSE(exact_change(baseline_moved));
+}
+
+// A program with a polling thread (Debian's POV-Ray) repeats its counts to a few hundredths of a
+// percent: counted after two rounds, the change bounded by the runs' extremes widened by the
+// tolerance (0.25%).
+TEST(SimulatedCost, CountsWithinTheToleranceAreBoundedByTheirExtremes) {
+  const auto slower = exact_change(rounds({1000.0, 1000.5}, {1100.0, 1100.2}));
+  ASSERT_TRUE(slower);
+  EXPECT_TRUE(slower->exact);
+  const double t = 0.0025;
+  EXPECT_NEAR(slower->change_interval.lower, 1100.0 * (1 - t) / (1000.5 * (1 + t)) - 1, 1e-12);
+  EXPECT_NEAR(slower->change_interval.upper, 1100.2 * (1 + t) / (1000.0 * (1 - t)) - 1, 1e-12);
+  EXPECT_LT(slower->change_interval.lower, slower->change);
+  EXPECT_GT(slower->change_interval.upper, slower->change);
+  EXPECT_EQ(classify_change(*slower, 0.01), ChangeVerdict::regressed);
+
+  const auto same = exact_change(rounds({1000.0, 1000.4}, {1000.2, 999.9}));
+  ASSERT_TRUE(same);
+  EXPECT_EQ(classify_change(*same, 0.01), ChangeVerdict::unchanged);
+  const std::string text = change_with_interval(*same, ChangeVerdict::unchanged, 0.01);
+  EXPECT_NE(text.find("] counted (simulated cycles)"), std::string::npos) << text;
+
+  // Near the limit the bound reaches across it: no verdict from counts, however many rounds.
+  const auto at_limit = exact_change(rounds({1000.0, 1000.9}, {1010.0, 1010.0}));
+  ASSERT_TRUE(at_limit);
+  EXPECT_LT(at_limit->change_interval.lower, 0.01);
+  EXPECT_GT(at_limit->change_interval.upper, 0.01);
+  EXPECT_EQ(classify_change(*at_limit, 0.01), ChangeVerdict::inconclusive);
 }
 
 TEST(SimulatedCost, RunCostsIdenticalNeedsTwoEqualRounds) {

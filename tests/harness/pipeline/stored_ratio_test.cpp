@@ -99,5 +99,24 @@ TEST(StoredRatio, TheClosingLineCountsThePreciseAndSaysWhyNotForTheRest) {
   EXPECT_EQ(stored_ratio_line(ResultsDocument{}, GatePolicy{}, {}), "");
 }
 
+// Counted costs (--timing sim) repeat: two rounds whose counts agree are a precise ratio, where
+// timed rounds would need six; counts that spread beyond +-2% are still not.
+TEST(StoredRatio, CountedRatiosArePreciseFromTwoAgreeingRounds) {
+  ResultsDocument document;
+  document.settings.timing_source = TimingSource::simulated;
+  document.scenes.push_back(measured_scene("balls", {0.5, 0.50001}));
+  document.scenes.push_back(measured_scene("gears", {0.4, 0.5}));
+  const std::string line = stored_ratio_line(document, GatePolicy{}, {});
+  EXPECT_NE(line.find("CI within +-2% on 1 of 2 scenes, from 2 baseline rounds (counted in "
+                      "simulated cycles"),
+            std::string::npos)
+      << line;
+  EXPECT_EQ(line.find("balls 0.5"), std::string::npos) << line;
+  EXPECT_NE(line.find("not: gears"), std::string::npos) << line;
+  document.settings.timing_source = TimingSource::process;
+  EXPECT_NE(stored_ratio_line(document, GatePolicy{}, {}).find("on 0 of 2 scenes"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace raygate

@@ -129,7 +129,10 @@ TEST(HtmlReport, SimulatedCostsAreCyclesWithoutAMannWhitneyP) {
   Fixture f(true);
   f.document.settings.timing_source = TimingSource::simulated;
   for (SceneResult& scene : f.document.scenes) {
-    if (scene.change) scene.change->exact = true;
+    if (scene.change) {
+      scene.change->exact = true;
+      scene.change->change_interval = {scene.change->change, scene.change->change};
+    }
     for (auto& [role, ratio] : scene.ratios) {
       ratio.baseline_median_seconds = 1760492178.0;
       ratio.tracer_median_seconds = 1284000000.0;
@@ -141,6 +144,14 @@ TEST(HtmlReport, SimulatedCostsAreCyclesWithoutAMannWhitneyP) {
   EXPECT_NE(html.find("baseline 1.76e+09 cycles"), std::string::npos) << html;
   EXPECT_EQ(count(html, "Mann–Whitney"), 0u);
   EXPECT_NE(html.find("exact (simulated cycles)"), std::string::npos);
+  EXPECT_EQ(html.find("counted (simulated cycles)"), std::string::npos);
+
+  // Counts that repeated within the tolerance: the bound is drawn and named.
+  ChangeSummary& first = *f.document.scenes.front().change;
+  first.change_interval = {first.change - 0.0005, first.change + 0.0005};
+  f.gate = evaluate_gate(f.document, f.policy);
+  const std::string counted = f.render("html");
+  EXPECT_NE(counted.find("] counted (simulated cycles)"), std::string::npos) << counted;
 }
 
 // With the baseline in 3 rounds (compare's default), the test on its rounds can never reach

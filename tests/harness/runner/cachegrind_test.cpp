@@ -117,7 +117,11 @@ TEST(Cachegrind, DeterminismNoteNamesTheSpread) {
   EXPECT_EQ(determinism_note(runs), "simulated cycles, counts repeat exactly");
   runs.rounds[1].runs["head"].seconds = 1001.0;
   EXPECT_EQ(determinism_note(runs),
-            "simulated cycles differ between runs (spread: head 0.1%): timed statistics");
+            "simulated cycles repeat within 0.25% (spread: head 0.1%): counted");
+  runs.rounds[1].runs["head"].seconds = 1003.0;
+  EXPECT_EQ(determinism_note(runs),
+            "simulated cycles differ between runs by more than 0.25% (spread: head 0.3%): timed "
+            "statistics");
   EXPECT_EQ(determinism_note(SceneRuns{}), "");
 }
 

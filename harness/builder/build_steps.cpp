@@ -51,11 +51,12 @@ BuildStepRecord run_one(const std::vector<std::string>& argv, const std::filesys
   return step;
 }
 
-// Characters a shell takes literally; anything else gets the argument quoted in messages.
+// Characters a shell takes literally; anything else gets the argument quoted in messages. Braces
+// too, so that an adapter's templates show their placeholders as written ({src}, not '{src}').
 bool shell_safe(const std::string& word) {
   return !word.empty() && std::all_of(word.begin(), word.end(), [](char c) {
     return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
-           std::string_view("-_./=:,+@%").find(c) != std::string_view::npos;
+           std::string_view("-_./=:,+@%{}").find(c) != std::string_view::npos;
   });
 }
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/enum_words.h"
+#include "compare/noisy_image_check.h"  // to_image_verdict: the verdicts' words
 #include "measure/probability.h"
 
 namespace raygate {
@@ -247,19 +247,18 @@ void judge(const std::vector<TileTest>& tests, const NoisyThresholds& thresholds
   else project_samples(whole, thresholds, out);
 }
 
-// The verdicts' words, as documents and reports write them.
-constexpr EnumWords<NoisyVerdict, 3> kVerdictWords{{{NoisyVerdict::pass, "pass"},
-                                                    {NoisyVerdict::fail, "fail"},
-                                                    {NoisyVerdict::inconclusive, "inconclusive"}}};
-
 }  // namespace
 
-std::string_view to_string(NoisyVerdict verdict) {
-  return word_of(kVerdictWords, verdict, "inconclusive");
-}
+// A Monte Carlo verdict is written with the word of the image verdict it becomes, so each word is
+// spelt once (compare/image_verdict.cpp) and images[].monte_carlo.verdict never differs from it.
+std::string_view to_string(NoisyVerdict verdict) { return to_string(to_image_verdict(verdict)); }
 
 std::optional<NoisyVerdict> parse_noisy_verdict(std::string_view word) {
-  return value_of(kVerdictWords, word);
+  for (const NoisyVerdict verdict :
+       {NoisyVerdict::pass, NoisyVerdict::fail, NoisyVerdict::inconclusive}) {
+    if (to_string(verdict) == word) return verdict;
+  }
+  return std::nullopt;
 }
 
 double two_sided_p(double z) { return std::erfc(std::abs(z) / std::sqrt(2.0)); }

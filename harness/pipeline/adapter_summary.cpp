@@ -6,31 +6,12 @@
 #include <vector>
 
 #include "adapter/placeholders.h"
+#include "builder/build_steps.h"
 
 #include "runner/timing/timing_modes.h"
 
 namespace raygate {
 namespace {
-
-// Shell-style quoting for display only (nothing is ever run through a shell): an element with
-// spaces or shell syntax is shown quoted, so the argv boundaries are visible.
-std::string quoted(const std::string& arg) {
-  const bool plain =
-      !arg.empty() && arg.find_first_of(" \t\n'\"\\$`;&|<>()*?![]#~") == std::string::npos;
-  if (plain) return arg;
-  std::string out = "'";
-  for (const char c : arg) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return out + "'";
-}
-
-std::string command_line(const std::vector<std::string>& argv) {
-  std::string out;
-  for (const std::string& arg : argv) {
-    if (!out.empty()) out += ' ';
-    out += quoted(arg);
-  }
-  return out;
-}
 
 std::string timing_line(const Timing& timing) {
   const TimingMode& mode = adapter_timing_mode(timing);
@@ -66,14 +47,14 @@ std::string build_lines(const Adapter& a) {
   if (a.build.empty()) return "  build       (no steps: the tracer is already installed)\n";
   std::string out;
   for (std::size_t i = 0; i < a.build.size(); ++i) {
-    out += fmt::format("  {:<11} {}. {}\n", i == 0 ? "build" : "", i + 1, command_line(a.build[i]));
+    out += fmt::format("  {:<11} {}. {}\n", i == 0 ? "build" : "", i + 1, argv_text(a.build[i]));
   }
   return out + fmt::format("  {:<11} timeout {} for the whole build\n", "",
                            seconds(a.timeouts.build_seconds));
 }
 
 std::string run_lines(const Adapter& a) {
-  std::string out = fmt::format("  run         {}\n", command_line(a.run));
+  std::string out = fmt::format("  run         {}\n", argv_text(a.run));
   out += fmt::format("              timeout {} per run, in {}\n", seconds(a.timeouts.run_seconds),
                      a.cwd);
   if (a.stdin_template) out += fmt::format("  stdin       {}\n", *a.stdin_template);

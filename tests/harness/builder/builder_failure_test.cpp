@@ -255,6 +255,10 @@ TEST(BuilderSteps, StepAfterTheDeadlineDoesNotStart) {
 TEST(BuilderSteps, ArgvTextQuotesWhatAShellWouldSplit) {
   EXPECT_EQ(argv_text({"cmake", "-S", "/a/b", "-DX=1"}), "cmake -S /a/b -DX=1");
   EXPECT_EQ(argv_text({"sh", "-c", "a b", "it's", ""}), "sh -c 'a b' 'it'\\''s' ''");
+  // An adapter's templates as `raygate adapter check` shows them: placeholders as written, shell
+  // syntax quoted.
+  EXPECT_EQ(argv_text({"{src}/run.sh", "-o", "{image}", "$HOME", "a*", "~x", "x^y"}),
+            "{src}/run.sh -o {image} '$HOME' 'a*' '~x' 'x^y'");
 }
 
 }  // namespace

@@ -57,8 +57,8 @@ void add_calibrate_command(CLI::App& command, int& exit_code) {
   add_tracer_options(command, args.measure);
   command.add_option("--rev", args.rev, "revision to time")->capture_default_str();
   command.add_option("--worktree", args.worktree, "time this directory as it is");
-  add_bounded_option(command, "--target-seconds", args.target_seconds, 0.001, 3600.0,
-                     "wall seconds one render of each scene should take")
+  add_bounded_option(command, "--target-seconds", args.target_seconds, kMinTargetSeconds,
+                     kMaxTargetSeconds, "wall seconds one render of each scene should take")
       ->required();
   add_bounded_option(command, "--runs", args.runs, 1, 20,
                      "renders at each of the two sizes timed; the fastest is kept");

@@ -87,6 +87,17 @@ std::vector<Command> commands() {
        cli::add_scaling_command}};
 }
 
+// What a parse error prints: CLI11's words, bounded; `raygate nosuchcmd` said only "A subcommand
+// is required", so the word it did not know is named.
+std::string usage_failure(const CLI::App* command, const CLI::Error& e) {
+  if (command->get_parent() == nullptr && command->get_subcommands().empty() &&
+      !command->remaining().empty()) {
+    return bounded_message("unknown command '" + raygate::terminal_text(command->remaining()[0]) +
+                           "'\nRun with --help for the commands.\n");
+  }
+  return bounded_message(CLI::FailureMessage::simple(command, e));
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -106,9 +117,7 @@ int main(int argc, char** argv) {
     command.add(*app.add_subcommand(command.name, command.help), exit_code);
   }
   cli::refuse_non_finite_numbers(app);
-  app.failure_message([](const CLI::App* command, const CLI::Error& e) {
-    return bounded_message(CLI::FailureMessage::simple(command, e));
-  });
+  app.failure_message(usage_failure);
   try {
     // Before parsing: the command line overrides these (cli/project_config.h).
     cli::apply_project_defaults(

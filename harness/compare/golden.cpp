@@ -4,9 +4,12 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/json_field.h"
 #include "core/json_reader.h"
 #include "core/path_component.h"
 #include "core/replace_directory.h"
@@ -19,17 +22,106 @@ using nlohmann::json;
 
 constexpr const char* kManifestName = "manifest.json";
 
-GoldenNoise read_noise(const json& j, const std::string& where) {
-  GoldenNoise noise;
-  noise.runs = j.at("runs").get<int>();
-  noise.variance_file = j.at("variance").get<std::string>();
-  noise.variance_sha256 = j.at("variance_sha256").get<std::string>();
-  checked_component(noise.variance_file, where + ".noise.variance");
-  for (const json& s : j.at("inflation")) {
-    noise.inflation.push_back({s.at("tile_px").get<int>(), s.at("factor").get<double>()});
+// Past any image a tracer writes (results documents take the same bound).
+constexpr std::int64_t kMaxSide = std::int64_t{1} << 20;
+// Far past any SPD generator's largest size; 0 is the generator's default.
+constexpr std::int64_t kMaxSceneSize = 1'000'000;
+
+// An int field of an entry: whole and within [lowest, highest], so never wrapped or truncated.
+int whole_int(const JsonField& field, std::int64_t lowest, std::int64_t highest) {
+  return static_cast<int>(field.as_whole(lowest, highest));
+}
+
+std::vector<ScaleInflation> read_inflation(const JsonField& field) {
+  std::vector<ScaleInflation> inflation;
+  for (const JsonField& scale : field.elements()) {
+    scale.expect_object({"tile_px", "factor"});
+    const JsonField tile = scale.member("tile_px");
+    const int tile_px = whole_int(tile, 0, kMaxSide);  // 0: the whole image
+    for (const ScaleInflation& seen : inflation) {
+      if (seen.tile_px == tile_px) tile.fail(fmt::format("a second entry for tile_px {}", tile_px));
+    }
+    // The factor's sense (>= 1, not absurd) is golden_noise_problem's: a check error.
+    inflation.push_back({tile_px, scale.member("factor").as_number()});
   }
-  if (noise.runs < 2) throw UsageError(where + ".noise.runs: must be at least 2");
+  return inflation;
+}
+
+GoldenNoise read_noise(const JsonField& field, const std::string& file) {
+  field.expect_object({"runs", "variance", "variance_sha256", "inflation"});
+  GoldenNoise noise;
+  // Any whole number: a count outside 2 to 10^6 is a golden that cannot judge, a check error
+  // like the noise's other nonsense (golden_noise_problem), whichever side it is out on.
+  noise.runs = field.member("runs").as_whole(std::numeric_limits<std::int64_t>::min(),
+                                             std::numeric_limits<std::int64_t>::max());
+  const JsonField variance = field.member("variance");
+  noise.variance_file = checked_component(variance.as_string(), file + ": " + variance.path());
+  noise.variance_sha256 = field.member("variance_sha256").as_string();
+  noise.inflation = read_inflation(field.member("inflation"));
   return noise;
+}
+
+// The file is read, compared and overwritten by bless: it must stay in the golden folder.
+GoldenEntry read_entry(const JsonField& field, const std::string& file) {
+  field.expect_object(
+      {"id", "scene", "size", "width", "height", "sampling", "accel", "file", "sha256", "noise"});
+  const JsonField id = field.member("id");
+  const JsonField image = field.member("file");
+  return {checked_component(id.as_string(), file + ": " + id.path()),
+          field.member("scene").as_string(),
+          whole_int(field.member("size"), 0, kMaxSceneSize),
+          whole_int(field.member("width"), 1, kMaxSide),
+          whole_int(field.member("height"), 1, kMaxSide),
+          field.member("sampling").as_string(),
+          field.member("accel").as_string(),
+          checked_component(image.as_string(), file + ": " + image.path()),
+          field.member("sha256").as_string()};
+}
+
+// One entry per id: find() would take the first and noise the last, mixing two goldens.
+void read_images(const JsonField& images, const std::string& file, GoldenManifest& manifest) {
+  for (const JsonField& field : images.elements()) {
+    GoldenEntry entry = read_entry(field, file);
+    if (manifest.find(entry.id) != nullptr) {
+      field.member("id").fail("duplicate id \"" + entry.id + "\"");
+    }
+    if (field.has("noise")) manifest.noise[entry.id] = read_noise(field.member("noise"), file);
+    manifest.entries.push_back(std::move(entry));
+  }
+}
+
+GoldenProvenance read_provenance(const JsonField& t) {
+  t.expect_object(
+      {"adapter", "adapter_sha256", "revision", "sha", "dirty", "results", "started_at"});
+  return {t.member("adapter").as_string(),   t.member("adapter_sha256").as_string(),
+          t.member("revision").as_string(),  t.member("sha").as_string(),
+          t.member("dirty").as_bool(),       t.member("results").as_string(),
+          t.member("started_at").as_string()};
+}
+
+GoldenManifest read_manifest(const JsonField& doc, const std::string& file) {
+  doc.expect_object({"schema_version", "suite", "baseline", "images", "shared_with", "tracer"});
+  const JsonField version = doc.member("schema_version");
+  if (version.as_whole(std::numeric_limits<std::int64_t>::min(),
+                       std::numeric_limits<std::int64_t>::max()) !=
+      GoldenManifest::kSchemaVersion) {
+    version.fail(fmt::format("schema_version {} is not supported (expected {})",
+                             version.value().dump(), GoldenManifest::kSchemaVersion));
+  }
+  GoldenManifest manifest;
+  manifest.suite = doc.member("suite").as_string();
+  const JsonField baseline = doc.member("baseline");
+  baseline.expect_object({"version", "source_sha256"});
+  manifest.baseline_version = baseline.member("version").as_string();
+  manifest.baseline_source_sha256 = baseline.member("source_sha256").as_string();
+  read_images(doc.member("images"), file, manifest);
+  if (doc.has("shared_with")) {
+    for (const JsonField& name : doc.member("shared_with").elements()) {
+      manifest.shared_with.push_back(name.as_string());
+    }
+  }
+  if (doc.has("tracer")) manifest.tracer = read_provenance(doc.member("tracer"));
+  return manifest;
 }
 
 json write_noise(const GoldenNoise& noise) {
@@ -106,43 +198,19 @@ void GoldenManifest::upsert(const GoldenEntry& entry) {
 
 GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir) {
   const std::filesystem::path path = golden_dir / kManifestName;
-  GoldenManifest manifest;
-  if (!std::filesystem::exists(path)) return manifest;
-  try {
-    const json doc = read_json_file(path);  // duplicate keys refused (core/json_reader.h)
-    if (doc.at("schema_version").get<int>() != GoldenManifest::kSchemaVersion) {
-      throw UsageError(path.string() + ": schema_version " +
-                       std::to_string(doc.at("schema_version").get<int>()) +
-                       " is not supported (expected " +
-                       std::to_string(GoldenManifest::kSchemaVersion) + ")");
-    }
-    manifest.suite = doc.at("suite").get<std::string>();
-    manifest.baseline_version = doc.at("baseline").at("version").get<std::string>();
-    manifest.baseline_source_sha256 = doc.at("baseline").at("source_sha256").get<std::string>();
-    for (const json& e : doc.at("images")) {
-      manifest.entries.push_back({e.at("id"), e.at("scene"), e.at("size"), e.at("width"),
-                                  e.at("height"), e.at("sampling"), e.at("accel"), e.at("file"),
-                                  e.at("sha256")});
-      // The file is read, compared and overwritten by bless: it must stay in the golden folder.
-      const std::string where =
-          path.string() + ": $.images[" + std::to_string(manifest.entries.size() - 1) + "]";
-      checked_component(manifest.entries.back().id, where + ".id");
-      checked_component(manifest.entries.back().file, where + ".file");
-      if (e.contains("noise")) manifest.noise[e.at("id")] = read_noise(e.at("noise"), where);
-    }
-    if (doc.contains("shared_with")) {
-      manifest.shared_with = doc.at("shared_with").get<std::vector<std::string>>();
-    }
-    if (doc.contains("tracer")) {
-      const json& t = doc.at("tracer");
-      manifest.tracer =
-          GoldenProvenance{t.at("adapter"), t.at("adapter_sha256"), t.at("revision"),  t.at("sha"),
-                           t.at("dirty"),   t.at("results"),        t.at("started_at")};
-    }
-  } catch (const json::exception& e) {
-    throw UsageError(path.string() + ": malformed golden manifest: " + e.what());
+  std::error_code ec;
+  if (std::filesystem::exists(golden_dir, ec) && !std::filesystem::is_directory(golden_dir, ec)) {
+    throw UsageError(golden_dir.string() +
+                     " is a file, not a folder: a golden folder holds manifest.json and the "
+                     "images it lists");
   }
-  return manifest;
+  if (!std::filesystem::exists(path)) return GoldenManifest{};
+  const json doc = read_json_file(path);  // duplicate keys refused (core/json_reader.h)
+  try {
+    return read_manifest(JsonField(doc, "$"), path.string());
+  } catch (const FieldError& e) {
+    throw UsageError(path.string() + ": " + e.path() + ": " + e.what());
+  }
 }
 
 void save_golden_manifest(const GoldenManifest& manifest, const std::filesystem::path& golden_dir) {

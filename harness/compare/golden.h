@@ -4,6 +4,7 @@
 // shading differs by design. Goldens change only on request (`golden bless`).
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -29,7 +30,8 @@ struct GoldenEntry {
 // A Monte Carlo tracer's golden (docs/monte-carlo-images.md): the entry's file is the per-pixel
 // mean of `runs` renders with independent seeds, and this is the rest the comparison needs.
 struct GoldenNoise {
-  int runs = 0;
+  // As the manifest says, however absurd: golden_noise_problem() judges it (2 to 10^6).
+  std::int64_t runs = 0;
   std::string variance_file;  // per pixel variance of one run, relative to the golden directory
   std::string variance_sha256;
   std::vector<ScaleInflation> inflation;
@@ -95,7 +97,9 @@ std::optional<std::string> golden_file_problem(const std::filesystem::path& gold
 // entry and the value; nullopt when they make sense.
 std::optional<std::string> golden_noise_problem(const GoldenNoise& noise, const std::string& where);
 
-// A missing manifest yields an empty one; a malformed one is a UsageError naming the file.
+// A missing manifest yields an empty one. A malformed one is a UsageError naming the file and
+// the JSON path: a wrong type, an unknown key, a duplicate id or inflation scale, a whole number
+// out of range. A golden_dir that is a file is a UsageError too.
 GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir);
 // Written atomically, entries sorted by id so diffs stay small.
 void save_golden_manifest(const GoldenManifest& manifest, const std::filesystem::path& golden_dir);

@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "compare/noisy_image_check.h"
+#include "compare/run_folder.h"
 #include "core/error.h"
 
 namespace raygate {
@@ -22,21 +23,6 @@ bool same_settings(const GoldenEntry& golden, const GoldenEntry& rendered) {
   const bool same_sampling = rendered.sampling.empty() || golden.sampling == rendered.sampling;
   return golden.scene == rendered.scene && golden.size == rendered.size && same_resolution &&
          same_sampling;
-}
-
-// An image whose run folder is not there any more: raygate made that folder for the run, so it
-// was deleted while raygate ran (a cleanup job, a full disk's rescue). Nobody can tell what the
-// tracer wrote: the check could not be made (verdict error, exit 3), not a broken image (exit 1).
-std::optional<std::string> vanished_run_folder(const std::filesystem::path& actual) {
-  std::error_code ec;
-  if (actual.empty() || std::filesystem::exists(actual, ec) ||
-      std::filesystem::exists(actual.parent_path(), ec)) {
-    return std::nullopt;
-  }
-  return fmt::format(
-      "{}: the run's folder is gone (deleted while raygate ran?), so its image "
-      "could not be checked",
-      actual.parent_path().string());
 }
 
 // With nothing to compare against, the image is still read: a tracer that exited 0 but wrote
@@ -169,8 +155,7 @@ std::optional<std::string> no_golden(const std::filesystem::path& golden_dir,
   if (!same_settings(*entry, rendered)) {
     return "the golden of '" + id + "' in " + golden_dir.string() + " is " +
            describe_settings(*entry) + ", but this suite renders " + describe_settings(rendered) +
-           "; bless goldens for this suite in a directory of their own (raygate golden bless "
-           "--suite SUITE --golden-dir DIR)";
+           "; bless this suite's goldens into a directory of their own (--golden-dir DIR)";
   }
   return std::nullopt;
 }

@@ -8,6 +8,7 @@
 
 #include "compare/image_compare.h"
 #include "compare/noisy_image_files.h"
+#include "compare/run_folder.h"
 #include "core/error.h"
 
 namespace raygate {
@@ -87,6 +88,11 @@ std::optional<ImageCheck> unusable_actual(ImageCheck check,
     return check;
   }
   for (const std::filesystem::path& image : actual) {
+    if (std::optional<std::string> gone = vanished_run_folder(image)) {
+      check.verdict = ImageVerdict::error;  // could not be checked: exit 3, not a regression
+      check.error = std::move(*gone);
+      return check;
+    }
     if (std::optional<std::string> problem = broken_image(image)) {
       check.verdict = ImageVerdict::fail;
       check.error = std::move(*problem);
@@ -111,7 +117,10 @@ ImageCheck judged(ImageCheck check, const std::vector<std::filesystem::path>& ac
   try {
     actual = stats_of_images(actual_images);
   } catch (const Error& e) {
-    check.verdict = ImageVerdict::fail;
+    // Read a moment ago: a folder deleted since makes the check impossible, not failed.
+    const auto gone = std::find_if(actual_images.begin(), actual_images.end(),
+                                   [](const auto& image) { return vanished_run_folder(image); });
+    check.verdict = gone == actual_images.end() ? ImageVerdict::fail : ImageVerdict::error;
     check.error = e.what();
     return check;
   }
@@ -142,8 +151,35 @@ std::optional<std::string> first_bad_value(const std::vector<float>& values, int
                      pixel / static_cast<std::size_t>(width), "RGB"[index % 3]);
 }
 
+// A golden whose own noise leaves every channel's whole-image mean uncertain by more than the
+// mean itself (one standard error) cannot tell its picture from a black one, the largest
+// darkening there is: it judges nothing. A sane golden's error is a fraction of a percent; the
+// sweep's variance x 1e30 gave +-4e14 %. Names the channel that comes closest to deciding.
+std::optional<std::string> undecidable_noise(const NoisyImageStats& golden,
+                                             const std::filesystem::path& variance_file) {
+  const TileRect whole = tile_grid(golden.width, golden.height, kWholeImage).front();
+  int best = -1;
+  TileEstimate best_estimate;
+  for (int c = 0; c < 3; ++c) {
+    const TileEstimate e = estimate_tile(golden, whole, c, kWholeImage);
+    if (!(std::sqrt(e.variance_of_mean) > e.mean)) return std::nullopt;  // this channel decides
+    if (best < 0 || std::sqrt(e.variance_of_mean) / e.mean <
+                        std::sqrt(best_estimate.variance_of_mean) / best_estimate.mean) {
+      best = c;
+      best_estimate = e;
+    }
+  }
+  return fmt::format(
+      "{}: with this variance the golden's whole-image mean of channel {} (its surest) is {:.4g} "
+      "+- {:.3g} over {} runs, uncertain by more than itself: it could not tell its picture from "
+      "a black one, so no comparison against it could fail; bless it again from more runs",
+      variance_file.string(), "RGB"[best], best_estimate.mean,
+      std::sqrt(best_estimate.variance_of_mean), golden.runs);
+}
+
 // A golden's statistics that could never fail a comparison (a NaN or negative variance makes
-// every test's noise NaN or imaginary), or that hold no picture (a NaN mean).
+// every test's noise NaN or imaginary; one too large to tell the picture from black), or that
+// hold no picture (a NaN mean).
 std::optional<std::string> nonsense_statistics(const NoisyImageStats& golden,
                                                const std::filesystem::path& mean_file,
                                                const std::filesystem::path& variance_file) {
@@ -154,7 +190,7 @@ std::optional<std::string> nonsense_statistics(const NoisyImageStats& golden,
   if (auto bad = first_bad_value(golden.mean, golden.width, false)) {
     return mean_file.string() + ": the golden mean must be finite, found " + *bad;
   }
-  return std::nullopt;
+  return undecidable_noise(golden, variance_file);
 }
 
 }  // namespace
@@ -233,8 +269,9 @@ ImageCheck check_noisy_against_stats(Role role, const std::vector<std::filesyste
   if (auto unusable = unusable_actual(check, actual)) return *unusable;
   NoisyImageStats golden;
   try {
-    golden =
-        read_stats_images(mean_file, golden_dir / noise.variance_file, noise.runs, noise.inflation);
+    // noise.runs lies in 2 to 10^6 here: golden_noise_problem() refused it before otherwise.
+    golden = read_stats_images(mean_file, golden_dir / noise.variance_file,
+                               static_cast<int>(noise.runs), noise.inflation);
   } catch (const Error& e) {
     check.error = e.what();
     return check;

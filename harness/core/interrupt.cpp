@@ -2,11 +2,13 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <time.h>
 #include <unistd.h>
 
 #include <array>
 #include <atomic>
 #include <cerrno>
+#include <cstdint>
 #include <cstring>
 
 namespace raygate {
@@ -14,11 +16,13 @@ namespace {
 
 // The handler's state. Globals because a signal handler can reach nothing else; all of it
 // lock-free atomics, which a handler may touch.
-static_assert(std::atomic<int>::is_always_lock_free && std::atomic<pid_t>::is_always_lock_free);
+static_assert(std::atomic<int>::is_always_lock_free && std::atomic<pid_t>::is_always_lock_free &&
+              std::atomic<std::int64_t>::is_always_lock_free);
 constexpr std::size_t kMaxChildGroups = 256;
 // The signals that ask raygate to stop: Ctrl-C, a polite kill, a closed terminal or session.
 constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
 constinit std::atomic<int> g_signal{0};
+constinit std::atomic<std::int64_t> g_signal_ns{0};  // when g_signal was recorded (monotonic)
 constinit std::atomic<int> g_scopes{0};
 constinit std::atomic<int> g_pipe_read{-1};
 constinit std::atomic<int> g_pipe_write{-1};
@@ -31,20 +35,31 @@ void wake_pollers() {
   [[maybe_unused]] const ssize_t ignored = ::write(fd, &byte, 1);  // non-blocking; full is fine
 }
 
-// First signal with someone to act on it: record it. Otherwise (nobody would look, or this is
-// the second signal): kill the children's groups and die of the signal, as without a handler.
-// A repeated SIGHUP is the one exception: see below.
+std::int64_t monotonic_ns() {
+  timespec now{};
+  ::clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe
+  return std::int64_t{now.tv_sec} * 1'000'000'000 + now.tv_nsec;
+}
+
+// Records the first request (decide_stop: record), lets a repeat of it pass (ignore), or, when
+// nobody would look or this is a second signal, kills the children's groups and dies of the
+// signal, as without a handler (end_now). Two threads may run it at once for two copies of one
+// signal: the one whose exchange fails decides again against the one that won.
 extern "C" void on_stop_signal(int sig) {
   const int saved_errno = errno;
-  int none = 0;
-  if (g_scopes.load() > 0 && g_signal.compare_exchange_strong(none, sig)) {
-    wake_pollers();
-    errno = saved_errno;
-    return;
+  const std::int64_t now = monotonic_ns();
+  int recorded = g_signal.load();
+  StopAction action = decide_stop(sig, now, recorded, g_signal_ns.load(), g_scopes.load() > 0);
+  if (action == StopAction::record) {
+    g_signal_ns.store(now);  // before the flag: a repeat that sees the flag sees a time
+    if (g_signal.compare_exchange_strong(recorded, sig)) {
+      wake_pollers();
+      errno = saved_errno;
+      return;
+    }
+    action = decide_stop(sig, now, recorded, g_signal_ns.load(), true);
   }
-  if (sig == SIGHUP && g_signal.load() == SIGHUP) {
-    // A hang-up comes more than once (the shell forwards its own to its jobs, the kernel sends
-    // another when the session leader exits): not a person asking twice, so not the escape.
+  if (action == StopAction::ignore) {
     errno = saved_errno;
     return;
   }
@@ -101,6 +116,7 @@ int interrupt_fd() { return g_pipe_read.load(); }
 
 void request_interrupt(int signal) {
   int none = 0;
+  if (g_signal.load() == 0) g_signal_ns.store(monotonic_ns());
   if (g_signal.compare_exchange_strong(none, signal)) wake_pollers();
 }
 
@@ -117,6 +133,7 @@ std::string signal_name(int signal) {
 
 void clear_interrupt_for_testing() {
   g_signal.store(0);
+  g_signal_ns.store(0);
   if (const int fd = g_pipe_read.load(); fd >= 0) {
     char buffer[64];
     while (::read(fd, buffer, sizeof buffer) > 0) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <limits>
 
 #include "core/suggest.h"
 
@@ -108,6 +109,20 @@ long long JsonField::as_integer() const {
     fail("expected a reasonable integer, found " + describe_json(*value_));
   }
   return value_->get<long long>();
+}
+
+std::int64_t JsonField::as_whole(std::int64_t lowest, std::int64_t highest) const {
+  const nlohmann::json& v = *value_;
+  if (!v.is_number_integer()) fail_type("a whole number");
+  // nlohmann keeps every non-negative number as unsigned; one past int64's range fits no range.
+  constexpr auto kMaxSigned = static_cast<std::uint64_t>(std::numeric_limits<std::int64_t>::max());
+  const bool fits = (!v.is_number_unsigned() || v.get<std::uint64_t>() <= kMaxSigned) &&
+                    v.get<std::int64_t>() >= lowest && v.get<std::int64_t>() <= highest;
+  if (!fits) {
+    fail("expected a whole number from " + std::to_string(lowest) + " to " +
+         std::to_string(highest) + ", found " + describe_json(v));
+  }
+  return v.get<std::int64_t>();
 }
 
 double JsonField::as_number() const {

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <cstdint>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -47,6 +48,10 @@ class JsonField {
   std::string as_string() const;
   bool as_bool() const;
   long long as_integer() const;
+  // A whole number within [lowest, highest]: a fraction, a string or a number out of range
+  // fails with the value found ("expected a whole number from 1 to 8, found number 2.5"), never
+  // converted (a double past the integer's range is undefined behaviour, a wide one wraps).
+  std::int64_t as_whole(std::int64_t lowest, std::int64_t highest) const;
   double as_number() const;  // integer or floating point
 
  private:

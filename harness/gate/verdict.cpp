@@ -1,6 +1,6 @@
 #include "gate/verdict.h"
 
-#include <fmt/core.h>
+#include <fmt/format.h>
 
 #include <algorithm>
 #include <set>
@@ -32,12 +32,22 @@ void raise_image(SceneGate& gate, GateOutcome outcome, std::string reason) {
   raise(gate, &gate.image_outcome, outcome, std::move(reason));
 }
 
+// "head: tracer killed by SIGSEGV (log: ...)" when the failure is the process's end; "baseline
+// exited with status 0, but raygate-baseline took no measurable ... (log: ...)" when it ended
+// well and failed after (a tiny run's "exited with status 0: ..." read as if 0 were the problem).
+std::string failure_text(Role role, const RunRecord& run) {
+  if (run.failure.find(run.outcome) != std::string::npos) {
+    return fmt::format("{}: {} (log: {})", to_string(role), run.failure, run.log.string());
+  }
+  return fmt::format("{} {}, but {} (log: {})", to_string(role), run.outcome, run.failure,
+                     run.log.string());
+}
+
 // A crash of head where base ran is the change's doing; anything else failing is not.
 void judge_failure(const ResultsDocument& document, const SceneResult& scene, SceneGate& gate) {
   const RunRecord& run = *scene.runs.failed_run;
   gate.speed = SpeedVerdict::failed;
-  const std::string what = fmt::format("{} {}: {} (log: {})", to_string(scene.runs.failed_role),
-                                       run.outcome, run.failure, run.log.string());
+  const std::string what = failure_text(scene.runs.failed_role, run);
   const bool head_only = is_compare(document.kind) && scene.runs.failed_role == Role::head &&
                          scene.runs.first_run(Role::base) != nullptr;
   raise_speed(gate, head_only ? GateOutcome::fail : GateOutcome::unmeasured,
@@ -171,6 +181,22 @@ bool failed_growth(const GateResult& result) {
                      [](const SceneGate& g) { return g.outcome == GateOutcome::fail; });
 }
 
+// A policy's scene overrides that name no scene of the document: a misspelt id has no effect,
+// which would otherwise go unsaid (the sweep of 2026-11-28); a shard's document names them too.
+std::optional<std::string> unused_overrides_note(const ResultsDocument& document,
+                                                 const GatePolicy& policy) {
+  std::vector<std::string> unused;
+  for (const auto& [id, scene_policy] : policy.scenes) {
+    const bool used = std::any_of(document.scenes.begin(), document.scenes.end(),
+                                  [&](const SceneResult& s) { return s.entry.id == id; });
+    if (!used) unused.push_back("'" + id + "'");
+  }
+  if (unused.empty()) return std::nullopt;
+  return fmt::format(
+      "the policy's overrides for {} match no scene of this document: no effect here",
+      fmt::join(unused, ", "));
+}
+
 }  // namespace
 
 std::size_t GateResult::count(GateOutcome outcome) const {
@@ -197,6 +223,9 @@ GateResult evaluate_gate(const ResultsDocument& document, const GatePolicy& poli
   result.notes = missing_golden_notes(missing, document);
   if (std::optional<std::string> noise = runner_noise_note(document, policy)) {
     result.notes.push_back(std::move(*noise));
+  }
+  if (std::optional<std::string> unused = unused_overrides_note(document, policy)) {
+    result.notes.push_back(std::move(*unused));
   }
   result.problems = document_problems(document);
   if (result.count(GateOutcome::fail) > 0 || failed_growth(result)) {

@@ -16,7 +16,7 @@ namespace {
 
 constexpr std::size_t kSubjectWidth = 32;
 constexpr std::size_t kRatioWidth = 12;
-constexpr std::size_t kImageWidth = 13;  // "no golden yet"
+constexpr std::size_t kImageWidth = 13;  // "inconclusive" and a space
 constexpr std::size_t kPeakWidth = 9;    // "123.4 MiB"
 
 // Table rows are padded column by column; the last column's padding is not wanted.
@@ -46,7 +46,7 @@ std::string ratio_cell(const HistoryRow& row) {
   return fmt::format("{:.3f} ±{:.1f}%", *row.ratio, half_width * 100.0);
 }
 
-// The stored word in the reports' words ("no golden yet", not "missing").
+// The stored word in the reports' words ("no golden", not "missing").
 std::string image_cell(const HistoryRow& row) {
   if (row.image_verdict.empty()) return "-";
   const std::optional<ImageVerdict> verdict = parse_image_verdict(row.image_verdict);

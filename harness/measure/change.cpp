@@ -414,6 +414,32 @@ std::size_t rounds_to_bound(const ChangeSummary& summary, const DecidingInterval
   return min_values_for_median_sequence((1.0 - interval.confidence) / 2.0);
 }
 
+namespace {
+
+// Decimals for an interval's bounds: one, or more while a bound would print as a line it is
+// judged against, the limit or zero, without being on it ("[-0.7%, +3.0%]" beside UNCHANGED
+// within ±3% read as a contradiction; the bound was +2.984%).
+int bound_decimals(const Interval& interval, double threshold) {
+  const auto prints_as = [](double bound, double line, int decimals) {
+    const double scale = 100.0 * std::pow(10.0, decimals);
+    return std::abs(bound) != line &&
+           std::round(std::abs(bound) * scale) == std::round(line * scale);
+  };
+  const auto misleading = [&](int decimals) {
+    for (const double bound : {interval.lower, interval.upper}) {
+      if (prints_as(bound, std::abs(threshold), decimals) || prints_as(bound, 0.0, decimals)) {
+        return true;
+      }
+    }
+    return false;
+  };
+  int decimals = 1;
+  while (decimals < 3 && misleading(decimals)) ++decimals;
+  return decimals;
+}
+
+}  // namespace
+
 std::string change_with_interval(const ChangeSummary& summary, ChangeVerdict verdict,
                                  double threshold) {
   // Counted in simulated cycles, every count repeated: the change is a fact, not an estimate.
@@ -423,9 +449,10 @@ std::string change_with_interval(const ChangeSummary& summary, ChangeVerdict ver
     return fmt::format("{}, no interval yet (needs {} rounds)", signed_percent(summary.change),
                        needed);
   }
+  const int decimals = bound_decimals(decided.interval, threshold);
   return fmt::format("{} [{}, {}] {}", signed_percent(summary.change),
-                     signed_percent(decided.interval.lower), signed_percent(decided.interval.upper),
-                     interval_name(decided));
+                     signed_percent(decided.interval.lower, decimals),
+                     signed_percent(decided.interval.upper, decimals), interval_name(decided));
 }
 
 }  // namespace raygate

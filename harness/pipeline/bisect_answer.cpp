@@ -40,13 +40,43 @@ ExitCode bisect_exit_code(const BisectResult& result) {
 
 namespace {
 
+// The bad end's own step: what measuring it showed (or why it could not be measured).
+const BisectStepRecord* bad_end_step(const BisectResult& result) {
+  for (const BisectStepRecord& step : result.steps) {
+    if (step.candidate.sha == result.first_bad.sha) return &step;
+  }
+  return nullptr;
+}
+
+// The bad end was judged good: shown not worse, or only not shown worse (INCONCLUSIVE, its
+// point estimate under the limit), which is said as what it is.
+std::string not_worse_text(const BisectResult& result) {
+  const BisectStepRecord* step = bad_end_step(result);
+  if (step == nullptr || !step->change || step->verdict != ChangeVerdict::inconclusive) {
+    return fmt::format("{} is not worse than {} on this scene; nothing to bisect",
+                       result.first_bad.short_sha, result.good.short_sha);
+  }
+  const ChangeSummary& c = *step->change;
+  return fmt::format(
+      "could not tell whether {} is worse than {} on this scene ({:+.1f}% [{:+.1f}%, {:+.1f}%], "
+      "INCONCLUSIVE): nothing to bisect until it is shown worse; measure longer "
+      "(--max-minutes) or on a quieter runner",
+      result.first_bad.short_sha, result.good.short_sha, 100.0 * c.change,
+      100.0 * c.change_interval.lower, 100.0 * c.change_interval.upper);
+}
+
+std::string unmeasurable_text(const BisectResult& result) {
+  const BisectStepRecord* step = bad_end_step(result);
+  return fmt::format("{} could not be measured ({}); nothing to bisect", result.first_bad.short_sha,
+                     step != nullptr && !step->reason.empty() ? step->reason
+                                                              : "it did not build or run");
+}
+
 std::string answer_text(const BisectResult& result) {
   const Revision& first_bad = result.first_bad;
   switch (result.outcome) {
-    case BisectOutcome::bad_not_worse:
-    case BisectOutcome::bad_unmeasurable:
-      return fmt::format("{} is not worse than {} on this scene; nothing to bisect",
-                         first_bad.short_sha, result.good.short_sha);
+    case BisectOutcome::bad_not_worse: return not_worse_text(result);
+    case BisectOutcome::bad_unmeasurable: return unmeasurable_text(result);
     case BisectOutcome::hidden_by_skips:
       return fmt::format(
           "the first bad commit is {} or one of the {} commits before it that "
@@ -60,9 +90,18 @@ std::string answer_text(const BisectResult& result) {
 
 nlohmann::json answer_json(const BisectResult& result) {
   switch (result.outcome) {
-    case BisectOutcome::bad_not_worse:
-    case BisectOutcome::bad_unmeasurable:
-      return {{"kind", "not_worse"}, {"bad", revision_json(result.first_bad)}};
+    case BisectOutcome::bad_not_worse: {
+      const BisectStepRecord* step = bad_end_step(result);
+      const bool undecided = step != nullptr && step->verdict == ChangeVerdict::inconclusive;
+      return {{"kind", undecided ? "not_shown_worse" : "not_worse"},
+              {"bad", revision_json(result.first_bad)}};
+    }
+    case BisectOutcome::bad_unmeasurable: {
+      const BisectStepRecord* step = bad_end_step(result);
+      return {{"kind", "bad_unmeasurable"},
+              {"bad", revision_json(result.first_bad)},
+              {"reason", step != nullptr ? step->reason : std::string()}};
+    }
     case BisectOutcome::hidden_by_skips:
       return {{"kind", "range"},
               {"first_bad", revision_json(result.first_bad)},

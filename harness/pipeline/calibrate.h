@@ -20,6 +20,10 @@
 
 namespace raygate {
 
+// The render times calibrate can size a suite for (--target-seconds), in wall seconds.
+inline constexpr double kMinTargetSeconds = 0.001;
+inline constexpr double kMaxTargetSeconds = 3600.0;
+
 struct CalibrateRequest {
   const MeasureContext& context;  // the adapter, the suite and its selected scenes, the cache
   const BaselineTool& baseline;   // its source hash keys the build cache, as in run

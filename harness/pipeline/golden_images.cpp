@@ -81,6 +81,20 @@ void check_manifest_adapter(const GoldenManifest& manifest, const std::filesyste
   }
 }
 
+// The revision of the role asked for; the roles the document has when it has not that one (a
+// compare's are base and head, a run's is tracer).
+const RevisionRecord& revision_of_role(const ResultsDocument& document,
+                                       const BlessFromRun& request) {
+  if (const RevisionRecord* revision = document.revision(request.role)) return *revision;
+  std::string roles;
+  for (const RevisionRecord& r : document.revisions) {
+    roles += (roles.empty() ? "--role " : " or --role ") + role_name(r.role);
+  }
+  throw UsageError(
+      request.results.string() + " has no revision with role '" + role_name(request.role) + "'" +
+      (roles.empty() ? std::string(": it holds no revisions") : " (use " + roles + ")"));
+}
+
 using ChosenImages = std::vector<std::pair<const SceneResult*, std::filesystem::path>>;
 
 // Each scene's image of `role`, every one checked before any is blessed.
@@ -224,6 +238,70 @@ BaselineGoldens open_baseline_goldens(const std::string& suite_name,
           BaselineTool(tools.baseline)};
 }
 
+namespace {
+
+// Why the baseline has no golden of `id` to verify against. An image there that the manifest
+// does not list is not vouched for (the manifest is the trust anchor): blessing over it would
+// replace a picture nobody looked at, so the words say what is missing instead.
+std::string missing_golden_text(const std::filesystem::path& golden_dir, const std::string& id,
+                                bool listed) {
+  const std::filesystem::path image = golden_dir / (id + ".png");
+  const std::filesystem::path manifest = golden_dir / "manifest.json";
+  if (listed || !std::filesystem::exists(image)) {
+    return "no golden image; create it with: raygate golden bless " + id;
+  }
+  return image.string() + " is there, but " +
+         (std::filesystem::exists(manifest) ? manifest.string() + " has no entry for it"
+                                            : manifest.string() + " is missing") +
+         ", so nothing says it is the golden; restore the manifest (from version control), or "
+         "look at the image before blessing it again";
+}
+
+// Why the golden cannot judge a render, or nullopt: its bytes are not the manifest's, or they
+// are but are no image (an error of the check, exit 3, as every other golden check has it).
+std::optional<std::string> unusable_golden(const std::filesystem::path& golden_dir,
+                                           const GoldenEntry& entry) {
+  if (auto problem = golden_file_problem(golden_dir, entry.file, entry.sha256)) return problem;
+  if (std::string problem = unreadable_image(golden_dir / entry.file); !problem.empty()) {
+    return problem +
+           " (the golden; its SHA-256 is the manifest's, so it was blessed so or both "
+           "were changed)";
+  }
+  return std::nullopt;
+}
+
+void verify_baseline_scene(const BaselineGoldens& goldens, const GoldenManifest& manifest,
+                           const SuiteScene& scene, GoldenVerification& counts,
+                           ProgressSink& progress) {
+  const GoldenEntry* entry = manifest.find(scene.id);
+  if (entry == nullptr || !std::filesystem::exists(goldens.golden_dir / entry->file)) {
+    progress.line(fmt::format("MISSING   {:<12} {}", scene.id,
+                              missing_golden_text(goldens.golden_dir, scene.id, entry != nullptr)));
+    ++counts.missing;
+    return;
+  }
+  if (auto problem = unusable_golden(goldens.golden_dir, *entry)) {
+    progress.line(fmt::format("ERROR     {:<12} {}", scene.id, *problem));
+    ++counts.unverifiable;
+    return;
+  }
+  const BaselineRender render = render_scene(goldens, scene);
+  const ImageMetrics m = compare_images(render.image, goldens.golden_dir / entry->file, {});
+  if (m.identical()) {
+    progress.line(fmt::format("ok        {:<12} identical ({:.2f} s)", scene.id,
+                              render.process.wall_seconds));
+    ++counts.identical;
+    return;
+  }
+  ++counts.different;
+  const std::filesystem::path evidence = goldens.work_dir / "evidence";
+  write_evidence(render.image, goldens.golden_dir / entry->file, evidence, scene.id);
+  progress.line(fmt::format("DIFFERENT {:<12} {}; evidence in {}", scene.id, summarize(m),
+                            evidence.string()));
+}
+
+}  // namespace
+
 GoldenVerification verify_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progress) {
   const GoldenManifest manifest = load_golden_manifest(goldens.golden_dir);
   const std::string current_hash = goldens.baseline.source_hash();
@@ -234,32 +312,7 @@ GoldenVerification verify_baseline_goldens(const BaselineGoldens& goldens, Progr
   }
   GoldenVerification counts;
   for (const SuiteScene& scene : goldens.selected) {
-    const GoldenEntry* entry = manifest.find(scene.id);
-    if (entry == nullptr || !std::filesystem::exists(goldens.golden_dir / entry->file)) {
-      progress.line(
-          fmt::format("MISSING   {:<12} no golden image; create it with: raygate golden bless {}",
-                      scene.id, scene.id));
-      ++counts.missing;
-      continue;
-    }
-    if (auto problem = golden_file_problem(goldens.golden_dir, entry->file, entry->sha256)) {
-      progress.line(fmt::format("ERROR     {:<12} {}", scene.id, *problem));
-      ++counts.unverifiable;
-      continue;
-    }
-    const BaselineRender render = render_scene(goldens, scene);
-    const ImageMetrics m = compare_images(render.image, goldens.golden_dir / entry->file, {});
-    if (m.identical()) {
-      progress.line(fmt::format("ok        {:<12} identical ({:.2f} s)", scene.id,
-                                render.process.wall_seconds));
-      ++counts.identical;
-      continue;
-    }
-    ++counts.different;
-    const std::filesystem::path evidence = goldens.work_dir / "evidence";
-    write_evidence(render.image, goldens.golden_dir / entry->file, evidence, scene.id);
-    progress.line(fmt::format("DIFFERENT {:<12} {}; evidence in {}", scene.id, summarize(m),
-                              evidence.string()));
+    verify_baseline_scene(goldens, manifest, scene, counts, progress);
   }
   return counts;
 }
@@ -304,14 +357,10 @@ namespace {
 const RevisionRecord& blessed_revision(const ResultsDocument& document,
                                        const BlessFromRun& request) {
   const std::string results = request.results.string();
-  const RevisionRecord* revision = document.revision(request.role);
-  if (revision == nullptr) {
-    throw UsageError(results + " has no revision with role '" + role_name(request.role) +
-                     "' (use --role tracer, base or head)");
-  }
-  checked_component(revision->adapter_name,
+  const RevisionRecord& revision = revision_of_role(document, request);
+  checked_component(revision.adapter_name,
                     results + ": revisions[" + role_name(request.role) + "].adapter.name");
-  return *revision;
+  return revision;
 }
 
 // The manifest says where its goldens came from: this run's baseline, tracer and document.
@@ -416,18 +465,14 @@ GoldenVerification verify_goldens_from_run(const BlessFromRun& request,
                                            const std::filesystem::path& evidence_dir,
                                            ProgressSink& progress) {
   const ResultsDocument document = read_results(request.results);
-  const RevisionRecord* revision = document.revision(request.role);
-  if (revision == nullptr) {
-    throw UsageError(request.results.string() + " has no revision with role '" +
-                     role_name(request.role) + "' (use --role tracer, base or head)");
-  }
+  const RevisionRecord& revision = revision_of_role(document, request);
   const std::filesystem::path golden_dir =
       request.golden_dir.empty()
           ? adapter_golden_dir(locate_tools(request.baseline).data_root / "golden",
-                               revision->adapter_name)
+                               revision.adapter_name)
           : request.golden_dir;
   const GoldenManifest manifest = load_golden_manifest(golden_dir);
-  const ImageKind kind = run_image_kind(document, *revision);
+  const ImageKind kind = run_image_kind(document, revision);
   std::string policy_note;
   const GatePolicy policy = recorded_policy(document.settings, policy_note);
   GoldenVerification counts;

@@ -16,9 +16,38 @@ namespace raygate {
 
 namespace {
 
+// A folder option (--cache-dir, --golden-dir): refused when given empty (it would silently
+// mean the current directory or the default) or when it names a file.
+void check_folder_option(const std::string& option, const std::filesystem::path& folder) {
+  if (folder.empty()) throw UsageError(fmt::format("{} is empty: give a directory", option));
+  if (std::error_code error;
+      std::filesystem::exists(folder, error) && !std::filesystem::is_directory(folder, error)) {
+    throw UsageError(fmt::format("{} {}: exists and is not a directory", option, folder.string()));
+  }
+}
+
+// The cache and the folders raygate keeps in it: a file where one of them goes would fail
+// only after building, in the file system's words.
+void check_cache_dir(const std::string& cache_dir) {
+  check_folder_option("--cache-dir", cache_dir);
+  for (const char* kept : {"builds", "repos", "runs", "scenes", "simulated-baseline"}) {
+    const std::filesystem::path folder = std::filesystem::path(cache_dir) / kept;
+    if (std::error_code error;
+        std::filesystem::exists(folder, error) && !std::filesystem::is_directory(folder, error)) {
+      throw UsageError(fmt::format(
+          "--cache-dir {}: {} is a file, not a folder (raygate keeps its {} there); move it "
+          "away or give another --cache-dir",
+          cache_dir, folder.string(), kept));
+    }
+  }
+}
+
 std::filesystem::path pick_golden_dir(const MeasureOptions& args, const ToolPaths& tools,
                                       const Adapter& adapter) {
-  if (!args.golden_dir.empty()) return args.golden_dir;
+  if (args.golden_dir) {
+    check_folder_option("--golden-dir", *args.golden_dir);
+    return *args.golden_dir;
+  }
   // Never the baseline's for another tracer: its shading differs by design (compare/golden.h).
   return adapter_golden_dir(tools.data_root / "golden", adapter.name);
 }
@@ -99,11 +128,7 @@ MeasureContext load_measure_context(const MeasureOptions& args,
   c.suite = load_suite(args.suite, c.tools.data_root);
   c.scenes = select_scenes(c.suite, args.scenes);
   apply_shard(args, c);
-  if (args.cache_dir.empty()) throw UsageError("--cache-dir is empty: give a directory");
-  if (std::error_code error; std::filesystem::exists(args.cache_dir, error) &&
-                             !std::filesystem::is_directory(args.cache_dir, error)) {
-    throw UsageError(fmt::format("--cache-dir {}: exists and is not a directory", args.cache_dir));
-  }
+  check_cache_dir(args.cache_dir);
   c.cache_dir = std::filesystem::absolute(args.cache_dir);
   c.golden_dir = pick_golden_dir(args, c.tools, c.adapter);
   c.schedule.kind = args.schedule == "duet" ? ScheduleKind::duet : ScheduleKind::alternate;

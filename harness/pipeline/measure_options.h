@@ -4,6 +4,7 @@
 // front end only binds its options to these fields (cli/measure_options.h).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,8 +19,9 @@ struct MeasureOptions {
   std::string suite = "ci";
   std::vector<std::string> scenes;
   std::string cache_dir = ".raygate";
-  std::string golden_dir;  // default: the adapter's goldens (compare/golden.h)
-  std::string baseline;    // raygate-baseline override
+  // Not given: the adapter's goldens (compare/golden.h); given empty: refused.
+  std::optional<std::string> golden_dir;
+  std::string baseline;  // raygate-baseline override
   std::string schedule = "alternate";
   std::vector<int> pin_cpus;
   bool no_pin = false;              // --no-pin: not even the default pinning of a round to one CPU

@@ -8,6 +8,7 @@
 #include "core/domain.h"
 #include "core/format.h"
 #include "measure/confidence_sequence.h"
+#include "pipeline/calibrate.h"
 
 namespace raygate {
 
@@ -62,16 +63,20 @@ Estimate estimate_measurement(const RoundCost& cost, const EstimateShape& shape,
       shape.scene_max_seconds <= 0.0 || e.seconds_per_scene <= shape.scene_max_seconds;
   if (shape.budget_seconds > 0.0 && e.total_seconds > shape.budget_seconds) {
     e.fits_budget = false;
-    e.shards_needed =
-        static_cast<std::size_t>(std::ceil(kAdviceMargin * e.total_seconds / shape.budget_seconds));
-    e.shards_needed =
-        std::clamp<std::size_t>(e.shards_needed, 2, std::max<std::size_t>(shape.scenes, 2));
+    // Clamped before it becomes a count: a budget of 1e-300 minutes asks for 5e300 shards, which
+    // no integer holds (UBSan found the cast).
+    const double most = static_cast<double>(std::max<std::size_t>(shape.scenes, 2));
+    e.shards_needed = static_cast<std::size_t>(
+        std::clamp(std::ceil(kAdviceMargin * e.total_seconds / shape.budget_seconds), 2.0, most));
     // Smaller renders shrink every program's run alike (the baseline renders the same smaller
     // pictures), so the tracer's render time scales by the budget's share of the estimate.
     if (tracer_count > 0 && cost.tracers_seconds > 0.0) {
       const double per_render = cost.tracers_seconds / static_cast<double>(tracer_count);
       e.tracer_render_seconds_to_fit =
           per_render * shape.budget_seconds / (kAdviceMargin * e.total_seconds);
+      // Below what calibrate can size a suite for, a smaller suite is no advice: the budget is
+      // the problem (--max-minutes 1e-300 advised --target-seconds 5e-301).
+      if (e.tracer_render_seconds_to_fit < kMinTargetSeconds) e.tracer_render_seconds_to_fit = 0.0;
     }
   }
   return e;

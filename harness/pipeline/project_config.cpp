@@ -55,6 +55,46 @@ bool is_config_file(const std::filesystem::path& file, const std::string& named_
   return regular;
 }
 
+// A file named by --config or RAYGATE_CONFIG must be one; a folder is said to be a folder.
+void require_config_file(const std::filesystem::path& file, const std::string& named_by) {
+  if (is_config_file(file, named_by)) return;
+  std::error_code ec;
+  const bool folder = std::filesystem::is_directory(file, ec);
+  throw UsageError(fmt::format("{}{}: {}", named_by, file.string(),
+                               folder ? "is a directory, not a config file" : "no such file"));
+}
+
+// What CLI11's reader lets through: a quoted value that never closes (the quote would become
+// part of a path) and a key with nothing after its `=` (the built-in default would be used
+// without a word). Each is refused at its file:line:column.
+void check_values(const std::string& text, const std::filesystem::path& file) {
+  std::istringstream lines(text);
+  std::string line;
+  for (int number = 1; std::getline(lines, line); ++number) {
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line[start] == '#' || line[start] == ';' ||
+        line[start] == '[') {
+      continue;
+    }
+    const std::size_t equals = line.find('=');
+    if (equals == std::string::npos || equals <= start) continue;  // CLI11 says what is wrong
+    const std::size_t value = line.find_first_not_of(" \t\r", equals + 1);
+    const std::string key =
+        line.substr(start, line.find_last_not_of(" \t", equals - 1) + 1 - start);
+    if (value == std::string::npos) {
+      throw UsageError(fmt::format("{}:{}: {} has no value; give one, or remove the line",
+                                   file.string(), number, key));
+    }
+    const char quote = line[value];
+    if ((quote == '"' || quote == '\'') && line.find(quote, value + 1) == std::string::npos) {
+      throw UsageError(
+          fmt::format("{}:{}:{}: unterminated string: {} opens with {} and never "
+                      "closes it",
+                      file.string(), number, value + 1, key, quote));
+    }
+  }
+}
+
 }  // namespace
 
 const std::vector<std::string>& project_keys() {
@@ -72,6 +112,7 @@ std::string environment_name(const std::string& key) {
 ProjectDefaults read_project_config(const std::filesystem::path& file) {
   const std::filesystem::path absolute = std::filesystem::absolute(file);
   const std::string text = read_file(absolute);
+  check_values(text, absolute);
   std::istringstream stream(text);
   std::vector<CLI::ConfigItem> items;
   try {
@@ -109,14 +150,10 @@ ProjectDefaults load_project_defaults(const std::string& config_argument,
   ProjectDefaults defaults;
   const char* from_env = getenv("RAYGATE_CONFIG");
   if (!config_argument.empty()) {
-    if (!is_config_file(config_argument, "--config ")) {
-      throw UsageError(fmt::format("--config {}: no such file", config_argument));
-    }
+    require_config_file(config_argument, "--config ");
     defaults = read_project_config(config_argument);
   } else if (from_env != nullptr && *from_env != '\0') {
-    if (!is_config_file(from_env, "RAYGATE_CONFIG=")) {
-      throw UsageError(fmt::format("RAYGATE_CONFIG={}: no such file", from_env));
-    }
+    require_config_file(from_env, "RAYGATE_CONFIG=");
     defaults = read_project_config(from_env);
   } else if (is_config_file(kProjectConfigFile, "")) {
     defaults = read_project_config(kProjectConfigFile);

@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "pipeline/output_failures.h"
+#include "store/postgres_url.h"
 
 namespace raygate {
 
@@ -11,6 +12,9 @@ void check_publish_targets(const PublishOptions& options, const std::string& out
                            const std::string& option) {
   parse_report_targets(options.reports);
   check_output_path(output, option);
+  // A malformed URL is the user's mistake, found before measuring (exit 2, as import says it);
+  // a well-formed one whose server cannot be reached is only a warning after measuring.
+  if (!options.no_store && is_postgresql_url(options.store)) parse_postgresql_url(options.store);
 }
 
 PublishRequest publish_request(const PublishOptions& options,

@@ -25,7 +25,8 @@ struct PublishOptions {
 };
 
 // Refuses, before anything is measured, a report spec or an output path (`output`, the
-// document's -o; "" for the default) that could not be written: UsageError naming `option`.
+// document's -o; "" for the default) that could not be written: UsageError naming `option`;
+// and a --store URL that is not a valid PostgreSQL URL (UsageError naming --store).
 void check_publish_targets(const PublishOptions& options, const std::string& output,
                            const std::string& option);
 

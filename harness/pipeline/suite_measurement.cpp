@@ -18,6 +18,7 @@
 #include "pipeline/document_output.h"
 #include "pipeline/run_images.h"
 #include "pipeline/suite_passes.h"
+#include "report/ratio_interval_text.h"
 #include "runner/baseline_cost_cache.h"
 #include "runner/cachegrind.h"
 #include "runner/deadline_executor.h"
@@ -273,9 +274,8 @@ std::string scene_line(const SceneResult& scene, const std::vector<Role>& tracer
   std::string text = fmt::format("{:<10}", scene.entry.id);
   for (const Role role : tracer_roles) {
     if (const RatioSummary* r = scene.ratio(role)) {
-      text += fmt::format("  {}{:.3f} [{:.3f}, {:.3f}]",
-                          tracer_roles.size() > 1 ? role_name(role) + " " : "", r->ratio,
-                          r->ratio_interval.lower, r->ratio_interval.upper);
+      text += fmt::format("  {}{}", tracer_roles.size() > 1 ? role_name(role) + " " : "",
+                          ratio_interval_text(*r));
     }
   }
   text += fmt::format("  {}, {}", count_text(scene.runs.rounds.size(), "round"),

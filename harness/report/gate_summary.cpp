@@ -13,6 +13,15 @@ namespace {
 // "3 scenes, 1 failed, 0 warnings": the unmeasured count only when it is the reason or not zero,
 // so "COULD NOT MEASURE" never stands beside "0 unmeasured" unexplained.
 std::string counts(const GateResult& gate) {
+  // `raygate scaling` judges families, not scenes: "0 scenes" read as if its fits were lost.
+  if (gate.scenes.empty() && gate.problems.empty()) {
+    if (gate.families.empty()) {
+      return "nothing judged (a run's growth exponents are fitted; a compare's are judged)";
+    }
+    std::size_t failed = 0;
+    for (const SceneGate& family : gate.families) failed += family.outcome == GateOutcome::fail;
+    return fmt::format("{} growth exponents judged, {} failed", gate.families.size(), failed);
+  }
   std::vector<std::string> parts{fmt::format("{} scenes", gate.scenes.size()),
                                  fmt::format("{} failed", gate.count(GateOutcome::fail))};
   const std::size_t unmeasured = gate.count(GateOutcome::unmeasured);

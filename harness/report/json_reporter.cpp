@@ -84,7 +84,7 @@ json scene_json(const SceneView& view) {
           {"outcome", to_string(view.gate.outcome)},
           {"speed", to_string(view.gate.speed)},
           {"speed_outcome", to_string(view.speed_outcome)},
-          // Bots read the stable word ("missing"), not the reader's ("no golden yet").
+          // Bots read the stable word ("missing"), not the reader's ("no golden").
           {"image", view.gate.image ? std::string(to_string(*view.gate.image)) : ""},
           {"image_outcome", to_string(view.image_outcome)},
           {"reasons", view.gate.reasons},

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "core/format.h"
+#include "report/ratio_interval_text.h"
 
 namespace raygate::report {
 namespace {
@@ -153,7 +154,7 @@ std::string verdict_word(int exit_code) {
 
 std::string image_verdict_text(ImageVerdict verdict) {
   // "missing" read as "the image is missing"; what it means is that nobody blessed one yet.
-  if (verdict == ImageVerdict::missing) return "no golden yet";
+  if (verdict == ImageVerdict::missing) return "no golden";
   return std::string(to_string(verdict));
 }
 
@@ -299,8 +300,7 @@ std::string ratio_text(const ResultsDocument& document, const SceneResult& scene
   }
   const RatioSummary* tracer = scene.ratio(Role::tracer);
   if (tracer == nullptr) return "";
-  return fmt::format("{:.3f} [{:.3f}, {:.3f}], {}{}", tracer->ratio, tracer->ratio_interval.lower,
-                     tracer->ratio_interval.upper, count_text(tracer->rounds, "round"),
+  return fmt::format("{}, {}{}", ratio_interval_text(*tracer), count_text(tracer->rounds, "round"),
                      fastest_of_text(scene.runs.rounds));
 }
 
@@ -403,6 +403,20 @@ std::string levels_text(const GatePolicy& policy, const ResultsDocument& d) {
   return text;
 }
 
+// The rule the document's images were judged by: a Monte Carlo tracer's runs within the image
+// tolerance (its per-pixel thresholds were never used), else the per-pixel thresholds.
+std::string image_rule_text(const ScenePolicy& d, const ResultsDocument& document) {
+  if (document.settings.images == ImageKind::monte_carlo) {
+    return fmt::format("images (Monte Carlo) pass within the ±{:.4g}% image tolerance",
+                       100.0 * document.settings.image_tolerance.value_or(d.image_tolerance));
+  }
+  std::string text =
+      fmt::format("image fail over {:.4g} on more than {:.4g}% of pixels, warn over {:.4g}",
+                  d.image.fail_threshold, d.image.fail_percent, d.image.warn_threshold);
+  if (d.image.hard_fail < 1e29) text += fmt::format(", hard fail over {:.4g}", d.image.hard_fail);
+  return text;
+}
+
 }  // namespace
 
 std::string policy_line(const GatePolicy& policy, const ResultsDocument& document) {
@@ -421,9 +435,7 @@ std::string policy_line(const GatePolicy& policy, const ResultsDocument& documen
         signed_percent(d.max_slowdown), interval_name(equivalence), 100.0 * d.max_slowdown,
         100.0 * policy.family_significance, kIntervalLegend, levels_text(policy, document));
   }
-  line += fmt::format("image fail over {:.4g} on more than {:.4g}% of pixels, warn over {:.4g}",
-                      d.image.fail_threshold, d.image.fail_percent, d.image.warn_threshold);
-  if (d.image.hard_fail < 1e29) line += fmt::format(", hard fail over {:.4g}", d.image.hard_fail);
+  line += image_rule_text(d, document);
   if (policy.fail_on_inconclusive && is_compare(kind)) line += "; inconclusive fails";
   if (!policy.scenes.empty()) {
     line += fmt::format("; {}", plural(policy.scenes.size(), "scene override", "scene overrides"));

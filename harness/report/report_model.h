@@ -41,10 +41,10 @@ Headline headline(const ReportInput& input, const std::vector<SceneView>& views)
 // "pass", "fail" or "could not measure", from the gate's exit code.
 std::string verdict_word(int exit_code);
 
-// The scene's worst image verdict in a reader's words ("no golden yet" for "missing"); `none`
+// The scene's worst image verdict in a reader's words ("no golden" for "missing"); `none`
 // when no image was checked.
 std::string image_text(const SceneGate& gate, const std::string& none);
-// An image check's verdict in a reader's words: "no golden yet" for ImageVerdict::missing (a
+// An image check's verdict in a reader's words: "no golden" for ImageVerdict::missing (a
 // note, never a problem), the verdict's own word otherwise.
 std::string image_verdict_text(ImageVerdict verdict);
 

@@ -32,6 +32,7 @@ constexpr double kMaxSeconds = 7.0 * 24 * 3600;
 // (runner/cachegrind.h), which for a week of runs at 5 GHz reach 3e15.
 constexpr double kMaxMeasure = 1e18;
 constexpr std::int64_t kMaxCount = std::int64_t{1} << 40;
+constexpr std::int64_t kMaxSceneSize = 1000000;
 constexpr std::int64_t kMaxSide = 1 << 20;  // pixels: past any image a tracer writes
 constexpr double kMaxLog = 50.0;            // |ln ratio|: a factor of 5e21
 
@@ -105,7 +106,10 @@ void require_word(const JsonField& field, std::string_view word,
     if (word == k) return;
   }
   std::string list;
-  for (const std::string_view k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+  for (const std::string_view k : known) {
+    // An allowed empty word is shown as one, not as a trailing ", ".
+    list += (list.empty() ? "" : ", ") + (k.empty() ? std::string("\"\"") : std::string(k));
+  }
   field.fail(fmt::format("unknown value \"{}\" (one of: {})", word, list));
 }
 
@@ -345,7 +349,8 @@ void check_image(const JsonField& image, const std::set<Role>& roles) {
 void check_scene_entry(const JsonField& entry) {
   object(entry);
   check_strings(entry, {"id", "scene"});
-  integer(entry.member("size"), 0, kMaxCount);
+  // An SPD size (each generator says its own maximum, 10 or less); read into an int.
+  integer(entry.member("size"), 0, kMaxSceneSize);
   integer(entry.member("width"), 1, kMaxSide);
   integer(entry.member("height"), 1, kMaxSide);
 }

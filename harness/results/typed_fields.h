@@ -23,17 +23,9 @@ inline double number_or_nan(const JsonField& field) {
   return field.as_number();
 }
 
-// A whole number within [lowest, highest].
+// A whole number within [lowest, highest] (JsonField::as_whole).
 inline std::int64_t whole(const JsonField& field, std::int64_t lowest, std::int64_t highest) {
-  const nlohmann::json& v = field.value();
-  if (!v.is_number_integer()) field.fail("expected a whole number, found " + describe_json(v));
-  const bool fits = v.is_number_unsigned()
-                        ? v.get<std::uint64_t>() <= static_cast<std::uint64_t>(highest)
-                        : v.get<std::int64_t>() >= lowest && v.get<std::int64_t>() <= highest;
-  if (!fits)
-    field.fail("expected a whole number from " + std::to_string(lowest) + " to " +
-               std::to_string(highest) + ", found " + describe_json(v));
-  return v.get<std::int64_t>();
+  return field.as_whole(lowest, highest);
 }
 
 inline int int_of(const JsonField& field) {

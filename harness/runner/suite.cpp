@@ -2,6 +2,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
+#include <limits>
 #include <set>
 
 #include "core/error.h"
@@ -26,11 +28,23 @@ void check_keys(const Suite& suite, const json& object, const std::string& where
   }
 }
 
+// A whole number that fits an int, read without wrapping (1e12 read as an int became
+// -727379968, and was reported as that).
+int whole_number(const Suite& suite, const json& value, const std::string& where) {
+  if (!value.is_number_integer()) fail(suite, where, "expected an integer");
+  const bool fits = value.is_number_unsigned()
+                        ? value.get<std::uint64_t>() <=
+                              static_cast<std::uint64_t>(std::numeric_limits<int>::max())
+                        : value.get<std::int64_t>() >= std::numeric_limits<int>::min() &&
+                              value.get<std::int64_t>() <= std::numeric_limits<int>::max();
+  if (!fits) fail(suite, where, "expected an integer, found " + value.dump() + " (too large)");
+  return value.get<int>();
+}
+
 int read_int(const Suite& suite, const json& object, const std::string& key,
              const std::string& where) {
   if (!object.contains(key)) return 0;
-  if (!object[key].is_number_integer()) fail(suite, where + "." + key, "expected an integer");
-  return object[key].get<int>();
+  return whole_number(suite, object[key], where + "." + key);
 }
 
 SuiteScene read_scene(const Suite& suite, const json& entry, const std::string& where) {
@@ -54,8 +68,8 @@ SuiteScene read_scene(const Suite& suite, const json& entry, const std::string& 
     if (!r.is_array() || r.size() != 2 || !r[0].is_number_integer() || !r[1].is_number_integer()) {
       fail(suite, where + ".resolution", "expected [width, height]");
     }
-    s.width = r[0].get<int>();
-    s.height = r[1].get<int>();
+    s.width = whole_number(suite, r[0], where + ".resolution[0]");
+    s.height = whole_number(suite, r[1], where + ".resolution[1]");
     if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384) {
       fail(suite, where + ".resolution", "each side must be in 1..16384");
     }
@@ -67,6 +81,12 @@ SuiteScene read_scene(const Suite& suite, const json& entry, const std::string& 
   // The id names the scene's files in the cache, run folders and goldens.
   checked_component(s.id, suite.path.string() + ": " + where + ".id");
   return s;
+}
+
+std::string scene_ids(const Suite& suite) {
+  std::string ids;
+  for (const SuiteScene& s : suite.scenes) ids += (ids.empty() ? "" : ", ") + s.id;
+  return ids;
 }
 
 }  // namespace
@@ -124,7 +144,14 @@ std::vector<SuiteScene> select_scenes(const Suite& suite, const std::vector<std:
         found = true;
       }
     }
-    if (!found) throw UsageError("suite '" + suite.name + "' has no scene '" + id + "'");
+    if (!found) {
+      // A name the user typed, echoed back in a few dozen characters (100,000 were 16 KB).
+      const std::string shown =
+          id.size() > 60 ? id.substr(0, 60) + "... (" + std::to_string(id.size()) + " characters)"
+                         : id;
+      throw UsageError("suite '" + suite.name + "' has no scene '" + shown +
+                       "'; its scenes: " + scene_ids(suite));
+    }
   }
   return out;
 }

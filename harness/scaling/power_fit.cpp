@@ -11,6 +11,8 @@
 #include <utility>
 #include <vector>
 
+#include "scaling/fit_limits.h"
+
 namespace raygate {
 namespace {
 
@@ -19,8 +21,6 @@ namespace {
 constexpr double kSlopeChangeAlways = 0.5;
 // ... and by more than this, when the quadratic term is also significant.
 constexpr double kSlopeChangeSignificant = 0.2;
-// Residual standard deviation in ln units above which the points are called scattered (±15%).
-constexpr double kScatterLimit = 0.15;
 
 struct Line {
   double slope = 0.0;

@@ -4,12 +4,16 @@
 
 #include <fmt/core.h>
 
+#include "scaling/fit_limits.h"
+
 namespace raygate {
 namespace {
 
 std::string quality_words(const PowerFit& fit) {
   switch (fit.quality) {
-    case FitQuality::power_law: return "power law fits";
+    case FitQuality::power_law:
+      return fmt::format("power law fits (the points within ±{:.0f}% of the line)",
+                         100.0 * kScatterLimit);
     case FitQuality::startup_dominated:
       return fmt::format(
           "power law does not fit: a fixed cost of {:.3g} s dominates the small "
@@ -20,7 +24,10 @@ std::string quality_words(const PowerFit& fit) {
           "power law does not fit: the local exponent moves from {:.2f} to {:.2f} "
           "along the range",
           fit.small_end_exponent, fit.large_end_exponent);
-    case FitQuality::scattered: return "power law does not fit: the points scatter around the line";
+    case FitQuality::scattered:
+      return fmt::format(
+          "power law does not fit: the points scatter around the line by more than ±{:.0f}%",
+          100.0 * kScatterLimit);
     case FitQuality::too_few_points: return "too few sizes for an interval";
   }
   return "";

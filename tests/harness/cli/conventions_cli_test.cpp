@@ -214,5 +214,43 @@ TEST_F(Conventions, AnEmptyRepoAFolderAsStoreAndAFileAsCacheAreUsageErrors) {
   EXPECT_THAT(pins.err, HasSubstr("--no-pin and --pin exclude each other"));
 }
 
+// The sweep of 2026-11-28: `raygate nosuchcmd` said only "A subcommand is required".
+TEST_F(Conventions, AnUnknownCommandIsNamed) {
+  const CliStreams unknown = run_raygate_streams({"nosuchcmd"}, dir);
+  EXPECT_EQ(unknown.exit_code, 2);
+  EXPECT_THAT(unknown.err, HasSubstr("unknown command 'nosuchcmd'"));
+  const CliStreams none = run_raygate_streams({}, dir);
+  EXPECT_EQ(none.exit_code, 2);
+  EXPECT_THAT(none.err, HasSubstr("A subcommand is required"));
+}
+
+// Hostile sweep O1, O2, f03, y-cfg2: each refused with exit 2 and a plain message before
+// anything is built or measured (no repository is needed to say so).
+TEST_F(Conventions, BadStoreGoldenCacheAndConfigAreRefusedUpFront) {
+  fs::create_directories(dir.path() / "cache");
+  write_file_atomically(dir.path() / "cache" / "runs", "not a folder");
+  write_file_atomically(dir.path() / "a-file", "not a folder");
+  const std::vector<std::string> run = {"run", "--adapter", "raygate-baseline-bbox"};
+  const auto refused = [&](std::vector<std::string> extra, const std::string& said) {
+    SCOPED_TRACE(extra.back());
+    extra.insert(extra.begin(), run.begin(), run.end());
+    const CliStreams r = run_raygate_streams(extra, dir);
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_THAT(r.err, HasSubstr(said));
+    EXPECT_THAT(r.err, Not(HasSubstr("measuring")));
+  };
+  refused({"--store", "postgresql://u@h:99999/db"},
+          "--store postgresql://u@h:99999/db: not a valid PostgreSQL URL (port \"99999\"");
+  refused({"--store", "postgresql://u@localhost/db?sslmode=bogus"}, "sslmode \"bogus\"");
+  refused({"--no-store", "--golden-dir", ""}, "--golden-dir is empty: give a directory");
+  refused({"--no-store", "--golden-dir", "a-file"}, "--golden-dir a-file: exists and is not a");
+  refused(
+      {"--no-store", "--cache-dir", "cache"},
+      "--cache-dir cache: " + (fs::path("cache") / "runs").string() + " is a file, not a folder");
+  const CliStreams config = run_raygate_streams({"--config", "cache", "history"}, dir);
+  EXPECT_EQ(config.exit_code, 2) << config.err;
+  EXPECT_THAT(config.err, HasSubstr("--config cache: is a directory, not a config file"));
+}
+
 }  // namespace
 }  // namespace raygate::test

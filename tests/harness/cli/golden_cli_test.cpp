@@ -87,6 +87,53 @@ TEST(GoldenCli, MissingGoldenIsAnErrorNotAPass) {
   EXPECT_NE(r.out.find("raygate golden bless sample"), std::string::npos) << r.out;
 }
 
+// A golden whose bytes match the manifest but are no image (tampered, manifest hash updated):
+// that scene is an ERROR, the others are still verified, exit 3, as verify --from-run has it.
+TEST(GoldenCli, AnUnreadableGoldenIsAnErrorOfItsSceneOnly) {
+  TempDir dir;
+  std::filesystem::copy(kGolden, dir.path() / "golden");
+  const std::filesystem::path manifest = dir.path() / "golden" / "manifest.json";
+  write_file_atomically(dir.path() / "golden" / "tetra.png", "not a picture at all");
+  std::string text = read_file(manifest);
+  const std::string old_hash = sha256_file_hex(kGolden / "tetra.png");
+  text.replace(text.find(old_hash), old_hash.size(),
+               sha256_file_hex(dir.path() / "golden" / "tetra.png"));
+  write_file_atomically(manifest, text);
+  const CliRun r = run_raygate(
+      {"golden", "verify", "tetra", "sample", "--golden-dir", "golden", "--work-dir", "work"}, dir);
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  for (const char* line :
+       {"ERROR     tetra        golden/tetra.png: cannot read image", "ok        sample"}) {
+    EXPECT_NE(r.out.find(line), std::string::npos) << r.out;
+  }
+}
+
+// Images without their manifest are not goldens nobody has: the words say the manifest is
+// missing, and do not invite a bless over pictures no one has looked at.
+TEST(GoldenCli, AMissingManifestIsSaidSo) {
+  TempDir dir;
+  std::filesystem::copy(kGolden, dir.path() / "golden");
+  std::filesystem::remove(dir.path() / "golden" / "manifest.json");
+  const CliRun r = run_raygate(
+      {"golden", "verify", "tetra", "--golden-dir", "golden", "--work-dir", "work"}, dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("MISSING   tetra        golden/tetra.png is there, but "
+                       "golden/manifest.json is missing"),
+            std::string::npos)
+      << r.out;
+  EXPECT_EQ(r.out.find("raygate golden bless"), std::string::npos) << r.out;
+}
+
+TEST(GoldenCli, AGoldenDirThatIsAFileIsAUsageError) {
+  TempDir dir;
+  write_file_atomically(dir.path() / "file", "x");
+  const CliRun r =
+      run_raygate({"golden", "bless", "tetra", "--golden-dir", "file", "--work-dir", "work"}, dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("file is a file, not a folder"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find("filesystem error"), std::string::npos) << r.out;
+}
+
 TEST(GoldenCli, BlessWritesOnlyTheNamedScenes) {
   TempDir dir;
   const CliRun r =

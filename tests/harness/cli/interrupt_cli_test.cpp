@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <functional>
 #include <fstream>
 #include <string>
 #include <thread>
@@ -136,25 +137,49 @@ class InterruptCli : public TracerRepoTest {
             out_.string()};
   }
 
-  // Starts raygate with `args`; once `ready` appears, sends `sig` (and `second` 200 ms later,
-  // unless 0); returns the exit code, or -1 if raygate died of a signal.
-  int signal_when(const std::vector<std::string>& args, const fs::path& ready, int sig,
-                  int second = 0) {
-    const ProcessSpec spec = raygate_spec(args, dir_, std::chrono::minutes(4));
-    Process raygate = Process::start(spec);
-    EXPECT_TRUE(appears(ready, raygate)) << read_file(spec.stdout_path);
-    ::kill(raygate.pid(), sig);
-    if (second != 0) {
-      std::this_thread::sleep_for(200ms);
-      ::kill(raygate.pid(), second);
-    }
+  // Starts `spec`; once `ready` appears, calls `send` with the started process's pid; returns
+  // the exit code, or -1 if it died of a signal.
+  int stop_when(const ProcessSpec& spec, const fs::path& ready,
+                const std::function<void(pid_t)>& send) {
+    Process process = Process::start(spec);
+    EXPECT_TRUE(appears(ready, process)) << read_file(spec.stdout_path);
+    send(process.pid());
     const auto sent = std::chrono::steady_clock::now();
-    const ProcessResult r = raygate.wait();
+    const ProcessResult r = process.wait();
     stop_seconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - sent).count();
     EXPECT_LT(stop_seconds_, 10.0) << "stopping took too long";
     died_of_ = r.outcome == ProcessOutcome::signaled ? r.signal : 0;
     output_ = read_file(spec.stdout_path);
     return r.outcome == ProcessOutcome::exited ? r.exit_code : -1;
+  }
+
+  // Starts raygate with `args`; once `ready` appears, sends `sig` (and `second` after `gap`,
+  // unless 0: past the repeat window, so a second of the same signal is a deliberate one);
+  // returns the exit code, or -1 if raygate died of a signal.
+  int signal_when(const std::vector<std::string>& args, const fs::path& ready, int sig,
+                  int second = 0, std::chrono::milliseconds gap = 1200ms) {
+    return stop_when(raygate_spec(args, dir_, std::chrono::minutes(4)), ready, [&](pid_t pid) {
+      ::kill(pid, sig);
+      if (second != 0) {
+        std::this_thread::sleep_for(gap);
+        ::kill(pid, second);
+      }
+    });
+  }
+
+  // The checks every graceful stop passes: the tracer gone, tetra kept in a partial document,
+  // and one line saying so, naming `signal`.
+  void expect_kept_tetra(const std::string& signal) {
+    EXPECT_EQ(died_of_, 0);
+    EXPECT_TRUE(ends(pid_in(pids_ / "tracer.pid"))) << "the tracer still runs";
+    const ResultsDocument d = read_results(out_);
+    EXPECT_FALSE(d.complete);
+    ASSERT_EQ(d.scenes.size(), 1u);
+    EXPECT_EQ(d.scenes[0].entry.id, "tetra");
+    const std::vector<std::string> said = lines_with(output_, "interrupted");
+    ASSERT_EQ(said.size(), 1u) << output_;
+    EXPECT_EQ(said[0], "raygate: interrupted by " + signal + ": kept 1 of 2 scenes in " +
+                           out_.string() + " (complete: false)");
   }
 
   // Runs raygate with `args` on a terminal of its own (a pty, as in an ssh session: raygate the
@@ -226,21 +251,15 @@ TEST_F(InterruptCli, SignalsStopTheTracerItsChildrenAndStraysAndKeepTheFinishedS
       EXPECT_TRUE(ends(pid_in(pids_ / file))) << file << " still runs";
     }
     // tetra was measured before balls started: it is kept, and the document says it is partial.
-    const ResultsDocument d = read_results(out_);
-    EXPECT_FALSE(d.complete);
-    ASSERT_EQ(d.scenes.size(), 1u);
-    EXPECT_EQ(d.scenes[0].entry.id, "tetra");
-    const std::vector<std::string> said = lines_with(output_, "interrupted");
-    ASSERT_EQ(said.size(), 1u) << output_;
-    EXPECT_EQ(said[0], "raygate: interrupted by " + name + ": kept 1 of 2 scenes in " +
-                           out_.string() + " (complete: false)");
+    expect_kept_tetra(name);
   }
 }
 
 TEST_F(InterruptCli, SecondSignalEndsRaygateAtOnceWithItsChildren) {
   commit(sources_.fast, "tracer");
   fs::create_directories(pids_);
-  // The tracer ignores SIGTERM, so the first SIGINT alone would take the 2 s grace to SIGKILL.
+  // The tracer ignores SIGTERM, so the first SIGINT alone would take the 2 s grace to SIGKILL;
+  // the second comes 1.2 s after it, past the repeat window.
   EXPECT_EQ(signal_when(run_args(sleeping_adapter(true)), pids_ / "tracer.pid", SIGINT, SIGINT), -1)
       << output_;
   EXPECT_EQ(died_of_, SIGINT);
@@ -249,6 +268,49 @@ TEST_F(InterruptCli, SecondSignalEndsRaygateAtOnceWithItsChildren) {
   EXPECT_TRUE(ends(pid_in(pids_ / "grandchild.pid"))) << "its grandchild still runs";
   // The setsid stray is beyond a signal handler's reach (only the sweep finds it); end it here.
   ::kill(pid_in(pids_ / "stray.pid"), SIGKILL);
+}
+
+// Hostile sweep S1: GNU timeout and CI runners send their signal to raygate and then to its
+// process group, so it arrives twice within microseconds. That is one request: raygate stops as
+// after one signal, keeping the finished scene, instead of taking the copy as the escape.
+TEST_F(InterruptCli, ASignalToRaygateAndItsGroupIsOneRequest) {
+  commit(sources_.fast, "tracer");
+  const fs::path adapter = sleeping_adapter();
+  for (const auto& [sig, code] : {std::pair{SIGINT, 130}, std::pair{SIGTERM, 143}}) {
+    const std::string name = sig == SIGINT ? "SIGINT" : "SIGTERM";
+    SCOPED_TRACE(name);
+    fs::remove_all(pids_);
+    fs::create_directories(pids_);
+    fs::remove(out_);
+    const int exit_code = stop_when(
+        raygate_spec(run_args(adapter), dir_, std::chrono::minutes(4)), pids_ / "tracer.pid",
+        [&](pid_t pid) {
+          ASSERT_EQ(::getpgid(pid), pid);  // raygate leads its own group, as under a wrapper
+          ::kill(pid, sig);
+          ::kill(-pid, sig);
+        });
+    EXPECT_EQ(exit_code, code) << output_;
+    expect_kept_tetra(name);
+  }
+}
+
+TEST_F(InterruptCli, UnderGnuTimeoutTheSignalStopsRaygateOnceAndKeepsTheFinishedScenes) {
+  // The real wrapper: timeout forwards a SIGTERM it receives as it sends its own when time is
+  // up, to raygate and to the process group they share.
+  ProcessSpec probe;
+  probe.argv = {"timeout", "--version"};
+  const ProcessResult which = run_process(probe);
+  if (which.outcome != ProcessOutcome::exited || which.exit_code != 0) {
+    GTEST_SKIP() << "no GNU timeout here";
+  }
+  commit(sources_.fast, "tracer");
+  fs::create_directories(pids_);
+  ProcessSpec spec = raygate_spec(run_args(sleeping_adapter()), dir_, std::chrono::minutes(4));
+  spec.argv.insert(spec.argv.begin(), {"timeout", "-s", "TERM", "600"});
+  const int exit_code =
+      stop_when(spec, pids_ / "tracer.pid", [](pid_t timeout) { ::kill(timeout, SIGTERM); });
+  EXPECT_EQ(exit_code, 143) << output_;
+  expect_kept_tetra("SIGTERM");
 }
 
 TEST_F(InterruptCli, ARepeatedHangUpIsOneHangUpNotTheSecondSignalEscape) {

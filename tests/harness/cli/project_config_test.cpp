@@ -64,6 +64,45 @@ TEST(ProjectConfig, SectionsAndListsAreRefusedWithTheLine) {
   EXPECT_THROW(read_project_config(dir.path() / "b.toml"), UsageError);
 }
 
+// Hostile sweep Y1, y-bad: CLI11 kept the quote of an unterminated string as part of the value
+// (a store named `"x.db`) and took `store =` as no line at all.
+TEST(ProjectConfig, AnUnterminatedStringOrAMissingValueIsRefusedAtItsLine) {
+  const TempDir dir;
+  const auto refusal = [&](const std::string& text) -> std::string {
+    write_file_atomically(dir.path() / "raygate.toml", text);
+    try {
+      read_project_config(dir.path() / "raygate.toml");
+    } catch (const UsageError& e) {
+      return e.what();
+    }
+    return "accepted";
+  };
+  const std::string file = (dir.path() / "raygate.toml").string();
+  EXPECT_THAT(refusal("store = \"x.db\n"), HasSubstr(file + ":1:9: unterminated string"));
+  EXPECT_THAT(refusal("repo = \".\"\nsuite = 'ci\n"),
+              HasSubstr(file + ":2:9: unterminated string"));
+  EXPECT_THAT(refusal("repo = \".\"\nstore = \n"), HasSubstr(file + ":2: store has no value"));
+  EXPECT_THAT(refusal("store =\r\n"), HasSubstr(file + ":1: store has no value"));
+  EXPECT_EQ(refusal("store = \"x.db\"  \nsuite = 'ci'\n# adapter = \"\n"), "accepted");
+}
+
+TEST(ProjectConfig, AFolderNamedAsTheConfigIsSaidToBeAFolder) {
+  const TempDir dir;
+  const auto no_env = [](const char*) -> const char* { return nullptr; };
+  try {
+    load_project_defaults(dir.path().string(), no_env);
+    FAIL() << "a folder was accepted as --config";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("--config " + dir.path().string() + ": is a directory"));
+  }
+  try {
+    load_project_defaults((dir.path() / "none.toml").string(), no_env);
+    FAIL() << "a missing --config was accepted";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("none.toml: no such file"));
+  }
+}
+
 TEST(ProjectConfig, ConfigArgumentIsFoundBeforeParsing) {
   const char* spaced[] = {"raygate", "history", "--config", "x.toml"};
   EXPECT_EQ(find_config_argument(4, spaced), "x.toml");

@@ -101,6 +101,21 @@ TEST(NoisyImageCheck, AnUnreadableReferenceIsAnError) {
   EXPECT_NE(check.error.find("base0.exr: cannot read image"), std::string::npos) << check.error;
 }
 
+// A run folder deleted while raygate ran (the sweep of 2026-11-28 found the Monte Carlo check
+// called it a regression, exit 1): the check could not be made, verdict error (exit 3).
+TEST(NoisyImageCheck, ARunFolderDeletedWhileMeasuringIsAnErrorNotAFailure) {
+  const TempDir dir;
+  std::mt19937_64 rng(59);
+  fs::create_directories(dir.path() / "runs");
+  const std::vector<fs::path> head = renders(dir.path() / "runs", "head", 3, 1.0, rng);
+  const std::vector<fs::path> base = renders(dir.path(), "base", 3, 1.0, rng);
+  fs::remove_all(dir.path() / "runs");
+  const ImageCheck check = check_noisy_images(Role::head, ImageReference::base, head, base,
+                                              noisy_thresholds_for(1), dir.path(), "s");
+  EXPECT_EQ(check.verdict, ImageVerdict::error) << check_detail(check);
+  EXPECT_NE(check.error.find("the run's folder is gone"), std::string::npos) << check.error;
+}
+
 TEST(NoisyImageCheck, RunsThatAreAllTheSameImageAreNoted) {
   const TempDir dir;
   std::mt19937_64 rng(59);
@@ -140,6 +155,13 @@ class NoisyGoldenTest : public ::testing::Test {
   void plant_variance(float value) {
     RgbImage variance = read_rgb_image(golden() / "s.variance.exr");
     variance.rgb[(3 * 32 + 4) * 3 + 1] = value;
+    write_rgb_image(variance, golden() / "s.variance.exr");
+    manifest_.noise["s"].variance_sha256 = sha256_file_hex(golden() / "s.variance.exr");
+  }
+  // Every variance times `factor`, the manifest's hash to match.
+  void scale_variance(float factor) {
+    RgbImage variance = read_rgb_image(golden() / "s.variance.exr");
+    for (float& v : variance.rgb) v *= factor;
     write_rgb_image(variance, golden() / "s.variance.exr");
     manifest_.noise["s"].variance_sha256 = sha256_file_hex(golden() / "s.variance.exr");
   }
@@ -188,6 +210,26 @@ TEST_F(NoisyGoldenTest, AnInflationThatCouldNeverFailIsRefused) {
     EXPECT_EQ(c.verdict, ImageVerdict::error) << factor;
     EXPECT_NE(c.error.find("'s': noise.inflation factor "), std::string::npos) << c.error;
     EXPECT_NE(c.error.find("must lie in [1, 1e+08]"), std::string::npos) << c.error;
+  }
+}
+
+// A variance so large that the golden's own whole-image mean is uncertain by more than the mean
+// (the sweep's x 1e30) cannot tell its picture from black: refused. The golden's error here is
+// about 0.5% of its mean; x 1e4 (about 47%) still judges, x 1e6 (about 470%) does not.
+TEST_F(NoisyGoldenTest, AVarianceTooLargeToTellThePictureFromBlackIsRefused) {
+  scale_variance(1e4f);
+  ImageCheck c = check();
+  EXPECT_NE(c.verdict, ImageVerdict::error) << check_detail(c);
+  for (const float factor : {1e2f, 1e24f}) {  // x 1e6, then x 1e30 in all
+    scale_variance(factor);
+    c = check();
+    EXPECT_EQ(c.verdict, ImageVerdict::error) << factor;
+    EXPECT_NE(c.error.find("s.variance.exr: with this variance the golden's whole-image mean of "
+                           "channel "),
+              std::string::npos)
+        << c.error;
+    EXPECT_NE(c.error.find("could not tell its picture from a black one"), std::string::npos)
+        << c.error;
   }
 }
 

@@ -177,6 +177,21 @@ TEST(GateVerdict, AnUndecidedCompareSaysHowNoisyTheRunnerWas) {
                   .notes.empty());
 }
 
+// The sweep of 2026-11-28: a policy's override for a misspelt scene had no effect, unsaid.
+TEST(GateVerdict, APolicyOverrideForNoSceneOfTheDocumentIsNoted) {
+  const ResultsDocument document =
+      compare_document({sequenced("balls", 0.0, {-0.01, 0.01}, 10, 0.004)});
+  GatePolicy policy;
+  policy.scenes["balls"] = policy.defaults;
+  EXPECT_TRUE(evaluate_gate(document, policy).notes.empty());
+  policy.scenes["ballz"] = policy.defaults;
+  const GateResult gate = evaluate_gate(document, policy);
+  ASSERT_EQ(gate.notes.size(), 1u);
+  EXPECT_EQ(gate.notes[0],
+            "the policy's overrides for 'ballz' match no scene of this document: no effect here");
+  EXPECT_EQ(gate.exit_code, 0);
+}
+
 SceneResult failed(const std::string& id, Role role, bool base_ran) {
   SceneResult scene;
   scene.entry.id = id;
@@ -199,7 +214,24 @@ TEST(GateVerdict, HeadCrashingWhereBaseRanIsTheChangesFault) {
       evaluate_gate(compare_document({failed("balls", Role::head, true)}), GatePolicy{});
   EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::fail);
   EXPECT_NE(gate.scenes[0].reasons[0].find("head failed where base ran"), std::string::npos);
+  EXPECT_NE(gate.scenes[0].reasons[0].find(": head: tracer killed by signal 6 (ABRT) (log: "),
+            std::string::npos)
+      << gate.scenes[0].reasons[0];
   EXPECT_EQ(gate.exit_code, 1);
+}
+
+// The sweep of 2026-11-28: "baseline exited with status 0: raygate-baseline took no measurable
+// process-user time" read as if the exit status were the problem.
+TEST(GateVerdict, ARunThatEndedWellAndFailedAfterSaysBut) {
+  SceneResult scene = failed("tetra", Role::baseline, false);
+  scene.runs.failed_run->outcome = "exited with status 0";
+  scene.runs.failed_run->failure = "raygate-baseline took no measurable process-user time";
+  const GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
+  EXPECT_NE(gate.scenes[0].reasons[0].find("baseline exited with status 0, but raygate-baseline "
+                                           "took no measurable process-user time (log: "),
+            std::string::npos)
+      << gate.scenes[0].reasons[0];
+  EXPECT_EQ(gate.exit_code, 3);
 }
 
 TEST(GateVerdict, BaseOrBaselineFailingMeansNotMeasured) {

@@ -234,5 +234,31 @@ TEST_F(BlessFromRunTest, AManifestWithADuplicateKeyOrAHugeNumberIsRefusedWhereIt
   }
 }
 
+// A compare document has no tracer: the role asked for is missing, and the words list the
+// roles the document has, for bless and verify alike.
+TEST_F(BlessFromRunTest, AMissingRoleListsTheDocumentsRoles) {
+  DocumentSpec spec;
+  spec.sha = fake_sha(2);
+  spec.kind = DocumentKind::compare;
+  spec.roles = {Role::base, Role::head};
+  spec.scenes = {{"balls"}};
+  write_results(make_document(spec), request_.results);
+  const std::string expected = request_.results.string() +
+                               " has no revision with role 'tracer' (use --role base or --role "
+                               "head)";
+  try {
+    bless_goldens_from_run(request_, log_);
+    ADD_FAILURE() << "blessed";
+  } catch (const UsageError& e) {
+    EXPECT_EQ(std::string(e.what()), expected);
+  }
+  try {
+    verify_goldens_from_run(request_, dir_.path() / "evidence", log_);
+    ADD_FAILURE() << "verified";
+  } catch (const UsageError& e) {
+    EXPECT_EQ(std::string(e.what()), expected);
+  }
+}
+
 }  // namespace
 }  // namespace raygate::test

@@ -84,6 +84,20 @@ TEST(MeasurementEstimate, ASuiteOverItsBudgetSaysWhatWould) {
       << lines[1];
 }
 
+// The sweep of 2026-11-28: --max-minutes 1e-300 advised `calibrate --target-seconds 5e-301`,
+// which calibrate refuses. Below what calibrate can size for, the advice leaves it out.
+TEST(MeasurementEstimate, NoCalibrateAdviceBelowWhatCalibrateCanSizeFor) {
+  EstimateShape shape = compare_shape(13, 4.0);
+  shape.budget_seconds = 1e-298;
+  const Estimate e = estimate_measurement({1.0, 2.0, 1.0}, shape, 14, 2);
+  EXPECT_FALSE(e.fits_budget);
+  EXPECT_EQ(e.tracer_render_seconds_to_fit, 0.0);
+  EXPECT_EQ(e.shards_needed, 13u);  // every scene its own shard, not 5e300 (UB before, under UBSan)
+  const std::vector<std::string> lines = estimate_lines(e, shape, "from test");
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_EQ(lines[1].find("calibrate"), std::string::npos) << lines[1];
+}
+
 TEST(MeasurementEstimate, ASceneOverItsSecondsSaysSo) {
   EstimateShape shape = compare_shape(2, 0.0);
   shape.scene_max_seconds = 20.0;

@@ -2,6 +2,8 @@
 // numbers, put failures first with their reasons, and stay within their limits.
 #include <gtest/gtest.h>
 
+#include "report/ratio_interval_text.h"
+
 #include "report_fixture.h"
 
 namespace raygate::test {
@@ -118,6 +120,42 @@ TEST(ConsoleReport, RunShowsRatioWithInterval) {
   // A run is judged on its images: its policy line does not promise a slowdown limit.
   at(text, "policy: image fail over 0.004 on more than 0.02% of pixels, warn over 0.004");
   EXPECT_EQ(text.find("max slowdown"), std::string::npos) << text;
+}
+
+// The sweep of 2026-11-28: "[-0.7%, +3.0%]" beside UNCHANGED within ±3% (the bound was +2.984%):
+// a bound that would print as the limit, or as zero, gets the digits that tell it apart.
+TEST(ConsoleReport, ABoundNextToTheLimitIsPrintedWithTheDigitsThatTellItApart) {
+  Fixture f(true);
+  for (SceneResult& scene : f.document.scenes) {
+    if (scene.entry.id == "balls") scene.change->change_interval = {-0.007, 0.02984};
+    if (scene.entry.id == "mount") scene.change->change_interval = {0.0004, 0.098};
+  }
+  const std::string text = f.render("console");
+  at(text, "+0.4% [-0.70%, +2.98%]");
+  at(text, "+7.9% [+0.04%, +9.80%]");
+}
+
+// The sweep of 2026-11-28: one round's ratio was shown as a zero-width "95% CI".
+TEST(ConsoleReport, ARatioFromOneRoundHasNoInterval) {
+  RatioSummary ratio;
+  ratio.ratio = 0.94;
+  ratio.ratio_interval = {0.94, 0.94};
+  ratio.rounds = 1;
+  EXPECT_EQ(ratio_interval_text(ratio), "0.940 (1 round: no interval)");
+  ratio.rounds = 2;
+  ratio.ratio_interval = {0.9, 0.98};
+  EXPECT_EQ(ratio_interval_text(ratio), "0.940 [0.900, 0.980]");
+}
+
+// The sweep of 2026-11-28: a Monte Carlo run's policy line printed the per-pixel thresholds,
+// while its images were judged within the image tolerance.
+TEST(ConsoleReport, AMonteCarloRunsPolicyLineNamesTheRuleItsImagesWereJudgedBy) {
+  Fixture f(false);
+  f.document.settings.images = ImageKind::monte_carlo;
+  f.document.settings.image_tolerance = 0.02;
+  const std::string text = f.render("console");
+  at(text, "policy: images (Monte Carlo) pass within the ±2% image tolerance");
+  EXPECT_EQ(text.find("image fail over"), std::string::npos) << text;
 }
 
 // Issue 40: the deciding intervals read 90%, 99.5% and 99.33% with nothing saying why. The
@@ -295,7 +333,7 @@ TEST(ConsoleReport, NoGoldenYetInPlainWords) {
   ReportOptions options;
   options.colour = true;
   const std::string text = f.render("console", options);
-  at(text, "no golden yet");
+  at(text, "no golden");
   EXPECT_EQ(text.find("missing"), std::string::npos) << text;
   EXPECT_EQ(text.find("\033[33m"), std::string::npos) << "no amber: " << text;
 }

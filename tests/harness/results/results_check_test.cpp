@@ -69,7 +69,9 @@ const std::vector<BadDocument>& bad_documents() {
       {"unknown scene status", false, [](json& j) { j["scenes"][1]["status"] = "exploded"; },
        "$.scenes[1].status", "unknown value \"exploded\""},
       {"unknown stop reason", false, [](json& j) { j["scenes"][0]["stop_reason"] = "bored"; },
-       "$.scenes[0].stop_reason", "unknown value \"bored\""},
+       "$.scenes[0].stop_reason",
+       "unknown value \"bored\" (one of: stop_converged, stop_budget_rounds, stop_budget_time, "
+       "failed, continue, \"\")"},
       {"a scene listed twice", false, [](json& j) { j["scenes"].push_back(j["scenes"][0]); },
        "$.scenes[2].scene.id", "scene \"balls\" is listed twice"},
       {"unknown change verdict", true,
@@ -136,6 +138,10 @@ const std::vector<BadDocument>& bad_documents() {
        "$.scenes[0].rounds[0].runs.tracer.max_rss_kib", "out of range"},
       {"a zero-sized image", false, [](json& j) { j["scenes"][0]["scene"]["width"] = 0; },
        "$.scenes[0].scene.width", "out of range"},
+      // Read into an int: 10^12 once came out as -727379968 in scaling's message.
+      {"a size too large for an int", false,
+       [](json& j) { j["scenes"][0]["scene"]["size"] = 1000000000000; }, "$.scenes[0].scene.size",
+       "out of range"},
       {"percent over 100", false,
        [](json& j) { j["scenes"][0]["images"][0]["metrics"]["percent_over_fail"] = 250.0; },
        "$.scenes[0].images[0].metrics.percent_over_fail", "out of range"},

@@ -84,6 +84,17 @@ TEST(Suite, ADuplicateKeyOrAnOutOfRangeNumberIsRefusedWhereItIs) {
             std::string::npos);
 }
 
+// The sweep of 2026-11-28: a size of 10^12 was read as an int and reported as -727379968.
+TEST(Suite, AWholeNumberTooLargeForAnIntIsReportedAsGiven) {
+  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "size": 1000000000000}]})")
+                .find("$.scenes[0].size: expected an integer, found 1000000000000 (too large)"),
+            std::string::npos)
+      << load_error(R"({"scenes": [{"scene": "balls", "size": 1000000000000}]})");
+  EXPECT_NE(load_error(R"({"scenes": [{"scene": "balls", "resolution": [64, 4294967360]}]})")
+                .find("$.scenes[0].resolution[1]: expected an integer, found 4294967360"),
+            std::string::npos);
+}
+
 // Ids and names become cache paths (scenes/<suite>/<id>.nff, runs/.../scenes/<id>): one that
 // could climb out of the cache is refused at load time, naming the file and the field.
 TEST(Suite, IdsAndNamesThatWouldEscapeTheCacheAreRefused) {
@@ -131,6 +142,16 @@ TEST(Suite, UnknownSuiteNameAndSceneSelection) {
   const Suite suite = load_suite("ci", RAYGATE_SOURCE_DIR);
   EXPECT_EQ(select_scenes(suite, {"tetra"}).size(), 1u);
   EXPECT_THROW(select_scenes(suite, {"no-such-scene"}), UsageError);
+  // The sweep of 2026-11-28: a 100,000-character --scene was echoed whole (16 KB).
+  try {
+    select_scenes(suite, {std::string(100000, 'x')});
+    FAIL() << "accepted";
+  } catch (const UsageError& e) {
+    const std::string message = e.what();
+    EXPECT_LT(message.size(), 400u) << message;
+    EXPECT_NE(message.find("... (100000 characters)'; its scenes: balls, gears"), std::string::npos)
+        << message;
+  }
 }
 
 }  // namespace

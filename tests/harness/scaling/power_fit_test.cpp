@@ -1,6 +1,7 @@
 // The growth fit on synthetic points with known exponents: exact, noisy, start-up dominated,
 // curved and scattered, and the t quantiles behind its interval.
 #include "scaling/power_fit.h"
+#include "scaling/scaling_text.h"
 
 #include <gtest/gtest.h>
 
@@ -34,6 +35,22 @@ TEST(PowerFitTest, ExactLinearGrowthHasExponentOneAndAPointInterval) {
   EXPECT_NEAR(fit.r_squared, 1.0, 1e-12);
   EXPECT_NEAR(fit.predict(1000), 2e-3, 1e-9);
   EXPECT_EQ(fit.quality, FitQuality::power_law);
+}
+
+// The sweep of 2026-11-28: "r² 0.705, power law fits" beside "r² 0.904, power law does not fit"
+// read as a contradiction. A flat ratio has little variance for r² to explain; the fit is judged
+// by how far its points stray from the line, which the words now say.
+TEST(PowerFitTest, TheWordsNameWhatAFitIsJudgedBy) {
+  const PowerFit flat = fit_power_law(points([](double) { return 0.5; }, 1.0));
+  EXPECT_EQ(flat.quality, FitQuality::power_law);
+  EXPECT_LT(flat.r_squared, 0.9);
+  EXPECT_NE(describe_fit(flat).find("power law fits (the points within ±15% of the line)"),
+            std::string::npos)
+      << describe_fit(flat);
+  PowerFit scattered = flat;
+  scattered.quality = FitQuality::scattered;
+  EXPECT_NE(describe_fit(scattered).find("scatter around the line by more than ±15%"),
+            std::string::npos);
 }
 
 TEST(PowerFitTest, NoisySublinearGrowthIsRecoveredWithinItsInterval) {

@@ -40,14 +40,9 @@ std::string build_inputs_hash(const Adapter& adapter,
 // flags or runs with other options are never one trend.
 std::string measurement_hash(const Adapter& adapter, const std::string& build_hash);
 
-// What a build depends on, besides the files of the commit.
-struct BuildKeyInputs {
-  std::string sha;
-  bool dirty = false;  // gets its own key, so a dirty build never replaces a clean one
-  std::string adapter_name;
-  std::string adapter_hash;  // build_inputs_hash(), not the whole adapter
-  std::string compiler;      // detect_compiler_identity()
-  std::string extra;         // anything else the caller knows the build depends on
+// What a build depends on, besides the files of the commit: what its record keeps, and more.
+struct BuildKeyInputs : BuildIdentity {
+  std::string extra;  // anything else the caller knows the build depends on
 };
 
 // "<adapter name>-<12 sha digits>[-dirty]-<16 hex digits of SHA-256 over all inputs>": readable

@@ -24,12 +24,19 @@ struct BuildStepRecord {
   bool operator==(const BuildStepRecord&) const = default;
 };
 
-struct BuildRecord {
+// What a build is of: the commit, the adapter and the compiler. The cache key is made of these
+// (with BuildKeyInputs::extra, build_cache.h) and the record keeps them.
+struct BuildIdentity {
   std::string sha;     // the worktree's commit ("uncommitted" outside git)
-  bool dirty = false;  // local changes: never cached
+  bool dirty = false;  // local changes: never cached, and a key of its own
   std::string adapter_name;
-  std::string adapter_hash;
-  std::string compiler;                  // compiler identity text (compiler_identity.h)
+  std::string adapter_hash;  // build_inputs_hash(), not the whole adapter
+  std::string compiler;      // compiler identity text (compiler_identity.h)
+
+  bool operator==(const BuildIdentity&) const = default;
+};
+
+struct BuildRecord : BuildIdentity {
   std::string key;                       // cache key: names <cache>/builds/<key>/
   std::filesystem::path build_dir;       // {build}
   std::filesystem::path src_dir;         // {src} of the worktree this record was handed out for

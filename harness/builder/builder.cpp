@@ -59,14 +59,7 @@ BuildKeyInputs key_inputs(const Worktree& worktree, const Adapter& adapter,
 
 BuildRecord new_record(const BuildKeyInputs& inputs, const BuildCacheEntry& entry,
                        const fs::path& src) {
-  return {.sha = inputs.sha,
-          .dirty = inputs.dirty,
-          .adapter_name = inputs.adapter_name,
-          .adapter_hash = inputs.adapter_hash,
-          .compiler = inputs.compiler,
-          .key = entry.key,
-          .build_dir = entry.build_dir,
-          .src_dir = src};
+  return {inputs, entry.key, entry.build_dir, src};
 }
 
 std::vector<std::vector<std::string>> expanded_steps(const Adapter& adapter,

@@ -35,14 +35,7 @@ Worktree unknown_tree(const fs::path& path) {
 }  // namespace
 
 Worktree worktree_of(const fs::path& path, const Revision& revision) {
-  return {.path = path,
-          .revision = revision.revision,
-          .ref_name = revision.ref_name,
-          .sha = revision.sha,
-          .short_sha = revision.short_sha,
-          .subject = revision.subject,
-          .author = revision.author,
-          .commit_time = revision.commit_time};
+  return {revision, path, false};
 }
 
 Worktree describe_uncommitted_worktree(const fs::path& path) {

@@ -20,16 +20,10 @@ struct Revision {
   bool operator==(const Revision&) const = default;
 };
 
-// The source tree a build runs in.
-struct Worktree {
+// The source tree a build runs in: the commit it holds, and where. Outside a git repository its
+// sha and short_sha are "uncommitted" and the rest of the commit is empty.
+struct Worktree : Revision {
   std::filesystem::path path;
-  std::string revision;
-  std::string ref_name;
-  std::string sha;  // "uncommitted" when the tree is not in a git repository
-  std::string short_sha;
-  std::string subject;
-  std::string author;
-  std::string commit_time;
   bool dirty = false;  // the files may differ from `sha` (a --worktree with local changes)
 
   bool operator==(const Worktree&) const = default;

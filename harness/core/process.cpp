@@ -400,7 +400,7 @@ void Process::read_meter_report(ProcessResult& result) {
   result.user_seconds = static_cast<double>(report.user_us) * 1e-6;
   result.system_seconds = static_cast<double>(report.system_us) * 1e-6;
   result.max_rss_kib = report.max_rss_kib;
-  result.rss_own = true;
+  result.max_rss_own = true;
   result.peak_method = PeakMethod::largest_process;
   const std::optional<long> tree_kib =
       cgroup_ && report.joined_cgroup ? cgroup_->peak_kib() : std::nullopt;

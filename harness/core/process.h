@@ -51,22 +51,33 @@ enum class ProcessOutcome {
   spawn_failed,  // never ran (no such program, not executable, bad working directory)
 };
 
-struct ProcessResult {
-  ProcessOutcome outcome = ProcessOutcome::spawn_failed;
-  int exit_code = -1;  // when exited
-  int signal = 0;      // when signaled or timed_out
+// What a process used: its times and its peak memory. A timed run's record keeps it as the
+// process reported it (runner/run_record.h).
+struct ProcessUsage {
   double wall_seconds = 0.0;
   double user_seconds = 0.0;
   double system_seconds = 0.0;
-  long max_rss_kib = 0;  // peak resident memory; raygate's own unless the spec was metered
-  bool rss_own = false;  // max_rss_kib is the program's own (metered, and the meter reported)
-  PeakMethod peak_method = PeakMethod::raygate_process;  // how max_rss_kib was measured
+  long max_rss_kib = 0;  // peak resident memory (KiB); raygate's own unless the spec was metered
+  // max_rss_kib is the program's own (metered, and the meter reported): only such peaks are
+  // judged, raygate's seen through fork are not the program's.
+  bool max_rss_own = false;
+  // How an own peak was measured: the whole process tree at once (a memory cgroup), or its
+  // largest single process (where no cgroup could be made).
+  PeakMethod peak_method = PeakMethod::raygate_process;
+
+  double cpu_seconds() const { return user_seconds + system_seconds; }
+  bool operator==(const ProcessUsage&) const = default;
+};
+
+struct ProcessResult : ProcessUsage {
+  ProcessOutcome outcome = ProcessOutcome::spawn_failed;
+  int exit_code = -1;  // when exited
+  int signal = 0;      // when signaled or timed_out
   bool stdout_truncated = false;
   bool stderr_truncated = false;
   std::string spawn_error;
 
   bool succeeded() const { return outcome == ProcessOutcome::exited && exit_code == 0; }
-  double cpu_seconds() const { return user_seconds + system_seconds; }
   // "exited with status 3", "killed by SIGSEGV", "timed out after 10 s", ...
   std::string describe() const;
 };

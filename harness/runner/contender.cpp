@@ -15,13 +15,8 @@ const std::filesystem::path& SceneInput::file(SceneFormat format) const {
 
 RunRecord record_process(const ProcessResult& result, const ProcessSpec& spec) {
   RunRecord run;
+  static_cast<ProcessUsage&>(run) = result;  // its times and peak, as the process reported them
   run.outcome = result.describe();
-  run.wall_seconds = result.wall_seconds;
-  run.user_seconds = result.user_seconds;
-  run.system_seconds = result.system_seconds;
-  run.max_rss_kib = result.max_rss_kib;
-  run.max_rss_own = result.rss_own;
-  run.peak_method = result.peak_method;
   run.log = spec.stdout_path;
   run.ok = result.succeeded();
   if (!run.ok) {

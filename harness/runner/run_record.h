@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/memory_cgroup.h"
+#include "core/process.h"
 #include "measure/simulated_cost.h"
 
 namespace raygate {
@@ -23,21 +23,13 @@ struct Counter {
   bool operator==(const Counter&) const = default;
 };
 
-struct RunRecord {
+// Its ProcessUsage is the process's, as it ended. Documents from before raygate-meter have no
+// own peaks (max_rss_own false), and those from before issue 40 peak_method largest_process.
+struct RunRecord : ProcessUsage {
   bool ok = false;
   std::string outcome;   // ProcessResult::describe(): "exited with status 0", "killed by SIGSEGV"
   std::string failure;   // why the run is unusable, one line; empty when ok
   double seconds = 0.0;  // the time the ratio uses (see TimeSource in contender.h)
-  double wall_seconds = 0.0;
-  double user_seconds = 0.0;
-  double system_seconds = 0.0;
-  long max_rss_kib = 0;  // peak memory (KiB), measured as peak_method says
-  // Whether max_rss_kib is the contender's own (started through raygate-meter). Documents older
-  // than that hold raygate's peak seen through fork: memory is judged only on own peaks.
-  bool max_rss_own = false;
-  // Own peaks: its whole process tree at once (a memory cgroup), or its largest single process
-  // (where no cgroup could be made, and in documents from before issue 40).
-  PeakMethod peak_method = PeakMethod::raygate_process;
   // The contender's own account of its time, when it gives one: the baseline's parse + prepare +
   // render seconds from --stats, or a tracer's time parsed with the adapter's regex.
   std::optional<double> reported_seconds;
@@ -49,7 +41,6 @@ struct RunRecord {
   std::filesystem::path image;
   std::filesystem::path log;  // stdout and stderr together
 
-  double cpu_seconds() const { return user_seconds + system_seconds; }
   bool operator==(const RunRecord&) const = default;
 };
 

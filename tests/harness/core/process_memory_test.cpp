@@ -47,7 +47,7 @@ ProcessSpec allocator_spec(const std::vector<std::string>& argv, const TempDir& 
 
 void expect_peak_near(const ProcessResult& r, long mib) {
   ASSERT_TRUE(r.succeeded()) << r.describe() << " " << r.spawn_error;
-  EXPECT_TRUE(r.rss_own);
+  EXPECT_TRUE(r.max_rss_own);
   EXPECT_NE(r.peak_method, PeakMethod::raygate_process);
   EXPECT_GE(r.max_rss_kib, mib << 10) << "peak below what the program made resident";
   EXPECT_LE(r.max_rss_kib, (mib + kOverheadMib) << 10) << "peak not the program's own";
@@ -60,7 +60,7 @@ TEST(ProcessMemory, UnmeteredPeakIsTheParentsSeenThroughFork) {
   spec.metered = false;
   const ProcessResult r = run_process(spec);
   ASSERT_TRUE(r.succeeded());
-  EXPECT_FALSE(r.rss_own);
+  EXPECT_FALSE(r.max_rss_own);
   EXPECT_GE(r.max_rss_kib, kParentMib << 10);  // the reason raygate-meter exists
 }
 
@@ -91,7 +91,7 @@ TEST(ProcessMemory, MeteredKeepsExitStatusCrashAndSpawnFailure) {
   const ProcessResult exited = run_process(allocator_spec({"/bin/sh", "-c", "exit 7"}, dir));
   EXPECT_EQ(exited.outcome, ProcessOutcome::exited);
   EXPECT_EQ(exited.exit_code, 7);
-  EXPECT_TRUE(exited.rss_own);
+  EXPECT_TRUE(exited.max_rss_own);
   const ProcessResult crashed =
       run_process(allocator_spec({"/bin/sh", "-c", "kill -SEGV $$"}, dir));
   EXPECT_EQ(crashed.outcome, ProcessOutcome::signaled);
@@ -126,7 +126,7 @@ TEST(ProcessMemory, MeterForwardsASignalToTheProgram) {
   const ProcessResult r = p.wait();
   EXPECT_EQ(r.outcome, ProcessOutcome::signaled);
   EXPECT_EQ(r.signal, SIGTERM);
-  EXPECT_TRUE(r.rss_own);
+  EXPECT_TRUE(r.max_rss_own);
 }
 
 // Issue 40: four workers of 100 MiB side by side. Where a memory cgroup can be made (root, a

@@ -24,7 +24,7 @@ struct GateArgs {
 int gate_command(const GateArgs& args, const Console& console) {
   std::string note;
   const JudgedDocument j =
-      judge_document(args.results, args.policy, true, args.fail_on_inconclusive, note);
+      judge_document(args.results, args.policy, args.fail_on_inconclusive, note);
   if (!note.empty()) console.info(fmt::format("gate policy: {}", note));
   if (args.format == "json") {
     write_reports({j.document, j.gate, j.policy, {}, j.path.parent_path(), {}, 0},

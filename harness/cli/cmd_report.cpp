@@ -22,7 +22,7 @@ struct ReportArgs {
 int report_command(const ReportArgs& args, const Console& console) {
   const ReportFormat format = parse_report_format(args.format);
   std::string note;
-  const JudgedDocument j = judge_document(args.results, args.policy, false, false, note);
+  const JudgedDocument j = judge_document(args.results, args.policy, false, note);
   ReportOptions options;
   options.colour = console.colour(args.output.empty() || args.output == "-" ? stdout : nullptr);
   write_reports({j.document, j.gate, j.policy, {}, j.path.parent_path(), {}, 0},
@@ -42,7 +42,7 @@ void add_report_command(CLI::App& command, int& exit_code) {
       ->capture_default_str();
   command.add_option("-o,--output", args.output, "file to write; '-' for standard output")
       ->capture_default_str();
-  command.add_option("--policy", args.policy, "gate policy file (default: built-in defaults)")
+  command.add_option("--policy", args.policy, "gate policy file (default: the limits the document was measured under, as gate)")
       ->check(CLI::ExistingFile);
   command.add_flag("--exit-code", args.exit_code,
                    "exit with the gate's code (0 pass, 1 regression, 3 not measured)");

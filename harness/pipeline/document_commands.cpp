@@ -16,13 +16,13 @@
 namespace raygate {
 
 JudgedDocument judge_document(const std::string& results, const std::string& policy_file,
-                              bool recorded_limits, bool fail_on_inconclusive, std::string& note) {
+                              bool fail_on_inconclusive, std::string& note) {
   JudgedDocument j;
   j.path = std::filesystem::absolute(results);
   j.document = read_results(j.path);
   if (!policy_file.empty()) {
     j.policy = load_policy(policy_file);
-  } else if (recorded_limits) {
+  } else {
     j.policy = recorded_policy(j.document.settings, note);
   }
   j.policy.fail_on_inconclusive = j.policy.fail_on_inconclusive || fail_on_inconclusive;

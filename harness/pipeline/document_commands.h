@@ -26,9 +26,9 @@ struct JudgedDocument {
 };
 
 // A results document read and gated (`raygate gate`, `raygate report`) by `policy_file`, else
-// by the limits it recorded when `recorded_limits` (`note` then says so), else the defaults.
+// by the limits it recorded (`note` then says so): a report and the gate never disagree.
 JudgedDocument judge_document(const std::string& results, const std::string& policy_file,
-                              bool recorded_limits, bool fail_on_inconclusive, std::string& note);
+                              bool fail_on_inconclusive, std::string& note);
 
 struct ScalingJudgement {
   ResultsDocument document;  // with its fits attached

@@ -57,6 +57,20 @@ TEST(ReportCli, PolicyChangesTheVerdict) {
   EXPECT_EQ(json.at("counts").at("fail"), 1) << json.dump(1);  // only gears' image now
 }
 
+// Without --policy, a report judges by the limits the document was measured under, as `gate`
+// does: a compare at a 10% limit is not re-judged at the built-in 3% (the report and the compare
+// that wrote the document must not disagree).
+TEST(ReportCli, RecordedLimitsJudgeAsTheGateDoes) {
+  TempDir dir{"raygate-report-cli"};
+  ResultsDocument document = make_compare_document(dir.path());
+  document.settings.max_slowdown = 0.10;
+  write_results(document, dir.path() / "doc.json");
+  const CliRun report = run_raygate({"report", "doc.json"}, dir);
+  EXPECT_NE(report.out.find("raygate: 1 regression (gears"), std::string::npos) << report.out;
+  const CliRun gate = run_raygate({"gate", "doc.json"}, dir);
+  EXPECT_NE(gate.out.find("4 scenes, 1 failed"), std::string::npos) << gate.out;
+}
+
 TEST(ReportCli, BadInputIsAUsageError) {
   const StoredDocument doc;
   EXPECT_EQ(run_raygate({"report", "doc.json", "--format", "pdf"}, doc.dir).exit_code, 2);

@@ -25,6 +25,10 @@ std::string span_text(double seconds) {
 // scenes take longer than it.
 constexpr double kAdviceMargin = 1.25;
 
+// How far the scenes measured so far may put the estimate last said off before it is said again
+// (issue 39 holds an estimate to +-30% of the time taken).
+constexpr double kRestateFraction = 0.3;
+
 // What would decide a suite the budget cannot: each lever with its number.
 std::string advice(const Estimate& estimate, const EstimateShape& shape) {
   std::string text = fmt::format(
@@ -53,32 +57,56 @@ double scene_seconds(const RoundCost& cost, const EstimateShape& shape, std::siz
   return runs * std::max(cost.overhead_factor, 1.0);
 }
 
+namespace {
+
+// Whether `e.total_seconds` fits the budget and, where not, what would: the fewest shards, and
+// the render time of one tracer run (`render_seconds` now) that would.
+void judge_budget(Estimate& e, const EstimateShape& shape, double render_seconds) {
+  e.fits_scene_limit =
+      shape.scene_max_seconds <= 0.0 || e.seconds_per_scene <= shape.scene_max_seconds;
+  if (shape.budget_seconds <= 0.0 || e.total_seconds <= shape.budget_seconds) return;
+  e.fits_budget = false;
+  // Clamped before it becomes a count: a budget of 1e-300 minutes asks for 5e300 shards, which
+  // no integer holds (UBSan found the cast).
+  const double most = static_cast<double>(std::max<std::size_t>(shape.scenes, 2));
+  e.shards_needed = static_cast<std::size_t>(
+      std::clamp(std::ceil(kAdviceMargin * e.total_seconds / shape.budget_seconds), 2.0, most));
+  // Smaller renders shrink every program's run alike (the baseline renders the same smaller
+  // pictures), so the tracer's render time scales by the budget's share of the estimate.
+  if (render_seconds > 0.0) {
+    e.tracer_render_seconds_to_fit =
+        render_seconds * shape.budget_seconds / (kAdviceMargin * e.total_seconds);
+    // Below what calibrate can size a suite for, a smaller suite is no advice: the budget is
+    // the problem (--max-minutes 1e-300 advised --target-seconds 5e-301).
+    if (e.tracer_render_seconds_to_fit < kMinTargetSeconds) e.tracer_render_seconds_to_fit = 0.0;
+  }
+}
+
+double render_seconds(const RoundCost& cost, std::size_t tracer_count) {
+  return tracer_count > 0 ? cost.tracers_seconds / static_cast<double>(tracer_count) : 0.0;
+}
+
+}  // namespace
+
 Estimate estimate_measurement(const RoundCost& cost, const EstimateShape& shape, std::size_t rounds,
                               std::size_t tracer_count) {
   Estimate e;
   e.rounds_per_scene = rounds;
   e.seconds_per_scene = scene_seconds(cost, shape, rounds);
   e.total_seconds = e.seconds_per_scene * static_cast<double>(shape.scenes);
-  e.fits_scene_limit =
-      shape.scene_max_seconds <= 0.0 || e.seconds_per_scene <= shape.scene_max_seconds;
-  if (shape.budget_seconds > 0.0 && e.total_seconds > shape.budget_seconds) {
-    e.fits_budget = false;
-    // Clamped before it becomes a count: a budget of 1e-300 minutes asks for 5e300 shards, which
-    // no integer holds (UBSan found the cast).
-    const double most = static_cast<double>(std::max<std::size_t>(shape.scenes, 2));
-    e.shards_needed = static_cast<std::size_t>(
-        std::clamp(std::ceil(kAdviceMargin * e.total_seconds / shape.budget_seconds), 2.0, most));
-    // Smaller renders shrink every program's run alike (the baseline renders the same smaller
-    // pictures), so the tracer's render time scales by the budget's share of the estimate.
-    if (tracer_count > 0 && cost.tracers_seconds > 0.0) {
-      const double per_render = cost.tracers_seconds / static_cast<double>(tracer_count);
-      e.tracer_render_seconds_to_fit =
-          per_render * shape.budget_seconds / (kAdviceMargin * e.total_seconds);
-      // Below what calibrate can size a suite for, a smaller suite is no advice: the budget is
-      // the problem (--max-minutes 1e-300 advised --target-seconds 5e-301).
-      if (e.tracer_render_seconds_to_fit < kMinTargetSeconds) e.tracer_render_seconds_to_fit = 0.0;
-    }
-  }
+  judge_budget(e, shape, render_seconds(cost, tracer_count));
+  return e;
+}
+
+Estimate estimate_from_scenes(const std::vector<double>& scene_seconds, const EstimateShape& shape,
+                              double render_seconds) {
+  Estimate e;
+  if (scene_seconds.empty()) return e;
+  double sum = 0.0;
+  for (const double seconds : scene_seconds) sum += seconds;
+  e.seconds_per_scene = sum / static_cast<double>(scene_seconds.size());
+  e.total_seconds = e.seconds_per_scene * static_cast<double>(shape.scenes);
+  judge_budget(e, shape, render_seconds);
   return e;
 }
 
@@ -152,16 +180,40 @@ MeasurementEstimate::MeasurementEstimate(EstimateShape shape, std::size_t fewest
       progress_(progress) {}
 
 StopRule MeasurementEstimate::watch(StopRule rule, const std::string& scene_id) {
-  if (scenes_watched_++ > 0) return rule;
-  first_scene_ = scene_id;
-  return [this, rule = std::move(rule)](const std::vector<Round>& rounds, double seconds_spent) {
-    if (rounds.size() == 1) first_round(rounds, seconds_spent);
+  const std::size_t index = scenes_watched_++;
+  if (index == 0) first_scene_ = scene_id;
+  return [this, index, rule = std::move(rule)](const std::vector<Round>& rounds,
+                                                double seconds_spent) {
+    if (index == 0 && rounds.size() == 1) first_round(rounds, seconds_spent);
     const StopDecision decision = rule(rounds, seconds_spent);
     if (decision != StopDecision::continue_measuring) {
-      first_scene_done(rounds, seconds_spent, decision);
+      if (index == 0) first_scene_done(rounds, seconds_spent, decision);
+      scene_done(seconds_spent, decision);
     }
     return decision;
   };
+}
+
+void MeasurementEstimate::scene_done(double seconds_spent, StopDecision decision) {
+  scene_seconds_.push_back(seconds_spent);
+  if (decision != StopDecision::stop_converged) ++undecided_;
+  const std::size_t done = scene_seconds_.size();
+  if (done < 2 || done >= shape_.scenes || said_total_seconds_ <= 0.0) return;
+  const Estimate estimate = estimate_from_scenes(
+      scene_seconds_, shape_, cost_ ? render_seconds(*cost_, tracer_count_) : 0.0);
+  // Said again only when the scenes so far put the last estimate off by more than the margin an
+  // estimate is held to: one scene's rounds often do not predict the others'.
+  if (std::abs(estimate.total_seconds - said_total_seconds_) <=
+      kRestateFraction * said_total_seconds_) {
+    return;
+  }
+  const std::string basis = fmt::format(
+      "again, from the first {} of {} scenes (it said {}{})", done, shape_.scenes,
+      span_text(said_total_seconds_),
+      undecided_ > 0 ? fmt::format("; {} not decided in its share, so at least", undecided_)
+                     : std::string());
+  for (const std::string& line : estimate_lines(estimate, shape_, basis)) progress_.line(line);
+  said_total_seconds_ = estimate.total_seconds;
 }
 
 void MeasurementEstimate::first_round(const std::vector<Round>& rounds, double seconds_spent) {
@@ -185,6 +237,7 @@ void MeasurementEstimate::first_scene_done(const std::vector<Round>& rounds, dou
         "it need more: over {} scenes x {} = {}",
         first_scene_, count_text(rounds.size(), "round"), span_text(seconds_spent), shape_.scenes,
         span_text(seconds_spent), span_text(seconds_spent * static_cast<double>(shape_.scenes))));
+    said_total_seconds_ = seconds_spent * static_cast<double>(shape_.scenes);
     return;
   }
   // The rounds it took, at the cost of a round as measured over all of them.
@@ -195,6 +248,7 @@ void MeasurementEstimate::first_scene_done(const std::vector<Round>& rounds, dou
   const std::string basis = fmt::format("from {} (decided in {} rounds, {}), for scenes like it",
                                         first_scene_, rounds.size(), span_text(seconds_spent));
   for (const std::string& line : estimate_lines(estimate, shape_, basis)) progress_.line(line);
+  said_total_seconds_ = estimate.total_seconds;
 }
 
 }  // namespace raygate

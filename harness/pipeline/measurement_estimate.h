@@ -1,7 +1,8 @@
 // How long a run or compare will take, and whether its budget (--max-minutes) can decide it,
 // said before the rounds go on (issue 39): from the first round of the first scene (what each
 // program's run costs here, and the scheduler's overhead around them) and the fewest rounds a
-// verdict needs; then again once the first scene is decided, from the rounds it took. When the
+// verdict needs; then again once the first scene is decided, from the rounds it took; and again
+// whenever the scenes measured since put it off by more than 30%. When the
 // budget cannot decide the suite, it says what would: a longer budget, shards of a CI matrix
 // (--shard K/N, docs/shards.md), or a suite calibrated to shorter renders (raygate calibrate).
 // Pure arithmetic in estimate_measurement(); MeasurementEstimate watches a scene's stop rule.
@@ -61,6 +62,11 @@ double scene_seconds(const RoundCost& cost, const EstimateShape& shape, std::siz
 Estimate estimate_measurement(const RoundCost& cost, const EstimateShape& shape, std::size_t rounds,
                               std::size_t tracer_count);
 
+// The measurement estimated from the first-pass seconds of the scenes measured so far: their mean
+// for each of `shape.scenes`. `render_seconds`: one tracer run's, for the calibrate advice.
+Estimate estimate_from_scenes(const std::vector<double>& scene_seconds, const EstimateShape& shape,
+                              double render_seconds);
+
 // The estimate as lines for the measurement's account, starting with `basis` (what it is
 // measured from) and saying what would decide the suite when the budget cannot.
 std::vector<std::string> estimate_lines(const Estimate& estimate, const EstimateShape& shape,
@@ -79,9 +85,10 @@ EstimateShape estimate_shape(const MeasureContext& context, std::size_t scenes,
 // (UNCHANGED), and never fewer than --min-rounds; 2 when counted (sim mode).
 std::size_t fewest_compare_rounds(const MeasureContext& context, double decision_alpha);
 
-// Watches the first scene of a measurement through its stop rule and says the estimate twice:
-// after its first round (at the fewest rounds a verdict needs: a floor, said as one) and once it
-// stops (at the rounds it took, if it was decided).
+// Watches the first visit of each scene through its stop rule and says the estimate: after the
+// first scene's first round (at the fewest rounds a verdict needs: a floor, said as one), once the
+// first scene stops (at the rounds it took, if it was decided), and again after a later scene
+// whenever the scenes so far put the last estimate off by more than 30%.
 class MeasurementEstimate {
  public:
   // `fewest_rounds`: the fewest rounds any verdict of this measurement needs. `tracer_count`: as
@@ -89,13 +96,14 @@ class MeasurementEstimate {
   MeasurementEstimate(EstimateShape shape, std::size_t fewest_rounds, std::size_t tracer_count,
                       ProgressSink& progress);
 
-  // `rule` for the scene `scene_id`; only the first scene's is watched.
+  // `rule` for the first visit of the scene `scene_id`.
   StopRule watch(StopRule rule, const std::string& scene_id);
 
  private:
   void first_round(const std::vector<Round>& rounds, double seconds_spent);
   void first_scene_done(const std::vector<Round>& rounds, double seconds_spent,
                         StopDecision decision);
+  void scene_done(double seconds_spent, StopDecision decision);
 
   EstimateShape shape_;
   std::size_t fewest_rounds_;
@@ -104,6 +112,9 @@ class MeasurementEstimate {
   std::size_t scenes_watched_ = 0;
   std::string first_scene_;
   std::optional<RoundCost> cost_;
+  std::vector<double> scene_seconds_;  // each watched scene's first visit, in the order measured
+  std::size_t undecided_ = 0;          // of those, stopped without a verdict
+  double said_total_seconds_ = 0.0;    // the total last said; 0 before the first scene stops
 };
 
 }  // namespace raygate

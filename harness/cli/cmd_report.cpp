@@ -42,7 +42,9 @@ void add_report_command(CLI::App& command, int& exit_code) {
       ->capture_default_str();
   command.add_option("-o,--output", args.output, "file to write; '-' for standard output")
       ->capture_default_str();
-  command.add_option("--policy", args.policy, "gate policy file (default: the limits the document was measured under, as gate)")
+  command
+      .add_option("--policy", args.policy,
+                  "gate policy file (default: the limits the document was measured under, as gate)")
       ->check(CLI::ExistingFile);
   command.add_flag("--exit-code", args.exit_code,
                    "exit with the gate's code (0 pass, 1 regression, 3 not measured)");

@@ -183,7 +183,7 @@ StopRule MeasurementEstimate::watch(StopRule rule, const std::string& scene_id) 
   const std::size_t index = scenes_watched_++;
   if (index == 0) first_scene_ = scene_id;
   return [this, index, rule = std::move(rule)](const std::vector<Round>& rounds,
-                                                double seconds_spent) {
+                                               double seconds_spent) {
     if (index == 0 && rounds.size() == 1) first_round(rounds, seconds_spent);
     const StopDecision decision = rule(rounds, seconds_spent);
     if (decision != StopDecision::continue_measuring) {

@@ -171,8 +171,8 @@ TEST(MeasurementEstimate, LaterScenesCorrectAnEstimateOffByMoreThanThirtyPercent
   Lines progress;
   MeasurementEstimate estimate(compare_shape(10, 0.0), 14, 2, progress);
   auto scene = [&](const std::string& id, double seconds, StopDecision decision) {
-    const StopRule rule = estimate.watch(
-        [decision](const std::vector<Round>&, double) { return decision; }, id);
+    const StopRule rule =
+        estimate.watch([decision](const std::vector<Round>&, double) { return decision; }, id);
     rule({round_of(1.0, 1.0, 1.0)}, seconds);
   };
   scene("balls", 10.0, StopDecision::stop_converged);  // 10 scenes x 10 s = 100 s

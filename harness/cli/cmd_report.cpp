@@ -6,6 +6,7 @@
 #include "cli/console.h"
 #include "cli/subcommand.h"
 #include "pipeline/document_commands.h"
+#include "pipeline/output_failures.h"
 #include "report/reporter.h"
 
 namespace raygate::cli {
@@ -21,6 +22,7 @@ struct ReportArgs {
 
 int report_command(const ReportArgs& args, const Console& console) {
   const ReportFormat format = parse_report_format(args.format);
+  check_distinct_files({{"the results document", args.results}, {"--output", args.output}});
   std::string note;
   const JudgedDocument j = judge_document(args.results, args.policy, false, note);
   ReportOptions options;

@@ -97,4 +97,35 @@ void check_output_path(const std::filesystem::path& path, const std::string& opt
   }
 }
 
+namespace {
+
+// The file a path names, as far as it can be told before it exists: links and `..` resolved.
+std::filesystem::path file_named(const std::filesystem::path& path) {
+  std::error_code error;
+  const std::filesystem::path canonical = std::filesystem::weakly_canonical(path, error);
+  return error ? std::filesystem::absolute(path, error).lexically_normal() : canonical;
+}
+
+bool same_file(const std::filesystem::path& a, const std::filesystem::path& b) {
+  std::error_code error;
+  if (std::filesystem::equivalent(a, b, error)) return true;  // hard links too
+  return file_named(a) == file_named(b);
+}
+
+}  // namespace
+
+void check_distinct_files(const std::vector<NamedFile>& files) {
+  for (std::size_t i = 0; i < files.size(); ++i) {
+    if (files[i].path.empty() || files[i].path == "-") continue;
+    for (std::size_t j = i + 1; j < files.size(); ++j) {
+      if (files[j].path.empty() || files[j].path == "-") continue;
+      if (!same_file(files[i].path, files[j].path)) continue;
+      throw UsageError(
+          fmt::format("{} and {} name the same file, {}: one would overwrite the "
+                      "other; give each its own file",
+                      files[i].option, files[j].option, file_named(files[i].path).string()));
+    }
+  }
+}
+
 }  // namespace raygate

@@ -59,6 +59,18 @@ class OutputFailures {
 // default place) passes. Called before measuring, so a typo does not cost a whole run.
 void check_output_path(const std::filesystem::path& path, const std::string& option);
 
+// A file a command reads or writes, by the option or argument that named it.
+struct NamedFile {
+  std::string option;  // "--output", "--report markdown:r.md", "--store", "the results document"
+  std::filesystem::path path;
+};
+
+// Throws UsageError, naming both options, when two of `files` are the same file (one path spelt
+// two ways, or a link to the other): writing one would overwrite the other (a report over its
+// results document, -o over the store or over a document read). "" and "-" are skipped. Called
+// before measuring, with the outputs' checks.
+void check_distinct_files(const std::vector<NamedFile>& files);
+
 // Flushes standard output after a report went there; a failed write or flush (a full disk
 // behind `> file`, /dev/full) is a failure of `output`. `error_number` is errno as the writing
 // left it (the stream keeps only that it failed, not why); 0 says "write failed".

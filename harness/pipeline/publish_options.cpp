@@ -9,12 +9,20 @@
 namespace raygate {
 
 void check_publish_targets(const PublishOptions& options, const std::string& output,
-                           const std::string& option) {
-  parse_report_targets(options.reports);
+                           const std::string& option, const std::vector<NamedFile>& inputs) {
+  const std::vector<ReportTarget> reports = parse_report_targets(options.reports);
   check_output_path(output, option);
   // A malformed URL is the user's mistake, found before measuring (exit 2, as import says it);
   // a well-formed one whose server cannot be reached is only a warning after measuring.
-  if (!options.no_store && is_postgresql_url(options.store)) parse_postgresql_url(options.store);
+  const bool url = is_postgresql_url(options.store);
+  if (!options.no_store && url) parse_postgresql_url(options.store);
+  std::vector<NamedFile> files = inputs;
+  files.push_back({option, output});
+  for (std::size_t i = 0; i < reports.size(); ++i) {
+    files.push_back({"--report " + options.reports[i], reports[i].path});
+  }
+  if (!options.no_store && !url) files.push_back({"--store", options.store});
+  check_distinct_files(files);
 }
 
 PublishRequest publish_request(const PublishOptions& options,
@@ -49,7 +57,10 @@ int publish_measured(const MeasuredDocument& measured, const PublishOptions& opt
 int merge_and_publish(MergeRequest request, const PublishOptions& options,
                       const std::filesystem::path& cache_dir, const Console& console) {
   if (request.out.empty()) throw UsageError("merge: --output is required (the merged document)");
-  check_publish_targets(options, request.out, "--output");
+  std::vector<NamedFile> shards;
+  for (const std::string& shard : request.documents)
+    shards.push_back({"the shard " + shard, shard});
+  check_publish_targets(options, request.out, "--output", shards);
   request.out = std::filesystem::absolute(request.out).string();
   OutputFailures failures;
   const MergedShards merged = merge_shard_documents(request, console, failures);

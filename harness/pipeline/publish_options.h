@@ -26,9 +26,10 @@ struct PublishOptions {
 
 // Refuses, before anything is measured, a report spec or an output path (`output`, the
 // document's -o; "" for the default) that could not be written: UsageError naming `option`;
-// and a --store URL that is not a valid PostgreSQL URL (UsageError naming --store).
+// a --store URL that is not a valid PostgreSQL URL (UsageError naming --store); and two of the
+// outputs, the store and `inputs` (files the command reads) that are one file.
 void check_publish_targets(const PublishOptions& options, const std::string& output,
-                           const std::string& option);
+                           const std::string& option, const std::vector<NamedFile>& inputs = {});
 
 // Where the document at `document_path`, its record and its reports go, as the options and
 // the console say: the store is options.store, else <cache_dir>/results.db, none with

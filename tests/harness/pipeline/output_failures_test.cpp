@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "pipeline/output_failures.h"
+#include "core/error.h"
 #include "core/exit_codes.h"
 #include "core/fs.h"
 
@@ -72,6 +73,34 @@ TEST(OutputFailures, OnlyWriteErrorsAreKeptOthersTravelUp) {
   EXPECT_THROW(failures.attempt("x", [] { throw UsageError("bad"); }), UsageError);
   EXPECT_THROW(failures.attempt("x", [] { throw std::logic_error("bug"); }), std::logic_error);
   EXPECT_FALSE(failures.any());
+}
+
+// Two outputs, or an output and a file the command reads, that are one file: the second write
+// would replace the first (a store overwritten by -o, a report over its own document), so the
+// command is refused before it measures, naming both options.
+TEST(OutputFailures, TwoNamesForOneFileAreRefused) {
+  const TempDir dir;
+  const auto store = dir.path() / "results.db";
+  write_file_atomically(store, "not yet a store");
+  std::filesystem::create_symlink(store, dir.path() / "link.db");
+  try {
+    check_distinct_files(
+        {{"--store", store}, {"--output", dir.path() / "sub" / ".." / "results.db"}});
+    ADD_FAILURE() << "one file spelt two ways was taken";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("--store and --output name the same file"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(check_distinct_files({{"--report markdown:link.db", dir.path() / "link.db"},
+                                     {"the results document", store}}),
+               UsageError);
+  // Different files, standard output twice and the default place pass.
+  check_distinct_files({{"--output", dir.path() / "r.json"},
+                        {"--report markdown:-", "-"},
+                        {"--report json:-", "-"},
+                        {"--store", ""},
+                        {"--report html:r.html", dir.path() / "r.html"}});
 }
 
 }  // namespace

@@ -75,6 +75,13 @@ TEST(ReportCli, BadInputIsAUsageError) {
   const StoredDocument doc;
   EXPECT_EQ(run_raygate({"report", "doc.json", "--format", "pdf"}, doc.dir).exit_code, 2);
   EXPECT_EQ(run_raygate({"report", "missing.json"}, doc.dir).exit_code, 2);
+  // A report written over the document it reports on would lose the document.
+  const std::string before = read_file(doc.dir.path() / "doc.json");
+  const CliRun over =
+      run_raygate({"report", "doc.json", "--format", "json", "-o", "doc.json"}, doc.dir);
+  EXPECT_EQ(over.exit_code, 2) << over.out;
+  EXPECT_NE(over.out.find("name the same file"), std::string::npos) << over.out;
+  EXPECT_EQ(read_file(doc.dir.path() / "doc.json"), before);
   write_file_atomically(doc.dir.path() / "bad.json", R"({"kind": "run"})");
   const CliRun r = run_raygate({"report", "bad.json"}, doc.dir);
   EXPECT_EQ(r.exit_code, 2) << r.out;

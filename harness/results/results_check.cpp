@@ -16,6 +16,7 @@
 #include "measure/change.h"
 #include "core/domain.h"
 #include "core/memory_cgroup.h"
+#include "core/path_component.h"
 #include "core/json_field.h"
 #include "runner/timing/timing_check.h"
 #include "runner/timing/timing_modes.h"
@@ -177,8 +178,12 @@ void check_runs_by_role(const JsonField& runs, const std::set<Role>& roles) {
 
 void check_ratio(const JsonField& r) {
   object(r);
-  integer(r.member("rounds"), 0, kMaxCount);
-  number_or_null(r.member("normalized_ratio"), 0.0, kInf);
+  const std::int64_t rounds = integer(r.member("rounds"), 0, kMaxCount);
+  // Null is a ratio of no rounds: read back as 0, one with rounds would print as 0.000 beside
+  // its own interval.
+  if (!number_or_null(r.member("normalized_ratio"), 0.0, kInf) && rounds > 0) {
+    r.member("normalized_ratio").fail(fmt::format("is null, but {} rounds measured it", rounds));
+  }
   check_interval(r.member("ratio_interval"), 0.0, kInf);
   number_or_null(r.member("relative_half_width"), 0.0, kInf);
   number_or_null(r.member("log_ratio_median"), -kMaxLog, kMaxLog);
@@ -434,19 +439,37 @@ void check_revision(const JsonField& r) {
   check_strings(
       w, {"path", "revision", "ref_name", "sha", "short_sha", "subject", "author", "commit_time"});
   w.member("dirty").as_bool();
-  check_strings(object(r.member("adapter")), {"name", "hash", "file"});
+  const JsonField adapter = object(r.member("adapter"));
+  check_strings(adapter, {"name", "hash", "file"});
+  // The name becomes a folder (golden/<adapter>/ of golden bless --from-run): a name that could
+  // climb out of it is refused here, as load_adapter refuses it in an adapter file.
+  const std::string name = adapter.member("name").as_string();
+  if (std::string problem = component_problem(name); !name.empty() && !problem.empty()) {
+    adapter.member("name").fail(fmt::format("\"{}\" {}", name.substr(0, 80), problem));
+  }
   check_build(r.member("build"));
 }
 
-// Each revision once, under a role raygate knows.
-void check_revisions(const JsonField& revisions) {
+// Each revision once, under a role of the document's kind: a run measures a tracer, a compare
+// base and head (a run relabelled "compare" would be judged with no change to judge).
+void check_revisions(const JsonField& revisions, const std::string& kind) {
   std::set<std::string> seen;
   for (const JsonField& revision : array(revisions).elements()) {
     check_revision(revision);
     const JsonField role = revision.member("role");
     const std::string word = role.as_string();
-    require_word(role, word, {"tracer", "base", "head"});
+    if (kind == "run") {
+      require_word(role, word, {"tracer"});
+    } else {
+      require_word(role, word, {"base", "head"});
+    }
     if (!seen.insert(word).second) role.fail(fmt::format("role \"{}\" is listed twice", word));
+  }
+  const std::size_t expected = kind == "run" ? 1 : 2;
+  if (seen.size() != expected) {
+    revisions.fail(fmt::format("a {} document records {} revision{} ({}), found {}", kind, expected,
+                               expected == 1 ? "" : "s",
+                               kind == "run" ? "the tracer" : "base and head", seen.size()));
   }
 }
 
@@ -454,8 +477,10 @@ void check_scores(const JsonField& scores, const Roles& roles) {
   for (const std::string& role : object(scores).keys()) {
     const JsonField score = object(scores.member(role));
     require_role(score, role, roles.revisions);
-    integer(score.member("scenes"), 0, kMaxCount);
-    number_or_null(score.member("score"), 0.0, kInf);
+    const std::int64_t scenes = integer(score.member("scenes"), 0, kMaxCount);
+    if (!number_or_null(score.member("score"), 0.0, kInf) && scenes > 0) {
+      score.member("score").fail(fmt::format("is null, but it scores {} scenes", scenes));
+    }
     check_interval(score.member("interval"), 0.0, kInf);
   }
 }
@@ -508,7 +533,7 @@ void check_settings(const JsonField& settings) {
 void check_results_json(const nlohmann::json& document, const TimingModeList& modes) {
   const JsonField d(document, "$");
   object(d);
-  word_at(d, "kind", {"run", "compare"});
+  const std::string kind = word_at(d, "kind", {"run", "compare"});
   check_strings(d, {"raygate_version", "started_at", "finished_at", "suite"});
   d.member("complete").as_bool();
   check_machine(d.member("machine"));
@@ -518,12 +543,16 @@ void check_results_json(const nlohmann::json& document, const TimingModeList& mo
   check_strings(baseline, {"version", "source_sha256"});
   word_at(baseline, "accel", {"none", "bbox"});
   word_at(baseline, "sampling", {"center", "corners"});
-  check_revisions(d.member("revisions"));
+  check_revisions(d.member("revisions"), kind);
   const Roles roles{};
   std::set<std::string> ids;
   for (const JsonField& scene : array(d.member("scenes")).elements()) {
     check_scene(scene, roles);
     const JsonField id = scene.member("scene").member("id");
+    // A scene id names its run folders and golden files.
+    if (std::string problem = component_problem(id.as_string()); !problem.empty()) {
+      id.fail(fmt::format("\"{}\" {}", id.as_string().substr(0, 80), problem));
+    }
     if (!ids.insert(id.as_string()).second) {
       id.fail(fmt::format("scene \"{}\" is listed twice", id.as_string()));
     }

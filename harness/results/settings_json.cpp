@@ -68,7 +68,7 @@ struct SettingRange {
   double lowest;
   double highest;
 };
-constexpr std::array<SettingRange, 14> kSettingRanges{{{"warmup_runs", 0, 1000},
+constexpr std::array<SettingRange, 15> kSettingRanges{{{"warmup_runs", 0, 1000},
                                                        {"baseline_rounds", 0, 1e6},
                                                        {"repeats", 1, 100},
                                                        {"target_relative_half_width", 0, 1},
@@ -78,10 +78,11 @@ constexpr std::array<SettingRange, 14> kSettingRanges{{{"warmup_runs", 0, 1000},
                                                        {"max_minutes", 0, 1e6},
                                                        {"threads", 0, 1e6},
                                                        {"max_slowdown", 0, 10},
-                                                       {"significance", 0, 0.5},
-                                                       {"family_significance", 0, 0.5},
+                                                       {"significance", 0.0001, 0.5},
+                                                       {"family_significance", 0.0001, 0.5},
                                                        {"max_exponent_increase", 0, 10},
-                                                       {"max_memory_increase", 0, 100}}};
+                                                       {"max_memory_increase", 0, 100},
+                                                       {"image_tolerance", 0.0001, 1}}};
 
 void check_setting_ranges(const JsonField& settings) {
   for (const SettingRange& range : kSettingRanges) {

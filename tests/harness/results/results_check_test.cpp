@@ -254,6 +254,28 @@ const std::vector<BadDocument>& bad_documents() {
        "$.settings.significance", "out of range"},
       {"max slowdown negative", true, [](json& j) { j["settings"]["max_slowdown"] = -0.1; },
        "$.settings.max_slowdown", "out of range"},
+      // Settings under which nothing could fail (a policy file refuses them too).
+      {"significance zero", true, [](json& j) { j["settings"]["significance"] = 0; },
+       "$.settings.significance", "out of range"},
+      {"image tolerance negative", false, [](json& j) { j["settings"]["image_tolerance"] = -1; },
+       "$.settings.image_tolerance", "out of range"},
+      // Names that become folders (golden/<adapter>/, runs/<scene>/) must not climb out.
+      {"adapter name climbing out", false,
+       [](json& j) { j["revisions"][0]["adapter"]["name"] = "../../../tmp/x"; },
+       "$.revisions[0].adapter.name", "\"../../../tmp/x\" may hold only letters"},
+      {"scene id climbing out", false, [](json& j) { j["scenes"][0]["scene"]["id"] = "../../x"; },
+       "$.scenes[0].scene.id", "\"../../x\" may hold only letters"},
+      // A run relabelled as a compare has no change to judge; a compare without head is half.
+      {"a run called a compare", false, [](json& j) { j["kind"] = "compare"; },
+       "$.revisions[0].role", "unknown value \"tracer\""},
+      {"no revisions", false, [](json& j) { j["revisions"] = json::array(); }, "$.revisions",
+       "a run document records 1 revision (the tracer), found 0"},
+      // Null is how a ratio of no rounds is written; one with rounds would print as 0.000.
+      {"a measured ratio written null", false,
+       [](json& j) { j["scenes"][0]["ratios"]["tracer"]["normalized_ratio"] = nullptr; },
+       "$.scenes[0].ratios.tracer.normalized_ratio", "is null, but"},
+      {"a score written null", false, [](json& j) { j["scores"]["tracer"]["score"] = nullptr; },
+       "$.scores.tracer.score", "is null, but it scores"},
   };
   return rows;
 }

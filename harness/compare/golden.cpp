@@ -47,6 +47,20 @@ std::vector<ScaleInflation> read_inflation(const JsonField& field) {
   return inflation;
 }
 
+// A hash as bless writes it, 64 lowercase hex digits: any other text is a manifest edited by
+// hand (exit 2, its JSON path), not a golden changed after it was blessed (exit 3).
+std::string sha256_at(const JsonField& field) {
+  std::string text = field.as_string();
+  const bool hex = text.size() == 64 && std::all_of(text.begin(), text.end(), [](char c) {
+                     return (c >= '0' && c <= '9') || (c >= 'a' && c <= 'f');
+                   });
+  if (!hex) {
+    field.fail("expected a sha256 as bless writes it: 64 lowercase hex digits, found \"" +
+               text.substr(0, 80) + "\"");
+  }
+  return text;
+}
+
 GoldenNoise read_noise(const JsonField& field, const std::string& file) {
   field.expect_object({"runs", "variance", "variance_sha256", "inflation"});
   GoldenNoise noise;
@@ -56,7 +70,7 @@ GoldenNoise read_noise(const JsonField& field, const std::string& file) {
                                              std::numeric_limits<std::int64_t>::max());
   const JsonField variance = field.member("variance");
   noise.variance_file = checked_component(variance.as_string(), file + ": " + variance.path());
-  noise.variance_sha256 = field.member("variance_sha256").as_string();
+  noise.variance_sha256 = sha256_at(field.member("variance_sha256"));
   noise.inflation = read_inflation(field.member("inflation"));
   return noise;
 }
@@ -75,7 +89,7 @@ GoldenEntry read_entry(const JsonField& field, const std::string& file) {
           field.member("sampling").as_string(),
           field.member("accel").as_string(),
           checked_component(image.as_string(), file + ": " + image.path()),
-          field.member("sha256").as_string()};
+          sha256_at(field.member("sha256"))};
 }
 
 // One entry per id: find() would take the first and noise the last, mixing two goldens.

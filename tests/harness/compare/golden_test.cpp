@@ -23,10 +23,13 @@ using nlohmann::json;
 GoldenManifest two_scene_manifest() {
   GoldenManifest manifest;
   manifest.suite = "ci";
-  manifest.entries.push_back({"balls", "balls", 1, 48, 48, "center", "", "balls.mean.exr", "ab"});
-  manifest.entries.push_back({"tetra", "tetra", 3, 32, 32, "center", "", "tetra.mean.exr", "cd"});
-  manifest.noise["balls"] = {8, "balls.variance.exr", "ef", {{8, 1.02}, {kWholeImage, 1.5}}};
-  manifest.noise["tetra"] = {9, "tetra.variance.exr", "01", {{8, 1.0}}};
+  manifest.entries.push_back(
+      {"balls", "balls", 1, 48, 48, "center", "", "balls.mean.exr", std::string(64, 'a')});
+  manifest.entries.push_back(
+      {"tetra", "tetra", 3, 32, 32, "center", "", "tetra.mean.exr", std::string(64, 'c')});
+  manifest.noise["balls"] = {
+      8, "balls.variance.exr", std::string(64, 'e'), {{8, 1.02}, {kWholeImage, 1.5}}};
+  manifest.noise["tetra"] = {9, "tetra.variance.exr", std::string(64, '1'), {{8, 1.0}}};
   return manifest;
 }
 

@@ -308,7 +308,8 @@ TEST(AdapterGoldens, EachAdapterHasItsOwnAndTheBaselineSharesOnlyWithItsVariants
   GoldenManifest shared;
   shared.suite = "ci";
   shared.shared_with = {"fast-variant"};
-  shared.upsert({"tetra", "tetra", 6, 160, 160, "center", "none", "tetra.png", "ff"});
+  shared.upsert(
+      {"tetra", "tetra", 6, 160, 160, "center", "none", "tetra.png", std::string(64, 'f')});
   save_golden_manifest(shared, dir.path() / "slow");
   EXPECT_EQ(load_golden_manifest(dir.path() / "slow").shared_with, shared.shared_with);
   EXPECT_EQ(adapter_golden_dir(dir.path(), "fast-variant"), dir.path() / "slow");

@@ -128,15 +128,28 @@ TEST(GoldenManifest, RoundTripsAndRejectsOtherSchemas) {
   m.suite = "ci";
   m.baseline_version = "raygate-baseline 0.1.0 source-sha256:abc";
   m.baseline_source_sha256 = "abc";
-  m.upsert({"tetra", "tetra", 3, 96, 96, "center", "none", "tetra.png", "ff"});
-  m.upsert({"balls", "balls", 2, 96, 96, "center", "none", "balls.png", "ee"});
-  m.upsert({"tetra", "tetra", 3, 96, 96, "center", "none", "tetra.png", "00"});
+  m.upsert({"tetra", "tetra", 3, 96, 96, "center", "none", "tetra.png", std::string(64, 'f')});
+  m.upsert({"balls", "balls", 2, 96, 96, "center", "none", "balls.png", std::string(64, 'e')});
+  m.upsert({"tetra", "tetra", 3, 96, 96, "center", "none", "tetra.png", std::string(64, '0')});
   save_golden_manifest(m, dir.path());
   const GoldenManifest loaded = load_golden_manifest(dir.path());
   ASSERT_EQ(loaded.entries.size(), 2u);
   EXPECT_EQ(loaded.entries[0].id, "balls");  // sorted
-  EXPECT_EQ(loaded.find("tetra")->sha256, "00");
+  EXPECT_EQ(loaded.find("tetra")->sha256, std::string(64, '0'));
   EXPECT_EQ(loaded.baseline_source_sha256, "abc");
+  // A hash not as bless writes it (short, uppercase) is a hand-edited manifest: exit 2, its
+  // path; not "the golden was changed after it was blessed".
+  for (const std::string& bad : {std::string("abc"), std::string(64, 'F'), std::string(64, 'g')}) {
+    m.upsert({"tetra", "tetra", 3, 96, 96, "center", "none", "tetra.png", bad});
+    save_golden_manifest(m, dir.path());
+    try {
+      load_golden_manifest(dir.path());
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("64 lowercase hex digits"), std::string::npos)
+          << e.what();
+    }
+  }
   write_file_atomically(dir.path() / "manifest.json", R"({"schema_version": 99})");
   EXPECT_THROW(load_golden_manifest(dir.path()), UsageError);
   EXPECT_TRUE(load_golden_manifest(dir.path() / "empty").entries.empty());

@@ -62,9 +62,12 @@ TEST(NoisyImageFiles, GoldenManifestKeepsTheNoiseOfEachEntry) {
   const TempDir dir;
   GoldenManifest manifest;
   manifest.suite = "ci";
-  manifest.entries.push_back({"balls", "balls", 1, 48, 48, "center", "", "balls.mean.exr", "ab"});
-  manifest.entries.push_back({"gears", "gears", 1, 48, 48, "center", "", "gears.png", "cd"});
-  manifest.noise["balls"] = {8, "balls.variance.exr", "ef", {{8, 1.02}, {kWholeImage, 1.5}}};
+  manifest.entries.push_back(
+      {"balls", "balls", 1, 48, 48, "center", "", "balls.mean.exr", std::string(64, 'a')});
+  manifest.entries.push_back(
+      {"gears", "gears", 1, 48, 48, "center", "", "gears.png", std::string(64, 'c')});
+  manifest.noise["balls"] = {
+      8, "balls.variance.exr", std::string(64, 'e'), {{8, 1.02}, {kWholeImage, 1.5}}};
   save_golden_manifest(manifest, dir.path());
   const GoldenManifest back = load_golden_manifest(dir.path());
   ASSERT_EQ(back.noise.size(), 1u);

@@ -57,8 +57,8 @@ void add_alert_command(CLI::App& command, int& exit_code) {
                      "random orders of the series for the significance test");
   add_bounded_option(command, "--significance", args.request.detection.significance, 0.0001, 0.5,
                      "a change point needs a permutation p-value below this");
-  command.add_option("--seed", args.request.detection.seed, "seed of the permutations")
-      ->capture_default_str();
+  add_bounded_option(command, "--seed", args.request.detection.seed, std::uint64_t{0},
+                     std::uint64_t{1} << 53, "seed of the permutations");
   add_format_option(command, args.format, {"text", "json"});
 }
 

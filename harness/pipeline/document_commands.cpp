@@ -8,6 +8,7 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/paths.h"
+#include "core/sha256.h"
 #include "gate/growth_gate.h"
 #include "runner/baseline_tool.h"
 #include "scaling/scaling_stage.h"
@@ -107,8 +108,19 @@ ConsistencyResult check_consistency(const std::vector<std::string>& paths,
                     paths.size()));
   }
   std::vector<DocumentRatios> documents;
+  std::vector<std::string> hashes;
   for (std::size_t i = 0; i < paths.size(); ++i) {
     documents.push_back(document_ratios(read_document(paths[i]), paths[i], document_label(i)));
+    // One measurement given twice agrees with itself perfectly: no evidence of two machines.
+    hashes.push_back(sha256_file_hex(paths[i]));
+    for (std::size_t j = 0; j < i; ++j) {
+      if (hashes[j] == hashes[i]) {
+        throw UsageError(
+            fmt::format("{} and {} are the same measurement (identical files); "
+                        "consistency compares documents measured apart",
+                        paths[j], paths[i]));
+      }
+    }
   }
   return analyse_consistency(std::move(documents), options);
 }

@@ -113,6 +113,15 @@ void check_named_cpus(const MeasureOptions& args, ScheduleKind kind) {
   };
   check("--pin", args.pin_cpus);
   if (kind == ScheduleKind::duet) check("--duet-cpus", args.duet_cpus);
+  // A duet places its programs on --duet-cpus: a --pin beside it would be silently not used.
+  if (kind == ScheduleKind::duet && !args.pin_cpus.empty()) {
+    throw UsageError("--pin applies to the alternate schedule; a duet runs on --duet-cpus");
+  }
+  for (std::size_t i = 0; i < args.pin_cpus.size(); ++i) {
+    if (std::count(args.pin_cpus.begin(), args.pin_cpus.begin() + i, args.pin_cpus[i]) > 0) {
+      throw UsageError(fmt::format("--pin names CPU {} twice", args.pin_cpus[i]));
+    }
+  }
 }
 
 }  // namespace

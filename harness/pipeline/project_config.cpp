@@ -85,6 +85,10 @@ void check_values(const std::string& text, const std::filesystem::path& file) {
       throw UsageError(fmt::format("{}:{}: {} has no value; give one, or remove the line",
                                    file.string(), number, key));
     }
+    if (line[value] == '[') {  // CLI11 reads ["a"] as the value a: a list is not one value
+      throw UsageError(fmt::format("{}:{}:{}: {} is a list; give one value", file.string(), number,
+                                   value + 1, key));
+    }
     const char quote = line[value];
     if ((quote == '"' || quote == '\'') && line.find(quote, value + 1) == std::string::npos) {
       throw UsageError(

@@ -15,6 +15,16 @@ RunTree locate_run_tree(const std::string& repo, const std::string& rev,
                         const std::string& worktree, const std::filesystem::path& cache_dir) {
   if (!worktree.empty()) {
     const std::filesystem::path path = std::filesystem::absolute(worktree);
+    // The user's arguments, refused before anything is built (a folder that is not there was
+    // reported as a failed build, exit 3; a --rev beside it was silently not measured).
+    std::error_code error;
+    if (!std::filesystem::is_directory(path, error)) {
+      throw UsageError("--worktree " + path.string() + ": no such folder");
+    }
+    if (rev != "HEAD") {
+      throw UsageError("--rev " + rev.substr(0, 60) + " and --worktree " + path.string() +
+                       " both given: a worktree is measured as it is; give one of them");
+    }
     Worktree tree = describe_uncommitted_worktree(path);
     tree.revision = "--worktree " + path.string();
     return {tree, path.string()};

@@ -1,5 +1,7 @@
 #include "runner/suite.h"
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
@@ -137,6 +139,10 @@ std::vector<SuiteScene> select_scenes(const Suite& suite, const std::vector<std:
   if (ids.empty()) return suite.scenes;
   std::vector<SuiteScene> out;
   for (const std::string& id : ids) {
+    // A document holds a scene once (results_check refuses one listed twice): so does a choice.
+    if (std::count(ids.begin(), ids.end(), id) > 1) {
+      throw UsageError("scene '" + id.substr(0, 60) + "' is chosen twice; name each scene once");
+    }
     bool found = false;
     for (const SuiteScene& s : suite.scenes) {
       if (s.id == id) {

@@ -71,6 +71,13 @@ TEST_F(ConsistencyCli, UsageErrorsExitTwo) {
   EXPECT_EQ(mixed.exit_code, 2) << mixed.out;
   EXPECT_THAT(mixed.out, HasSubstr("different raygate-baseline sources"));
   EXPECT_EQ(run_raygate({"consistency", a, b, "--allow-mixed"}, dir).exit_code, 0);
+  // One measurement given twice agrees with itself: no evidence about two machines.
+  std::filesystem::copy_file(dir.path() / a, dir.path() / "copy.json");
+  for (const std::string& again : {a, (dir.path() / "copy.json").string()}) {
+    const CliRun twice = run_raygate({"consistency", a, again}, dir);
+    EXPECT_EQ(twice.exit_code, 2) << twice.out;
+    EXPECT_THAT(twice.out, HasSubstr("are the same measurement"));
+  }
 }
 
 // A document argument that is not there or not a results document is the user's to fix, as in

@@ -212,6 +212,21 @@ TEST_F(Conventions, AnEmptyRepoAFolderAsStoreAndAFileAsCacheAreUsageErrors) {
       {"run", "--adapter", "raygate-baseline-bbox", "--no-pin", "--pin", "1", "--no-store"}, dir);
   EXPECT_EQ(pins.exit_code, 2) << pins.err;
   EXPECT_THAT(pins.err, HasSubstr("--no-pin and --pin exclude each other"));
+  // The sweep of 2026-11-29: a CPU named twice, and --pin beside a duet (not used), were taken.
+  const CliStreams twice = run_raygate_streams(
+      {"run", "--adapter", "raygate-baseline-bbox", "--pin", "0,0", "--no-store"}, dir);
+  EXPECT_EQ(twice.exit_code, 2) << twice.err;
+  EXPECT_THAT(twice.err, HasSubstr("--pin names CPU 0 twice"));
+  const CliStreams duet = run_raygate_streams({"run", "--adapter", "raygate-baseline-bbox",
+                                               "--schedule", "duet", "--pin", "0", "--no-store"},
+                                              dir);
+  EXPECT_EQ(duet.exit_code, 2) << duet.err;
+  EXPECT_THAT(duet.err, HasSubstr("--pin applies to the alternate schedule"));
+  // -o over the store the run records into would replace the store with the document.
+  const CliStreams over = run_raygate_streams(
+      {"run", "--adapter", "raygate-baseline-bbox", "--store", "s.db", "-o", "s.db"}, dir);
+  EXPECT_EQ(over.exit_code, 2) << over.err;
+  EXPECT_THAT(over.err, HasSubstr("--output and --store name the same file"));
 }
 
 // The sweep of 2026-11-28: `raygate nosuchcmd` said only "A subcommand is required".

@@ -62,6 +62,14 @@ TEST(ProjectConfig, SectionsAndListsAreRefusedWithTheLine) {
   }
   write_file_atomically(dir.path() / "b.toml", "suite = [\"ci\", \"full\"]\n");
   EXPECT_THROW(read_project_config(dir.path() / "b.toml"), UsageError);
+  // A list of one was read as its one value (the sweep of 2026-11-29: a store named `a`).
+  write_file_atomically(dir.path() / "c.toml", "store = [\"a\"]\n");
+  try {
+    read_project_config(dir.path() / "c.toml");
+    FAIL() << "a list of one was accepted";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("c.toml:1:9: store is a list; give one value"));
+  }
 }
 
 // Hostile sweep Y1, y-bad: CLI11 kept the quote of an unterminated string as part of the value

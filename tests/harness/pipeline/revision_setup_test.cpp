@@ -108,5 +108,24 @@ TEST(BothSides, AFailedSideIsReportedWithHowTheOtherDid) {
   }
 }
 
+// --worktree is the user's argument: a folder that is not there, or a --rev beside it that would
+// silently not be measured, is refused before anything is built (exit 2, not a failed build).
+TEST(RunTree, AMissingWorktreeOrARevBesideItIsAUsageError) {
+  const TempDir dir;
+  try {
+    locate_run_tree(".", "HEAD", (dir.path() / "nowhere").string(), dir.path());
+    ADD_FAILURE() << "a missing worktree was taken";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("nowhere: no such folder"), std::string::npos) << e.what();
+  }
+  try {
+    locate_run_tree(".", "HEAD~3", dir.path().string(), dir.path());
+    ADD_FAILURE() << "--rev beside --worktree was taken";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("--rev HEAD~3 and --worktree"), std::string::npos)
+        << e.what();
+  }
+}
+
 }  // namespace
 }  // namespace raygate

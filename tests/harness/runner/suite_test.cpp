@@ -142,6 +142,8 @@ TEST(Suite, UnknownSuiteNameAndSceneSelection) {
   const Suite suite = load_suite("ci", RAYGATE_SOURCE_DIR);
   EXPECT_EQ(select_scenes(suite, {"tetra"}).size(), 1u);
   EXPECT_THROW(select_scenes(suite, {"no-such-scene"}), UsageError);
+  // A scene chosen twice would be measured twice into one document, which no reader takes.
+  EXPECT_THROW(select_scenes(suite, {"tetra", "tetra"}), UsageError);
   // The sweep of 2026-11-28: a 100,000-character --scene was echoed whole (16 KB).
   try {
     select_scenes(suite, {std::string(100000, 'x')});

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/path_component.h"
+#include "measure/stop_words.h"
 #include "core/sha256.h"
 #include "core/time_text.h"
 #include "gate/growth_gate.h"
@@ -279,7 +280,7 @@ std::string scene_line(const SceneResult& scene, const std::vector<Role>& tracer
     }
   }
   text += fmt::format("  {}, {}", count_text(scene.runs.rounds.size(), "round"),
-                      scene.runs.stop_reason);
+                      stop_reason_text(scene.runs.stop_reason));
   if (const std::string repeats = repeats_note(scene.runs.rounds); !repeats.empty()) {
     text += ", " + repeats;
   }

@@ -8,6 +8,7 @@
 
 #include "core/format.h"
 #include "measure/descriptive.h"
+#include "measure/stop_words.h"
 #include "report/html_parts.h"
 
 namespace raygate::report::html {
@@ -232,7 +233,13 @@ std::vector<std::string> round_facts(const ResultsDocument& d, const SceneResult
   std::vector<std::string> facts;
   const RatioSummary* primary = scene.ratio(primary_role(d));
   if (primary == nullptr) return facts;
-  if (scene.change && scene.change->rounds != primary->rounds) {
+  const std::size_t all_rounds = scene.runs.rounds.size();
+  if (scene.change && all_rounds > scene.change->rounds) {
+    // Rounds for the stored ratio after the change was decided (pipeline/stored_ratio.h).
+    facts.push_back(fmt::format("{} decided the change, {} in all (the baseline in {})",
+                                count_text(scene.change->rounds, "round"), all_rounds,
+                                primary->rounds));
+  } else if (scene.change && scene.change->rounds != primary->rounds) {
     facts.push_back(fmt::format("{} (the baseline in {})",
                                 count_text(scene.change->rounds, "round"), primary->rounds));
   } else {
@@ -245,7 +252,7 @@ std::vector<std::string> round_facts(const ResultsDocument& d, const SceneResult
 std::string run_facts(const ReportInput& input, const SceneResult& scene) {
   const ResultsDocument& d = input.document;
   std::vector<std::string> facts = round_facts(d, scene);
-  if (!scene.runs.stop_reason.empty()) facts.push_back("stopped: " + scene.runs.stop_reason);
+  if (!scene.runs.stop_reason.empty()) facts.push_back(stop_reason_text(scene.runs.stop_reason));
   // The pairing-free second opinion (docs/statistics.md §5) on the rounds the baseline joined;
   // the verdict does not use it. Not beside a counted change (no sampling error to test), nor
   // with fewer than 6 rounds a side, where no p can fall below 0.05 whatever the change.

@@ -51,6 +51,30 @@ TEST(JunitReport, ParsesBackWithCountsAndNumbers) {
   EXPECT_FALSE(testcase(suite, "balls", "image").child("failure"));
 }
 
+// INCONCLUSIVE is a warning to the gate, but not a pass: in a CI's test tab it is skipped (the
+// sweep of 2026-11-29 found +53% after 4 rounds green there).
+TEST(JunitReport, AnInconclusiveSceneIsSkippedNotPassed) {
+  Fixture f(true);
+  for (SceneResult& scene : f.document.scenes) {
+    if (scene.entry.id != "balls" || !scene.change) continue;
+    scene.change->change = 0.53;
+    scene.change->change_interval = {-0.05, 1.2};
+    scene.change_verdict = ChangeVerdict::inconclusive;
+  }
+  f.gate = evaluate_gate(f.document, f.policy);
+  f.input = std::make_unique<ReportInput>(
+      ReportInput{f.document, f.gate, f.policy, {}, f.dir.path(), {}, 0});
+  pugi::xml_document doc;
+  ASSERT_TRUE(doc.load_string(f.render("junit").c_str()));
+  const pugi::xml_node suite = doc.child("testsuites").child("testsuite");
+  const pugi::xml_node skipped = testcase(suite, "balls", "speed").child("skipped");
+  ASSERT_TRUE(skipped) << f.render("junit");
+  EXPECT_NE(std::string(skipped.attribute("message").value()).find("inconclusive: "),
+            std::string::npos)
+      << skipped.attribute("message").value();
+  EXPECT_EQ(suite.attribute("skipped").as_int(), 3);  // and tetra's speed and image, as before
+}
+
 TEST(JunitReport, EscapingIsTheLibrarys) {
   const Fixture f(true);
   const std::string xml = f.render("junit");

@@ -1,0 +1,19 @@
+// Why a scene stopped, in words a reader of the progress lines and the HTML report understands.
+// The results document keeps the identifiers (stop_converged, ...; measure/stopping_policy.h);
+// these are only what is printed.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace raygate {
+
+inline std::string stop_reason_text(std::string_view stop_reason) {
+  if (stop_reason == "stop_converged") return "decided";
+  if (stop_reason == "stop_budget_rounds") return "stopped at its round limit";
+  if (stop_reason == "stop_budget_time") return "stopped at its share of the time";
+  if (stop_reason == "failed") return "failed";
+  return std::string(stop_reason);
+}
+
+}  // namespace raygate

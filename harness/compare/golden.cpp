@@ -218,7 +218,12 @@ GoldenManifest load_golden_manifest(const std::filesystem::path& golden_dir) {
                      " is a file, not a folder: a golden folder holds manifest.json and the "
                      "images it lists");
   }
-  if (!std::filesystem::exists(path)) return GoldenManifest{};
+  const std::filesystem::file_status status = std::filesystem::status(path, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory && ec != std::errc::not_a_directory) {
+    // A symlink loop, a folder raygate may not enter: the user's folder to fix, said plainly.
+    throw UsageError(path.string() + ": cannot be read: " + ec.message());
+  }
+  if (!std::filesystem::exists(status)) return GoldenManifest{};
   const json doc = read_json_file(path);  // duplicate keys refused (core/json_reader.h)
   try {
     return read_manifest(JsonField(doc, "$"), path.string());

@@ -235,8 +235,20 @@ ImageCheck check_against_golden(Role role, const std::filesystem::path& actual,
   if (auto problem = golden_file_problem(golden_dir, golden.entry->file, golden.entry->sha256)) {
     return untrusted_golden(role, actual, golden.expected, std::move(*problem));
   }
-  return check_image(role, ImageReference::golden, actual, golden.expected, thresholds,
-                     evidence_dir, golden.stem);
+  ImageCheck check = check_image(role, ImageReference::golden, actual, golden.expected, thresholds,
+                                 evidence_dir, golden.stem);
+  // The manifest's size is what look_up_golden matched the render by: a golden of another size
+  // under those words is a manifest that does not describe its image.
+  const GoldenEntry& entry = *golden.entry;
+  if (check.metrics && (check.metrics->expected_width != entry.width ||
+                        check.metrics->expected_height != entry.height)) {
+    return untrusted_golden(role, actual, golden.expected,
+                            fmt::format("{} is {}x{}, but the manifest lists it at {}x{} ({})",
+                                        entry.file, check.metrics->expected_width,
+                                        check.metrics->expected_height, entry.width, entry.height,
+                                        (golden_dir / "manifest.json").string()));
+  }
+  return check;
 }
 
 }  // namespace raygate

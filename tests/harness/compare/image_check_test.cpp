@@ -86,6 +86,20 @@ TEST_F(ImageCheckTest, AGoldenThatIsNotItsManifestsHashIsAnError) {
   EXPECT_EQ(check_detail(c), c.error);
 }
 
+// A manifest that lists a golden at a size it is not (hand-edited: width 64 for a 160x160
+// image) matched renders of that size to a picture of another: it judges nothing.
+TEST_F(ImageCheckTest, AGoldenOfAnotherSizeThanItsManifestSaysIsAnError) {
+  GoldenManifest edited = manifest_;
+  GoldenEntry rendered = ci_tetra();
+  for (GoldenEntry& e : edited.entries) {
+    if (e.id == "tetra") e.width = rendered.width = e.width / 2;
+  }
+  const ImageCheck c = check_against_golden(Role::tracer, kGolden / "tetra.png", kGolden, edited,
+                                            rendered, {}, dir_.path() / "evidence");
+  EXPECT_EQ(c.verdict, ImageVerdict::error);
+  EXPECT_NE(c.error.find("but the manifest lists it at"), std::string::npos) << c.error;
+}
+
 TEST_F(ImageCheckTest, NoGoldenForTheIdIsMissing) {
   GoldenEntry rendered = ci_tetra();
   rendered.id = "tetra-s2";

@@ -155,6 +155,20 @@ TEST(GoldenManifest, RoundTripsAndRejectsOtherSchemas) {
   EXPECT_TRUE(load_golden_manifest(dir.path() / "empty").entries.empty());
 }
 
+// A manifest that is a symlink loop is the user's folder to fix (exit 2, the path), not the
+// file system's raw error (the sweep of 2026-11-29: exit 3, "filesystem error: status: ...").
+TEST(GoldenManifest, ASymlinkLoopIsAUsageErrorNamingIt) {
+  TempDir dir;
+  std::filesystem::create_symlink(dir.path() / "manifest.json", dir.path() / "manifest.json");
+  try {
+    load_golden_manifest(dir.path());
+    ADD_FAILURE() << "a symlink loop was read";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("manifest.json: cannot be read: "), std::string::npos)
+        << e.what();
+  }
+}
+
 // A crafted manifest must not make verify read, or bless overwrite, a file outside its folder.
 TEST(GoldenManifest, RefusesFileNamesThatLeaveTheGoldenFolder) {
   TempDir dir;

@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/path_component.h"
+#include "pipeline/output_failures.h"
 #include "core/time_text.h"
 #include "pipeline/revision_setup.h"
 #include "pipeline/suite_measurement.h"
@@ -129,9 +130,8 @@ void check_calibrate_request(const CalibrateRequest& request) {
     throw UsageError(fmt::format("--min-side {}: expected 1..4096", request.min_side));
   }
   if (request.out.empty()) throw UsageError("-o: the suite file to write is required");
-  if (std::filesystem::is_directory(request.out)) {
-    throw UsageError("-o " + request.out.string() + ": is a directory; name the suite file");
-  }
+  // A folder, a device, or a folder raygate cannot write into: said now, not after the renders.
+  check_output_path(request.out, "-o");
   if (request.out.extension() != ".json") {
     throw UsageError("-o " + request.out.string() +
                      ": a suite file ends in .json (so --suite reads it as a file)");

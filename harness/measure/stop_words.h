@@ -12,7 +12,6 @@ inline std::string stop_reason_text(std::string_view stop_reason) {
   if (stop_reason == "stop_converged") return "decided";
   if (stop_reason == "stop_budget_rounds") return "stopped at its round limit";
   if (stop_reason == "stop_budget_time") return "stopped at its share of the time";
-  if (stop_reason == "failed") return "failed";
   return std::string(stop_reason);
 }
 

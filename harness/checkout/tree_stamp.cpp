@@ -13,35 +13,40 @@ namespace raygate {
 namespace {
 
 // First line of every stamp: a stamp of another layout is never trusted. Layout 2 marks trees
-// written since the checkout keeps binary files (layout 1 trees could hold them empty).
-constexpr const char* kHeader = "raygate tree stamp 2\n";
+// written since the checkout keeps binary files (layout 1 trees could hold them empty); layout 3
+// adds the inode, so a file replaced whole (an editor's or a tool's write-and-rename) within the
+// file system's timestamp tick, same size, is still seen (a test saw it missed under load).
+constexpr const char* kHeader = "raygate tree stamp 3\n";
 constexpr std::string_view kHeaderPrefix = "raygate tree stamp ";
 
-// One line per file: "<size> <mtime seconds> <mtime nanoseconds> <mode> <path length>:<path>".
+// One line per file:
+// "<size> <mtime seconds> <mtime nanoseconds> <mode> <inode> <path length>:<path>".
 // The length prefix keeps any path (spaces, newlines are legal in git) unambiguous.
 struct Entry {
   long long size = 0;
   long long seconds = 0;
   long long nanoseconds = 0;
   unsigned mode = 0;
+  unsigned long long inode = 0;
   std::string path;
 };
 
 Entry entry_of(const struct stat& info, std::string path) {
-  return {static_cast<long long>(info.st_size), static_cast<long long>(info.st_mtim.tv_sec),
+  return {static_cast<long long>(info.st_size),         static_cast<long long>(info.st_mtim.tv_sec),
           static_cast<long long>(info.st_mtim.tv_nsec), static_cast<unsigned>(info.st_mode),
-          std::move(path)};
+          static_cast<unsigned long long>(info.st_ino), std::move(path)};
 }
 
 bool matches(const struct stat& info, const Entry& e) {
   return static_cast<long long>(info.st_size) == e.size &&
          static_cast<long long>(info.st_mtim.tv_sec) == e.seconds &&
          static_cast<long long>(info.st_mtim.tv_nsec) == e.nanoseconds &&
-         static_cast<unsigned>(info.st_mode) == e.mode;
+         static_cast<unsigned>(info.st_mode) == e.mode &&
+         static_cast<unsigned long long>(info.st_ino) == e.inode;
 }
 
 std::string line_of(const Entry& e) {
-  return fmt::format("{} {} {} {:o} {}:{}\n", e.size, e.seconds, e.nanoseconds, e.mode,
+  return fmt::format("{} {} {} {:o} {} {}:{}\n", e.size, e.seconds, e.nanoseconds, e.mode, e.inode,
                      e.path.size(), e.path);
 }
 
@@ -55,8 +60,8 @@ class StampReader {
     Entry e;
     std::size_t length = 0;
     if (!number(e.size, ' ') || !number(e.seconds, ' ') || !number(e.nanoseconds, ' ') ||
-        !number(e.mode, ' ', 8) || !number(length, ':') || rest_.size() < length + 1 ||
-        rest_[length] != '\n') {
+        !number(e.mode, ' ', 8) || !number(e.inode, ' ') || !number(length, ':') ||
+        rest_.size() < length + 1 || rest_[length] != '\n') {
       return std::nullopt;
     }
     e.path = rest_.substr(0, length);

@@ -143,8 +143,8 @@ TEST_F(CheckoutTreeEntries, ATreeCachedByAnOlderCheckoutIsRewrittenNotTrusted) {
   fs::remove(png);
   write_file_atomically(png, "");
   std::string stamp = tree_stamp(first.path);
-  ASSERT_EQ(stamp.rfind("raygate tree stamp 2\n", 0), 0u);
-  stamp.replace(0, std::string("raygate tree stamp 2").size(), "raygate tree stamp 1");
+  ASSERT_EQ(stamp.rfind("raygate tree stamp 3\n", 0), 0u);
+  stamp.replace(0, std::string("raygate tree stamp 3").size(), "raygate tree stamp 1");
   write_file_atomically(stamp_path_for(first.path), stamp);
 
   const Worktree again = checkout();

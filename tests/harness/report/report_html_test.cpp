@@ -3,6 +3,7 @@
 // plots drawn as inline SVG.
 #include <gtest/gtest.h>
 
+#include "measure/stop_words.h"
 #include "report_fixture.h"
 
 namespace raygate::test {
@@ -80,6 +81,17 @@ TEST(HtmlReport, SaysTheGatesNotesUnderTheHeadline) {
   ASSERT_NE(note, std::string::npos);
   EXPECT_LT(html.find(R"(<div class="banner)"), note);
   EXPECT_LT(note, html.find(R"(<dl class="meta">)"));
+}
+
+// Why a scene stopped is said in words; the identifier stays in the document only.
+TEST(HtmlReport, SaysWhyASceneStoppedInWords) {
+  const Fixture f(true);
+  const std::string html = f.render("html");
+  EXPECT_NE(html.find(" · decided · "), std::string::npos);
+  EXPECT_EQ(html.find("stop_converged"), std::string::npos);
+  EXPECT_EQ(stop_reason_text("stop_budget_rounds"), "stopped at its round limit");
+  EXPECT_EQ(stop_reason_text("stop_budget_time"), "stopped at its share of the time");
+  EXPECT_EQ(stop_reason_text("failed"), "failed");
 }
 
 TEST(HtmlReport, EscapesText) {

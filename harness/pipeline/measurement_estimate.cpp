@@ -233,10 +233,13 @@ void MeasurementEstimate::first_scene_done(const std::vector<Round>& rounds, dou
   if (decision != StopDecision::stop_converged) {
     // Its rounds so far are a floor for scenes like it, above the first line's.
     progress_.line(fmt::format(
-        "estimate: {} was not decided in {} ({}, its share of the budget); scenes like "
-        "it need more: over {} scenes x {} = {}",
-        first_scene_, count_text(rounds.size(), "round"), span_text(seconds_spent), shape_.scenes,
-        span_text(seconds_spent), span_text(seconds_spent * static_cast<double>(shape_.scenes))));
+        "estimate: {} was not decided in {} ({}, {}); scenes like it need more: over {} "
+        "scenes x {} = {}",
+        first_scene_, count_text(rounds.size(), "round"), span_text(seconds_spent),
+        decision == StopDecision::stop_budget_rounds ? "its round limit"
+                                                     : "its share of the budget",
+        shape_.scenes, span_text(seconds_spent),
+        span_text(seconds_spent * static_cast<double>(shape_.scenes))));
     said_total_seconds_ = seconds_spent * static_cast<double>(shape_.scenes);
     return;
   }

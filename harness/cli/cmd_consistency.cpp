@@ -23,6 +23,7 @@ struct ConsistencyArgs {
 };
 
 int consistency_command(const ConsistencyArgs& args) {
+  check_output_beside_inputs({"--markdown", args.markdown}, args.documents, "the document");
   const ConsistencyResult result = check_consistency(args.documents, args.options);
   if (!args.markdown.empty()) write_file_atomically(args.markdown, consistency_markdown(result));
   print_result(

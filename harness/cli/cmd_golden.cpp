@@ -39,7 +39,8 @@ void add_golden_subcommand(CLI::App& golden, const std::string& name, const std:
   cmd->add_option("--golden-dir", args->golden_dir,
                   "Golden directory (default: golden/raygate-baseline/, the baseline's)");
   cmd->add_option("--work-dir", args->work_dir, "Where scenes, renders and evidence go")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(writable_folder());
   cmd->add_option("--baseline", args->baseline,
                   "raygate-baseline to use (default: beside raygate)");
   cmd->add_option("scenes", args->scenes, "Suite scene ids (default: all)");

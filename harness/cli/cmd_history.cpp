@@ -53,7 +53,8 @@ void add_history_command(CLI::App& command, int& exit_code) {
   command.add_flag("--include-dirty", args.query.include_dirty,
                    "also trees measured with local changes (each its own point)");
   add_format_option(command, args.format, {"text", "json"}, true);
-  command.add_option("--html", args.html_dir, "also write DIR/history.html with SVG plots");
+  command.add_option("--html", args.html_dir, "also write DIR/history.html with SVG plots")
+      ->check(writable_folder());
 }
 
 }  // namespace raygate::cli

@@ -42,7 +42,8 @@ void add_convert_command(CLI::App& scenes, int& exit_code) {
   convert->add_option("input", args->input, "NFF scene file")->required();
   convert->add_option("--to", args->format, "Output format: pov, obj or pbrt")->required();
   convert->add_option("-o,--output", args->output, "Output file (OBJ also writes OUT.mtl)")
-      ->required();
+      ->required()
+      ->check(writable_file());
   convert
       ->add_option("--segments", args->segments,
                    "Facets around tessellated spheres and cones (OBJ; pbrt cones)")
@@ -71,7 +72,8 @@ void add_scenes_command(CLI::App& scenes, int& exit_code) {
       ->expected(0, 1)
       ->default_str("3");
   generate->add_option("--resolution", args->resolution, "Image size written into the view, WxH");
-  generate->add_option("-o,--output", *output, "Output file (default: standard output)");
+  generate->add_option("-o,--output", *output, "Output file (default: standard output)")
+      ->check(writable_file());
   generate->callback([args, output, &exit_code, generate] {
     if (generate->count("--tessellate") > 0 && args->tessellate == 0) args->tessellate = 3;
     run_generate(*args, *output);

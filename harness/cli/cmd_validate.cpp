@@ -32,8 +32,10 @@ void add_validate_command(CLI::App& command, int& exit_code) {
   command.add_option("--accel", args.request.accel, "none or bbox (same counts; bbox is faster)")
       ->capture_default_str();
   command.add_option("--work-dir", args.request.work_dir, "Where scenes and renders go")
-      ->capture_default_str();
-  command.add_option("--markdown", args.markdown, "Also write the table to this file");
+      ->capture_default_str()
+      ->check(writable_folder());
+  command.add_option("--markdown", args.markdown, "Also write the table to this file")
+      ->check(writable_file());
   command.add_option("--baseline", args.request.baseline,
                      "raygate-baseline to use (default: beside raygate)");
 }

@@ -59,22 +59,16 @@ CLI::Option* add_format_option(CLI::App& command, std::string& format,
   format = formats.front();
   std::string names;
   for (const std::string& f : formats) names += (names.empty() ? "" : ", ") + f;
-  CLI::Option* option = command
-                            .add_option("--format", format,
-                                        "what to print on standard "
-                                        "output: " +
-                                            names)
+  const std::string help = "what to print on standard output: " + names;
+  CLI::Option* option = command.add_option("--format", format, help)
                             ->check(CLI::IsMember(formats))
                             ->capture_default_str();
   if (json_alias) {
-    command
-        .add_flag_callback(
-            "--json",
-            [&format] {
-              deprecation_note("--json", "--format json");
-              format = "json";
-            },
-            "deprecated: use --format json")
+    const auto as_json = [&format] {
+      deprecation_note("--json", "--format json");
+      format = "json";
+    };
+    command.add_flag_callback("--json", as_json, "deprecated: use --format json")
         ->group("Deprecated")
         ->excludes(option);
   }

@@ -35,10 +35,8 @@ struct Command {
   void (*add)(CLI::App& command, int& exit_code);
 };
 
-// Every subcommand, in the order `raygate --help` lists them: the inputs (scenes, goldens,
-// adapters), measuring and the documents (run, history, import, export, compare, gate, bisect,
-// report), then across documents and machines (consistency, doctor, merge), and history's alerts
-// and growth (alert, scaling).
+// Every subcommand, in the order `raygate --help` lists them: the inputs, measuring and the
+// documents, then across documents and machines, and history's alerts and growth.
 std::vector<Command> commands() {
   return {
       {"scenes", "List, generate and convert SPD scenes (NFF; POV-Ray, OBJ, pbrt-v4)",
@@ -68,20 +66,17 @@ std::vector<Command> commands() {
        "write the gate's verdict on a results document as " + raygate::report_format_list(),
        cli::add_report_command},
       {"consistency",
-       "are the tracer's ratios the same on different machines? r² and per-scene deviation over "
-       "results documents of one tracer revision",
+       "are the tracer's ratios the same on other machines? r² and per-scene deviation over "
+       "the results documents of one tracer revision",
        cli::add_consistency_command},
       {"doctor",
-       "is this machine fit to measure? checks governor, turbo, load, CPUs, SMT, perf, ASLR, "
-       "swap, virtualization, and measures a noise score",
+       "is this machine fit to measure? governor, turbo, load, CPUs, SMT, perf, ASLR, swap, VM, "
+       "and a measured noise score",
        cli::add_doctor_command},
-      {"merge",
-       "join the results documents of the shards of a CI matrix (--shard K/N) into one and gate "
-       "it",
+      {"merge", "join the results documents of a CI matrix's shards (--shard K/N) and gate them",
        cli::add_merge_command},
       {"alert",
-       "flag a slowdown or a memory step that landed: change points in each series' history "
-       "(docs/gate.md)",
+       "flag slowdowns and memory steps that landed: change points in each series' history",
        cli::add_alert_command},
       {"scaling", "fit how time grows with scene size per scene family; judge a compare's change",
        cli::add_scaling_command}};
@@ -137,9 +132,8 @@ int main(int argc, char** argv) {
     say_last_words(fmt::format("raygate: error: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(e.code());
   } catch (const std::filesystem::filesystem_error& e) {
-    // The system refused a path (permissions, a symlink loop, a full disk): raygate could not
-    // do its work, and says on what, rather than calling it a bug of its own.
-    // ("filesystem error: cannot create directories: Permission denied [/srv/cache]")
+    // The system refused a path (permissions, a symlink loop, a full disk): raygate could not do
+    // its work and says on what ("cannot create directories: Permission denied [/srv/cache]").
     say_last_words(fmt::format("raygate: error: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(raygate::ExitCode::infrastructure);
   } catch (const std::exception& e) {

@@ -41,9 +41,8 @@ void add_schedule_options(CLI::App& command, MeasureArgs& args) {
                    "do not pin: by default each round of a one-thread tracer runs on one CPU, "
                    "changing every second round");
   command.add_flag("--no-idle-poll", args.no_idle_poll,
-                   "let idle CPUs sleep: by default they are held polling while raygate "
-                   "measures (/dev/cpu_dma_latency), as a CPU woken from sleep runs the next "
-                   "milliseconds slow");
+                   "let idle CPUs sleep (by default they poll while raygate measures, "
+                   "/dev/cpu_dma_latency: a CPU woken from sleep runs slow)");
   command.add_option("--duet-cpus", args.duet_cpus, "the two CPUs of the duet schedule")
       ->delimiter(',')
       ->capture_default_str();

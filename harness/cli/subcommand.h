@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "cli/console.h"
+#include "pipeline/output_failures.h"
 
 namespace raygate::cli {
 
@@ -53,5 +54,10 @@ CLI::Option* add_bounded_option(CLI::App& command, const std::string& name, Valu
                                 Bound high, const std::string& help) {
   return command.add_option(name, value, help)->check(CLI::Range(low, high))->capture_default_str();
 }
+
+// Paths a command writes, refused when the command line is parsed (exit 2, the option named), not
+// found unwritable once the work is done (pipeline/output_failures.h). "-" is standard output.
+inline CLI::Validator writable_file() { return {output_file_problem, "", "WRITABLE FILE"}; }
+inline CLI::Validator writable_folder() { return {output_folder_problem, "", "WRITABLE FOLDER"}; }
 
 }  // namespace raygate::cli

@@ -68,32 +68,61 @@ void check_standard_output(OutputFailures& failures, const std::string& output, 
   std::cout.clear();  // the outputs after this one still get their try
 }
 
-void check_output_path(const std::filesystem::path& path, const std::string& option) {
-  if (path.empty()) return;
+namespace {
+
+// Why files could not be written under `folder` on the way to `target`: the nearest folder that
+// exists at or above it is not a folder, or not one raygate may write in (the missing ones below
+// it are created when `target` is written). "" when they can.
+std::string folder_problem(std::filesystem::path folder, const std::filesystem::path& target) {
+  std::error_code error;
+  while (!std::filesystem::exists(folder, error) && folder.has_relative_path()) {
+    folder = folder.parent_path();
+  }
+  if (!std::filesystem::is_directory(folder, error)) {
+    return fmt::format("cannot write {}: {} is not a directory", target.string(), folder.string());
+  }
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+    return fmt::format("cannot write {}: {}: {}", target.string(), folder.string(),
+                       std::strerror(errno));
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string output_file_problem(const std::string& path) {
+  if (path.empty() || path == "-") return "";
   std::error_code error;
   const std::filesystem::path target = std::filesystem::absolute(path, error);
   if (std::filesystem::is_directory(target, error)) {
-    throw UsageError(
-        fmt::format("{}: {} is a directory; name a file in it", option, target.string()));
+    return fmt::format("{} is a directory; name a file in it", target.string());
   }
   if (std::filesystem::exists(target, error) && !std::filesystem::is_regular_file(target, error)) {
     // Files are replaced whole (a temporary renamed over them): that would replace the node.
-    throw UsageError(
-        fmt::format("{}: {} is not a regular file (a device, FIFO or socket); name "
-                    "a file, or - for standard output",
-                    option, target.string()));
+    return fmt::format(
+        "{} is not a regular file (a device, FIFO or socket); name a file, or - for standard "
+        "output",
+        target.string());
   }
-  std::filesystem::path folder = target.parent_path();
-  while (!std::filesystem::exists(folder, error) && folder.has_relative_path()) {
-    folder = folder.parent_path();  // created when the file is written
+  return folder_problem(target.parent_path(), target);
+}
+
+std::string output_folder_problem(const std::string& path) {
+  if (path.empty()) return "";
+  std::error_code error;
+  const std::filesystem::path target = std::filesystem::absolute(path, error);
+  return folder_problem(target, target);
+}
+
+void check_output_path(const std::filesystem::path& path, const std::string& option) {
+  if (const std::string problem = output_file_problem(path.string()); !problem.empty()) {
+    throw UsageError(option + ": " + problem);
   }
-  if (!std::filesystem::is_directory(folder, error)) {
-    throw UsageError(fmt::format("{}: cannot write {}: {} is not a directory", option,
-                                 target.string(), folder.string()));
-  }
-  if (::access(folder.c_str(), W_OK | X_OK) != 0) {
-    throw UsageError(fmt::format("{}: cannot write {}: {}: {}", option, target.string(),
-                                 folder.string(), std::strerror(errno)));
+}
+
+void check_output_folder(const std::filesystem::path& path, const std::string& option) {
+  if (const std::string problem = output_folder_problem(path.string()); !problem.empty()) {
+    throw UsageError(option + ": " + problem);
   }
 }
 
@@ -125,6 +154,16 @@ void check_distinct_files(const std::vector<NamedFile>& files) {
                       "other; give each its own file",
                       files[i].option, files[j].option, file_named(files[i].path).string()));
     }
+  }
+}
+
+void check_output_beside_inputs(const NamedFile& output, const std::vector<std::string>& inputs,
+                                const std::string& input_role) {
+  check_output_path(output.path, output.option);
+  // The output against each input, not the inputs against each other: reading one twice is the
+  // command's own question (consistency calls it one measurement).
+  for (const std::string& input : inputs) {
+    check_distinct_files({output, {input_role + " " + input, input}});
   }
 }
 

@@ -52,12 +52,22 @@ class OutputFailures {
   std::FILE* say_;
 };
 
-// Throws UsageError, naming `option`, when a file could not be written at `path` the way
-// documents and reports are (a temporary file beside it renamed over it, missing folders
-// created): it is a directory or something else that is not a regular file (/dev/full), or the
-// nearest existing folder above it is not a folder or is not writable. An empty path (the
-// default place) passes. Called before measuring, so a typo does not cost a whole run.
+// Why a file could not be written at `path` the way documents and reports are (a temporary file
+// beside it renamed over it, missing folders created): it is a directory or something else that
+// is not a regular file (/dev/full), or the nearest existing folder above it is not a folder or
+// is not writable. "" when it can be, and for "" (the default place) and "-" (standard output).
+// The text names the path, not the option: a CLI11 check (cli/subcommand.h) puts that before it.
+std::string output_file_problem(const std::string& path);
+
+// Why files could not be written under the folder `path` (--work-dir, --html DIR): it, or the
+// nearest folder above it that exists, is not a folder or is not writable. Missing folders are
+// fine: they are created. "" when they can be, and for "".
+std::string output_folder_problem(const std::string& path);
+
+// The two above as a UsageError naming `option`. Called before measuring, so a typo does not
+// cost a whole run.
 void check_output_path(const std::filesystem::path& path, const std::string& option);
+void check_output_folder(const std::filesystem::path& path, const std::string& option);
 
 // A file a command reads or writes, by the option or argument that named it.
 struct NamedFile {
@@ -70,6 +80,12 @@ struct NamedFile {
 // results document, -o over the store or over a document read). "" and "-" are skipped. Called
 // before measuring, with the outputs' checks.
 void check_distinct_files(const std::vector<NamedFile>& files);
+
+// For a command that reads `inputs` and writes one more file beside what it prints (consistency
+// --markdown): check_output_path of `output`, and refused when it names one of the inputs
+// (each called "`input_role` PATH" in the message). Called before the inputs are read.
+void check_output_beside_inputs(const NamedFile& output, const std::vector<std::string>& inputs,
+                                const std::string& input_role);
 
 // Flushes standard output after a report went there; a failed write or flush (a full disk
 // behind `> file`, /dev/full) is a failure of `output`. `error_number` is errno as the writing

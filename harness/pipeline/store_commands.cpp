@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "core/error.h"
+#include "pipeline/output_failures.h"
 #include "store/document_files.h"
 
 namespace raygate {
@@ -74,6 +75,13 @@ std::string import_documents(const std::vector<std::string>& files, const std::s
 std::string export_stored_documents(const ExportRequest& request) {
   if (request.out.empty()) {
     throw UsageError("export: --output is required (a directory or FILE.json)");
+  }
+  // Before the store is read: a path that cannot be written is the command line's fault.
+  if (std::filesystem::path(request.out).extension() == ".json") {
+    check_output_path(request.out, "--output");
+    check_distinct_files({{"--output", request.out}, {"--store", request.store}});
+  } else {
+    check_output_folder(request.out, "--output");
   }
   const auto store = open_store(request.store, StoreOpen::must_exist);
   DocumentQuery query;

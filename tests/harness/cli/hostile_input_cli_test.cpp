@@ -144,6 +144,35 @@ TEST(HostileInput, AProjectFileThatCannotBeFollowedIsAUsageError) {
   expect_usage_error(named, "--config raygate.toml: cannot read");
 }
 
+// Every path a command writes beside its main work is checked when the command line is read:
+// history --html, validate and golden's --work-dir, scenes -o and export -o exited 3 after the
+// work, and consistency --markdown could overwrite one of the documents it read.
+TEST_F(HostileDocuments, OutputPathsThatCannotBeWrittenAreUsageErrors) {
+  write_file_atomically(dir.path() / "a-file", "x");
+  const std::string a = document("a.json", [](json&) {});
+  const std::string b = document("b.json", [](json& j) { j["machine"]["hostname"] = "other"; });
+  const std::vector<std::vector<std::string>> cases = {
+      {"history", "--store", "store.db", "--html", "a-file/plots"},
+      {"validate", "--work-dir", "a-file", "balls"},
+      {"validate", "--markdown", "a-file/t.md", "balls"},
+      {"golden", "verify", "--work-dir", "a-file", "tetra"},
+      {"golden", "bless", "--work-dir", "a-file/w", "tetra"},
+      {"scenes", "generate", "balls", "-o", "a-file/balls.nff"},
+      {"scenes", "convert", "in.nff", "--to", "pov", "-o", "a-file/x.pov"},
+      {"export", "--store", "store.db", "-o", "a-file/x.json"},
+      {"export", "--store", "store.db", "-o", "a-file"},
+      {"consistency", a, b, "--markdown", "a-file/c.md"},
+  };
+  for (const std::vector<std::string>& args : cases) {
+    SCOPED_TRACE(args.front() + " " + args.at(args.size() - 2) + " " + args.back());
+    expect_usage_error(run_raygate(args, dir), "a-file");
+  }
+  const std::string kept = read_file(dir.path() / a);
+  expect_usage_error(run_raygate({"consistency", a, b, "--markdown", "./" + a}, dir),
+                     "--markdown and the document a.json name the same file");
+  EXPECT_EQ(read_file(dir.path() / a), kept);
+}
+
 class LongRevision : public TracerRepoTest {};
 
 // A 100,000-character --rev exited 3 and printed 200 KB: it is a usage error, and what is echoed

@@ -1,6 +1,7 @@
 // pipeline/output_failures: an output that cannot be written is said at once with its path and the
 // system's reason, the command goes on, and the exit code becomes 3 unless the gate found a
 // regression (1), which outranks it.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -13,6 +14,8 @@
 
 namespace raygate {
 namespace {
+
+using ::testing::HasSubstr;
 
 // What the failures said, through a temporary file standing in for standard error.
 class SaidLines {
@@ -101,6 +104,33 @@ TEST(OutputFailures, TwoNamesForOneFileAreRefused) {
                         {"--report json:-", "-"},
                         {"--store", ""},
                         {"--report html:r.html", dir.path() / "r.html"}});
+}
+
+// What cannot be written is found from the path alone, before any work: the same words for a
+// file (-o, --markdown) and a folder (--work-dir, --html DIR).
+TEST(OutputFailures, PathsThatCannotBeWrittenAreNamedBeforeAnyWork) {
+  const TempDir dir;
+  const auto file = dir.path() / "a-file";
+  write_file_atomically(file, "x");
+  EXPECT_THAT(output_file_problem(dir.path().string()), HasSubstr("is a directory"));
+  EXPECT_THAT(output_file_problem("/dev/null"), HasSubstr("not a regular file"));
+  EXPECT_THAT(output_file_problem((file / "r.md").string()),
+              HasSubstr(file.string() + " is not a directory"));
+  EXPECT_THAT(output_folder_problem(file.string()), HasSubstr("is not a directory"));
+  EXPECT_THAT(output_folder_problem((file / "deeper").string()), HasSubstr("is not a directory"));
+  // Folders still to be made, files to replace, standard output and the default place pass.
+  EXPECT_EQ(output_file_problem((dir.path() / "new" / "r.md").string()), "");
+  EXPECT_EQ(output_file_problem(file.string()), "");
+  EXPECT_EQ(output_file_problem("-"), "");
+  EXPECT_EQ(output_file_problem(""), "");
+  EXPECT_EQ(output_folder_problem((dir.path() / "new" / "work").string()), "");
+  EXPECT_EQ(output_folder_problem(dir.path().string()), "");
+  EXPECT_THROW(check_output_folder(file, "--work-dir"), UsageError);
+  // consistency --markdown over one of its documents.
+  EXPECT_THROW(check_output_beside_inputs({"--markdown", file}, {"other.json", file.string()},
+                                          "the document"),
+               UsageError);
+  check_output_beside_inputs({"--markdown", dir.path() / "c.md"}, {file.string()}, "the document");
 }
 
 }  // namespace

@@ -44,11 +44,8 @@ void add_convert_command(CLI::App& scenes, int& exit_code) {
   convert->add_option("-o,--output", args->output, "Output file (OBJ also writes OUT.mtl)")
       ->required()
       ->check(writable_file());
-  convert
-      ->add_option("--segments", args->segments,
-                   "Facets around tessellated spheres and cones (OBJ; pbrt cones)")
-      ->default_val(args->segments)
-      ->check(CLI::Range(3, 1024));
+  add_bounded_option(*convert, "--segments", args->segments, 3, 1024,
+                     "Facets around tessellated spheres and cones (OBJ; pbrt cones)");
 }
 
 }  // namespace

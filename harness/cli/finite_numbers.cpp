@@ -1,25 +1,8 @@
 #include "cli/finite_numbers.h"
 
-#include <cerrno>
-#include <cmath>
-#include <cstdlib>
-#include <string>
+#include "core/number_text.h"
 
 namespace raygate::cli {
-
-std::string non_finite_problem(const std::string& text) {
-  if (text.empty()) return "";
-  // Read as CLI11 reads a FLOAT: the whole text by strtold.
-  char* end = nullptr;
-  errno = 0;
-  const long double value = std::strtold(text.c_str(), &end);
-  if (end != text.c_str() + text.size()) return "";  // not a number: CLI11 says so itself
-  if (std::isnan(value)) return "\"" + text + "\" is not a number (NaN); give a finite one";
-  if (std::isinf(value) || !std::isfinite(static_cast<double>(value))) {
-    return "\"" + text + "\" is not a finite number (past a double's range); give a finite one";
-  }
-  return "";
-}
 
 void refuse_non_finite_numbers(CLI::App& app) {
   // A check per option rather than one on the App: CLI11 names the option in the error it

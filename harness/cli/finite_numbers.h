@@ -12,8 +12,4 @@ namespace raygate::cli {
 // that refuses a value that is not a finite number: a usage error naming the option, exit 2.
 void refuse_non_finite_numbers(CLI::App& app);
 
-// The check itself, for tests: "" for a finite number or for text that is not a number at all
-// (CLI11's own conversion refuses that), else what is wrong with it.
-std::string non_finite_problem(const std::string& text);
-
 }  // namespace raygate::cli

@@ -10,6 +10,7 @@
 #include <type_traits>
 
 #include "cli/console.h"
+#include "core/number_text.h"
 #include "pipeline/output_failures.h"
 
 namespace raygate::cli {
@@ -48,11 +49,19 @@ Subcommand<Args> add_subcommand(CLI::App& parent, const std::string& name, const
 }
 
 // A number held to [low, high], its default shown in --help. The bounds' type is the one
-// --help names (INT or FLOAT), so pass them as the option's own kind of number.
+// --help names (INT or FLOAT), so pass them as the option's own kind of number. raygate's words
+// check first (an empty value, NaN, 0x10, a fraction of a count: core/number_text.h); CLI::Range
+// then only writes --help's "INT in [low - high]".
 template <typename Value, typename Bound>
 CLI::Option* add_bounded_option(CLI::App& command, const std::string& name, Value& value, Bound low,
                                 Bound high, const std::string& help) {
-  return command.add_option(name, value, help)->check(CLI::Range(low, high))->capture_default_str();
+  const auto problem = [=](const std::string& text) {
+    return number_problem(text, std::is_integral_v<Value>, double(low), double(high));
+  };
+  return command.add_option(name, value, help)
+      ->check(CLI::Validator(problem, "", "NUMBER"))
+      ->check(CLI::Range(low, high))
+      ->capture_default_str();
 }
 
 // Paths a command writes, refused when the command line is parsed (exit 2, the option named), not

@@ -59,8 +59,8 @@ void table_scenes(const ConsistencyResult& result, std::string& out) {
 }  // namespace
 
 std::string consistency_table(const ConsistencyResult& result) {
-  std::string out = fmt::format("raygate consistency: {} documents, {} scenes in all of them\n",
-                                result.documents.size(), result.scenes.size());
+  std::string out = fmt::format("raygate consistency: {} documents, {} in all of them\n",
+                                result.documents.size(), count_text(result.scenes.size(), "scene"));
   for (const DocumentRatios& d : result.documents) {
     out += fmt::format("  {}  {}\n", d.label, document_line(d));
   }

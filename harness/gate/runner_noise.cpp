@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/format.h"
 #include "measure/change.h"
 #include "measure/descriptive.h"
 
@@ -33,8 +34,8 @@ std::optional<std::string> runner_noise_note(const ResultsDocument& document,
   if (!undecided) return std::nullopt;
   std::string note = fmt::format(
       "runner noise: the rounds of a scene differed by {:.1f}% (head/base per round, scaled MAD, "
-      "median of {} scenes)",
-      100 * median(spreads), spreads.size());
+      "median of {})",
+      100 * median(spreads), count_text(spreads.size(), "scene"));
   const auto typical_rounds = static_cast<std::size_t>(std::lround(median(rounds)));
   const bool one_limit = std::all_of(thresholds.begin(), thresholds.end(),
                                      [&](double t) { return t == thresholds.front(); });

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/format.h"
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/path_component.h"
@@ -207,10 +208,10 @@ Calibration calibrate_suite(const CalibrateRequest& request, PipelineIo& io) {
                     compact_utc_timestamp() + "-calibrate-" + request.worktree.short_sha),
       io};
   io.progress.line(fmt::format(
-      "calibrating {} {} on suite {}: {} scenes, each timed at its resolution and at half each "
+      "calibrating {} {} on suite {}: {}, each timed at its resolution and at half each "
       "side (wall seconds, the fastest of {}), for {:g} s a render",
-      context.adapter.name, request.worktree.short_sha, context.suite.name, context.scenes.size(),
-      request.runs, request.target_seconds));
+      context.adapter.name, request.worktree.short_sha, context.suite.name,
+      count_text(context.scenes.size(), "scene"), request.runs, request.target_seconds));
   Calibration calibration;
   for (const SuiteScene& entry : context.scenes) {
     calibration.scenes.push_back(calibrate_scene(entry, timer, request));

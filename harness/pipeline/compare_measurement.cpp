@@ -6,6 +6,7 @@
 #include <limits>
 #include <optional>
 
+#include "core/format.h"
 #include "core/time_text.h"
 #include "measure/confidence_sequence.h"
 #include "pipeline/compare_family.h"
@@ -82,9 +83,9 @@ MeasuredDocument measure_prepared_compare(const CompareRequest& request,
   ResultsDocument document = new_document(DocumentKind::compare, context, request.baseline);
   document.revisions = {base.record, head.record};
   const std::string opening = fmt::format(
-      "comparing {} {} (base) with {} (head) against {} on suite {}: {} scenes{}",
-      context.adapter.name, request.base.short_sha, request.head.short_sha,
-      request.baseline.version_line(), context.suite.name, m.scenes.size(), shard_note(context));
+      "comparing {} {} (base) with {} (head) against {} on suite {}: {}{}", context.adapter.name,
+      request.base.short_sha, request.head.short_sha, request.baseline.version_line(),
+      context.suite.name, count_text(m.scenes.size(), "scene"), shard_note(context));
   return measure_document(std::move(document), m, plan, opening, io);
 }
 

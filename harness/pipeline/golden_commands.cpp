@@ -4,6 +4,7 @@
 
 #include <optional>
 
+#include "core/format.h"
 #include "core/error.h"
 
 namespace raygate {
@@ -31,10 +32,11 @@ BlessFromRun from_run_request(const GoldenOptions& options) {
 }
 
 GoldenOutcome baseline_verification_outcome(const GoldenVerification& v, std::size_t scenes) {
-  std::string summary = fmt::format("{} scenes: {} identical, {} different, {} missing", scenes,
-                                    v.identical, v.different, v.missing);
+  std::string summary =
+      fmt::format("{}: {} identical, {} different, {} missing", count_text(scenes, "scene"),
+                  v.identical, v.different, v.missing);
   if (v.unverifiable > 0)
-    summary += fmt::format(", {} golden(s) not to be trusted", v.unverifiable);
+    summary += fmt::format(", {} not to be trusted", count_text(v.unverifiable, "golden"));
   if (v.missing > 0) return {summary, ExitCode::usage};  // a scene asked for has no golden
   // A difference found outranks a golden that could not verify (3).
   if (v.different > 0) return {summary, ExitCode::regression};
@@ -45,10 +47,10 @@ GoldenOutcome run_verification_outcome(const GoldenVerification& v) {
   const std::size_t scenes =
       v.identical + v.different + v.inconclusive + v.missing + v.unverifiable;
   std::string summary =
-      fmt::format("{} scenes: {} same, {} different, {} too noisy to tell, {} missing", scenes,
-                  v.identical, v.different, v.inconclusive, v.missing);
+      fmt::format("{}: {} same, {} different, {} too noisy to tell, {} missing",
+                  count_text(scenes, "scene"), v.identical, v.different, v.inconclusive, v.missing);
   if (v.unverifiable > 0)
-    summary += fmt::format(", {} golden(s) not to be trusted", v.unverifiable);
+    summary += fmt::format(", {} not to be trusted", count_text(v.unverifiable, "golden"));
   if (v.different > 0) return {summary, ExitCode::regression};
   if (v.unverifiable > 0) return {summary, ExitCode::infrastructure};
   return {summary, v.missing > 0 ? ExitCode::usage : ExitCode::pass};

@@ -114,7 +114,7 @@ std::vector<std::string> estimate_lines(const Estimate& estimate, const Estimate
                                         const std::string& basis) {
   std::vector<std::string> lines;
   std::string line =
-      fmt::format("estimate {}: {} scenes x {} = {}", basis, shape.scenes,
+      fmt::format("estimate {}: {} x {} = {}", basis, count_text(shape.scenes, "scene"),
                   span_text(estimate.seconds_per_scene), span_text(estimate.total_seconds));
   if (shape.budget_seconds > 0.0) {
     line += fmt::format(" for a budget of {} (--max-minutes {:g})", span_text(shape.budget_seconds),
@@ -208,7 +208,7 @@ void MeasurementEstimate::scene_done(double seconds_spent, StopDecision decision
     return;
   }
   const std::string basis = fmt::format(
-      "again, from the first {} of {} scenes (it said {}{})", done, shape_.scenes,
+      "again, from the first {} of {} (it said {}{})", done, count_text(shape_.scenes, "scene"),
       span_text(said_total_seconds_),
       undecided_ > 0 ? fmt::format("; {} not decided in its share, so at least", undecided_)
                      : std::string());
@@ -220,7 +220,7 @@ void MeasurementEstimate::first_round(const std::vector<Round>& rounds, double s
   cost_ = round_cost(rounds.front(), seconds_spent, shape_.warmup_runs);
   const Estimate estimate = estimate_measurement(*cost_, shape_, fewest_rounds_, tracer_count_);
   const std::string basis = fmt::format(
-      "from {}'s first round (baseline {:.2f} s, {} {:.2f} s a round, {:.0f}% around the runs) "
+      "from {}'s first round (baseline {:.2f} s, {} {:.2f} s a round, +{:.0f}% between the runs) "
       "at the fewest rounds a verdict needs ({}), so at least",
       first_scene_, cost_->normalizer_seconds, tracer_count_ > 1 ? "tracers" : "tracer",
       cost_->tracers_seconds, 100.0 * (cost_->overhead_factor - 1.0), fewest_rounds_);

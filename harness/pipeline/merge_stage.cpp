@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "core/format.h"
 #include "core/error.h"
 #include "results/merge.h"
 
@@ -13,8 +14,9 @@ void say_scores(const ResultsDocument& document, const PublishSink& sink) {
     const std::string_view role = to_string(key);
     sink.info(
         fmt::format("suite score {} (geometric mean of normalized ratios): {:.3f} "
-                    "[{:.3f}, {:.3f}] over {} scenes",
-                    role, score.score, score.interval.lower, score.interval.upper, score.scenes));
+                    "[{:.3f}, {:.3f}] over {}",
+                    role, score.score, score.interval.lower, score.interval.upper,
+                    count_text(score.scenes, "scene")));
   }
 }
 
@@ -43,8 +45,8 @@ MergedShards merge_shard_documents(const MergeRequest& request, const PublishSin
   const ResultsDocument& document = merged.document;
   // A full disk under -o must not lose the merge: the store still gets it, and the reports.
   failures.attempt("the merged document (--output)", [&] { write_results(document, request.out); });
-  sink.info(fmt::format("merged {} shard documents of suite {}: {} scenes{}", inputs.size(),
-                        document.suite, document.scenes.size(),
+  sink.info(fmt::format("merged {} shard documents of suite {}: {}{}", inputs.size(),
+                        document.suite, count_text(document.scenes.size(), "scene"),
                         document.complete ? "" : " (incomplete)"));
   say_scores(document, sink);
   return merged;

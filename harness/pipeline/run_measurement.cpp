@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include "core/format.h"
 #include "core/time_text.h"
 #include "pipeline/measurement_estimate.h"
 #include "pipeline/measurement_plan.h"
@@ -66,9 +67,9 @@ MeasuredDocument measure_prepared_run(const RunRequest& request, const PreparedR
   ResultsDocument document = new_document(DocumentKind::run, context, request.baseline);
   document.revisions.push_back(tracer.record);
   const std::string opening =
-      fmt::format("measuring {} {} ({}) against {} on suite {}: {} scenes{}", context.adapter.name,
+      fmt::format("measuring {} {} ({}) against {} on suite {}: {}{}", context.adapter.name,
                   worktree.short_sha, worktree.subject, request.baseline.version_line(),
-                  context.suite.name, m.scenes.size(), shard_note(context));
+                  context.suite.name, count_text(m.scenes.size(), "scene"), shard_note(context));
   return measure_document(std::move(document), m, plan, opening, io);
 }
 

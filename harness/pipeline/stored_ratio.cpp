@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "core/format.h"
 #include "measure/median_interval.h"
 #include "measure/probability.h"
 #include "pipeline/stop_rules.h"
@@ -87,8 +88,8 @@ std::string stored_ratio_line(const ResultsDocument& document, const GatePolicy&
   if (measured == 0) return "";
   std::string line = fmt::format(
       "stored ratios (base against the baseline, what history trends): CI within +-{:.0f}% on {} "
-      "of {} scenes, from {} baseline rounds",
-      100.0 * kStoredRatioHalfWidth, measured - imprecise.size(), measured,
+      "of {}, from {} baseline rounds",
+      100.0 * kStoredRatioHalfWidth, measured - imprecise.size(), count_text(measured, "scene"),
       fewest == most ? fmt::format("{}", most) : fmt::format("{}-{}", fewest, most));
   if (counted) line += " (counted in simulated cycles: the range of their counts)";
   for (std::size_t i = 0; i < imprecise.size(); ++i) {

@@ -121,13 +121,13 @@ namespace {
 std::string kept_message(const Interrupted& stop, const ResultsDocument& document,
                          const SuiteMeasurement& m, const KeptDocument& kept) {
   if (!kept.failed.empty()) {
-    return fmt::format("interrupted by {}: {} of {} scenes measured (complete: false); {}",
-                       signal_name(stop.signal()), document.scenes.size(), m.scenes.size(),
-                       describe_kept(kept));
+    return fmt::format("interrupted by {}: {} of {} measured (complete: false); {}",
+                       signal_name(stop.signal()), document.scenes.size(),
+                       count_text(m.scenes.size(), "scene"), describe_kept(kept));
   }
-  return fmt::format("interrupted by {}: kept {} of {} scenes in {} (complete: false)",
-                     signal_name(stop.signal()), document.scenes.size(), m.scenes.size(),
-                     kept.path->string());
+  return fmt::format("interrupted by {}: kept {} of {} in {} (complete: false)",
+                     signal_name(stop.signal()), document.scenes.size(),
+                     count_text(m.scenes.size(), "scene"), kept.path->string());
 }
 
 void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, MeasurementPlan& plan,

@@ -1,4 +1,5 @@
 #include "report/gate_summary.h"
+#include "core/format.h"
 
 #include <fmt/core.h>
 #include <fmt/format.h>
@@ -22,7 +23,7 @@ std::string counts(const GateResult& gate) {
     for (const SceneGate& family : gate.families) failed += family.outcome == GateOutcome::fail;
     return fmt::format("{} growth exponents judged, {} failed", gate.families.size(), failed);
   }
-  std::vector<std::string> parts{fmt::format("{} scenes", gate.scenes.size()),
+  std::vector<std::string> parts{count_text(gate.scenes.size(), "scene"),
                                  fmt::format("{} failed", gate.count(GateOutcome::fail))};
   const std::size_t unmeasured = gate.count(GateOutcome::unmeasured);
   if (unmeasured > 0 || gate.problems.empty()) {

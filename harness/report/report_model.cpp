@@ -414,10 +414,17 @@ std::string image_rule_text(const ScenePolicy& d, const ResultsDocument& documen
     return fmt::format("images (Monte Carlo) pass within the ±{:.4g}% image tolerance",
                        100.0 * document.settings.image_tolerance.value_or(d.image_tolerance));
   }
-  std::string text =
-      fmt::format("image fail over {:.4g} on more than {:.4g}% of pixels, warn over {:.4g}",
-                  d.image.fail_threshold, d.image.fail_percent, d.image.warn_threshold);
-  if (d.image.hard_fail < 1e29) text += fmt::format(", hard fail over {:.4g}", d.image.hard_fail);
+  // One threshold for both by default: the line says what each verdict takes, not the same
+  // number twice ("fail over 0.004 ..., warn over 0.004" read as a contradiction).
+  std::string text = fmt::format(
+      "images fail when more than {:.4g}% of pixels differ by over {:.4g} in a channel",
+      d.image.fail_percent, d.image.fail_threshold);
+  text += d.image.warn_threshold == d.image.fail_threshold
+              ? std::string(" and warn when fewer do")
+              : fmt::format(" and warn when any differs by over {:.4g}", d.image.warn_threshold);
+  if (d.image.hard_fail < 1e29) {
+    text += fmt::format("; any channel over {:.4g} off fails", d.image.hard_fail);
+  }
   return text;
 }
 

@@ -111,8 +111,8 @@ std::string value_text(const nlohmann::json& value);
 std::string machine_line(const nlohmann::json& machine);
 // "abc1234 Fix the BVH split (main)"; "" for a role not in the document.
 std::string revision_line(const ResultsDocument& document, Role role);
-// "max slowdown +3.0% (...); image fail over 0.004 on more than 0.02% of pixels, warn over
-// 0.004". A document without a change (`run`) is judged on its images only: its line leaves
+// "max slowdown +3.0% (...); images fail when more than 0.02% of pixels differ by over 0.004 in
+// a channel and warn when fewer do". A document without a change (`run`) is judged on its images only: its line leaves
 // the slowdown limit out. A compare's adds why each confidence sequence has its level (the
 // significance; each scene's share of the false alarms, and Holm's larger shares).
 std::string policy_line(const GatePolicy& policy, const ResultsDocument& document);

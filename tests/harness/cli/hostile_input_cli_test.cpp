@@ -59,6 +59,30 @@ TEST(HostileInput, EveryNumberOptionRefusesWhatIsNotAFiniteNumber) {
                      "--warmup");
 }
 
+// One set of words for every bounded number, whole or not: CLI11 had said "Value  not in range"
+// of an empty value, "Value nan not in range" of a count, and took 0x10 as 16.
+TEST(HostileInput, BoundedNumbersSayWhatIsWrongAndWhatWouldBeRight) {
+  TempDir dir;
+  const std::vector<std::pair<std::vector<std::string>, std::string>> cases = {
+      {{"--max-rounds", ""}, "--max-rounds: the value is empty; give a whole number from 1 to"},
+      {{"--max-rounds", "nan"}, "--max-rounds: \"nan\" is not a number (NaN)"},
+      {{"--max-rounds", "0x10"}, "--max-rounds: \"0x10\" is hexadecimal"},
+      {{"--max-rounds", "2.5"}, "--max-rounds: \"2.5\" is not a whole number"},
+      {{"--max-rounds", "ten"}, "--max-rounds: \"ten\" is not a whole number"},
+      {{"--max-rounds", "-3"},
+       "--max-rounds: \"-3\" is out of range; give a whole number from 1 "
+       "to 100000"},
+      {{"--max-minutes", ""}, "--max-minutes: the value is empty; give a number from 0 to"},
+      {{"--target", "2"}, "--target: \"2\" is out of range; give a number from 0.0001 to 1"},
+  };
+  for (const auto& [option, words] : cases) {
+    std::vector<std::string> args = {"run", "--adapter", "make-nff"};
+    args.insert(args.end(), option.begin(), option.end());
+    SCOPED_TRACE(option.front() + " '" + option.back() + "'");
+    expect_usage_error(run_raygate(args, dir), words);
+  }
+}
+
 class HostileDocuments : public ::testing::Test {
  protected:
   // A stored-looking run document, changed by `mutate`, written as `name`.

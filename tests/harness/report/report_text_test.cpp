@@ -118,7 +118,9 @@ TEST(ConsoleReport, RunShowsRatioWithInterval) {
   at(text, "raygate: pass (2 scenes; suite score 0.439), exit 0");
   EXPECT_EQ(text.find("change"), std::string::npos) << "a run has no change column";
   // A run is judged on its images: its policy line does not promise a slowdown limit.
-  at(text, "policy: image fail over 0.004 on more than 0.02% of pixels, warn over 0.004");
+  at(text,
+     "policy: images fail when more than 0.02% of pixels differ by over 0.004 in a channel and "
+     "warn when fewer do");
   EXPECT_EQ(text.find("max slowdown"), std::string::npos) << text;
 }
 
@@ -155,7 +157,7 @@ TEST(ConsoleReport, AMonteCarloRunsPolicyLineNamesTheRuleItsImagesWereJudgedBy) 
   f.document.settings.image_tolerance = 0.02;
   const std::string text = f.render("console");
   at(text, "policy: images (Monte Carlo) pass within the ±2% image tolerance");
-  EXPECT_EQ(text.find("image fail over"), std::string::npos) << text;
+  EXPECT_EQ(text.find("images fail when"), std::string::npos) << text;
 }
 
 // Issue 40: the deciding intervals read 90%, 99.5% and 99.33% with nothing saying why. The

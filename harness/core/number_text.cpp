@@ -1,0 +1,58 @@
+#include "core/number_text.h"
+
+#include <fmt/core.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+
+namespace raygate {
+namespace {
+
+// The value as the message quotes it: a paste of 100,000 digits is not echoed whole.
+std::string quoted(const std::string& text) {
+  constexpr std::size_t kShown = 40;
+  if (text.size() <= kShown) return "\"" + text + "\"";
+  return fmt::format("\"{}...\" ({} characters)", text.substr(0, kShown), text.size());
+}
+
+// The whole text read as a number the way strtold reads it, or nothing when it is not one.
+bool read_number(const std::string& text, long double& value) {
+  char* end = nullptr;
+  errno = 0;
+  value = std::strtold(text.c_str(), &end);
+  return !text.empty() && end == text.c_str() + text.size();
+}
+
+}  // namespace
+
+std::string non_finite_problem(const std::string& text) {
+  long double value = 0;
+  if (!read_number(text, value)) return "";  // not a number: the caller's parser says so
+  if (std::isnan(value)) return quoted(text) + " is not a number (NaN); give a finite one";
+  if (std::isinf(value) || !std::isfinite(static_cast<double>(value))) {
+    return quoted(text) + " is not a finite number (past a double's range); give a finite one";
+  }
+  return "";
+}
+
+std::string number_problem(const std::string& text, bool whole, double lowest, double highest) {
+  const std::string kind = whole ? "a whole number" : "a number";
+  const std::string wanted = fmt::format("give {} from {} to {}", kind, lowest, highest);
+  if (text.empty()) return fmt::format("the value is empty; {}", wanted);
+  long double value = 0;
+  if (!read_number(text, value)) return fmt::format("{} is not {}; {}", quoted(text), kind, wanted);
+  if (text.find_first_of("xX") != std::string::npos) {
+    return fmt::format("{} is hexadecimal; {} in decimal", quoted(text), wanted);
+  }
+  if (const std::string problem = non_finite_problem(text); !problem.empty()) return problem;
+  if (whole && std::trunc(value) != value) {
+    return fmt::format("{} is not a whole number; {}", quoted(text), wanted);
+  }
+  if (value < lowest || value > highest) {
+    return fmt::format("{} is out of range; {}", quoted(text), wanted);
+  }
+  return "";
+}
+
+}  // namespace raygate

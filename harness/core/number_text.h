@@ -1,0 +1,21 @@
+// What is wrong with a number as a person typed it (an option's value), in words that name the
+// value and what would be right. CLI11 reads an INT with its own integer parser, which takes
+// "0x10" as 16, and a FLOAT with strtold, which takes "nan" and "inf"; its Range check compares
+// with < and >, which NaN passes, and says "Value  not in range" of an empty value. These checks
+// run first (cli/subcommand.h, cli/finite_numbers.h), so every number option says one thing.
+#pragma once
+
+#include <string>
+
+namespace raygate {
+
+// "" for a finite number, or for text that is not a number at all (the caller's parser says so
+// itself); else why it is not finite ("nan", "inf", "1e999").
+std::string non_finite_problem(const std::string& text);
+
+// "" when `text` is a decimal number within [lowest, highest] (a whole one when `whole`); else
+// what is wrong with it: empty, not a number, hexadecimal, not finite, not whole, or out of range,
+// with the range that would be right. Long text is quoted in part.
+std::string number_problem(const std::string& text, bool whole, double lowest, double highest);
+
+}  // namespace raygate

@@ -1,0 +1,53 @@
+// core/number_text: what is wrong with a number as typed, and what would be right.
+#include "core/number_text.h"
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace raygate {
+namespace {
+
+using ::testing::HasSubstr;
+using ::testing::StartsWith;
+
+TEST(NumberText, InRangeDecimalNumbersPass) {
+  EXPECT_EQ(number_problem("12", true, 1, 100), "");
+  EXPECT_EQ(number_problem("1", true, 1, 100), "");
+  EXPECT_EQ(number_problem("100", true, 1, 100), "");
+  EXPECT_EQ(number_problem("0.25", false, 0, 1), "");
+  EXPECT_EQ(number_problem("1e-3", false, 0, 1), "");
+  EXPECT_EQ(number_problem("4.0", true, 1, 100), "");  // a whole number written with a point
+}
+
+TEST(NumberText, EachWrongValueIsNamedWithTheRangeThatWouldBeRight) {
+  EXPECT_EQ(number_problem("", true, 1, 100000),
+            "the value is empty; give a whole number from 1 to 100000");
+  EXPECT_EQ(number_problem("ten", false, 0, 1),
+            "\"ten\" is not a number; give a number from 0 to 1");
+  EXPECT_THAT(number_problem("0x10", true, 1, 100), StartsWith("\"0x10\" is hexadecimal"));
+  EXPECT_THAT(number_problem("nan", true, 1, 100), StartsWith("\"nan\" is not a number (NaN)"));
+  EXPECT_THAT(number_problem("-inf", false, 0, 1), HasSubstr("not a finite number"));
+  EXPECT_THAT(number_problem("1e999", false, 0, 1), HasSubstr("not a finite number"));
+  EXPECT_THAT(number_problem("2.5", true, 1, 100), StartsWith("\"2.5\" is not a whole number"));
+  EXPECT_EQ(number_problem("0", true, 1, 100),
+            "\"0\" is out of range; give a whole number from 1 to 100");
+  EXPECT_THAT(number_problem("0.00001", false, 0.0001, 1), HasSubstr("from 0.0001 to 1"));
+}
+
+TEST(NumberText, APasteIsQuotedInPart) {
+  const std::string problem = number_problem(std::string(100000, '9'), true, 1, 100);
+  EXPECT_LT(problem.size(), 200u);
+  EXPECT_THAT(problem, HasSubstr("(100000 characters) is out of range"));
+}
+
+TEST(NumberText, NonFiniteProblemLeavesOtherTextToTheParser) {
+  EXPECT_EQ(non_finite_problem("1.5"), "");
+  EXPECT_EQ(non_finite_problem("abc"), "");
+  EXPECT_EQ(non_finite_problem(""), "");
+  EXPECT_THAT(non_finite_problem("NaN"), HasSubstr("NaN"));
+}
+
+}  // namespace
+}  // namespace raygate

@@ -101,7 +101,7 @@ int main(int argc, char** argv) {
   // The commit tells two builds of one version apart (cmake/RaygateGitCommit.cmake).
   app.set_version_flag(
       "--version", std::string("raygate ") + RAYGATE_VERSION + " (git " + RAYGATE_GIT_COMMIT + ")");
-  // Before any child starts: Ctrl-C, SIGTERM and SIGHUP stop children and write what was
+  // Before any child starts: Ctrl-C, SIGTERM, SIGHUP, SIGQUIT stop children and write what was
   // measured, and orphans of children re-parent to raygate, to be swept (core/interrupt.h,
   // core/strays.h).
   raygate::install_interrupt_handlers();

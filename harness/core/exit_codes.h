@@ -10,6 +10,7 @@ enum class ExitCode : int {
   infrastructure = 3,  // raygate could not check out, build or measure
   hung_up = 129,       // stopped by SIGHUP (128 + 1): its terminal or ssh session closed
   interrupted = 130,   // stopped by SIGINT (128 + 2), after writing what it had
+  quit = 131,          // stopped by SIGQUIT (128 + 3, Ctrl-\), likewise
   terminated = 143,    // stopped by SIGTERM (128 + 15), likewise
 };
 

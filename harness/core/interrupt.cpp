@@ -19,8 +19,9 @@ namespace {
 static_assert(std::atomic<int>::is_always_lock_free && std::atomic<pid_t>::is_always_lock_free &&
               std::atomic<std::int64_t>::is_always_lock_free);
 constexpr std::size_t kMaxChildGroups = 256;
-// The signals that ask raygate to stop: Ctrl-C, a polite kill, a closed terminal or session.
-constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP};
+// The signals that ask raygate to stop: Ctrl-C, a polite kill, a closed terminal or session,
+// Ctrl-\ (whose default, a core dump, would lose the scenes measured and orphan the tracer).
+constexpr int kStopSignals[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
 constinit std::atomic<int> g_signal{0};
 constinit std::atomic<std::int64_t> g_signal_ns{0};  // when g_signal was recorded (monotonic)
 constinit std::atomic<int> g_scopes{0};
@@ -90,6 +91,7 @@ ExitCode exit_code_of(int signal) {
   switch (signal) {
     case SIGTERM: return ExitCode::terminated;
     case SIGHUP: return ExitCode::hung_up;
+    case SIGQUIT: return ExitCode::quit;
     default: return ExitCode::interrupted;
   }
 }

@@ -1,10 +1,11 @@
-// Ctrl-C (SIGINT), SIGTERM and SIGHUP (the terminal or ssh session closed) while raygate runs a
-// tracer or a build step. Children run in their own process groups, so the terminal's signal
-// reaches raygate only; raygate must stop them, or a hung tracer outlives the session forever.
+// Ctrl-C (SIGINT), SIGTERM, SIGHUP (the terminal or ssh session closed) and Ctrl-\ (SIGQUIT)
+// while raygate runs a tracer or a build step. Children run in their own process groups, so the
+// terminal's signal reaches raygate only; raygate must stop them, or a hung tracer outlives the session forever.
 // The handler only records the signal (an atomic flag and a byte on a self-pipe, both
 // async-signal-safe). Process::wait sees it, kills its child's group and throws Interrupted,
 // which travels up through the measuring code (that writes its document, complete: false) to
-// cli/main.cpp, which exits 128 + the signal: 129 (SIGHUP), 130 (SIGINT) or 143 (SIGTERM).
+// cli/main.cpp, which exits 128 + the signal: 129 (SIGHUP), 130 (SIGINT), 131 (SIGQUIT) or 143
+// (SIGTERM).
 //
 // A signal counts as a request to stop only while someone will act on it: while a child runs
 // or an InterruptScope is open. Otherwise, and on a second signal, the handler kills every live
@@ -24,7 +25,7 @@
 
 namespace raygate {
 
-// Thrown once SIGINT, SIGTERM or SIGHUP arrived; code() is 128 + the signal. what() says what
+// Thrown once SIGINT, SIGTERM, SIGHUP or SIGQUIT arrived; code() is 128 + the signal. what() says what
 // was kept.
 class Interrupted : public Error {
  public:
@@ -62,7 +63,7 @@ constexpr StopAction decide_stop(int signal, std::int64_t now_ns, int recorded,
                                                               : StopAction::end_now;
 }
 
-// Installs the SIGINT, SIGTERM and SIGHUP handlers and creates the self-pipe. Call once, early
+// Installs the SIGINT, SIGTERM, SIGHUP and SIGQUIT handlers and creates the self-pipe. Call once, early
 // in main; calling again does nothing. A signal ignored when raygate started (nohup, a
 // background job's SIGINT) stays ignored.
 void install_interrupt_handlers();

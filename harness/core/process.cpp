@@ -214,7 +214,9 @@ class SpawnAttributes {
     sigset_t default_signals;
     sigemptyset(&no_signals);
     sigemptyset(&default_signals);
-    for (const int sig : {SIGPIPE, SIGINT, SIGTERM, SIGHUP}) sigaddset(&default_signals, sig);
+    for (const int sig : {SIGPIPE, SIGINT, SIGTERM, SIGHUP, SIGQUIT}) {
+      sigaddset(&default_signals, sig);
+    }
     posix_spawnattr_setsigmask(&attributes_, &no_signals);
     posix_spawnattr_setsigdefault(&attributes_, &default_signals);
     posix_spawnattr_setpgroup(&attributes_, 0);

@@ -66,7 +66,7 @@ ResultsDocument new_document(DocumentKind kind, const MeasureContext& context,
 // Measures every scene into `document` (whose header the caller filled in) as `plan` decides,
 // in up to three passes (pipeline/measurement_plan.h), writing it to
 // m.out after each scene and once more, complete, at the end (to the run folder instead while
-// m.out cannot be written: pipeline/document_output.h). On SIGINT, SIGTERM or SIGHUP it stops
+// m.out cannot be written: pipeline/document_output.h). On SIGINT, SIGTERM, SIGHUP or SIGQUIT it stops
 // the running child, writes the scenes finished so far (complete: false) and throws Interrupted
 // saying what was kept and where.
 void measure_suite(ResultsDocument& document, const SuiteMeasurement& m, MeasurementPlan& plan,

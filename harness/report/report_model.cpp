@@ -416,9 +416,9 @@ std::string image_rule_text(const ScenePolicy& d, const ResultsDocument& documen
   }
   // One threshold for both by default: the line says what each verdict takes, not the same
   // number twice ("fail over 0.004 ..., warn over 0.004" read as a contradiction).
-  std::string text = fmt::format(
-      "images fail when more than {:.4g}% of pixels differ by over {:.4g} in a channel",
-      d.image.fail_percent, d.image.fail_threshold);
+  std::string text =
+      fmt::format("images fail when more than {:.4g}% of pixels differ by over {:.4g} in a channel",
+                  d.image.fail_percent, d.image.fail_threshold);
   text += d.image.warn_threshold == d.image.fail_threshold
               ? std::string(" and warn when fewer do")
               : fmt::format(" and warn when any differs by over {:.4g}", d.image.warn_threshold);

@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli_support.h"
+#include "core/interrupt.h"
 #include "results/results.h"
 #include "tracer_fixture.h"
 
@@ -239,9 +240,9 @@ class InterruptCli : public TracerRepoTest {
 TEST_F(InterruptCli, SignalsStopTheTracerItsChildrenAndStraysAndKeepTheFinishedScenes) {
   commit(sources_.fast, "tracer");
   const fs::path adapter = sleeping_adapter();
-  for (const auto& [sig, code] :
-       {std::pair{SIGINT, 130}, std::pair{SIGTERM, 143}, std::pair{SIGHUP, 129}}) {
-    const std::string name = sig == SIGINT ? "SIGINT" : sig == SIGTERM ? "SIGTERM" : "SIGHUP";
+  for (const auto& [sig, code] : {std::pair{SIGINT, 130}, std::pair{SIGTERM, 143},
+                                  std::pair{SIGHUP, 129}, std::pair{SIGQUIT, 131}}) {
+    const std::string name = signal_name(sig);
     SCOPED_TRACE(name);
     fs::remove_all(pids_);
     fs::create_directories(pids_);

@@ -67,7 +67,7 @@ TEST_F(ShardCli, TwoShardsMergeIntoOneDocumentAndAnotherRevisionIsRefused) {
   const fs::path second = dir_.path() / "shard-2.json";
   const CliRun one = run_shard(sha, "1/2", first);
   ASSERT_EQ(one.exit_code, 0) << one.out;
-  EXPECT_TRUE(has(one.out, "1 scenes, shard 1/2 of 2 selected scenes")) << one.out;
+  EXPECT_TRUE(has(one.out, "1 scene, shard 1/2 of 2 selected scenes")) << one.out;
   const CliRun two = run_shard(sha, "2/2", second);
   ASSERT_EQ(two.exit_code, 0) << two.out;
 

@@ -46,7 +46,10 @@ std::string number_problem(const std::string& text, bool whole, double lowest, d
     return fmt::format("{} is hexadecimal; {} in decimal", quoted(text), wanted);
   }
   if (const std::string problem = non_finite_problem(text); !problem.empty()) return problem;
-  if (whole && std::trunc(value) != value) {
+  // Digits only for a count: CLI11 reads "5.0" and "1e1" as no integer, and its Range check then
+  // called them out of range.
+  if (whole && (std::trunc(value) != value ||
+                text.find_first_not_of("+-0123456789 \t") != std::string::npos)) {
     return fmt::format("{} is not a whole number; {}", quoted(text), wanted);
   }
   if (value < lowest || value > highest) {

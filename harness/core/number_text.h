@@ -13,7 +13,8 @@ namespace raygate {
 // itself); else why it is not finite ("nan", "inf", "1e999").
 std::string non_finite_problem(const std::string& text);
 
-// "" when `text` is a decimal number within [lowest, highest] (a whole one when `whole`); else
+// "" when `text` is a decimal number within [lowest, highest] (a whole one, in digits only, when
+// `whole`); else
 // what is wrong with it: empty, not a number, hexadecimal, not finite, not whole, or out of range,
 // with the range that would be right. Long text is quoted in part.
 std::string number_problem(const std::string& text, bool whole, double lowest, double highest);

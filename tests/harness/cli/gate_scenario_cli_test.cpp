@@ -62,7 +62,7 @@ class GateScenario : public TracerRepoTest {
 
   CliRun compare(const std::string& base, const std::string& head, int max_rounds) {
     std::vector<std::string> args{
-        "compare", "--base",     base,    "--head",
+        "compare", "--base",     base,       "--head",
         head,      "--no-store", "--output", (dir_.path() / "c.json").string()};
     const std::vector<std::string> shared = common(max_rounds);
     args.insert(args.end(), shared.begin(), shared.end());

@@ -30,7 +30,9 @@ using nlohmann::json;
 // side's clock counting a sleep or start-up of seconds, would.
 constexpr double kTimedLowest = 0.4;
 constexpr double kTimedHighest = 2.5;
-constexpr const char* kTimedRounds = "9";
+// Five rounds: a median of five runs a side stays inside the bound at this VM's ±30% per run
+// (2026-11-29), and the three timed tests run alone (SERIAL), so each round is the suite's time.
+constexpr const char* kTimedRounds = "5";
 // Simulated: measured 0.998-0.999 on these 20 M-instruction scenes (the shell exec's itself away,
 // and the baseline parses two options more); a yardstick that differs shows as a percent or more.
 constexpr double kSimulatedTolerance = 0.01;

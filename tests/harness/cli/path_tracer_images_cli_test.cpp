@@ -40,15 +40,15 @@ constexpr const char* kSuite = R"({
   ]
 })";
 
-// One g++ call instead of CMake (as in scaling_cli_test): the same sources, a fraction of the
-// set-up. -O1 builds faster than -O2 and the renders are tiny.
+// One g++ call on one translation unit that includes every source, instead of CMake (as in
+// scaling_cli_test): the same code, and the headers parsed once. The builds are most of this
+// test's time: 4.5 s a commit on the 2-core VM, where the seven files one by one took 8.8 s.
+// -O1 builds faster than -O2 and the renders are tiny.
 constexpr const char* kAdapter = R"({
   "name": "path-tracer-test",
   "scene_format": "nff",
-  "build": [["g++", "-O1", "-std=c++17", "-o", "{build}/tracer",
-             "{src}/src/main.cpp", "{src}/src/render.cpp", "{src}/src/material.cpp",
-             "{src}/src/nff_reader.cpp", "{src}/src/shapes.cpp", "{src}/src/bvh.cpp",
-             "{src}/src/image.cpp"]],
+  "build": [["sh", "-c", "for f in {src}/src/*.cpp; do echo \"#include \\\"$f\\\"\"; done > {build}/all.cpp"],
+            ["g++", "-O1", "-std=c++17", "-o", "{build}/tracer", "{build}/all.cpp"]],
   "run": ["{build}/tracer", "{scene}", "-o", "{workdir}/image.pfm", "--seed", "{seed}"],
   "image": "{workdir}/image.pfm",
   "images": "monte-carlo",

@@ -64,10 +64,21 @@ void add_schedule_options(CLI::App& command, MeasureArgs& args) {
 void add_stopping_options(CLI::App& command, MeasureArgs& args) {
   add_bounded_option(command, "--target", args.stopping.target_relative_half_width, 0.0001, 1.0,
                      "stop a scene once the ratio's 95% CI half-width is below this fraction");
-  add_bounded_option(command, "--min-rounds", args.stopping.min_rounds, 2, 1000,
-                     "rounds before the stopping rule applies");
+  const CLI::Option* min_rounds =
+      add_bounded_option(command, "--min-rounds", args.stopping.min_rounds, 2, 1000,
+                         "rounds before the stopping rule applies");
   add_bounded_option(command, "--max-rounds", args.stopping.max_rounds, 1, 100000,
                      "round budget per scene");
+  // Both given cannot both hold. A default --min-rounds above a small --max-rounds is lowered to
+  // it instead (pipeline/measure_options.cpp): `--max-rounds 3` alone asks for three rounds.
+  command.parse_complete_callback([min_rounds, &args] {
+    const StoppingPolicy& s = args.stopping;
+    if (min_rounds->count() > 0 && s.min_rounds > s.max_rounds) {
+      throw UsageError(fmt::format("--min-rounds {} is above --max-rounds {}: a scene cannot need "
+                                   "more rounds than it may take; lower one or raise the other",
+                                   s.min_rounds, s.max_rounds));
+    }
+  });
   add_bounded_option(command, "--max-seconds", args.stopping.max_seconds, 0.0, 1e7,
                      "time budget per scene, in seconds");
   add_bounded_option(command, "--max-minutes", args.stopping.max_minutes, 0.0, 1e6,

@@ -83,6 +83,25 @@ TEST(HostileInput, BoundedNumbersSayWhatIsWrongAndWhatWouldBeRight) {
   }
 }
 
+// Two limits given that cannot both hold are refused; a default above a small limit gives way.
+TEST(HostileInput, AMinimumAboveTheMaximumGivenIsAUsageError) {
+  TempDir dir;
+  for (const char* command : {"run", "compare"}) {
+    SCOPED_TRACE(command);
+    expect_usage_error(run_raygate({command, "--adapter", "make-nff", "--min-rounds", "50",
+                                    "--max-rounds", "30"},
+                                   dir),
+                       "--min-rounds 50 is above --max-rounds 30");
+  }
+  // --max-rounds 3 alone, below the default minimum, is three rounds: not refused (it goes on to
+  // find no repository here, an error of another kind).
+  const CliRun small = run_raygate({"run", "--adapter", "make-nff", "--max-rounds", "3", "--repo",
+                                    (dir.path() / "none").string()},
+                                   dir);
+  EXPECT_EQ(small.out.find("--min-rounds"), std::string::npos) << small.out;
+  EXPECT_NE(small.exit_code, 0) << small.out;
+}
+
 class HostileDocuments : public ::testing::Test {
  protected:
   // A stored-looking run document, changed by `mutate`, written as `name`.

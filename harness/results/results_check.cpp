@@ -192,6 +192,21 @@ void check_ratio(const JsonField& r) {
   number_or_null(r.member("baseline_median_seconds"), 0.0, kMaxMeasure);
 }
 
+// The median change lies inside every interval raygate draws around it from the same rounds: a
+// change outside its own interval was written by hand, and the gate would judge it as it reads.
+void check_change_in_interval(const JsonField& field, std::optional<double> change,
+                              const JsonField& interval) {
+  check_interval(interval, -1.0, kInf);
+  const auto lower = number_or_null(interval.member("lower"), -1.0, kInf);
+  const auto upper = number_or_null(interval.member("upper"), -1.0, kInf);
+  if (!change || !lower || !upper) return;
+  const double slack = 1e-9 * (1.0 + std::abs(*change));  // printed and read back as decimals
+  if (*change < *lower - slack || *change > *upper + slack) {
+    field.fail(
+        fmt::format("{} lies outside its change_interval [{}, {}]", *change, *lower, *upper));
+  }
+}
+
 void check_verdict(const JsonField& verdict) {
   const std::string word = verdict.as_string();
   if (!change_verdict_named(word)) {
@@ -202,8 +217,8 @@ void check_verdict(const JsonField& verdict) {
 void check_change(const JsonField& c) {
   object(c);
   integer(c.member("rounds"), 0, kMaxCount);
-  number_or_null(c.member("change"), -1.0, kInf);  // head / base - 1
-  check_interval(c.member("change_interval"), -1.0, kInf);
+  const auto change = number_or_null(c.member("change"), -1.0, kInf);  // head / base - 1
+  check_change_in_interval(c.member("change"), change, c.member("change_interval"));
   if (const auto confidence = find(c, "confidence")) number(*confidence, 0.0, 1.0);
   std::string kind = "order-statistic";  // documents from before the confidence sequences
   if (const auto k = find(c, "interval_kind")) {
@@ -383,7 +398,13 @@ void check_scene(const JsonField& s, const Roles& roles) {
   object(s);
   check_scene_entry(s.member("scene"));
   s.member("scene_sha256").as_string();
+  const JsonField status = s.member("status");
   word_at(s, "status", {"measured", "failed"});
+  // A failed scene names its failed run, and only a failed one does: the gate judges the failure.
+  if ((status.as_string() == "failed") != find_non_null(s, "failure").has_value()) {
+    status.fail(status.as_string() == "failed" ? "\"failed\" with no failure (null)"
+                                               : "\"measured\" with a failure");
+  }
   // "": no rounds were run (a warm-up only), so nothing stopped them.
   word_at(s, "stop_reason",
           {"stop_converged", "stop_budget_rounds", "stop_budget_time", "failed", "continue", ""});

@@ -68,6 +68,17 @@ const std::vector<BadDocument>& bad_documents() {
        "expected a string, found number 3"},
       {"unknown scene status", false, [](json& j) { j["scenes"][1]["status"] = "exploded"; },
        "$.scenes[1].status", "unknown value \"exploded\""},
+      // The sweep of 2026-11-29: a failed scene without its failure passed the gate.
+      {"a failed scene with no failure", false,
+       [](json& j) { j["scenes"][0]["status"] = "failed"; }, "$.scenes[0].status",
+       "\"failed\" with no failure (null)"},
+      // ... and a change of -100% inside [+29%, +36%] turned a regression into a warning.
+      {"a change outside its interval", true,
+       [](json& j) {
+         j["scenes"][0]["change"]["change"] = -1.0;
+         j["scenes"][0]["change"]["change_interval"] = {{"lower", 0.29}, {"upper", 0.36}};
+       },
+       "$.scenes[0].change.change", "lies outside its change_interval"},
       {"unknown stop reason", false, [](json& j) { j["scenes"][0]["stop_reason"] = "bored"; },
        "$.scenes[0].stop_reason",
        "unknown value \"bored\" (one of: stop_converged, stop_budget_rounds, stop_budget_time, "

@@ -40,13 +40,7 @@ int calibrate_command(const CalibrateArgs& args, const Console& console) {
   check_calibrate_request(request);  // before the build
   TerminalIo terminal(console.quiet(), is_terminal(stderr));
   const Calibration calibration = calibrate_suite(request, terminal.io);
-  std::size_t reached = 0;
-  for (const SceneCalibration& scene : calibration.scenes) reached += scene.chosen.reached;
-  console.info(fmt::format(
-      "wrote suite '{}' to {}: {} of {} scenes predicted within 10% of {:g} s; use it with "
-      "--suite {}",
-      calibration.suite.name, calibration.path.string(), reached, calibration.scenes.size(),
-      args.target_seconds, calibration.path.string()));
+  console.info(calibration_summary(calibration, args.target_seconds));
   return 0;
 }
 

@@ -133,6 +133,8 @@ void check_calibrate_request(const CalibrateRequest& request) {
   if (request.out.empty()) throw UsageError("-o: the suite file to write is required");
   // A folder, a device, or a folder raygate cannot write into: said now, not after the renders.
   check_output_path(request.out, "-o");
+  // Calibrating a suite into its own file would replace the sizes it was measured from.
+  check_distinct_files({{"-o", request.out}, {"--suite", request.context.suite.path}});
   if (request.out.extension() != ".json") {
     throw UsageError("-o " + request.out.string() +
                      ": a suite file ends in .json (so --suite reads it as a file)");
@@ -140,6 +142,15 @@ void check_calibrate_request(const CalibrateRequest& request) {
   const std::string name =
       request.suite_name.empty() ? default_suite_name(request) : request.suite_name;
   checked_component(name, "--name");  // it names the suite's scene cache folder
+}
+
+std::string calibration_summary(const Calibration& calibration, double target_seconds) {
+  std::size_t reached = 0;
+  for (const SceneCalibration& scene : calibration.scenes) reached += scene.chosen.reached;
+  return fmt::format(
+      "wrote suite '{}' to {}: {} of {} predicted within 10% of {:g} s; use it with --suite {}",
+      calibration.suite.name, calibration.path.string(), reached,
+      count_text(calibration.scenes.size(), "scene"), target_seconds, calibration.path.string());
 }
 
 std::string calibration_line(const SceneCalibration& s, double target_seconds) {

@@ -63,6 +63,9 @@ Calibration calibrate_suite(const CalibrateRequest& request, PipelineIo& io);
 // "balls  128x128 2.31 s, 64x64 0.66 s -> 84x84, predicted 1.00 s (fixed 0.11 s)".
 std::string calibration_line(const SceneCalibration& scene, double target_seconds);
 
+// The closing line: where the suite went, how many scenes reached the target, how to use it.
+std::string calibration_summary(const Calibration& calibration, double target_seconds);
+
 // The suite file's text: `source`'s sampling, the calibrated scenes (ids, scenes and sizes as
 // they were, the chosen resolutions), `name` and `description`.
 std::string calibrated_suite_text(const Suite& source, const std::string& name,

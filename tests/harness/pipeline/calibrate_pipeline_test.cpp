@@ -151,6 +151,9 @@ TEST_F(CalibratePipelineTest, RefusesBadRequestsBeforeBuilding) {
   EXPECT_THROW(calibrate(sha, 0.0, dir_.path() / "s.json"), UsageError);
   EXPECT_THROW(calibrate(sha, 1.0, dir_.path()), UsageError);                // a directory
   EXPECT_THROW(calibrate(sha, 1.0, dir_.path() / "suite.txt"), UsageError);  // not .json
+  const std::string suite_before = read_file(context_.suite.path);
+  EXPECT_THROW(calibrate(sha, 1.0, context_.suite.path), UsageError);  // the suite it reads
+  EXPECT_EQ(read_file(context_.suite.path), suite_before);
   EXPECT_TRUE(executor_.calls().empty());
 }
 

@@ -1,6 +1,6 @@
-// raygate: measures ray tracers against a fixed baseline tracer on the SPD scenes and gates
-// merges on the normalized ratio. This file only names the subcommands (a table, as ninja's
-// kTools) and maps errors to exit codes.
+// raygate: measures ray tracers against a fixed baseline tracer on the SPD scenes and gates merges
+// on the normalized ratio. This file names the subcommands (a table, as ninja's kTools) and maps
+// errors to exit codes.
 #include <fmt/core.h>
 
 #include <CLI/CLI.hpp>
@@ -19,6 +19,7 @@
 #include "core/interrupt.h"
 #include "core/sanitize.h"
 #include "core/strays.h"
+#include "pipeline/output_failures.h"
 #include "report/reporter.h"
 #include "report/terminal.h"
 
@@ -39,12 +40,13 @@ struct Command {
 // documents, then across documents and machines, and history's alerts and growth.
 std::vector<Command> commands() {
   return {
-      {"scenes", "List, generate and convert SPD scenes (NFF; POV-Ray, OBJ, pbrt-v4)",
+      {"scenes", "list, generate and convert SPD scenes (NFF; POV-Ray, OBJ, pbrt-v4)",
        cli::add_scenes_command},
-      {"golden", "Verify or bless the baseline's golden images", cli::add_golden_command},
-      {"validate", "Compare the baseline's SPD ray counts with the published SPD statistics",
+      {"golden", "verify or bless golden images: the baseline's, or a tracer's from a run",
+       cli::add_golden_command},
+      {"validate", "compare the baseline's SPD ray counts with the published SPD statistics",
        cli::add_validate_command},
-      {"adapter", "Work with adapter files (adapters/README.md)", cli::add_adapter_command},
+      {"adapter", "check adapter files (adapters/README.md)", cli::add_adapter_command},
       {"calibrate",
        "size a suite to a tracer: resolutions at which each render takes a target time",
        cli::add_calibrate_command},
@@ -82,8 +84,7 @@ std::vector<Command> commands() {
        cli::add_scaling_command}};
 }
 
-// What a parse error prints: CLI11's words, bounded; `raygate nosuchcmd` said only "A subcommand
-// is required", so the word it did not know is named.
+// A parse error: CLI11's words, bounded, and the unknown command named (not "A subcommand is required").
 std::string usage_failure(const CLI::App* command, const CLI::Error& e) {
   if (command->get_parent() == nullptr && command->get_subcommands().empty() &&
       !command->remaining().empty()) {
@@ -101,9 +102,8 @@ int main(int argc, char** argv) {
   // The commit tells two builds of one version apart (cmake/RaygateGitCommit.cmake).
   app.set_version_flag(
       "--version", std::string("raygate ") + RAYGATE_VERSION + " (git " + RAYGATE_GIT_COMMIT + ")");
-  // Before any child starts: Ctrl-C, SIGTERM, SIGHUP, SIGQUIT stop children and write what was
-  // measured, and orphans of children re-parent to raygate, to be swept (core/interrupt.h,
-  // core/strays.h).
+  // Before any child starts: SIGINT, SIGTERM, SIGHUP, SIGQUIT stop children and keep what was
+  // measured; orphans re-parent to raygate, to be swept (core/interrupt.h, core/strays.h).
   raygate::install_interrupt_handlers();
   raygate::become_subreaper();
   cli::add_global_options(app);
@@ -111,7 +111,7 @@ int main(int argc, char** argv) {
   for (const Command& command : commands()) {
     command.add(*app.add_subcommand(command.name, command.help), exit_code);
   }
-  cli::refuse_non_finite_numbers(app);
+  cli::refuse_empty_and_non_finite_values(app);
   app.failure_message(usage_failure);
   try {
     // Before parsing: the command line overrides these (cli/project_config.h).
@@ -140,6 +140,7 @@ int main(int argc, char** argv) {
     say_last_words(fmt::format("raygate: internal error: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(raygate::ExitCode::infrastructure);
   }
+  exit_code = raygate::exit_code_after_standard_output(exit_code);
   if (const int sig = raygate::interrupt_signal(); sig != 0) {
     // The signal came after the last child ended: the work is done and kept, but the caller
     // asked to stop and learns that it did.

@@ -9,6 +9,7 @@
 
 #include "core/error.h"
 #include "core/exit_codes.h"
+#include "report/terminal.h"
 
 namespace raygate {
 
@@ -66,6 +67,16 @@ void check_standard_output(OutputFailures& failures, const std::string& output, 
   const int reason = error_number != 0 ? error_number : errno;
   failures.add(output, {"-", reason != 0 ? std::strerror(reason) : "write failed"});
   std::cout.clear();  // the outputs after this one still get their try
+}
+
+int exit_code_after_standard_output(int exit_code) {
+  const bool failed = std::fflush(stdout) != 0 || std::ferror(stdout) != 0;
+  const int reason = errno;
+  if (!failed || exit_code != 0) return exit_code;
+  const int code = to_int(ExitCode::infrastructure);
+  say_last_words(fmt::format("raygate: error: standard output could not be written: {}; exit {}",
+                             reason != 0 ? std::strerror(reason) : "write failed", code));
+  return code;
 }
 
 namespace {

@@ -92,4 +92,10 @@ void check_output_beside_inputs(const NamedFile& output, const std::vector<std::
 // left it (the stream keeps only that it failed, not why); 0 says "write failed".
 void check_standard_output(OutputFailures& failures, const std::string& output, int error_number);
 
+// What a command printed is its result (a report, a verdict, history): when standard output could
+// not take it (`> /dev/full`, a full disk), the command did not do its work. Flushes standard
+// output; on failure says so in one line and returns 3 where `exit_code` was 0. A regression (1)
+// outranks it, and a command that found it already (check_standard_output) exits 3 anyway.
+int exit_code_after_standard_output(int exit_code);
+
 }  // namespace raygate

@@ -96,16 +96,8 @@ void publish_reports(const ResultsDocument& document, const GateResult& gate,
           fmt::format("{} report: {}", to_string(target.format), target.path.string()));
     }
   }
-  if (request.table != nullptr) {
-    input.outputs_failed = failures.summary();
-    input.exit_code_with_outputs = failures.exit_code(gate.exit_code);
-    ReportOptions table;
-    table.colour = request.table_colour;
-    std::fflush(stderr);  // C stdio chatter before it, when the table goes to std::cerr
-    make_reporter(ReportFormat::console, table)->write(input, *request.table);
-    request.table->flush();
-  }
-  for (const std::string& line : written_lines) sink.info(line);
+  // Standard output first: a full disk behind `> file` is then in the table's last line, whose
+  // exit code would otherwise say 0 above a process that exits 3.
   for (const ReportTarget& target : request.reports) {
     if (target.path != "-") continue;
     const std::string output = fmt::format("--report {}:-", to_string(target.format));
@@ -117,6 +109,16 @@ void publish_reports(const ResultsDocument& document, const GateResult& gate,
     });
     check_standard_output(failures, output, error_number);
   }
+  if (request.table != nullptr) {
+    input.outputs_failed = failures.summary();
+    input.exit_code_with_outputs = failures.exit_code(gate.exit_code);
+    ReportOptions table;
+    table.colour = request.table_colour;
+    std::fflush(stderr);  // C stdio chatter before it, when the table goes to std::cerr
+    make_reporter(ReportFormat::console, table)->write(input, *request.table);
+    request.table->flush();
+  }
+  for (const std::string& line : written_lines) sink.info(line);
 }
 
 }  // namespace raygate

@@ -1,5 +1,7 @@
 #include "pipeline/publish_options.h"
 
+#include <fmt/core.h>
+
 #include <iostream>
 
 #include "core/error.h"
@@ -18,8 +20,17 @@ void check_publish_targets(const PublishOptions& options, const std::string& out
   if (!options.no_store && url) parse_postgresql_url(options.store);
   std::vector<NamedFile> files = inputs;
   files.push_back({option, output});
+  std::vector<std::string> on_standard_output;
   for (std::size_t i = 0; i < reports.size(); ++i) {
     files.push_back({"--report " + options.reports[i], reports[i].path});
+    if (reports[i].path == "-") on_standard_output.push_back(options.reports[i]);
+  }
+  // Two documents back to back on standard output are neither one: no reader takes them apart.
+  if (on_standard_output.size() > 1) {
+    throw UsageError(
+        fmt::format("{} and {} both go to standard output (--format F, --report "
+                    "F:-); write one of them to a file: --report FORMAT:PATH",
+                    on_standard_output[0], on_standard_output[1]));
   }
   if (!options.no_store && !url) files.push_back({"--store", options.store});
   check_distinct_files(files);

@@ -4,18 +4,22 @@
 
 namespace raygate::cli {
 
-void refuse_non_finite_numbers(CLI::App& app) {
+void refuse_empty_and_non_finite_values(CLI::App& app) {
   // A check per option rather than one on the App: CLI11 names the option in the error it
   // throws for a failed check ("--max-minutes: ..."), and a value from raygate.toml or
   // RAYGATE_* passes the same checks when it becomes the option's default.
   // No description: --help's "FLOAT in [0 - 1e6]" already says it.
   const CLI::Validator finite(non_finite_problem, "", "FINITE");
+  // `golden verify --golden-dir ''` checked the shipped goldens, which bless would overwrite.
+  const CLI::Validator given(empty_value_problem, "", "");
   for (CLI::Option* option : app.get_options()) {
+    if (option->get_type_size() == 0) continue;  // a flag
+    option->check(given);
     if (option->get_type_name().rfind("FLOAT", 0) != 0) continue;
     option->check(finite);  // after any range check, which NaN passes and infinity fails
   }
   for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
-    refuse_non_finite_numbers(*command);
+    refuse_empty_and_non_finite_values(*command);
   }
 }
 

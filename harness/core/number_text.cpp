@@ -52,10 +52,16 @@ std::string number_problem(const std::string& text, bool whole, double lowest, d
                 text.find_first_not_of("+-0123456789 \t") != std::string::npos)) {
     return fmt::format("{} is not a whole number; {}", quoted(text), wanted);
   }
-  if (value < lowest || value > highest) {
+  // Compared as the option will hold it: "0.0001" read as a long double lies below the double
+  // 0.0001 that names the range's end, and was refused as out of range.
+  if (const double held = static_cast<double>(value); held < lowest || held > highest) {
     return fmt::format("{} is out of range; {}", quoted(text), wanted);
   }
   return "";
+}
+
+std::string empty_value_problem(const std::string& text) {
+  return text.empty() ? "the value is empty; leave the option out for its default" : "";
 }
 
 }  // namespace raygate

@@ -19,4 +19,8 @@ std::string non_finite_problem(const std::string& text);
 // with the range that would be right. Long text is quoted in part.
 std::string number_problem(const std::string& text, bool whole, double lowest, double highest);
 
+// "" for any text but the empty one; for "" that it is empty and what leaving the option out does.
+// Every option's value is checked with it (cli/finite_numbers.h): "" quietly meant the default.
+std::string empty_value_problem(const std::string& text);
+
 }  // namespace raygate

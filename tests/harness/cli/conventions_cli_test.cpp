@@ -200,7 +200,7 @@ TEST_F(Conventions, AnEmptyRepoAFolderAsStoreAndAFileAsCacheAreUsageErrors) {
   const CliStreams repo = run_raygate_streams(
       {"run", "--repo", "", "--adapter", "raygate-baseline-bbox", "--no-store"}, dir);
   EXPECT_EQ(repo.exit_code, 2) << repo.err;
-  EXPECT_THAT(repo.err, HasSubstr("--repo is empty"));
+  EXPECT_THAT(repo.err, HasSubstr("--repo: the value is empty; leave the option out"));
   const CliStreams store = run_raygate_streams({"history", "--store", "a-folder"}, dir);
   EXPECT_EQ(store.exit_code, 2) << store.err;
   EXPECT_THAT(store.err, HasSubstr("is a directory"));
@@ -257,7 +257,7 @@ TEST_F(Conventions, BadStoreGoldenCacheAndConfigAreRefusedUpFront) {
   refused({"--store", "postgresql://u@h:99999/db"},
           "--store postgresql://u@h:99999/db: not a valid PostgreSQL URL (port \"99999\"");
   refused({"--store", "postgresql://u@localhost/db?sslmode=bogus"}, "sslmode \"bogus\"");
-  refused({"--no-store", "--golden-dir", ""}, "--golden-dir is empty: give a directory");
+  refused({"--no-store", "--golden-dir", ""}, "--golden-dir: the value is empty");
   refused({"--no-store", "--golden-dir", "a-file"}, "--golden-dir a-file: exists and is not a");
   refused(
       {"--no-store", "--cache-dir", "cache"},

@@ -18,6 +18,10 @@ TEST(NumberText, InRangeDecimalNumbersPass) {
   EXPECT_EQ(number_problem("100", true, 1, 100), "");
   EXPECT_EQ(number_problem("0.25", false, 0, 1), "");
   EXPECT_EQ(number_problem("1e-3", false, 0, 1), "");
+  // The ends as --help prints them: decimal fractions no double holds exactly.
+  EXPECT_EQ(number_problem("0.0001", false, 0.0001, 1), "");
+  EXPECT_EQ(number_problem("0.001", false, 0.001, 3600), "");
+  EXPECT_EQ(number_problem("0.3", false, 0.1, 0.3), "");
 }
 
 TEST(NumberText, EachWrongValueIsNamedWithTheRangeThatWouldBeRight) {

@@ -163,6 +163,13 @@ std::string short_hash(const std::string& hash) {
 std::optional<std::string> golden_file_problem(const std::filesystem::path& golden_dir,
                                                const std::string& file, const std::string& sha256) {
   const std::filesystem::path path = golden_dir / file;
+  std::error_code error;  // a symlink loop, a folder: said here, not thrown over the other scenes
+  const std::filesystem::file_status status = std::filesystem::status(path, error);
+  if (error) return "golden file cannot be read: " + path.string() + ": " + error.message();
+  if (!std::filesystem::is_regular_file(status)) {
+    return path.string() + " is not a regular file: a golden is an image file (" +
+           (golden_dir / "manifest.json").string() + " lists it)";
+  }
   std::string actual;
   try {
     actual = sha256_file_hex(path);

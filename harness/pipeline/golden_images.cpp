@@ -234,7 +234,8 @@ BaselineGoldens open_baseline_goldens(const std::string& suite_name,
   Suite suite = load_suite(suite_name, tools.data_root);
   std::vector<SuiteScene> selected = select_scenes(suite, scene_ids);
   return {std::move(suite), std::move(selected),
-          golden_dir.empty() ? tools.data_root / "golden" / kBaselineGoldens : golden_dir, work_dir,
+          golden_dir.empty() ? tools.data_root / "golden" / kBaselineGoldens : golden_dir,
+          std::filesystem::absolute(work_dir),  // "-/scenes/x.nff" read as an option otherwise
           BaselineTool(tools.baseline)};
 }
 
@@ -243,16 +244,23 @@ namespace {
 // Why the baseline has no golden of `id` to verify against. An image there that the manifest
 // does not list is not vouched for (the manifest is the trust anchor): blessing over it would
 // replace a picture nobody looked at, so the words say what is missing instead.
-std::string missing_golden_text(const std::filesystem::path& golden_dir, const std::string& id,
+// The hint names the suite and the folder as given: `raygate golden bless ID` alone would bless
+// the shipped goldens of the ci suite.
+std::string missing_golden_text(const BaselineGoldens& goldens, const std::string& id,
                                 bool listed) {
+  const std::filesystem::path& golden_dir = goldens.golden_dir;
   const std::filesystem::path image = golden_dir / (id + ".png");
   const std::filesystem::path manifest = golden_dir / "manifest.json";
-  if (listed || !std::filesystem::exists(image)) {
-    return "no golden image; create it with: raygate golden bless " + id;
+  std::error_code error;
+  if (listed || !std::filesystem::exists(image, error)) {
+    return fmt::format(
+        "no golden image; create it with: raygate golden bless --suite {} "
+        "--golden-dir {} {}",
+        goldens.suite.path.string(), golden_dir.string(), id);
   }
   return image.string() + " is there, but " +
-         (std::filesystem::exists(manifest) ? manifest.string() + " has no entry for it"
-                                            : manifest.string() + " is missing") +
+         (std::filesystem::exists(manifest, error) ? manifest.string() + " has no entry for it"
+                                                   : manifest.string() + " is missing") +
          ", so nothing says it is the golden; restore the manifest (from version control), or "
          "look at the image before blessing it again";
 }
@@ -274,9 +282,11 @@ void verify_baseline_scene(const BaselineGoldens& goldens, const GoldenManifest&
                            const SuiteScene& scene, GoldenVerification& counts,
                            ProgressSink& progress) {
   const GoldenEntry* entry = manifest.find(scene.id);
-  if (entry == nullptr || !std::filesystem::exists(goldens.golden_dir / entry->file)) {
+  std::error_code error;  // one that cannot be looked at (a symlink loop): unusable_golden says
+  if (entry == nullptr ||
+      (!std::filesystem::exists(goldens.golden_dir / entry->file, error) && !error)) {
     progress.line(fmt::format("MISSING   {:<12} {}", scene.id,
-                              missing_golden_text(goldens.golden_dir, scene.id, entry != nullptr)));
+                              missing_golden_text(goldens, scene.id, entry != nullptr)));
     ++counts.missing;
     return;
   }

@@ -71,7 +71,7 @@ SpdValidation validate_spd_counts(const SpdValidationRequest& args,
     throw UsageError("--accel: expected none or bbox, found '" + args.accel + "'");
   }
   const BaselineTool baseline(locate_tools(args.baseline).baseline);
-  const std::filesystem::path work = args.work_dir;
+  const std::filesystem::path work = std::filesystem::absolute(args.work_dir);  // "-" is no option
   std::string table =
       "| scene | eye rays that hit | reflection rays | refraction rays | shadow rays | "
       "render s |\n|---|---|---|---|---|---|\n";

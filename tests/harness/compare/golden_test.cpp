@@ -181,5 +181,21 @@ TEST(GoldenManifest, AGoldenFolderThatIsAFileIsAUsageError) {
                 "lists");
 }
 
+// The sweep of 2026-11-29: a folder was "changed after it was blessed" (the SHA-256 of nothing),
+// and a symlink loop threw over every other scene of the verify.
+TEST(GoldenFile, AFolderOrALoopIsNamedForWhatItIs) {
+  const TempDir dir;
+  std::filesystem::create_directories(dir.path() / "sub");
+  std::filesystem::create_symlink("loop", dir.path() / "loop");
+  const std::string sha(64, '0');
+  const std::optional<std::string> folder = golden_file_problem(dir.path(), "sub", sha);
+  ASSERT_TRUE(folder.has_value());
+  EXPECT_NE(folder->find("is not a regular file"), std::string::npos) << *folder;
+  const std::optional<std::string> loop = golden_file_problem(dir.path(), "loop", sha);
+  ASSERT_TRUE(loop.has_value());
+  EXPECT_NE(loop->find("cannot be read"), std::string::npos) << *loop;
+  EXPECT_NE(loop->find("symbolic links"), std::string::npos) << *loop;
+}
+
 }  // namespace
 }  // namespace raygate

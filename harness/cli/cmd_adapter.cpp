@@ -37,7 +37,7 @@ int run_check(const AdapterFiles& files) {
 void add_adapter_command(CLI::App& command, int& exit_code) {
   command.require_subcommand(1);
   const auto [check, files] = add_subcommand<AdapterFiles>(
-      command, "check", "Validate adapter files and show the commands raygate would run", run_check,
+      command, "check", "validate adapter files and show the commands raygate would run", run_check,
       exit_code);
   check->add_option("files", *files, "Adapter JSON files")->required();
 }

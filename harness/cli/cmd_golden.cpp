@@ -1,11 +1,9 @@
 // `raygate golden verify | bless`: the baseline's golden image of every suite scene, in
-// golden/raygate-baseline/ (compare/golden.h says whom they judge). verify
-// re-renders and demands identical pixels (the baseline is deterministic); bless rewrites goldens
-// only for the scenes named (or all), never as a side effect of anything else.
-// `bless --from-run RESULTS.json` blesses a foreign tracer's images instead: the ones a run
-// already made and checked, copied into golden/<adapter>/ (docs/gate.md); for an adapter with
-// "images": "monte-carlo" the mean and variance of all its runs' images
-// (docs/monte-carlo-images.md). `verify --from-run RESULTS.json` checks a run against them.
+// golden/raygate-baseline/ (compare/golden.h says whom they judge). verify re-renders and demands
+// identical pixels (the baseline is deterministic); bless rewrites only the scenes named (or all).
+// `--from-run RESULTS.json`: a foreign tracer's images from a run instead, in golden/<adapter>/
+// (docs/gate.md); for "images": "monte-carlo" the mean and variance of all its runs' images
+// (docs/monte-carlo-images.md).
 #include <fmt/core.h>
 
 #include "cli/commands.h"
@@ -35,17 +33,17 @@ void add_golden_subcommand(CLI::App& golden, const std::string& name, const std:
                            const std::string& from_run_help, int (*run)(const GoldenOptions&),
                            int& exit_code) {
   const auto [cmd, args] = add_subcommand<GoldenOptions>(golden, name, help, run, exit_code);
-  cmd->add_option("--suite", args->suite, "Suite name or file")->capture_default_str();
+  cmd->add_option("--suite", args->suite, "suite name or file")->capture_default_str();
   cmd->add_option("--golden-dir", args->golden_dir,
-                  "Golden directory (default: golden/raygate-baseline/, the baseline's)");
-  cmd->add_option("--work-dir", args->work_dir, "Where scenes, renders and evidence go")
+                  "golden directory (default: golden/raygate-baseline/, the baseline's)");
+  cmd->add_option("--work-dir", args->work_dir, "where scenes, renders and evidence go")
       ->capture_default_str()
       ->check(writable_folder());
   cmd->add_option("--baseline", args->baseline,
                   "raygate-baseline to use (default: beside raygate)");
-  cmd->add_option("scenes", args->scenes, "Suite scene ids (default: all)");
+  cmd->add_option("scenes", args->scenes, "suite scene ids (default: all)");
   cmd->add_option("--from-run", args->from_run, from_run_help);
-  cmd->add_option("--role", args->role, "With --from-run: whose images (tracer, head, base)")
+  cmd->add_option("--role", args->role, "with --from-run: whose images (tracer, head, base)")
       ->capture_default_str();
 }
 
@@ -53,15 +51,18 @@ void add_golden_subcommand(CLI::App& golden, const std::string& name, const std:
 
 void add_golden_command(CLI::App& golden, int& exit_code) {
   golden.require_subcommand(1);
-  add_golden_subcommand(golden, "verify", "Re-render and demand identical pixels",
-                        "Check a tracer's images from this results document against its "
-                        "adapter's goldens (Monte Carlo adapters: within noise) instead of "
-                        "rendering the baseline",
-                        run_verify, exit_code);
-  add_golden_subcommand(golden, "bless", "Re-render and overwrite goldens (on request only)",
-                        "Bless a tracer's images from this results document instead of "
-                        "rendering the baseline (default golden dir: golden/<adapter>/)",
-                        run_bless, exit_code);
+  add_golden_subcommand(
+      golden, "verify",
+      "render the baseline and demand identical pixels, or check a run's images (--from-run)",
+      "check a tracer's images from this results document against its adapter's goldens (Monte "
+      "Carlo adapters: within noise) instead of rendering the baseline",
+      run_verify, exit_code);
+  add_golden_subcommand(
+      golden, "bless",
+      "render the baseline and overwrite its goldens, or bless a run's images (--from-run)",
+      "bless a tracer's images from this results document instead of rendering the baseline "
+      "(default golden dir: golden/<adapter>/)",
+      run_bless, exit_code);
 }
 
 }  // namespace raygate::cli

@@ -17,9 +17,7 @@ namespace {
 void run_generate(const SceneRequest& request, const std::string& output) {
   const std::string text = generate_scene(request);
   if (output.empty() || output == "-") {
-    std::cout << text;
-    std::cout.flush();
-    if (!std::cout) throw InfraError("cannot write the scene to standard output");
+    std::cout << text;  // a full standard output: main's check, exit 3
   } else {
     write_file_atomically(output, text);
   }
@@ -37,7 +35,7 @@ int run_list(const std::string& format) {
 
 void add_convert_command(CLI::App& scenes, int& exit_code) {
   const auto [convert, args] = add_subcommand<ConvertRequest>(
-      scenes, "convert", "Convert an NFF scene for another tracer: POV-Ray, OBJ + MTL, or pbrt-v4",
+      scenes, "convert", "convert an NFF scene for another tracer: POV-Ray, OBJ + MTL, or pbrt-v4",
       run_convert, exit_code);
   convert->add_option("input", args->input, "NFF scene file")->required();
   convert->add_option("--to", args->format, "Output format: pov, obj or pbrt")->required();
@@ -54,20 +52,24 @@ void add_scenes_command(CLI::App& scenes, int& exit_code) {
   scenes.require_subcommand(1);
 
   const auto [list, list_format] = add_subcommand<std::string>(
-      scenes, "list", "The 13 SPD scenes with default and largest size factors", run_list,
+      scenes, "list", "the 13 SPD scenes with default and largest size factors", run_list,
       exit_code);
   add_format_option(*list, *list_format, {"text", "json"});
 
   auto args = std::make_shared<SceneRequest>();
   auto output = std::make_shared<std::string>();
-  CLI::App* generate = scenes.add_subcommand("generate", "Write one SPD scene as NFF");
+  CLI::App* generate = scenes.add_subcommand("generate", "write one SPD scene as NFF");
   generate->add_option("name", args->name, "Scene name (see 'raygate scenes list')")->required();
-  generate->add_option("-s,--size", args->size, "SPD size factor (default: the scene's own)");
+  generate->add_option("-s,--size", args->size, "SPD size factor (default: the scene's own)")
+      ->check(CLI::Validator([](const std::string& t) { return number_problem(t, true, 1, 1e6); },
+                             "", ""));
   generate
       ->add_option("-t,--tessellate", args->tessellate,
                    "Tessellate curved primitives into triangles at this resolution (SPD: 3)")
       ->expected(0, 1)
-      ->default_str("3");
+      ->default_str("3")
+      ->check(CLI::Validator([](const std::string& t) { return number_problem(t, true, 1, 64); },
+                             "", ""));
   generate->add_option("--resolution", args->resolution, "Image size written into the view, WxH");
   generate->add_option("-o,--output", *output, "Output file (default: standard output)")
       ->check(writable_file());

@@ -57,6 +57,8 @@ void add_schedule_options(CLI::App& command, MeasureArgs& args) {
                   "fastest (steadier on a busy machine, at that many times the runs). Default: "
                   "one, and a scene whose rounds show that the fastest of two gets there sooner "
                   "takes it (from the scene's 11th round on, in run and in compare)")
+      ->check(CLI::Validator([](const std::string& t) { return number_problem(t, true, 1, 10); },
+                             "", ""))
       ->check(CLI::Range(1, 10));
 }
 
@@ -69,15 +71,13 @@ void add_stopping_options(CLI::App& command, MeasureArgs& args) {
                          "rounds before the stopping rule applies");
   add_bounded_option(command, "--max-rounds", args.stopping.max_rounds, 1, 100000,
                      "round budget per scene");
-  // Both given cannot both hold. A default --min-rounds above a small --max-rounds is lowered to
-  // it instead (pipeline/measure_options.cpp): `--max-rounds 3` alone asks for three rounds.
-  command.parse_complete_callback([min_rounds, &args] {
-    const StoppingPolicy& s = args.stopping;
-    if (min_rounds->count() > 0 && s.min_rounds > s.max_rounds) {
-      throw UsageError(fmt::format("--min-rounds {} is above --max-rounds {}: a scene cannot need "
-                                   "more rounds than it may take; lower one or raise the other",
-                                   s.min_rounds, s.max_rounds));
-    }
+  // Given, it cannot hold; a default minimum gives way (pipeline/measure_options.cpp).
+  command.parse_complete_callback([min_rounds, &s = args.stopping] {
+    if (min_rounds->count() == 0 || s.min_rounds <= s.max_rounds) return;
+    throw UsageError(
+        fmt::format("--min-rounds {} is above --max-rounds {}: a scene cannot need "
+                    "more rounds than it may take; lower one or raise the other",
+                    s.min_rounds, s.max_rounds));
   });
   add_bounded_option(command, "--max-seconds", args.stopping.max_seconds, 0.0, 1e7,
                      "time budget per scene, in seconds");

@@ -22,6 +22,9 @@ void parse_resolution(const std::string& text, scenes::GenerateOptions& options)
   if (!(in >> w >> x >> h) || x != 'x' || !in.eof()) {
     throw UsageError("--resolution: expected WIDTHxHEIGHT (e.g. 128x128), found '" + text + "'");
   }
+  if (w < 1 || h < 1) {  // 0 in the generator keeps the scene's own; given, it is a mistake
+    throw UsageError(fmt::format("--resolution {}: each side must be in 1..16384", text));
+  }
   options.width = w;
   options.height = h;
 }

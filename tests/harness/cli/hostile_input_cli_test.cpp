@@ -88,10 +88,10 @@ TEST(HostileInput, AMinimumAboveTheMaximumGivenIsAUsageError) {
   TempDir dir;
   for (const char* command : {"run", "compare"}) {
     SCOPED_TRACE(command);
-    expect_usage_error(run_raygate({command, "--adapter", "make-nff", "--min-rounds", "50",
-                                    "--max-rounds", "30"},
-                                   dir),
-                       "--min-rounds 50 is above --max-rounds 30");
+    expect_usage_error(
+        run_raygate({command, "--adapter", "make-nff", "--min-rounds", "50", "--max-rounds", "30"},
+                    dir),
+        "--min-rounds 50 is above --max-rounds 30");
   }
   // --max-rounds 3 alone, below the default minimum, is three rounds: not refused (it goes on to
   // find no repository here, an error of another kind).
@@ -117,6 +117,41 @@ class HostileDocuments : public ::testing::Test {
   }
   TempDir dir;
 };
+
+// The sweep of 2026-11-29 (after the first): a full standard output passed, two reports went to
+// it back to back, an empty value meant the default, and scenes generate took -t 0 and 0x0.
+TEST_F(HostileDocuments, StandardOutputEmptyValuesAndSceneBoundsAreChecked) {
+  const std::string run = document("run.json", [](json&) {});
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"report", run, "--format", "json"},
+        {"gate", run},
+        {"scenes", "list"}}) {
+    SCOPED_TRACE(args.front());
+    // The shell's redirection: run_process reads a child's output through a pipe.
+    ProcessSpec spec = raygate_spec(args, dir);
+    spec.argv.insert(spec.argv.begin(), {"/bin/sh", "-c", "exec \"$0\" \"$@\" >/dev/full"});
+    const ProcessResult full = run_process(spec);
+    EXPECT_EQ(full.exit_code, 3);
+    EXPECT_THAT(read_file(spec.stderr_path), HasSubstr("standard output could not be written"));
+  }
+  expect_usage_error(
+      run_raygate({"run", "--adapter", "make-nff", "--format", "json", "--report", "markdown:-"},
+                  dir),
+      "markdown:- and json:- both go to standard output");
+  expect_usage_error(run_raygate({"golden", "verify", "--golden-dir", ""}, dir),
+                     "--golden-dir: the value is empty");
+  expect_usage_error(run_raygate({"history", "--series", ""}, dir), "--series: the value is empty");
+  expect_usage_error(run_raygate({"scenes", "generate", "balls", "-t", "0"}, dir),
+                     "--tessellate: \"0\" is out of range; give a whole number from 1 to 64");
+  expect_usage_error(run_raygate({"scenes", "generate", "balls", "--resolution", "0x0"}, dir),
+                     "--resolution 0x0: each side must be in 1..16384");
+  expect_usage_error(run_raygate({"run", "--adapter", "make-nff", "--target", "0.00009"}, dir),
+                     "give a number from 0.0001 to 1");
+  // The stated ends are in range (0.0001 was refused, read as a long double below the double).
+  const CliRun lowest = run_raygate(
+      {"run", "--adapter", "make-nff", "--target", "0.0001", "--repo", "none", "--no-store"}, dir);
+  EXPECT_THAT(lowest.out, Not(HasSubstr("--target"))) << lowest.out;
+}
 
 // gate and import read every field they trust with its JSON path: a machine of the wrong type,
 // a negative budget and a number written null (how a NaN was stored) passed both before.

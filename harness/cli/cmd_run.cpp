@@ -10,6 +10,7 @@
 #include "cli/measure_options.h"
 #include "cli/report_options.h"
 #include "cli/subcommand.h"
+#include "core/format.h"
 #include "pipeline/terminal_progress.h"
 #include "pipeline/run_measurement.h"
 #include "runner/baseline_tool.h"
@@ -38,9 +39,9 @@ int run_command(const RunArgs& args, const Console& console) {
   if (const auto score = document.scores.find(Role::tracer); score != document.scores.end()) {
     console.info(
         fmt::format("suite score (geometric mean of normalized ratios): {:.3f} [{:.3f}, "
-                    "{:.3f}] over {} scenes",
+                    "{:.3f}] over {}",
                     score->second.score, score->second.interval.lower, score->second.interval.upper,
-                    score->second.scenes));
+                    count_text(score->second.scenes, "scene")));
   }
   return publish_measured(measured, args.publish, context.cache_dir, context.policy, console);
 }

@@ -9,6 +9,7 @@
 #include <set>
 
 #include "core/error.h"
+#include "core/format.h"
 
 namespace raygate {
 namespace {
@@ -327,9 +328,9 @@ ConsistencyResult analyse_consistency(std::vector<DocumentRatios> documents,
   const std::vector<std::string> common = common_scenes(result.documents, result.missing);
   if (common.size() < kMinScenesForR2) {
     throw UsageError(
-        fmt::format("only {} scene(s) measured in every document; an r² needs at "
+        fmt::format("only {} measured in every document; an r² needs at "
                     "least {} (measure the same suite on every machine)",
-                    common.size(), kMinScenesForR2));
+                    count_text(common.size(), "scene"), kMinScenesForR2));
   }
   for (const std::string& id : common) {
     result.scenes.push_back(scene_consistency(id, result.documents, options));

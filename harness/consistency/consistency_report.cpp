@@ -36,9 +36,9 @@ std::string verdict_line(const ConsistencyResult& result) {
   std::size_t failing_pairs = 0;
   for (const PairFit& p : result.pairs) failing_pairs += p.passes ? 0 : 1;
   return fmt::format(
-      "NOT machine-independent for this tracer: {} of {} pair(s) with r² < {:.2f}, "
-      "{} unstable scene(s)",
-      failing_pairs, result.pairs.size(), result.options.min_r2, unstable);
+      "NOT machine-independent for this tracer: {} of {} with r² < {:.2f}, {} unstable",
+      failing_pairs, count_text(result.pairs.size(), "pair"), result.options.min_r2,
+      count_text(unstable, "scene"));
 }
 
 void table_scenes(const ConsistencyResult& result, std::string& out) {
@@ -84,8 +84,8 @@ std::string consistency_table(const ConsistencyResult& result) {
   }
   const auto unstable = result.unstable_scenes();
   if (!unstable.empty()) {
-    out += fmt::format("\nnot machine-stable ({} scene(s), limit {} deviation):\n", unstable.size(),
-                       percent(result.options.max_deviation));
+    out += fmt::format("\nnot machine-stable ({}, limit {} deviation):\n",
+                       count_text(unstable.size(), "scene"), percent(result.options.max_deviation));
     for (const SceneConsistency* s : unstable) {
       for (const std::string& reason : s->reasons) out += fmt::format("  {}: {}\n", s->id, reason);
     }

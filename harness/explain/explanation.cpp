@@ -192,7 +192,7 @@ void from_json(const nlohmann::json& json, Explanation& e) {
   }
 }
 
-std::string count_text(double count) {
+std::string abbreviated_count(double count) {
   const double size = std::abs(count);
   if (size >= 1e9) return fmt::format("{:.2f}G", count / 1e9);
   if (size >= 1e6) return fmt::format("{:.2f}M", count / 1e6);
@@ -204,25 +204,26 @@ std::vector<std::string> explanation_lines(const Explanation& e, std::size_t top
   const double base = e.base_cost();
   const double head = e.head_cost();
   const std::string_view unit = cost_unit(e);
-  std::vector<std::string> lines{fmt::format(
-      "where the time went ({}; {} {} -> {}, {}):", e.profiler,
-      e.cost == ExplainCost::instructions ? "instructions" : "estimated cycles", count_text(base),
-      count_text(head), signed_percent(base > 0.0 ? head / base - 1.0 : 0.0))};
+  std::vector<std::string> lines{
+      fmt::format("where the time went ({}; {} {} -> {}, {}):", e.profiler,
+                  e.cost == ExplainCost::instructions ? "instructions" : "estimated cycles",
+                  abbreviated_count(base), abbreviated_count(head),
+                  signed_percent(base > 0.0 ? head / base - 1.0 : 0.0))};
   for (std::size_t i = 0; i < e.functions.size() && i < top; ++i) {
     const FunctionChange& f = e.functions[i];
     const double delta = e.delta_of(f);
     std::string line =
-        fmt::format("  {}{} {} ({} of the change)", delta >= 0.0 ? "+" : "", count_text(delta),
-                    unit, signed_percent(share_of_change(e, f), 0));
+        fmt::format("  {}{} {} ({} of the change)", delta >= 0.0 ? "+" : "",
+                    abbreviated_count(delta), unit, signed_percent(share_of_change(e, f), 0));
     if (e.cost == ExplainCost::estimated_cycles) {
       line += fmt::format(", {} -> {} instructions",
-                          count_text(static_cast<double>(f.base_instructions)),
-                          count_text(static_cast<double>(f.head_instructions)));
+                          abbreviated_count(static_cast<double>(f.base_instructions)),
+                          abbreviated_count(static_cast<double>(f.head_instructions)));
     }
     if (e.inclusive) {
       line += fmt::format(", inclusive {} -> {}",
-                          count_text(static_cast<double>(f.base_inclusive_instructions)),
-                          count_text(static_cast<double>(f.head_inclusive_instructions)));
+                          abbreviated_count(static_cast<double>(f.base_inclusive_instructions)),
+                          abbreviated_count(static_cast<double>(f.head_inclusive_instructions)));
     }
     lines.push_back(line + "  " + f.name);
   }

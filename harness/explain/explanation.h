@@ -97,6 +97,6 @@ void from_json(const nlohmann::json& json, Explanation& explanation);
 std::vector<std::string> explanation_lines(const Explanation& explanation, std::size_t top);
 
 // "1.23G", "45.6M", "789k": a count people can compare at a glance.
-std::string count_text(double count);
+std::string abbreviated_count(double count);
 
 }  // namespace raygate

@@ -6,6 +6,7 @@
 #include <span>
 
 #include "compare/noisy_image_check.h"
+#include "core/format.h"
 #include "measure/fastest_of_two.h"
 #include "pipeline/compare_family.h"
 #include "pipeline/explain_stage.h"
@@ -183,10 +184,10 @@ void ComparePlan::rejudge_after_ratio_rounds(SceneResult& scene, std::size_t rou
   const bool decided = scene.change && scene.change_verdict != ChangeVerdict::inconclusive;
   // An undecided change is judged on every round: its confidence sequences hold at each.
   judge_change(scene, decided ? rounds_before : scene.runs.rounds.size());
-  ratio_why_[scene.entry.id] =
-      fmt::format("{} ratio rounds, then {}", scene.runs.rounds.size() - rounds_before,
-                  stop_reason == to_string(StopDecision::stop_budget_time) ? "the budget ran out"
-                                                                           : "their round limit");
+  ratio_why_[scene.entry.id] = fmt::format(
+      "{}, then {}", count_text(scene.runs.rounds.size() - rounds_before, "ratio round"),
+      stop_reason == to_string(StopDecision::stop_budget_time) ? "the budget ran out"
+                                                               : "their round limit");
 }
 
 std::vector<std::string> ComparePlan::finish_suite(ResultsDocument& document) {

@@ -32,10 +32,10 @@ constexpr double kRestateFraction = 0.3;
 // What would decide a suite the budget cannot: each lever with its number.
 std::string advice(const Estimate& estimate, const EstimateShape& shape) {
   std::string text = fmt::format(
-      "what would: --max-minutes {:.0f}; or {} shards of a CI matrix, each `{} --shard K/{}` "
+      "what would: --max-minutes {:.0f}; or {} of a CI matrix, each `{} --shard K/{}` "
       "with this budget (docs/shards.md)",
-      std::ceil(kAdviceMargin * estimate.total_seconds / 60.0), estimate.shards_needed,
-      shape.command, estimate.shards_needed);
+      std::ceil(kAdviceMargin * estimate.total_seconds / 60.0),
+      count_text(estimate.shards_needed, "shard"), shape.command, estimate.shards_needed);
   if (estimate.tracer_render_seconds_to_fit > 0.0) {
     text += fmt::format(
         "; or a suite whose renders take about {:.2g} s (raygate calibrate "

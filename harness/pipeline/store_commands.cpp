@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include "core/error.h"
+#include "core/format.h"
 #include "pipeline/output_failures.h"
 #include "store/document_files.h"
 
@@ -39,10 +40,10 @@ AlertJudgement judge_store_history(const AlertRequest& request,
   const GatePolicy policy = request.policy.empty() ? GatePolicy{} : load_policy(request.policy);
   const auto store = open_store(request.store, StoreOpen::must_exist);
   const std::vector<HistoryRow> rows = store->history(request.query);
-  say(fmt::format("judging the last {} commits{} of {}: {} measurements",
-                  request.query.last_commits,
+  say(fmt::format("judging the last {}{} of {}: {}",
+                  count_text(request.query.last_commits, "commit"),
                   request.query.branch.empty() ? "" : " of branch " + request.query.branch,
-                  store->location(), rows.size()));
+                  store->location(), count_text(rows.size(), "measurement")));
   AlertJudgement judgement = judge_history(rows, policy, request.detection, request.action);
   if (judgement.series.empty()) {
     throw UsageError(

@@ -54,9 +54,9 @@ namespace {
 std::string imprecise_text(const SceneResult& scene, const RatioSummary& ratio,
                            const std::map<std::string, std::string>& why_by_scene) {
   const auto why = why_by_scene.find(scene.entry.id);
-  return fmt::format("{} {:.3f} [{:.3f}, {:.3f}] (+-{:.1f}%) from {} baseline rounds ({})",
-                     scene.entry.id, ratio.ratio, ratio.ratio_interval.lower,
-                     ratio.ratio_interval.upper, 100.0 * ratio.relative_half_width, ratio.rounds,
+  return fmt::format("{} {:.3f} [{:.3f}, {:.3f}] (+-{:.1f}%) from {} ({})", scene.entry.id,
+                     ratio.ratio, ratio.ratio_interval.lower, ratio.ratio_interval.upper,
+                     100.0 * ratio.relative_half_width, count_text(ratio.rounds, "baseline round"),
                      why == why_by_scene.end() ? "no ratio rounds" : why->second);
 }
 
@@ -88,9 +88,10 @@ std::string stored_ratio_line(const ResultsDocument& document, const GatePolicy&
   if (measured == 0) return "";
   std::string line = fmt::format(
       "stored ratios (base against the baseline, what history trends): CI within +-{:.0f}% on {} "
-      "of {}, from {} baseline rounds",
+      "of {}, from {}",
       100.0 * kStoredRatioHalfWidth, measured - imprecise.size(), count_text(measured, "scene"),
-      fewest == most ? fmt::format("{}", most) : fmt::format("{}-{}", fewest, most));
+      fewest == most ? count_text(most, "baseline round")
+                     : fmt::format("{}-{} baseline rounds", fewest, most));
   if (counted) line += " (counted in simulated cycles: the range of their counts)";
   for (std::size_t i = 0; i < imprecise.size(); ++i) {
     line += (i == 0 ? "; not: " : "; ") + imprecise[i];

@@ -29,7 +29,7 @@ std::string counts(const GateResult& gate) {
   if (unmeasured > 0 || gate.problems.empty()) {
     parts.push_back(fmt::format("{} unmeasured", unmeasured));
   }
-  parts.push_back(fmt::format("{} warnings", gate.count(GateOutcome::warn)));
+  parts.push_back(count_text(gate.count(GateOutcome::warn), "warning"));
   // Memory judged (issue 27): how many scenes each verdict, so a pass says memory was looked at.
   std::map<ChangeVerdict, std::size_t> memory;
   for (const SceneGate& scene : gate.scenes) {

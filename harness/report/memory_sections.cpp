@@ -105,11 +105,12 @@ std::string memory_table_text(const std::vector<MemoryRow>& rows, bool compare) 
 }
 
 std::string signed_count(double value) {
-  return fmt::format("{}{}", value >= 0.0 ? "+" : "", count_text(value));
+  return fmt::format("{}{}", value >= 0.0 ? "+" : "", abbreviated_count(value));
 }
 
 std::string count_pair(std::uint64_t base, std::uint64_t head) {
-  return count_text(static_cast<double>(base)) + " -> " + count_text(static_cast<double>(head));
+  return abbreviated_count(static_cast<double>(base)) + " -> " +
+         abbreviated_count(static_cast<double>(head));
 }
 
 // By cycles (sim mode): the change, its share and the instructions. By instructions (callgrind):
@@ -152,10 +153,11 @@ std::string cost_note(const Explanation& e) {
 std::string explanation_heading(const SceneResult& scene, const Explanation& e) {
   const double base = e.base_cost();
   const double head = e.head_cost();
-  return fmt::format(
-      "{}: where the time went ({}; {} {} -> {}, {}; {})", scene.entry.id, e.profiler,
-      e.cost == ExplainCost::instructions ? "instructions" : "estimated cycles", count_text(base),
-      count_text(head), signed_percent(base > 0.0 ? head / base - 1.0 : 0.0), cost_note(e));
+  return fmt::format("{}: where the time went ({}; {} {} -> {}, {}; {})", scene.entry.id,
+                     e.profiler,
+                     e.cost == ExplainCost::instructions ? "instructions" : "estimated cycles",
+                     abbreviated_count(base), abbreviated_count(head),
+                     signed_percent(base > 0.0 ? head / base - 1.0 : 0.0), cost_note(e));
 }
 
 // Inside a Markdown code block only a backtick run could end it.
@@ -232,12 +234,12 @@ std::string pair_cell(const std::string& base, const std::string& head) {
 
 std::string function_row_html(const Explanation& e, const FunctionChange& f) {
   using html::escape;
-  const auto count = [](std::uint64_t n) { return count_text(static_cast<double>(n)); };
+  const auto count = [](std::uint64_t n) { return abbreviated_count(static_cast<double>(n)); };
   std::string row = fmt::format("<tr><td class=\"num\">{}</td><td class=\"num\">{}</td>",
                                 escape(signed_count(e.delta_of(f))),
                                 escape(signed_percent(share_of_change(e, f), 0)));
   if (e.cost == ExplainCost::estimated_cycles) {
-    row += pair_cell(count_text(f.base_cycles), count_text(f.head_cycles));
+    row += pair_cell(abbreviated_count(f.base_cycles), abbreviated_count(f.head_cycles));
   }
   row += pair_cell(count(f.base_instructions), count(f.head_instructions));
   if (e.inclusive) {

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "core/error.h"
+#include "core/format.h"
 
 namespace raygate {
 
@@ -77,10 +78,10 @@ std::vector<int> assign_shards(std::span<const long long> expected_milliseconds,
 std::vector<SuiteScene> shard_scenes(const std::vector<SuiteScene>& scenes, const ShardSpec& spec,
                                      const std::map<std::string, double>& expected_seconds) {
   if (std::cmp_greater(spec.count, scenes.size())) {
-    throw UsageError(
-        fmt::format("--shard {}: the selection has only {} scene(s), so some shards "
-                    "would measure nothing; use at most {} shards",
-                    to_string(spec), scenes.size(), scenes.size()));
+    throw UsageError(fmt::format(
+        "--shard {}: the selection has only {}, so some shards "
+        "would measure nothing; use at most {}",
+        to_string(spec), count_text(scenes.size(), "scene"), count_text(scenes.size(), "shard")));
   }
   std::vector<double> known;
   for (const SuiteScene& scene : scenes) {

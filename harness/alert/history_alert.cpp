@@ -167,6 +167,7 @@ AlertJudgement judge_history(const std::vector<HistoryRow>& rows, const GatePoli
                              const EDivisiveOptions& detection, AlertAction action) {
   AlertJudgement judgement;
   judgement.action = action;
+  judgement.points_to_find_a_change = 2 * detection.min_segment;
   for (const SeriesColumn& column : series_columns(rows)) {
     judgement.series.push_back(judge_series(column, rows, policy, detection));
   }
@@ -209,13 +210,20 @@ std::string alert_text(const AlertJudgement& judgement) {
   for (const SeriesJudgement& s : judgement.series) {
     changes += s.changes.size() + (s.memory ? s.memory->changes.size() : 0);
   }
+  std::size_t too_short = 0;
+  for (const SeriesJudgement& s : judgement.series) {
+    too_short += s.points < judgement.points_to_find_a_change ? 1 : 0;
+  }
   out += fmt::format(
-      "alert: {}: {} series, {} in alert, {} change points{}\n",
+      "alert: {}: {} series, {} in alert, {} change points{}{}\n",
       alerts == 0                             ? "OK"
       : judgement.action == AlertAction::fail ? "FAIL"
                                               : "ANNOTATE",
       judgement.series.size(), alerts, changes,
-      alerts > 0 && judgement.action == AlertAction::annotate ? " (annotate: not failing)" : "");
+      alerts > 0 && judgement.action == AlertAction::annotate ? " (annotate: not failing)" : "",
+      too_short == 0 ? ""
+                     : fmt::format("; {} too short to show a change (fewer than {} points)",
+                                   too_short, judgement.points_to_find_a_change));
   return out;
 }
 

@@ -61,6 +61,9 @@ enum class AlertAction { fail, annotate };
 struct AlertJudgement {
   std::vector<SeriesJudgement> series;
   AlertAction action = AlertAction::fail;
+  // Points a series needs before a change can be found in it (two segments of min_segment); the
+  // summary counts the series with fewer, so "OK" on one measurement does not read as a verdict.
+  std::size_t points_to_find_a_change = 0;
   std::size_t alerts() const;
   int exit_code() const;  // 1 when a series is in alert and the action is fail, else 0
 };

@@ -60,9 +60,7 @@ void add_scenes_command(CLI::App& scenes, int& exit_code) {
   auto output = std::make_shared<std::string>();
   CLI::App* generate = scenes.add_subcommand("generate", "write one SPD scene as NFF");
   generate->add_option("name", args->name, "Scene name (see 'raygate scenes list')")->required();
-  generate->add_option("-s,--size", args->size, "SPD size factor (default: the scene's own)")
-      ->check(CLI::Validator([](const std::string& t) { return number_problem(t, true, 1, 1e6); },
-                             "", ""));
+  generate->add_option("-s,--size", args->size, "SPD size factor (default: the scene's own)");
   generate
       ->add_option("-t,--tessellate", args->tessellate,
                    "Tessellate curved primitives into triangles at this resolution (SPD: 3)")

@@ -278,6 +278,32 @@ std::optional<std::string> unusable_golden(const std::filesystem::path& golden_d
   return std::nullopt;
 }
 
+// Where the manifest's entry is not what bless writes for this suite scene (bless of another
+// suite, or an edit): a golden of another picture cannot judge this one, though its bytes are
+// vouched for. nullopt when it is.
+std::optional<std::string> baseline_entry_problem(const BaselineGoldens& goldens,
+                                                  const GoldenManifest& manifest,
+                                                  const SuiteScene& scene,
+                                                  const GoldenEntry& entry) {
+  const auto differs = [&](const std::string& what, const auto& said, const auto& suite) {
+    return fmt::format(
+        "{}: the manifest says {} {}, the suite {} {} (blessed for another suite, "
+        "or edited); bless it again after looking at it",
+        (goldens.golden_dir / "manifest.json").string(), what, said, what, suite);
+  };
+  if (entry.scene != scene.scene) return differs("scene", entry.scene, scene.scene);
+  if (entry.size != scene.size) return differs("size", entry.size, scene.size);
+  if (entry.sampling != goldens.suite.sampling) {
+    return differs("sampling", entry.sampling, goldens.suite.sampling);
+  }
+  if (entry.accel != "none") return differs("accel", entry.accel, "none");
+  if (manifest.noise.count(entry.id) > 0) {
+    return (goldens.golden_dir / "manifest.json").string() +
+           ": a Monte Carlo noise record on the deterministic baseline's golden";
+  }
+  return std::nullopt;
+}
+
 void verify_baseline_scene(const BaselineGoldens& goldens, const GoldenManifest& manifest,
                            const SuiteScene& scene, GoldenVerification& counts,
                            ProgressSink& progress) {
@@ -290,12 +316,20 @@ void verify_baseline_scene(const BaselineGoldens& goldens, const GoldenManifest&
     ++counts.missing;
     return;
   }
-  if (auto problem = unusable_golden(goldens.golden_dir, *entry)) {
-    progress.line(fmt::format("ERROR     {:<12} {}", scene.id, *problem));
+  const auto unverifiable = [&](const std::string& problem) {
+    progress.line(fmt::format("ERROR     {:<12} {}", scene.id, problem));
     ++counts.unverifiable;
-    return;
-  }
+  };
+  std::optional<std::string> problem = unusable_golden(goldens.golden_dir, *entry);
+  if (!problem) problem = baseline_entry_problem(goldens, manifest, scene, *entry);
+  if (problem) return unverifiable(*problem);
   const BaselineRender render = render_scene(goldens, scene);
+  const int width = render.stats.value("width", 0);
+  const int height = render.stats.value("height", 0);
+  if (entry->width != width || entry->height != height) {
+    return unverifiable(fmt::format("the manifest says {}x{}, the suite renders it at {}x{}",
+                                    entry->width, entry->height, width, height));
+  }
   const ImageMetrics m = compare_images(render.image, goldens.golden_dir / entry->file, {});
   if (m.identical()) {
     progress.line(fmt::format("ok        {:<12} identical ({:.2f} s)", scene.id,
@@ -482,6 +516,9 @@ GoldenVerification verify_goldens_from_run(const BlessFromRun& request,
                                revision.adapter_name)
           : request.golden_dir;
   const GoldenManifest manifest = load_golden_manifest(golden_dir);
+  // As bless refuses them: another suite's goldens, or another tracer's, judge other pictures.
+  check_manifest_suite(manifest, golden_dir, document.suite);
+  check_manifest_adapter(manifest, golden_dir, revision.adapter_name);
   const ImageKind kind = run_image_kind(document, revision);
   std::string policy_note;
   const GatePolicy policy = recorded_policy(document.settings, policy_note);

@@ -115,7 +115,10 @@ std::string environment_name(const std::string& key) {
 
 ProjectDefaults read_project_config(const std::filesystem::path& file) {
   const std::filesystem::path absolute = std::filesystem::absolute(file);
-  const std::string text = read_file(absolute);
+  std::string text = read_file(absolute);
+  // A byte-order mark (some Windows editors write one) is read past, as the JSON files' is: it
+  // made the first key "\xEF\xBB\xBFrepo", an unknown key whose name looked right.
+  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
   check_values(text, absolute);
   std::istringstream stream(text);
   std::vector<CLI::ConfigItem> items;

@@ -87,7 +87,11 @@ TEST(HistoryAlert, FlatHistoryAndImprovementRaiseNothing) {
       judge_history(rows_of("balls", 15, flat), GatePolicy{}, {}, AlertAction::fail);
   EXPECT_EQ(flat_j.alerts(), 0u);
   EXPECT_EQ(flat_j.exit_code(), 0);
-  EXPECT_THAT(alert_text(flat_j), HasSubstr("alert: OK: 1 series, 0 in alert, 0 change points"));
+  EXPECT_THAT(alert_text(flat_j), HasSubstr("alert: OK: 1 series, 0 in alert, 0 change points\n"));
+  // The sweep of 2026-11-29: one measurement said only "OK".
+  const AlertJudgement one =
+      judge_history(rows_of("balls", 1, flat), GatePolicy{}, {}, AlertAction::fail);
+  EXPECT_THAT(alert_text(one), HasSubstr("; 1 too short to show a change (fewer than 6 points)"));
   const AlertJudgement faster =
       judge_history(rows_of("balls", 15, faster_at_9), GatePolicy{}, {}, AlertAction::fail);
   ASSERT_EQ(faster.series[0].changes.size(), 1u);  // found, but it is good news

@@ -33,6 +33,13 @@ TEST(ProjectConfig, PathsAreRelativeToTheFileNamesAndUrlsStay) {
   EXPECT_EQ(d.at("suite").origin, (dir.path() / "raygate.toml").string() + ":3");
 }
 
+// The sweep of 2026-11-29: a file saved with a byte-order mark said "unknown key 'repo'".
+TEST(ProjectConfig, AByteOrderMarkIsReadPast) {
+  const TempDir dir;
+  write_file_atomically(dir.path() / "raygate.toml", "\xEF\xBB\xBFsuite = \"ci\"\n");
+  EXPECT_EQ(read_project_config(dir.path() / "raygate.toml").at("suite").value, "ci");
+}
+
 TEST(ProjectConfig, EnvironmentOverTheFileAndEmptyIsUnset) {
   const TempDir dir;
   write_file_atomically(dir.path() / "p.toml", "adapter = \"cmake-nff\"\nsuite = \"full\"\n");

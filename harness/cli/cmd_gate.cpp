@@ -40,7 +40,8 @@ int gate_command(const GateArgs& args, const Console& console) {
 void add_gate_command(CLI::App& command, int& exit_code) {
   GateArgs& args = bind_command<GateArgs>(command, gate_command, exit_code);
   command.add_option("results", args.results, "results document (from run or compare)")->required();
-  command.add_option("--policy", args.policy, "gate policy file (docs/gate.md)");
+  command.add_option("--policy", args.policy, "gate policy file (docs/gate.md)")
+      ->check(CLI::ExistingFile);  // raygate.toml's policy is then named with its line
   command.add_flag("--fail-on-inconclusive", args.fail_on_inconclusive,
                    "an INCONCLUSIVE change fails the gate instead of warning");
   add_format_option(command, args.format, {"text", "json"});

@@ -96,9 +96,10 @@ void add_measure_options(CLI::App& command, MeasureArgs& args) {
                      "none)");
   add_schedule_options(command, args);
   add_stopping_options(command, args);
-  command.add_option("--policy", args.policy,
-                     "gate policy file: slowdown limit, significance, image thresholds "
-                     "(docs/gate.md)");
+  command
+      .add_option("--policy", args.policy,
+                  "gate policy file: slowdown limit, significance, image thresholds (docs/gate.md)")
+      ->check(CLI::ExistingFile);  // raygate.toml's policy is then named with its line
 }
 
 void add_change_measure_options(CLI::App& command, MeasureArgs& args) {

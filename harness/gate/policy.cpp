@@ -93,7 +93,13 @@ GatePolicy parse_policy(std::string_view text, const std::string& origin) {
 }
 
 GatePolicy load_policy(const std::filesystem::path& path) {
-  GatePolicy policy = parse_policy(read_file(path), path.string());
+  std::string text;
+  try {
+    text = read_file(path);
+  } catch (const UsageError& e) {  // "/x: cannot open" said nothing of which file it was
+    throw UsageError(std::string("the policy file (--policy) ") + e.what());
+  }
+  GatePolicy policy = parse_policy(text, path.string());
   policy.file = path;
   return policy;
 }

@@ -63,7 +63,12 @@ void apply_shard(const MeasureOptions& args, MeasureContext& c) {
   for (const SuiteScene& scene : c.scenes) record.suite_scenes.push_back(scene.id);
   std::map<std::string, double> expected_seconds;
   if (!args.shard_costs.empty()) {
-    const ResultsDocument costs = read_results(args.shard_costs);
+    ResultsDocument costs;
+    try {
+      costs = read_results(args.shard_costs);
+    } catch (const UsageError& e) {  // the path alone did not say which option named it
+      throw UsageError(std::string("--shard-costs: ") + e.what());
+    }
     if (costs.suite != c.suite.name) {
       throw UsageError(
           fmt::format("--shard-costs {}: a document of suite '{}', not '{}'; give "

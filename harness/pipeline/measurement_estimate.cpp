@@ -16,7 +16,10 @@ namespace {
 
 // Seconds below two minutes ("45 s"), else minutes to a tenth ("6.3 min"), so an estimate and
 // its budget compare at a glance.
+// Milliseconds and tenths where whole seconds would round a fast tracer's rounds to "0 s".
 std::string span_text(double seconds) {
+  if (seconds < 0.1) return fmt::format("{:.0f} ms", 1000.0 * seconds);
+  if (seconds < 10.0) return fmt::format("{:.1f} s", seconds);
   if (seconds < 120.0) return fmt::format("{:.0f} s", seconds);
   return fmt::format("{:.1f} min", seconds / 60.0);
 }
@@ -220,10 +223,10 @@ void MeasurementEstimate::first_round(const std::vector<Round>& rounds, double s
   cost_ = round_cost(rounds.front(), seconds_spent, shape_.warmup_runs);
   const Estimate estimate = estimate_measurement(*cost_, shape_, fewest_rounds_, tracer_count_);
   const std::string basis = fmt::format(
-      "from {}'s first round (baseline {:.2f} s, {} {:.2f} s a round, +{:.0f}% between the runs) "
+      "from {}'s first round (baseline {}, {} {} a round, +{:.0f}% between the runs) "
       "at the fewest rounds a verdict needs ({}), so at least",
-      first_scene_, cost_->normalizer_seconds, tracer_count_ > 1 ? "tracers" : "tracer",
-      cost_->tracers_seconds, 100.0 * (cost_->overhead_factor - 1.0), fewest_rounds_);
+      first_scene_, span_text(cost_->normalizer_seconds), tracer_count_ > 1 ? "tracers" : "tracer",
+      span_text(cost_->tracers_seconds), 100.0 * (cost_->overhead_factor - 1.0), fewest_rounds_);
   for (const std::string& line : estimate_lines(estimate, shape_, basis)) progress_.line(line);
 }
 

@@ -140,6 +140,10 @@ TEST_F(HostileDocuments, StandardOutputEmptyValuesAndSceneBoundsAreChecked) {
       "markdown:- and json:- both go to standard output");
   expect_usage_error(run_raygate({"golden", "verify", "--golden-dir", ""}, dir),
                      "--golden-dir: the value is empty");
+  // A policy file that is not there was "/x: cannot open", naming no option.
+  expect_usage_error(run_raygate({"gate", run, "--policy", "nope.json"}, dir), "--policy: ");
+  expect_usage_error(run_raygate({"merge", run, "-o", "m.json", "--policy", "nope.json"}, dir),
+                     "nope.json");
   expect_usage_error(run_raygate({"history", "--series", ""}, dir), "--series: the value is empty");
   expect_usage_error(run_raygate({"scenes", "generate", "balls", "-t", "0"}, dir),
                      "--tessellate: \"0\" is out of range; give a whole number from 1 to 64");

@@ -200,7 +200,7 @@ TEST(MeasurementEstimate, AnUndecidedFirstSceneMakesTheEstimateAFloor) {
   rule({round_of(1.0, 1.0, 1.0)}, 6.0);
   rule({round_of(1.0, 1.0, 1.0), round_of(1.0, 1.0, 1.0)}, 9.0);
   ASSERT_EQ(progress.lines.size(), 2u);
-  EXPECT_NE(progress.lines[1].find("balls was not decided in 2 rounds (9 s, its share of the "
+  EXPECT_NE(progress.lines[1].find("balls was not decided in 2 rounds (9.0 s, its share of the "
                                    "budget)"),
             std::string::npos)
       << progress.lines[1];

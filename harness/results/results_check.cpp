@@ -9,6 +9,7 @@
 #include <set>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "compare/image_check.h"
@@ -136,11 +137,15 @@ void check_seconds(const JsonField& object, std::initializer_list<std::string_vi
   for (const std::string_view key : keys) number(object.member(key), 0.0, kMaxSeconds);
 }
 
-void check_interval(const JsonField& field, double lowest, double highest) {
+// The interval's ends as checked (null: no end).
+std::pair<std::optional<double>, std::optional<double>> check_interval(const JsonField& field,
+                                                                       double lowest,
+                                                                       double highest) {
   object(field);
   const auto lower = number_or_null(field.member("lower"), lowest, highest);
   const auto upper = number_or_null(field.member("upper"), lowest, highest);
   if (lower && upper && *lower > *upper) field.fail("lower is above upper");
+  return {lower, upper};
 }
 
 void check_run(const JsonField& run) {
@@ -196,9 +201,7 @@ void check_ratio(const JsonField& r) {
 // change outside its own interval was written by hand, and the gate would judge it as it reads.
 void check_change_in_interval(const JsonField& field, std::optional<double> change,
                               const JsonField& interval) {
-  check_interval(interval, -1.0, kInf);
-  const auto lower = number_or_null(interval.member("lower"), -1.0, kInf);
-  const auto upper = number_or_null(interval.member("upper"), -1.0, kInf);
+  const auto [lower, upper] = check_interval(interval, -1.0, kInf);
   if (!change || !lower || !upper) return;
   const double slack = 1e-9 * (1.0 + std::abs(*change));  // printed and read back as decimals
   if (*change < *lower - slack || *change > *upper + slack) {

@@ -35,7 +35,8 @@ void add_golden_subcommand(CLI::App& golden, const std::string& name, const std:
   const auto [cmd, args] = add_subcommand<GoldenOptions>(golden, name, help, run, exit_code);
   cmd->add_option("--suite", args->suite, "suite name or file")->capture_default_str();
   cmd->add_option("--golden-dir", args->golden_dir,
-                  "golden directory (default: golden/raygate-baseline/, the baseline's)");
+                  "golden directory (default: golden/raygate-baseline/, the baseline's)")
+      ->check(run == run_bless ? writable_folder() : CLI::Validator());  // before bless renders
   cmd->add_option("--work-dir", args->work_dir, "where scenes, renders and evidence go")
       ->capture_default_str()
       ->check(writable_folder());

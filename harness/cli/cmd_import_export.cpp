@@ -33,7 +33,7 @@ int export_command(const ExportRequest& request) {
 void add_import_command(CLI::App& command, int& exit_code) {
   ImportArgs& args = bind_command<ImportArgs>(command, import_command, exit_code);
   command.add_option("files", args.files, "results documents (results.json)")->required();
-  add_store_option(command, args.store, kDefaultStorePath);
+  add_store_option(command, args.store, kDefaultStorePath, StoreUse::written);
   command.add_option("--branch", args.branch,
                      "branch to record a document under when its revision names none");
 }

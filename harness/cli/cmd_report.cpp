@@ -43,7 +43,8 @@ void add_report_command(CLI::App& command, int& exit_code) {
       ->check(CLI::IsMember(report_format_names()))
       ->capture_default_str();
   command.add_option("-o,--output", args.output, "file to write; '-' for standard output")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(writable_file());
   command
       .add_option("--policy", args.policy,
                   "gate policy file (default: the limits the document was measured under, as gate)")

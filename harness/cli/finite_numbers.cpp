@@ -12,10 +12,14 @@ void refuse_empty_and_non_finite_values(CLI::App& app) {
   const CLI::Validator finite(non_finite_problem, "", "FINITE");
   // `golden verify --golden-dir ''` checked the shipped goldens, which bless would overwrite.
   const CLI::Validator given(empty_value_problem, "", "");
+  const CLI::Validator whole(whole_number_problem, "", "");
   for (CLI::Option* option : app.get_options()) {
     if (option->get_type_size() == 0) continue;  // a flag
     option->check(given);
-    if (option->get_type_name().rfind("FLOAT", 0) != 0) continue;
+    const std::string type = option->get_type_name();
+    // "1e9" for a count: CLI11 said only "Could not convert".
+    if (type.rfind("INT", 0) == 0 || type.rfind("UINT", 0) == 0) option->check(whole);
+    if (type.rfind("FLOAT", 0) != 0) continue;
     option->check(finite);  // after any range check, which NaN passes and infinity fails
   }
   for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {

@@ -18,7 +18,8 @@ void add_tracer_options(CLI::App& command, MeasureArgs& args) {
   command.add_option("--scene", args.scenes, "only these suite scene ids (repeatable)");
   command
       .add_option("--cache-dir", args.cache_dir, "worktrees, builds, scenes and run files go here")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(writable_folder());
   command.add_option("--baseline", args.baseline, "raygate-baseline executable to use");
   add_bounded_option(command, "--jobs", args.jobs, 0, 4096,
                      "parallel build jobs; 0 = all allowed CPUs");
@@ -79,8 +80,8 @@ void add_stopping_options(CLI::App& command, MeasureArgs& args) {
                     "more rounds than it may take; lower one or raise the other",
                     s.min_rounds, s.max_rounds));
   });
-  add_bounded_option(command, "--max-seconds", args.stopping.max_seconds, 0.0, 1e7,
-                     "time budget per scene, in seconds");
+  add_bounded_option(command, "--max-seconds", args.stopping.max_seconds, 1.0, 1e7,
+                     "time budget per scene, in seconds (a run is given at least 1 s)");
   add_bounded_option(command, "--max-minutes", args.stopping.max_minutes, 0.0, 1e6,
                      "time budget of the whole measurement, shared by the scenes still to "
                      "measure; 0 = none");

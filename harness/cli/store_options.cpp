@@ -1,31 +1,18 @@
 #include "cli/store_options.h"
 
-#include <fmt/core.h>
-
-#include "store/postgres_url.h"
+#include "pipeline/store_commands.h"
 
 namespace raygate::cli {
 
-namespace {
-
-// Only what can be told without opening anything: the kind of location.
-std::string check_store_location(const std::string& location) {
-  if (is_postgresql_url(location)) return {};
-  if (location.find("://") != std::string::npos) {
-    return "unknown kind of URL; give a file path for an SQLite store or a postgresql:// URL";
-  }
-  return {};
-}
-
-}  // namespace
-
 CLI::Option* add_store_option(CLI::App& command, std::string& store,
-                              const std::string& default_text) {
+                              const std::string& default_text, StoreUse use) {
   return command
       .add_option("--store", store,
                   "results store: an SQLite file (default " + default_text +
                       ") or postgresql://USER@HOST[:PORT]/DATABASE")
-      ->check(CLI::Validator(check_store_location, "PATH", "store location"));
+      ->check(
+          CLI::Validator(use == StoreUse::written ? written_store_problem : store_location_problem,
+                         "PATH", "store location"));
 }
 
 void add_history_filters(CLI::App& command, HistoryQuery& query) {
@@ -44,7 +31,8 @@ void add_history_filters(CLI::App& command, HistoryQuery& query) {
 }
 
 void add_record_options(CLI::App& command, PublishOptions& options) {
-  CLI::Option* store = add_store_option(command, options.store, "<cache-dir>/results.db");
+  CLI::Option* store =
+      add_store_option(command, options.store, "<cache-dir>/results.db", StoreUse::written);
   command.add_flag("--no-store", options.no_store, "do not record the results in the store")
       ->excludes(store);
   command.add_option("--branch", options.branch,

@@ -14,9 +14,11 @@
 
 namespace raygate::cli {
 
+enum class StoreUse { read, written };  // written (import, run...): a file must be writable there
+
 // --store PATH: `default_text` is shown in --help (where the store is when it is not given).
 CLI::Option* add_store_option(CLI::App& command, std::string& store,
-                              const std::string& default_text);
+                              const std::string& default_text, StoreUse use = StoreUse::read);
 
 // The filters of the commands that read history (history, alert), bound straight into `query`:
 // --branch, --scene, --repository, --adapter, --suite, --role.

@@ -60,6 +60,14 @@ std::string number_problem(const std::string& text, bool whole, double lowest, d
   return "";
 }
 
+std::string whole_number_problem(const std::string& text) {
+  long double value = 0;
+  if (!read_number(text, value) || text.find_first_of("xX") != std::string::npos) return "";
+  const std::size_t digits = text.find_first_not_of("+-");
+  if (digits <= 1 && text.find_first_not_of("0123456789", digits) == std::string::npos) return "";
+  return fmt::format("{} is not a whole number; give one in digits", quoted(text));
+}
+
 std::string empty_value_problem(const std::string& text) {
   return text.empty() ? "the value is empty; leave the option out for its default" : "";
 }

@@ -19,6 +19,11 @@ std::string non_finite_problem(const std::string& text);
 // with the range that would be right. Long text is quoted in part.
 std::string number_problem(const std::string& text, bool whole, double lowest, double highest);
 
+// "" when `text` reads as a whole number in digits (an optional sign, digits only), and for text
+// that is no number at all (the caller's parser says so); "1e9" or "2.5" is not one. CLI11 said
+// only "Could not convert" for them (cli/finite_numbers.h checks every whole-number option).
+std::string whole_number_problem(const std::string& text);
+
 // "" for any text but the empty one; for "" that it is empty and what leaving the option out does.
 // Every option's value is checked with it (cli/finite_numbers.h): "" quietly meant the default.
 std::string empty_value_problem(const std::string& text);

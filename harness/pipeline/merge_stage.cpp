@@ -34,12 +34,13 @@ MergedShards merge_shard_documents(const MergeRequest& request, const PublishSin
           ? recorded_policy(
                 inputs.empty() ? MeasurementSettings{} : inputs.front().document.settings, note)
           : load_policy(request.policy);
-  if (!note.empty()) sink.info(fmt::format("gate policy: {}", note));
   merged.policy.fail_on_inconclusive =
       merged.policy.fail_on_inconclusive || request.fail_on_inconclusive;
   MergeOptions options;
   options.allow_partial = request.allow_partial;
   MergeResult result = merge_shards(inputs, options);
+  // Said once the shards are accepted: a policy line above a refusal read as if it had judged.
+  if (!note.empty()) sink.info(fmt::format("gate policy: {}", note));
   for (const std::string& warning : result.warnings) sink.warning(warning);
   merged.document = std::move(result.document);
   const ResultsDocument& document = merged.document;

@@ -6,8 +6,29 @@
 #include "core/format.h"
 #include "pipeline/output_failures.h"
 #include "store/document_files.h"
+#include "store/postgres_url.h"
 
 namespace raygate {
+
+std::string store_location_problem(const std::string& location) {
+  if (!is_postgresql_url(location) && location.find("://") != std::string::npos) {
+    return "unknown kind of URL; give a file path for an SQLite store or a postgresql:// URL";
+  }
+  return "";
+}
+
+std::string written_store_problem(const std::string& location) {
+  if (std::string problem = store_location_problem(location); !problem.empty()) return problem;
+  if (is_postgresql_url(location)) return "";
+  std::error_code error;
+  if (std::filesystem::exists(location, error) &&
+      !std::filesystem::is_regular_file(location, error)) {
+    return location +
+           " is not a regular file (a folder, device, FIFO or socket); name an SQLite "
+           "results store, or a file to create one in";
+  }
+  return output_file_problem(location);
+}
 namespace {
 
 // The machine's own history for the drift rule: every document, any branch, any series (the

@@ -16,6 +16,13 @@
 
 namespace raygate {
 
+// What is wrong with a --store location, told without opening it: a URL of a kind that is not
+// postgresql://. "" when none. written_store_problem also refuses, for a command that writes the
+// store, an SQLite path where no file can be written (/dev/null, a read-only folder): said before
+// the documents are read or measured, not after.
+std::string store_location_problem(const std::string& location);
+std::string written_store_problem(const std::string& location);
+
 // The newest query.last_commits commits of each series matching `query`, with the machine's
 // whole history beside them for the drift rule. UsageError when the store does not exist.
 HistoryView store_history_view(const std::string& store, const HistoryQuery& query);

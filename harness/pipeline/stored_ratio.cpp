@@ -50,13 +50,18 @@ StopRule stored_ratio_stop_rule(const StoppingPolicy& policy, double confidence)
 
 namespace {
 
-// "balls 0.412 [0.398, 0.431] (+-4.0%) from 6 baseline rounds (why)"
+// "balls 0.412 [0.398, 0.431] (+-4.0%) from 6 baseline rounds (why)"; from one round, which has
+// no spread, "balls 0.412 from 1 baseline round, no interval (why)", not "[0.412, 0.412] (+-0.0%)".
 std::string imprecise_text(const SceneResult& scene, const RatioSummary& ratio,
                            const std::map<std::string, std::string>& why_by_scene) {
   const auto why = why_by_scene.find(scene.entry.id);
-  return fmt::format("{} {:.3f} [{:.3f}, {:.3f}] (+-{:.1f}%) from {} ({})", scene.entry.id,
-                     ratio.ratio, ratio.ratio_interval.lower, ratio.ratio_interval.upper,
-                     100.0 * ratio.relative_half_width, count_text(ratio.rounds, "baseline round"),
+  const std::string interval =
+      ratio.rounds < 2 ? ""
+                       : fmt::format(" [{:.3f}, {:.3f}] (+-{:.1f}%)", ratio.ratio_interval.lower,
+                                     ratio.ratio_interval.upper, 100.0 * ratio.relative_half_width);
+  return fmt::format("{} {:.3f}{} from {}{} ({})", scene.entry.id, ratio.ratio, interval,
+                     count_text(ratio.rounds, "baseline round"),
+                     ratio.rounds < 2 ? ", no interval" : "",
                      why == why_by_scene.end() ? "no ratio rounds" : why->second);
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <regex>
 #include <limits>
 #include <set>
 #include <string>
@@ -131,6 +132,21 @@ void require_role(const JsonField& field, const std::string& word, const std::se
 
 void check_strings(const JsonField& object, std::initializer_list<std::string_view> keys) {
   for (const std::string_view key : keys) object.member(key).as_string();
+}
+
+// A time as raygate writes one (core/time_text.h), "2026-11-29T14:37:00Z", or "" for none. merge
+// keeps the earliest start by comparing the text and history orders by it: "yesterday" would sort.
+void check_timestamps(const JsonField& object, std::initializer_list<std::string_view> keys) {
+  static const std::regex kIso8601(
+      R"(\d{4}-\d{2}-\d{2}T\d{2}:\d{2}:\d{2}(\.\d+)?(Z|[+-]\d{2}:?\d{2})?)");
+  for (const std::string_view key : keys) {
+    const JsonField field = object.member(key);
+    const std::string text = field.as_string();
+    if (!text.empty() && !std::regex_match(text, kIso8601)) {
+      field.fail(fmt::format("\"{}\" is not an ISO 8601 time such as 2026-11-29T14:37:00Z",
+                             text.substr(0, 40)));
+    }
+  }
 }
 
 void check_seconds(const JsonField& object, std::initializer_list<std::string_view> keys) {
@@ -558,7 +574,8 @@ void check_results_json(const nlohmann::json& document, const TimingModeList& mo
   const JsonField d(document, "$");
   object(d);
   const std::string kind = word_at(d, "kind", {"run", "compare"});
-  check_strings(d, {"raygate_version", "started_at", "finished_at", "suite"});
+  check_strings(d, {"raygate_version", "suite"});
+  check_timestamps(d, {"started_at", "finished_at"});
   d.member("complete").as_bool();
   check_machine(d.member("machine"));
   check_settings(d.member("settings"));

@@ -54,6 +54,14 @@ std::string sql_context(const std::string& sql) {
 
 SqliteDb SqliteDb::open(const std::filesystem::path& path, bool create,
                         std::chrono::milliseconds busy_timeout) {
+  // SQLite opens a device (/dev/null) and fails later, in a disk I/O error of its own words.
+  std::error_code error;
+  if (std::filesystem::exists(path, error) && !std::filesystem::is_regular_file(path, error)) {
+    throw UsageError(fmt::format(
+        "results store {}: not a regular file (a folder, device, FIFO or socket); --store must "
+        "name a raygate results database",
+        path.string()));
+  }
   sqlite3* db = nullptr;
   const int flags = SQLITE_OPEN_READWRITE | (create ? SQLITE_OPEN_CREATE : 0);
   const int code = sqlite3_open_v2(path.c_str(), &db, flags, nullptr);

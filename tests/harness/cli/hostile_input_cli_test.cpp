@@ -244,6 +244,12 @@ TEST_F(HostileDocuments, OutputPathsThatCannotBeWrittenAreUsageErrors) {
       {"export", "--store", "store.db", "-o", "a-file/x.json"},
       {"export", "--store", "store.db", "-o", "a-file"},
       {"consistency", a, b, "--markdown", "a-file/c.md"},
+      // The third sweep: these were found unwritable after the work, or by SQLite's words.
+      {"report", a, "-o", "a-file/r.md"},
+      {"run", "--adapter", "make-nff", "--cache-dir", "a-file"},
+      {"golden", "bless", "--golden-dir", "a-file", "tetra"},
+      {"import", a, "--store", "a-file/s.db"},
+      {"run", "--adapter", "make-nff", "--store", "a-file/s.db"},
   };
   for (const std::vector<std::string>& args : cases) {
     SCOPED_TRACE(args.front() + " " + args.at(args.size() - 2) + " " + args.back());
@@ -253,6 +259,28 @@ TEST_F(HostileDocuments, OutputPathsThatCannotBeWrittenAreUsageErrors) {
   expect_usage_error(run_raygate({"consistency", a, b, "--markdown", "./" + a}, dir),
                      "--markdown and the document a.json name the same file");
   EXPECT_EQ(read_file(dir.path() / a), kept);
+}
+
+// The third sweep's (2026-11-29) values that slipped through or were said in CLI11's words.
+TEST_F(HostileDocuments, ThirdSweepValuesAreRefusedInRaygatesWords) {
+  const std::string run = document("run.json", [](json&) {});
+  expect_usage_error(run_raygate({"report", run, "-o", "."}, dir), "is a directory");
+  expect_usage_error(run_raygate({"import", run, "--store", "/dev/null"}, dir),
+                     "--store: /dev/null is not a regular file");
+  // A per-scene budget of 0 s ran one round.
+  expect_usage_error(run_raygate({"run", "--adapter", "make-nff", "--max-seconds", "0"}, dir),
+                     "give a number from 1 to 10000000");
+  expect_usage_error(run_raygate({"scenes", "generate", "balls", "--size", "1e9"}, dir),
+                     "--size: \"1e9\" is not a whole number");
+  expect_usage_error(run_raygate({"report", run, "--format", "json", "--format", "html"}, dir),
+                     "--format is given 2 times; give it once");
+  // history and merge compare these times as text: "yesterday" sorted among them.
+  const std::string dated = document("dated.json", [](json& j) { j["started_at"] = "yesterday"; });
+  expect_usage_error(run_raygate({"gate", dated}, dir),
+                     "$.started_at: \"yesterday\" is not an ISO 8601 time");
+  // A store read that is no file: SQLite's "disk I/O error" (exit 3) before.
+  expect_usage_error(run_raygate({"history", "--store", "/dev/null"}, dir),
+                     "results store /dev/null: not a regular file");
 }
 
 class LongRevision : public TracerRepoTest {};

@@ -105,6 +105,7 @@ TEST_F(ShardCli, TwoShardsMergeIntoOneDocumentAndAnotherRevisionIsRefused) {
   EXPECT_EQ(refused.exit_code, 2) << refused.out;
   EXPECT_TRUE(has(refused.out, first.string() + " and " + other.string())) << refused.out;
   EXPECT_TRUE(has(refused.out, "revisions[tracer].worktree.sha")) << refused.out;
+  EXPECT_FALSE(has(refused.out, "gate policy")) << refused.out;  // nothing was judged
   EXPECT_FALSE(fs::exists(dir_.path() / "refused.json"));
 }
 

@@ -50,6 +50,15 @@ TEST(NumberText, APasteIsQuotedInPart) {
   EXPECT_THAT(problem, HasSubstr("(100000 characters) is out of range"));
 }
 
+// CLI11 said "Could not convert" of "1e9" for a count (scenes generate --size).
+TEST(NumberText, AWholeNumberIsDigitsOnly) {
+  for (const char* whole : {"5", "-5", "+12", "0", "abc", ""})
+    EXPECT_EQ(whole_number_problem(whole), "") << whole;
+  for (const char* not_whole : {"1e9", "2.5", "5.0", "1e0"}) {
+    EXPECT_THAT(whole_number_problem(not_whole), HasSubstr("is not a whole number")) << not_whole;
+  }
+}
+
 TEST(NumberText, NonFiniteProblemLeavesOtherTextToTheParser) {
   EXPECT_EQ(non_finite_problem("1.5"), "");
   EXPECT_EQ(non_finite_problem("abc"), "");

@@ -99,6 +99,17 @@ TEST(StoredRatio, TheClosingLineCountsThePreciseAndSaysWhyNotForTheRest) {
   EXPECT_EQ(stored_ratio_line(ResultsDocument{}, GatePolicy{}, {}), "");
 }
 
+// One round has no spread: its value is not printed as a zero-width interval, "+-0.0%".
+TEST(StoredRatio, OneRoundIsSaidToHaveNoInterval) {
+  ResultsDocument document;
+  document.scenes.push_back(measured_scene("balls", {0.5}));
+  const std::string line = stored_ratio_line(document, GatePolicy{}, {});
+  EXPECT_NE(line.find("not: balls 0.500 from 1 baseline round, no interval (no ratio rounds)"),
+            std::string::npos)
+      << line;
+  EXPECT_EQ(line.find("+-0.0%"), std::string::npos) << line;
+}
+
 // Counted costs (--timing sim) repeat: two rounds whose counts agree are a precise ratio, where
 // timed rounds would need six; counts that spread beyond +-2% are still not.
 TEST(StoredRatio, CountedRatiosArePreciseFromTwoAgreeingRounds) {

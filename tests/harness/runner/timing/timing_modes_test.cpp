@@ -113,6 +113,17 @@ TEST(TimingModes, ReportedRecordsTheStartUpItLeavesOut) {
   EXPECT_TRUE(plain.counters.empty());
 }
 
+// Under cachegrind the metered peak is valgrind's (the tracer inside it several times over): kept
+// in the record, not claimed as the tracer's own for the memory gate.
+TEST(TimingModes, SimulatedRunsDoNotClaimValgrindsPeakAsTheTracers) {
+  RunRecord run = run_with(1.5, 1.25, 0.1);
+  run.max_rss_kib = 400000;
+  run.max_rss_own = true;
+  timing_mode("sim").collect(run, "no-cachegrind-files-here");
+  EXPECT_FALSE(run.max_rss_own);
+  EXPECT_EQ(run.max_rss_kib, 400000);
+}
+
 TEST(TimingModes, AdapterTimingMapsToItsMode) {
   EXPECT_EQ(adapter_timing_mode(adapter_timing(TimingSource::process)).name(), "wall");
   EXPECT_EQ(adapter_timing_mode(adapter_timing(TimingSource::process, TimingMetric::cpu)).name(),

@@ -3,6 +3,8 @@
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
 
+#include <fmt/core.h>
+
 #include <stdexcept>
 
 #include "core/error.h"
@@ -79,7 +81,12 @@ NoisyImageStats read_stats_images(const std::filesystem::path& mean_file,
   const RgbImage mean = read_rgb_image(mean_file);
   const RgbImage variance = read_rgb_image(variance_file);
   if (mean.width != variance.width || mean.height != variance.height) {
-    throw UsageError(variance_file.string() + " is not the size of " + mean_file.string());
+    // Either may be the one changed: both sizes said, neither blamed.
+    throw UsageError(fmt::format(
+        "{} is {}x{} and {} is {}x{}: a golden's mean and variance are of one render; bless "
+        "them again",
+        mean_file.string(), mean.width, mean.height, variance_file.string(), variance.width,
+        variance.height));
   }
   return {mean.width, mean.height, runs, mean.rgb, variance.rgb, std::move(inflation)};
 }

@@ -100,6 +100,22 @@ TEST(NoisyImageFiles, ImagesOfDifferentSizesAreAUsageError) {
   }
 }
 
+// A golden's mean and variance of two sizes: both sizes said, not "the variance" blamed for a
+// mean that may be the one changed.
+TEST(NoisyImageFiles, AGoldensMeanAndVarianceOfTwoSizesNameBoth) {
+  const TempDir dir;
+  std::mt19937_64 rng(6);
+  write_rgb_image(noisy(16, rng), dir.path() / "m.exr");
+  write_rgb_image(noisy(20, rng), dir.path() / "v.exr");
+  try {
+    read_stats_images(dir.path() / "m.exr", dir.path() / "v.exr", 4, {});
+    FAIL() << "no error";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("m.exr is 16x16 and "), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("v.exr is 20x20"), std::string::npos) << e.what();
+  }
+}
+
 // 9 runs a side of 128x128 float EXR images (what a compare with a warm-up and 8 rounds has), from
 // the files: the statistical check (reading 18 images, statistics, 3 scales x tiles x channels)
 // against the per-pixel check of one pair. Both verdicts are asserted; the times are printed.

@@ -50,8 +50,18 @@ std::string join(const std::vector<std::string>& words) {
   return out;
 }
 
+// std::regex matches by recursion, one frame per character: a 30,000-character name overflowed
+// the stack (the fourth sweep). Names, package names and variable names are short; a text past
+// kMaxMatched does not match, and its message quotes only its start (shown()).
+constexpr std::size_t kMaxMatched = 256;
+
 bool matches(const std::string& text, const char* pattern) {
-  return std::regex_match(text, std::regex(pattern));
+  return text.size() <= kMaxMatched && std::regex_match(text, std::regex(pattern));
+}
+
+std::string shown(const std::string& text) {
+  return text.size() <= 40 ? text
+                           : fmt::format("{}... ({} bytes)", text.substr(0, 40), text.size());
 }
 
 // One of a fixed set of words; the index of the match.
@@ -107,11 +117,6 @@ constexpr std::size_t kMaxAdapterName = 64;
 
 std::string read_name(const JsonField& field) {
   std::string name = field.as_string();
-  // It names cache folders, golden folders and result records, so it must be safe as a file
-  // name: the rules of core/path_component.h, and shorter.
-  if (!matches(name, "[A-Za-z0-9][A-Za-z0-9._-]*")) {
-    field.fail("'" + name + "' must be letters, digits, '.', '_' or '-' (it names folders)");
-  }
   // Build folders are "<name>-<sha>-<hash>" (builder/build_cache.h), so the name gets less
   // than the 128 bytes core/path_component.h allows any one file name.
   if (name.size() > kMaxAdapterName) {
@@ -119,6 +124,11 @@ std::string read_name(const JsonField& field) {
         fmt::format("'{}...' is {} bytes long, more than the {} allowed (it is part of "
                     "cache folder names)",
                     name.substr(0, 20), name.size(), kMaxAdapterName));
+  }
+  // It names cache folders, golden folders and result records, so it must be safe as a file
+  // name: the rules of core/path_component.h, and shorter.
+  if (!matches(name, "[A-Za-z0-9][A-Za-z0-9._-]*")) {
+    field.fail("'" + name + "' must be letters, digits, '.', '_' or '-' (it names folders)");
   }
   return name;
 }
@@ -158,7 +168,7 @@ std::vector<std::string> read_packages(const JsonField& field) {
     std::string package = element.as_string();
     // Debian policy §5.6.1, with an optional ":arch" qualifier.
     if (!matches(package, "[a-z0-9][a-z0-9+.-]+(:[a-z0-9-]+)?")) {
-      element.fail("'" + package + "' is not a Debian package name (lower-case letters, " +
+      element.fail("'" + shown(package) + "' is not a Debian package name (lower-case letters, " +
                    "digits, '+', '-' and '.')");
     }
     packages.push_back(std::move(package));
@@ -179,7 +189,7 @@ std::map<std::string, std::string> read_env(const JsonField& field) {
   for (const std::string& key : field.keys()) {
     const JsonField value = field.member(key);
     if (!matches(key, "[A-Za-z_][A-Za-z0-9_]*")) {
-      value.fail("'" + key + "' is not a valid environment variable name (letters, digits " +
+      value.fail("'" + shown(key) + "' is not a valid environment variable name (letters, digits " +
                  "and '_', not starting with a digit)");
     }
     env[key] = read_template(value, TemplateField::run);

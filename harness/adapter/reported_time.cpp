@@ -78,6 +78,8 @@ std::optional<std::string> reported_regex_error(const std::string& pattern) {
   return std::nullopt;
 }
 
+constexpr std::size_t kMaxLineSearched = 4096;
+
 std::optional<double> parse_reported_seconds(const Adapter& adapter, std::string_view output) {
   if (adapter.timing.source != TimingSource::reported) return std::nullopt;
   const std::regex re(adapter.timing.regex, std::regex::ECMAScript);
@@ -89,6 +91,9 @@ std::optional<double> parse_reported_seconds(const Adapter& adapter, std::string
     const std::size_t begin = newline == std::string_view::npos ? 0 : newline + 1;
     std::string_view line = output.substr(begin, end - begin);
     if (!line.empty() && line.back() == '\r') line.remove_suffix(1);
+    // A line without an end (a progress bar redrawn with \r) can be megabytes: its end holds
+    // the report, and the matcher's recursion is kept to a few thousand characters.
+    if (line.size() > kMaxLineSearched) line.remove_prefix(line.size() - kMaxLineSearched);
     std::match_results<std::string_view::const_iterator> match;
     if (std::regex_search(line.begin(), line.end(), match, re)) {
       if (!match[1].matched) return std::nullopt;

@@ -7,7 +7,6 @@
 #include <cstdio>
 #include <exception>
 #include <filesystem>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -92,10 +91,7 @@ std::string usage_failure(const CLI::App* command, const CLI::Error& e) {
     return bounded_message("unknown command '" + raygate::terminal_text(command->remaining()[0]) +
                            "'\nRun with --help for the commands.\n");
   }
-  // An option given twice: CLI11 says "At Most 1 required but received 2".
-  static const std::regex twice(R"((\S+): At Most 1 required but received (\d+))");
-  return bounded_message(std::regex_replace(CLI::FailureMessage::simple(command, e), twice,
-                                            "$1 is given $2 times; give it once"));
+  return bounded_message(raygate::plain_usage_words(CLI::FailureMessage::simple(command, e)));
 }
 
 }  // namespace

@@ -1,5 +1,7 @@
 #include "core/json_field.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <cctype>
 #include <limits>
@@ -48,6 +50,13 @@ void JsonField::fail_type(std::string_view expected) const {
 }
 
 std::string JsonField::member_path(std::string_view key) const {
+  // A key of 100,000 bytes would be quoted whole in every message under it: its start is enough.
+  constexpr std::size_t kShownKey = 64;
+  if (key.size() > kShownKey) {
+    const std::string start = nlohmann::json(std::string(key.substr(0, 40)))
+                                  .dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+    return fmt::format("{}[{}... ({} bytes)]", path_, start, key.size());
+  }
   if (is_identifier(key)) return path_ + "." + std::string(key);
   return path_ + "[" + nlohmann::json(key).dump() + "]";
 }

@@ -160,7 +160,8 @@ std::vector<std::string> missing_golden_notes(const MissingGoldens& missing,
   for (const MissingGolden& m : missing) {
     notes.push_back(fmt::format(
         "images not checked against goldens: {} ({}); look at the images, then bless them: "
-        "raygate golden bless --from-run RESULTS.json{}",
+        "raygate golden bless --from-run RESULTS.json{} --golden-dir DIR (a folder kept with "
+        "your tracer, then given to run and compare; without it, raygate's golden/<adapter>/)",
         m.why, missing_count(m, document), role));
   }
   return notes;

@@ -46,7 +46,9 @@ std::filesystem::path pick_golden_dir(const MeasureOptions& args, const ToolPath
                                       const Adapter& adapter) {
   if (args.golden_dir) {
     check_folder_option("--golden-dir", *args.golden_dir);
-    return *args.golden_dir;
+    // Absolute: the document records each golden's path, and a report is read from the run's
+    // folder, where "my-tracer/golden/tetra.png" named nothing ("image not found").
+    return std::filesystem::absolute(*args.golden_dir);
   }
   // Never the baseline's for another tracer: its shading differs by design (compare/golden.h).
   return adapter_golden_dir(tools.data_root / "golden", adapter.name);

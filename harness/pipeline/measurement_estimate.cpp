@@ -234,16 +234,27 @@ void MeasurementEstimate::first_scene_done(const std::vector<Round>& rounds, dou
                                            StopDecision decision) {
   if (!cost_ || shape_.scenes < 2) return;
   if (decision != StopDecision::stop_converged) {
-    // Its rounds so far are a floor for scenes like it, above the first line's.
+    const double like_it = seconds_spent * static_cast<double>(shape_.scenes);
+    if (decision == StopDecision::stop_budget_rounds) {
+      // Scenes like it stop at the same limit: what they take is its time, not more.
+      progress_.line(fmt::format(
+          "estimate: {} stopped undecided at its round limit ({}, {}); scenes like it stop there "
+          "too: {} scenes x {} = {}",
+          first_scene_, count_text(rounds.size(), "round"), span_text(seconds_spent), shape_.scenes,
+          span_text(seconds_spent), span_text(like_it)));
+      said_total_seconds_ = like_it;
+      return;
+    }
+    // Its share of the budget ran out: scenes like it need more than theirs, and the first
+    // line's floor stands where it was higher ("need more" beside a smaller number read wrong).
+    const double floor =
+        estimate_measurement(*cost_, shape_, fewest_rounds_, tracer_count_).total_seconds;
+    said_total_seconds_ = std::max(floor, like_it);
     progress_.line(fmt::format(
-        "estimate: {} was not decided in {} ({}, {}); scenes like it need more: over {} "
-        "scenes x {} = {}",
+        "estimate: {} was not decided in its share of the budget ({}, {}); scenes like it need "
+        "more: over {}",
         first_scene_, count_text(rounds.size(), "round"), span_text(seconds_spent),
-        decision == StopDecision::stop_budget_rounds ? "its round limit"
-                                                     : "its share of the budget",
-        shape_.scenes, span_text(seconds_spent),
-        span_text(seconds_spent * static_cast<double>(shape_.scenes))));
-    said_total_seconds_ = seconds_spent * static_cast<double>(shape_.scenes);
+        span_text(said_total_seconds_)));
     return;
   }
   // The rounds it took, at the cost of a round as measured over all of them.

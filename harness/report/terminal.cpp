@@ -3,6 +3,9 @@
 #include <fmt/core.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <string_view>
+
 #include "core/error.h"
 
 namespace raygate {
@@ -45,6 +48,16 @@ std::string bounded_message(std::string text) {
   const std::size_t cut = text.size() - kMaxChars;
   text.resize(kMaxChars);
   return text + fmt::format("... ({} more characters not shown)", cut);
+}
+
+std::string plain_usage_words(std::string text) {
+  const std::string_view said = ": At Most 1 required but received ";
+  const std::size_t at = text.find(said);
+  if (at == std::string::npos) return text;
+  const std::size_t digits = at + said.size();
+  const std::size_t end = std::min(text.find_first_not_of("0123456789", digits), text.size());
+  const std::string count = text.substr(digits, end - digits);
+  return text.substr(0, at) + " is given " + count + " times; give it once" + text.substr(end);
 }
 
 void say_last_words(const std::string& line) {

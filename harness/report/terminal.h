@@ -55,6 +55,10 @@ class Console final : public MessageSink {
 // enough for any message raygate itself composes (a build's log tail included).
 std::string bounded_message(std::string text);
 
+// A command-line parser's words where a user stops at them: CLI11's "--x: At Most 1 required but
+// received 2" becomes "--x is given 2 times; give it once". Other text is returned as it is.
+std::string plain_usage_words(std::string text);
+
 // The last words of a command (its error, or what an interrupt kept), bounded, on standard
 // error. Never throws: after a hang-up the terminal is gone and every write fails (EIO), and
 // the exit code must still say what happened.

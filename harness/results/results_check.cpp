@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
-#include <regex>
 #include <limits>
 #include <set>
 #include <string>
@@ -19,6 +18,7 @@
 #include "core/domain.h"
 #include "core/memory_cgroup.h"
 #include "core/path_component.h"
+#include "core/time_text.h"
 #include "core/json_field.h"
 #include "runner/timing/timing_check.h"
 #include "runner/timing/timing_modes.h"
@@ -137,12 +137,10 @@ void check_strings(const JsonField& object, std::initializer_list<std::string_vi
 // A time as raygate writes one (core/time_text.h), "2026-11-29T14:37:00Z", or "" for none. merge
 // keeps the earliest start by comparing the text and history orders by it: "yesterday" would sort.
 void check_timestamps(const JsonField& object, std::initializer_list<std::string_view> keys) {
-  static const std::regex kIso8601(
-      R"(\d{4}-\d{2}-\d{2}T\d{2}:\d{2}:\d{2}(\.\d+)?(Z|[+-]\d{2}:?\d{2})?)");
   for (const std::string_view key : keys) {
     const JsonField field = object.member(key);
     const std::string text = field.as_string();
-    if (!text.empty() && !std::regex_match(text, kIso8601)) {
+    if (!text.empty() && !is_iso8601_time(text)) {
       field.fail(fmt::format("\"{}\" is not an ISO 8601 time such as 2026-11-29T14:37:00Z",
                              text.substr(0, 40)));
     }
@@ -476,8 +474,8 @@ void check_revision(const JsonField& r) {
   check_strings(r, {"repository"});
   if (const auto id = find(r, "repository_id")) id->as_string();
   const JsonField w = object(r.member("worktree"));
-  check_strings(
-      w, {"path", "revision", "ref_name", "sha", "short_sha", "subject", "author", "commit_time"});
+  check_strings(w, {"path", "revision", "ref_name", "sha", "short_sha", "subject", "author"});
+  check_timestamps(w, {"commit_time"});
   w.member("dirty").as_bool();
   const JsonField adapter = object(r.member("adapter"));
   check_strings(adapter, {"name", "hash", "file"});

@@ -56,6 +56,15 @@ TEST(ReportedTime, LastReportWins) {
   EXPECT_EQ(parse_reported_seconds(a, "time: 1\ntime: 2\ntime: 3"), 3.0);
 }
 
+// A progress bar redrawn with \r and never ended is one line of megabytes: the matcher, which
+// recurses a frame per character, sees only its end, where the report is.
+TEST(ReportedTime, AMegabyteLineIsSearchedAtItsEnd) {
+  const Adapter a = reported("render time: ([0-9.]+) s", "s");
+  const std::string line = std::string(4 << 20, '#') + " render time: 1.5 s";
+  EXPECT_EQ(parse_reported_seconds(a, line), 1.5);
+  EXPECT_EQ(parse_reported_seconds(a, std::string(4 << 20, '.')), std::nullopt);
+}
+
 TEST(ReportedTime, NoMatchOrNoNumberIsNullopt) {
   const Adapter a = reported("render time: ([0-9.a-z]*) s", "s");
   EXPECT_EQ(parse_reported_seconds(a, "nothing here\n"), std::nullopt);

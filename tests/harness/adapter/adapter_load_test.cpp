@@ -333,6 +333,20 @@ INSTANTIATE_TEST_SUITE_P(
         Broken{"bad_env_name", with(R"("env": {"OMP THREADS": "1"})"),
                "$.env[\"OMP THREADS\"]: 'OMP THREADS' is not a valid environment variable name "
                "(letters, digits and '_', not starting with a digit)"},
+        // std::regex recursed a frame per character: these overflowed the stack (exit 139).
+        Broken{
+            "long_name",
+            R"({"name": ")" + std::string(100000, 'a') +
+                R"(", "scene_format": "nff", "run": ["t", "{scene}", "{image}"], "image": "{image}"})",
+            "$.name: 'aaaaaaaaaaaaaaaaaaaa...' is 100000 bytes long, more than the 64 allowed "
+            "(it is part of cache folder names)"},
+        Broken{"long_package", with(R"("requires": [")" + std::string(100000, 'a') + R"("])"),
+               "$.requires[0]: 'aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa... (100000 bytes)' is not "
+               "a Debian package name (lower-case letters, digits, '+', '-' and '.')"},
+        Broken{"long_env_name", with(R"("env": {")" + std::string(100000, 'A') + R"(": "1"})"),
+               "$.env[\"AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA\"... (100000 bytes)]: "
+               "'AAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAAA... (100000 bytes)' is not a valid "
+               "environment variable name (letters, digits and '_', not starting with a digit)"},
         Broken{"bad_package", with(R"("requires": ["libTBB"])"),
                "$.requires[0]: 'libTBB' is not a Debian package name (lower-case letters, "
                "digits, '+', '-' and '.')"},

@@ -278,6 +278,13 @@ TEST_F(HostileDocuments, ThirdSweepValuesAreRefusedInRaygatesWords) {
   const std::string dated = document("dated.json", [](json& j) { j["started_at"] = "yesterday"; });
   expect_usage_error(run_raygate({"gate", dated}, dir),
                      "$.started_at: \"yesterday\" is not an ISO 8601 time");
+  // The fourth sweep: a day no calendar has, a commit time that is none, 100,000 digits.
+  for (const auto& [key, text] :
+       {std::pair<std::string, std::string>{"finished_at", "2026-02-30T25:61:00Z"},
+        {"started_at", std::string(100000, '1')}}) {
+    const std::string odd = document("odd.json", [&](json& j) { j[key] = text; });
+    expect_usage_error(run_raygate({"gate", odd}, dir), "$." + key + ": \"");
+  }
   // A store read that is no file: SQLite's "disk I/O error" (exit 3) before.
   expect_usage_error(run_raygate({"history", "--store", "/dev/null"}, dir),
                      "results store /dev/null: not a regular file");

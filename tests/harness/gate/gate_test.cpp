@@ -401,7 +401,8 @@ TEST(GateVerdict, MissingGoldensAreOneNoteNotAWarningPerScene) {
   EXPECT_EQ(gate.notes[0],
             "images not checked against goldens: no goldens in g (none blessed yet) (3 scenes); "
             "look at the images, then bless them: raygate golden bless --from-run RESULTS.json "
-            "--role head");
+            "--role head --golden-dir DIR (a folder kept with your tracer, then given to run and "
+            "compare; without it, raygate's golden/<adapter>/)");
   EXPECT_NE(gate.notes[1].find("no golden image for 'tetra' (1 scene)"), std::string::npos)
       << gate.notes[1];
 }

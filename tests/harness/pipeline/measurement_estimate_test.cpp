@@ -200,10 +200,39 @@ TEST(MeasurementEstimate, AnUndecidedFirstSceneMakesTheEstimateAFloor) {
   rule({round_of(1.0, 1.0, 1.0)}, 6.0);
   rule({round_of(1.0, 1.0, 1.0), round_of(1.0, 1.0, 1.0)}, 9.0);
   ASSERT_EQ(progress.lines.size(), 2u);
-  EXPECT_NE(progress.lines[1].find("balls was not decided in 2 rounds (9.0 s, its share of the "
-                                   "budget)"),
+  EXPECT_NE(progress.lines[1].find("balls was not decided in its share of the budget (2 rounds, "
+                                   "9.0 s); scenes like it need more: over "),
             std::string::npos)
       << progress.lines[1];
+  // "need more" is never beside a smaller total than the first line's floor.
+  const std::string& first = progress.lines[0];
+  const std::size_t end = first.find(" for a budget");
+  const std::size_t start = first.rfind("= ", end) + 2;
+  EXPECT_EQ(progress.lines[1].substr(progress.lines[1].rfind("over ") + 5),
+            first.substr(start, end - start))
+      << first << "\n"
+      << progress.lines[1];
+}
+
+// A scene stopped by --max-rounds says scenes like it stop there too: with the limit, none can
+// take more ("need more: over 56 s" after "at least 61 s" read as a contradiction).
+TEST(MeasurementEstimate, AFirstSceneAtItsRoundLimitSaysTheOthersStopThereToo) {
+  Lines progress;
+  MeasurementEstimate estimate(compare_shape(4, 8.0), 6, 2, progress);
+  const StopRule rule = estimate.watch(
+      [](const std::vector<Round>& rounds, double) {
+        return rounds.size() >= 2 ? StopDecision::stop_budget_rounds
+                                  : StopDecision::continue_measuring;
+      },
+      "tetra");
+  rule({round_of(1.0, 1.0, 1.0)}, 6.0);
+  rule({round_of(1.0, 1.0, 1.0), round_of(1.0, 1.0, 1.0)}, 9.0);
+  ASSERT_EQ(progress.lines.size(), 2u);
+  EXPECT_NE(progress.lines[1].find("tetra stopped undecided at its round limit (2 rounds, 9.0 s); "
+                                   "scenes like it stop there too: 4 scenes x 9.0 s = 36 s"),
+            std::string::npos)
+      << progress.lines[1];
+  EXPECT_EQ(progress.lines[1].find("need more"), std::string::npos) << progress.lines[1];
 }
 
 }  // namespace

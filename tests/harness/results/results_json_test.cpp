@@ -185,14 +185,11 @@ ResultsDocument full_document() {
   RevisionRecord r;
   r.role = Role::tracer;
   r.repository = "/repos/tracer";
-  r.worktree = {"/cache/worktrees/y",
-                "v1",
-                "refs/tags/v1",
-                std::string(40, 'c'),
-                "ccccccc",
-                "first",
-                "Ada Tester",
-                "2023-11-14T22:14:20+00:00",
+  // The base Revision's fields first, then the folder: brace elision had shifted them by one
+  // (the path in `revision`, the author in `commit_time`) until commit times were checked.
+  r.worktree = {{"v1", "refs/tags/v1", std::string(40, 'c'), "ccccccc", "first", "Ada Tester",
+                 "2023-11-14T22:14:20+00:00"},
+                "/cache/worktrees/y",
                 false};
   r.adapter_name = "make-nff";
   r.adapter_hash = std::string(64, 'd');

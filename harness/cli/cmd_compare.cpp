@@ -32,7 +32,7 @@ int compare_command(const CompareArgs& args, const Console& console) {
   }
   MeasureContext context = load_measure_context(args.measure);
   context.explain = args.explain;
-  check_publish_targets(args.publish, args.out, "--output");
+  check_publish_targets(args.publish, args.out, "--output", context.input_files);
   const BaselineTool baseline(context.tools.baseline);
   const CompareTrees trees = locate_compare_trees(args.measure.repo, args.base, args.base_branch,
                                                   args.head, context.cache_dir);

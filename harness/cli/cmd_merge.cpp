@@ -31,7 +31,8 @@ void add_merge_command(CLI::App& command, int& exit_code) {
   command
       .add_option("--cache-dir", args.cache_dir,
                   "the default store is <cache-dir>/results.db, as for run")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(writable_folder());
   command.add_option("--policy", args.request.policy, "gate policy file (docs/gate.md)");
   command.add_flag("--fail-on-inconclusive", args.request.fail_on_inconclusive,
                    "an INCONCLUSIVE change fails the gate instead of warning");

@@ -22,7 +22,9 @@ struct ReportArgs {
 
 int report_command(const ReportArgs& args, const Console& console) {
   const ReportFormat format = parse_report_format(args.format);
-  check_distinct_files({{"the results document", args.results}, {"--output", args.output}});
+  check_distinct_files({{"the results document", args.results},
+                        {"--policy", args.policy},
+                        {"--output", args.output}});
   std::string note;
   const JudgedDocument j = judge_document(args.results, args.policy, false, note);
   ReportOptions options;

@@ -28,7 +28,7 @@ struct RunArgs {
 
 int run_command(const RunArgs& args, const Console& console) {
   const MeasureContext context = load_measure_context(args.measure);
-  check_publish_targets(args.publish, args.out, "--output");
+  check_publish_targets(args.publish, args.out, "--output", context.input_files);
   const BaselineTool baseline(context.tools.baseline);
   const RunTree tree =
       locate_run_tree(args.measure.repo, args.rev, args.worktree, context.cache_dir);

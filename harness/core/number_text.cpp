@@ -61,10 +61,16 @@ std::string number_problem(const std::string& text, bool whole, double lowest, d
 }
 
 std::string whole_number_problem(const std::string& text) {
-  long double value = 0;
-  if (!read_number(text, value) || text.find_first_of("xX") != std::string::npos) return "";
+  if (text.empty()) return "";  // empty_value_problem's to say
   const std::size_t digits = text.find_first_not_of("+-");
-  if (digits <= 1 && text.find_first_not_of("0123456789", digits) == std::string::npos) return "";
+  if (digits <= 1 && digits < text.size() &&
+      text.find_first_not_of("0123456789", digits) == std::string::npos) {
+    return "";
+  }
+  long double value = 0;
+  if (read_number(text, value) && text.find_first_of("xX") != std::string::npos) {
+    return fmt::format("{} is hexadecimal; give a whole number in decimal digits", quoted(text));
+  }
   return fmt::format("{} is not a whole number; give one in digits", quoted(text));
 }
 

@@ -19,9 +19,9 @@ std::string non_finite_problem(const std::string& text);
 // with the range that would be right. Long text is quoted in part.
 std::string number_problem(const std::string& text, bool whole, double lowest, double highest);
 
-// "" when `text` reads as a whole number in digits (an optional sign, digits only), and for text
-// that is no number at all (the caller's parser says so); "1e9" or "2.5" is not one. CLI11 said
-// only "Could not convert" for them (cli/finite_numbers.h checks every whole-number option).
+// "" when `text` is a whole number in digits (an optional sign, digits only), and for ""; else
+// what it is instead ("1e9", "2.5", "2x", hexadecimal "0x5"). CLI11 said only "Could not convert",
+// or took 0x5 as 5 (cli/finite_numbers.h checks every whole-number option with it).
 std::string whole_number_problem(const std::string& text);
 
 // "" for any text but the empty one; for "" that it is empty and what leaving the option out does.

@@ -213,6 +213,11 @@ GateResult evaluate_gate(const ResultsDocument& document, const GatePolicy& poli
     gate.id = scene.entry.id;
     if (scene.runs.failed()) {
       judge_failure(document, scene, gate);
+    } else if (is_compare(document.kind) && !scene.change) {
+      // A compare judges head against base: a scene with no change measured judged nothing
+      // (a hand-edited "change": null passed as "measured").
+      gate.speed = SpeedVerdict::measured;
+      raise_speed(gate, GateOutcome::unmeasured, "no change of head against base was measured");
     } else {
       judge_speed(scene, policy.for_scene(scene.entry.id), policy.fail_on_inconclusive, gate);
       judge_memory(scene, policy.for_scene(scene.entry.id), policy.fail_on_inconclusive, gate);

@@ -133,8 +133,11 @@ void check_calibrate_request(const CalibrateRequest& request) {
   if (request.out.empty()) throw UsageError("-o: the suite file to write is required");
   // A folder, a device, or a folder raygate cannot write into: said now, not after the renders.
   check_output_path(request.out, "-o");
-  // Calibrating a suite into its own file would replace the sizes it was measured from.
-  check_distinct_files({{"-o", request.out}, {"--suite", request.context.suite.path}});
+  // Calibrating a suite into its own file would replace the sizes it was measured from; into
+  // the adapter's, the adapter.
+  std::vector<NamedFile> files = request.context.input_files;
+  files.push_back({"-o", request.out});
+  check_distinct_files(files);
   if (request.out.extension() != ".json") {
     throw UsageError("-o " + request.out.string() +
                      ": a suite file ends in .json (so --suite reads it as a file)");

@@ -79,6 +79,15 @@ void check_manifest_adapter(const GoldenManifest& manifest, const std::filesyste
     throw UsageError(golden_dir.string() + " holds goldens of adapter '" +
                      manifest.tracer->adapter + "', not '" + adapter + "' (use --golden-dir)");
   }
+  // A manifest with entries and no tracer is the baseline's: a tracer's images blessed into it
+  // would replace the baseline's and mix two tracers in one manifest. Adapters it is shared
+  // with (raygate-baseline-bbox) render the baseline's pixels and are judged by them.
+  const std::vector<std::string>& shared = manifest.shared_with;
+  if (!manifest.tracer && !manifest.entries.empty() &&
+      std::find(shared.begin(), shared.end(), adapter) == shared.end()) {
+    throw UsageError(golden_dir.string() + " holds the baseline's goldens (raygate golden bless " +
+                     "without --from-run), not adapter '" + adapter + "''s (use --golden-dir)");
+  }
 }
 
 // The revision of the role asked for; the roles the document has when it has not that one (a
@@ -509,6 +518,12 @@ GoldenVerification verify_goldens_from_run(const BlessFromRun& request,
                                            const std::filesystem::path& evidence_dir,
                                            ProgressSink& progress) {
   const ResultsDocument document = read_results(request.results);
+  // A scene named that the document does not hold was passed over ("0 scenes", exit 0).
+  for (const std::string& id : request.scene_ids) {
+    if (find_scene(document, id) == nullptr) {
+      throw UsageError("scene '" + id + "' is not in " + request.results.string());
+    }
+  }
   const RevisionRecord& revision = revision_of_role(document, request);
   const std::filesystem::path golden_dir =
       request.golden_dir.empty()

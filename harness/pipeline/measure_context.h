@@ -14,6 +14,7 @@
 #include "core/paths.h"
 #include "gate/policy.h"
 #include "measure/stopping_policy.h"
+#include "pipeline/output_failures.h"
 #include "results/measurement_settings.h"
 #include "results/shard.h"
 #include "runner/baseline_contender.h"
@@ -53,6 +54,9 @@ struct MeasureContext {
   // compare --explain: profile each REGRESSED scene's base and head once under cachegrind
   // (pipeline/explain_stage.h); sim mode explains from its own runs without it.
   bool explain = false;
+  // The files the options named that the measurement reads (adapter, suite, policy, shard
+  // costs): an output must not be one of them (check_publish_targets, calibrate's -o).
+  std::vector<NamedFile> input_files;
 };
 
 // The measurement's timing mode: the one choose_timing set, or the adapter's. Both sides of the

@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <climits>
+#include <cstdlib>
 #include <cstring>
 #include <iostream>
 
@@ -85,17 +87,32 @@ namespace {
 // exists at or above it is not a folder, or not one raygate may write in (the missing ones below
 // it are created when `target` is written). "" when they can.
 std::string folder_problem(std::filesystem::path folder, const std::filesystem::path& target) {
+  for (const auto& part : target) {
+    if (part.native().size() > NAME_MAX) {
+      return fmt::format(
+          "cannot write {}...: a name in it is {} bytes, more than the {} a file "
+          "system allows",
+          target.string().substr(0, 60), part.native().size(), NAME_MAX);
+    }
+  }
   std::error_code error;
   while (!std::filesystem::exists(folder, error) && folder.has_relative_path()) {
+    if (error) return fmt::format("cannot write {}: {}", target.string(), error.message());
     folder = folder.parent_path();
   }
   if (!std::filesystem::is_directory(folder, error)) {
     return fmt::format("cannot write {}: {} is not a directory", target.string(), folder.string());
   }
-  if (::access(folder.c_str(), W_OK | X_OK) != 0) {
+  // Tried, not asked: access() says yes to root everywhere, and /proc or a read-only mount
+  // refuse the file only when it is made.
+  std::string probe = (folder / ".raygate-write-check-XXXXXX").string();
+  const int fd = ::mkstemp(probe.data());
+  if (fd < 0) {
     return fmt::format("cannot write {}: {}: {}", target.string(), folder.string(),
                        std::strerror(errno));
   }
+  ::close(fd);
+  ::unlink(probe.c_str());
   return "";
 }
 

@@ -71,6 +71,7 @@ int merge_and_publish(MergeRequest request, const PublishOptions& options,
   std::vector<NamedFile> shards;
   for (const std::string& shard : request.documents)
     shards.push_back({"the shard " + shard, shard});
+  shards.push_back({"--policy", request.policy});
   check_publish_targets(options, request.out, "--output", shards);
   request.out = std::filesystem::absolute(request.out).string();
   OutputFailures failures;

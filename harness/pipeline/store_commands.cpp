@@ -2,6 +2,9 @@
 
 #include <fmt/core.h>
 
+#include <fstream>
+#include <string_view>
+
 #include "core/error.h"
 #include "core/format.h"
 #include "pipeline/output_failures.h"
@@ -27,8 +30,18 @@ std::string written_store_problem(const std::string& location) {
            " is not a regular file (a folder, device, FIFO or socket); name an SQLite "
            "results store, or a file to create one in";
   }
+  // A file that is there and is no SQLite database (a results document, a text file) was found
+  // only once the measurement was done, and the store left unwritten with a warning.
+  if (std::filesystem::file_size(location, error) > 0 && !error) {
+    char header[16] = {};
+    std::ifstream(location, std::ios::binary).read(header, sizeof header);
+    if (std::string_view(header, sizeof header) != std::string_view("SQLite format 3\0", 16)) {
+      return location + " is not an SQLite database; name a raygate results store, or a new file";
+    }
+  }
   return output_file_problem(location);
 }
+
 namespace {
 
 // The machine's own history for the drift rule: every document, any branch, any series (the

@@ -290,6 +290,58 @@ TEST_F(HostileDocuments, ThirdSweepValuesAreRefusedInRaygatesWords) {
                      "results store /dev/null: not a regular file");
 }
 
+// The fourth sweep (2026-11-29): outputs that would overwrite what the command reads, a tracer's
+// images blessed over the baseline's goldens, places only trying could show unwritable, a store
+// that is no database, and a compare scene with no change.
+TEST_F(HostileDocuments, FourthSweepInputsAreNotOverwrittenAndPlacesAreTried) {
+  const std::string run = document("run.json", [](json&) {});
+  write_file_atomically(dir.path() / "policy.json", "{}");
+  write_file_atomically(dir.path() / "adapter.json",
+                        read_file(fs::path(RAYGATE_SOURCE_DIR) / "adapters" / "make-nff.json"));
+  const std::string kept = read_file(dir.path() / "policy.json");
+  expect_usage_error(
+      run_raygate({"report", run, "--policy", "policy.json", "-o", "policy.json"}, dir),
+      "--policy and --output name the same file");
+  expect_usage_error(run_raygate({"run", "--adapter", "adapter.json", "-o", "adapter.json"}, dir),
+                     "--adapter and --output name the same file");
+  expect_usage_error(run_raygate({"run", "--adapter", "make-nff", "--policy", "policy.json",
+                                  "--report", "html:policy.json"},
+                                 dir),
+                     "--policy and --report html:policy.json name the same file");
+  EXPECT_EQ(read_file(dir.path() / "policy.json"), kept);
+  // /proc takes no file though root may "write" it; a name past NAME_MAX; a text file as store.
+  expect_usage_error(run_raygate({"run", "--adapter", "make-nff", "-o", "/proc/x.json"}, dir),
+                     "--output: cannot write /proc/x.json");
+  expect_usage_error(run_raygate({"report", run, "-o", std::string(300, 'r') + ".md"}, dir),
+                     "more than the 255 a file system allows");
+  expect_usage_error(run_raygate({"run", "--adapter", "make-nff", "--store", "policy.json"}, dir),
+                     "--store: policy.json is not an SQLite database");
+  // The baseline's goldens, copied: a tracer's run blessed into them mixed two tracers.
+  fs::copy(fs::path(RAYGATE_SOURCE_DIR) / "golden" / "raygate-baseline", dir.path() / "g",
+           fs::copy_options::recursive);
+  expect_usage_error(
+      run_raygate({"golden", "bless", "--from-run", run, "--golden-dir", "g", "--work-dir", "w"},
+                  dir),
+      "holds the baseline's goldens");
+  expect_usage_error(run_raygate({"golden", "verify", "--from-run", run, "nosuch", "--golden-dir",
+                                  "g", "--work-dir", "w"},
+                                 dir),
+                     "scene 'nosuch' is not in");
+  // A compare whose scene has no change judged nothing: it passed as "measured".
+  DocumentSpec spec;
+  spec.sha = fake_sha(2);
+  spec.kind = DocumentKind::compare;
+  spec.roles = {Role::base, Role::head};
+  spec.with_change = true;
+  spec.scenes = {{"balls", 1.5}};
+  json compare = to_json(make_document(spec));
+  compare["scenes"][0]["change"] = nullptr;
+  write_file_atomically(dir.path() / "compare.json", compare.dump(1));
+  const CliRun gate = run_raygate({"gate", "compare.json"}, dir);
+  EXPECT_EQ(gate.exit_code, 3) << gate.out;
+  EXPECT_THAT(gate.out, HasSubstr("no change of head against base was measured"));
+}
+
 class LongRevision : public TracerRepoTest {};
 
 // A 100,000-character --rev exited 3 and printed 200 KB: it is a usage error, and what is echoed

@@ -52,9 +52,11 @@ TEST(NumberText, APasteIsQuotedInPart) {
 
 // CLI11 said "Could not convert" of "1e9" for a count (scenes generate --size).
 TEST(NumberText, AWholeNumberIsDigitsOnly) {
-  for (const char* whole : {"5", "-5", "+12", "0", "abc", ""})
+  for (const char* whole : {"5", "-5", "+12", "0", ""}) {
     EXPECT_EQ(whole_number_problem(whole), "") << whole;
-  for (const char* not_whole : {"1e9", "2.5", "5.0", "1e0"}) {
+  }
+  EXPECT_THAT(whole_number_problem("0x5"), HasSubstr("is hexadecimal"));  // CLI11 took it as 5
+  for (const char* not_whole : {"1e9", "2.5", "5.0", "1e0", "2x", "abc", "-", "--5"}) {
     EXPECT_THAT(whole_number_problem(not_whole), HasSubstr("is not a whole number")) << not_whole;
   }
 }

@@ -135,9 +135,9 @@ void check_calibrate_request(const CalibrateRequest& request) {
   check_output_path(request.out, "-o");
   // Calibrating a suite into its own file would replace the sizes it was measured from; into
   // the adapter's, the adapter.
-  std::vector<NamedFile> files = request.context.input_files;
-  files.push_back({"-o", request.out});
-  check_distinct_files(files);
+  check_distinct_files({{"--suite", request.context.suite.path},
+                        {"--adapter", request.context.adapter.file},
+                        {"-o", request.out}});
   if (request.out.extension() != ".json") {
     throw UsageError("-o " + request.out.string() +
                      ": a suite file ends in .json (so --suite reads it as a file)");

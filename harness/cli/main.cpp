@@ -119,7 +119,7 @@ int main(int argc, char** argv) {
         app, raygate::load_project_defaults(raygate::find_config_argument(argc, argv)));
     app.parse(argc, argv);
   } catch (const CLI::Success& e) {
-    return app.exit(e);  // --help, --version
+    return raygate::exit_code_after_standard_output(app.exit(e));  // --help, --version
   } catch (const CLI::ParseError& e) {
     app.exit(e);
     return raygate::to_int(raygate::ExitCode::usage);

@@ -13,6 +13,12 @@ namespace raygate {
 void check_publish_targets(const PublishOptions& options, const std::string& output,
                            const std::string& option, const std::vector<NamedFile>& inputs) {
   const std::vector<ReportTarget> reports = parse_report_targets(options.reports);
+  // "-" is standard output to report's -o; here it made a file named "-".
+  if (output == "-") {
+    throw UsageError(option +
+                     " -: the results document is a file; for it on standard output, "
+                     "--format json");
+  }
   check_output_path(output, option);
   // A malformed URL is the user's mistake, found before measuring (exit 2, as import says it);
   // a well-formed one whose server cannot be reached is only a warning after measuring.

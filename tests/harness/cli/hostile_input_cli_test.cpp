@@ -327,6 +327,13 @@ TEST_F(HostileDocuments, FourthSweepInputsAreNotOverwrittenAndPlacesAreTried) {
                                   "g", "--work-dir", "w"},
                                  dir),
                      "scene 'nosuch' is not in");
+  // "-o -" made a file named "-" (report's -o - is standard output); --help into a full disk
+  // exited 0.
+  expect_usage_error(run_raygate({"run", "--adapter", "make-nff", "-o", "-"}, dir),
+                     "--output -: the results document is a file");
+  ProcessSpec help = raygate_spec({"--help"}, dir);
+  help.argv.insert(help.argv.begin(), {"/bin/sh", "-c", "exec \"$0\" \"$@\" >/dev/full"});
+  EXPECT_EQ(run_process(help).exit_code, 3);
   // A compare whose scene has no change judged nothing: it passed as "measured".
   DocumentSpec spec;
   spec.sha = fake_sha(2);

@@ -188,51 +188,50 @@ TEST(MeasurementEstimate, LaterScenesCorrectAnEstimateOffByMoreThanThirtyPercent
   EXPECT_EQ(progress.lines.size(), said + 1);
 }
 
-TEST(MeasurementEstimate, AnUndecidedFirstSceneMakesTheEstimateAFloor) {
+// The lines an estimate says of a first scene `id` that stops undecided (`decision`) after two
+// rounds (6 s, then 9 s spent), of `scenes` scenes at `fewest_rounds` a verdict needs.
+std::vector<std::string> undecided_first_scene(std::size_t scenes, std::size_t fewest_rounds,
+                                               StopDecision decision, const std::string& id) {
   Lines progress;
-  MeasurementEstimate estimate(compare_shape(13, 8.0), 14, 2, progress);
+  MeasurementEstimate estimate(compare_shape(scenes, 8.0), fewest_rounds, 2, progress);
   const StopRule rule = estimate.watch(
-      [](const std::vector<Round>& rounds, double) {
-        return rounds.size() >= 2 ? StopDecision::stop_budget_time
-                                  : StopDecision::continue_measuring;
+      [decision](const std::vector<Round>& rounds, double) {
+        return rounds.size() >= 2 ? decision : StopDecision::continue_measuring;
       },
-      "balls");
+      id);
   rule({round_of(1.0, 1.0, 1.0)}, 6.0);
   rule({round_of(1.0, 1.0, 1.0), round_of(1.0, 1.0, 1.0)}, 9.0);
-  ASSERT_EQ(progress.lines.size(), 2u);
-  EXPECT_NE(progress.lines[1].find("balls was not decided in its share of the budget (2 rounds, "
-                                   "9.0 s); scenes like it need more: over "),
+  return progress.lines;
+}
+
+TEST(MeasurementEstimate, AnUndecidedFirstSceneMakesTheEstimateAFloor) {
+  const std::vector<std::string> lines =
+      undecided_first_scene(13, 14, StopDecision::stop_budget_time, "balls");
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_NE(lines[1].find("balls was not decided in its share of the budget (2 rounds, "
+                          "9.0 s); scenes like it need more: over "),
             std::string::npos)
-      << progress.lines[1];
+      << lines[1];
   // "need more" is never beside a smaller total than the first line's floor.
-  const std::string& first = progress.lines[0];
+  const std::string& first = lines[0];
   const std::size_t end = first.find(" for a budget");
   const std::size_t start = first.rfind("= ", end) + 2;
-  EXPECT_EQ(progress.lines[1].substr(progress.lines[1].rfind("over ") + 5),
-            first.substr(start, end - start))
+  EXPECT_EQ(lines[1].substr(lines[1].rfind("over ") + 5), first.substr(start, end - start))
       << first << "\n"
-      << progress.lines[1];
+      << lines[1];
 }
 
 // A scene stopped by --max-rounds says scenes like it stop there too: with the limit, none can
 // take more ("need more: over 56 s" after "at least 61 s" read as a contradiction).
 TEST(MeasurementEstimate, AFirstSceneAtItsRoundLimitSaysTheOthersStopThereToo) {
-  Lines progress;
-  MeasurementEstimate estimate(compare_shape(4, 8.0), 6, 2, progress);
-  const StopRule rule = estimate.watch(
-      [](const std::vector<Round>& rounds, double) {
-        return rounds.size() >= 2 ? StopDecision::stop_budget_rounds
-                                  : StopDecision::continue_measuring;
-      },
-      "tetra");
-  rule({round_of(1.0, 1.0, 1.0)}, 6.0);
-  rule({round_of(1.0, 1.0, 1.0), round_of(1.0, 1.0, 1.0)}, 9.0);
-  ASSERT_EQ(progress.lines.size(), 2u);
-  EXPECT_NE(progress.lines[1].find("tetra stopped undecided at its round limit (2 rounds, 9.0 s); "
-                                   "scenes like it stop there too: 4 scenes x 9.0 s = 36 s"),
+  const std::vector<std::string> lines =
+      undecided_first_scene(4, 6, StopDecision::stop_budget_rounds, "tetra");
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_NE(lines[1].find("tetra stopped undecided at its round limit (2 rounds, 9.0 s); "
+                          "scenes like it stop there too: 4 scenes x 9.0 s = 36 s"),
             std::string::npos)
-      << progress.lines[1];
-  EXPECT_EQ(progress.lines[1].find("need more"), std::string::npos) << progress.lines[1];
+      << lines[1];
+  EXPECT_EQ(lines[1].find("need more"), std::string::npos) << lines[1];
 }
 
 }  // namespace

@@ -44,8 +44,8 @@ void add_golden_subcommand(CLI::App& golden, const std::string& name, const std:
                   "raygate-baseline to use (default: beside raygate)");
   cmd->add_option("scenes", args->scenes, "suite scene ids (default: all)");
   cmd->add_option("--from-run", args->from_run, from_run_help);
-  cmd->add_option("--role", args->role, "with --from-run: whose images (tracer, head, base)")
-      ->capture_default_str();
+  cmd->add_option("--role", args->role,
+                  "with --from-run: whose images (default tracer; head, base)");
 }
 
 }  // namespace

@@ -84,14 +84,15 @@ std::vector<Command> commands() {
        cli::add_scaling_command}};
 }
 
-// A parse error: CLI11's words, bounded, and the unknown command named (not "A subcommand is required").
+// A parse error, "raygate: error:" as any: CLI11's words, bounded, an unknown command named.
 std::string usage_failure(const CLI::App* command, const CLI::Error& e) {
-  if (command->get_parent() == nullptr && command->get_subcommands().empty() &&
-      !command->remaining().empty()) {
-    return bounded_message("unknown command '" + raygate::terminal_text(command->remaining()[0]) +
-                           "'\nRun with --help for the commands.\n");
-  }
-  return bounded_message(raygate::plain_usage_words(CLI::FailureMessage::simple(command, e)));
+  const bool unknown = command->get_parent() == nullptr && command->get_subcommands().empty() &&
+                       !command->remaining().empty();
+  return bounded_message(
+      "raygate: error: " +
+      (unknown ? "unknown command '" + raygate::terminal_text(command->remaining()[0]) +
+                     "'\nRun with --help for the commands.\n"
+               : raygate::plain_usage_words(CLI::FailureMessage::simple(command, e))));
 }
 
 }  // namespace

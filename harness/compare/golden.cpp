@@ -189,6 +189,12 @@ std::optional<std::string> golden_noise_problem(const GoldenNoise& noise,
     return fmt::format("{}: noise.runs {} is not a number of runs (2 to {})", where, noise.runs,
                        kMaxGoldenRuns);
   }
+  if (noise.inflation.empty()) {
+    return fmt::format(
+        "{}: noise.inflation is empty: bless writes a factor for every tile size it judges "
+        "(how much more a tile's mean varies than its pixels say); bless the golden again",
+        where);
+  }
   for (const ScaleInflation& s : noise.inflation) {
     if (!(s.factor >= 1.0 && s.factor <= kMaxInflation)) {
       return fmt::format(

@@ -2,6 +2,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <OpenImageIO/imageio.h>
 
 #include <fmt/core.h>
 
@@ -17,6 +18,28 @@ namespace OIIO = OIIO_NAMESPACE;
 
 RgbImage from_values(int width, int height, const std::vector<float>& values) {
   return {width, height, values};
+}
+
+// A variance file as bless writes it: three channels of floating point. One channel would be
+// read as the same variance for red, green and blue, and 8 or 16-bit integers round a pixel's
+// small variance to 0 (then every render differs) or clamp a large one at 1: either judges
+// against noise that was never measured. "" when it is one, or cannot be opened (the read says
+// why).
+std::string variance_format_problem(const std::filesystem::path& path) {
+  const auto input = OIIO::ImageInput::open(path.string());
+  if (!input) return "";
+  const OIIO::ImageSpec& spec = input->spec();
+  if (spec.nchannels < 3) {
+    return fmt::format("{} has {} channel{}: a variance has one per colour (red, green, blue)",
+                       path.string(), spec.nchannels, spec.nchannels == 1 ? "" : "s");
+  }
+  if (!spec.format.is_floating_point()) {
+    return fmt::format(
+        "{} stores {}-bit whole numbers: a variance is kept in floating point (bless writes "
+        "OpenEXR), where small variances do not round to 0",
+        path.string(), 8 * spec.format.size());
+  }
+  return "";
 }
 
 }  // namespace
@@ -80,6 +103,9 @@ NoisyImageStats read_stats_images(const std::filesystem::path& mean_file,
                                   std::vector<ScaleInflation> inflation) {
   const RgbImage mean = read_rgb_image(mean_file);
   const RgbImage variance = read_rgb_image(variance_file);
+  if (const std::string problem = variance_format_problem(variance_file); !problem.empty()) {
+    throw UsageError(problem + "; bless the golden again");
+  }
   if (mean.width != variance.width || mean.height != variance.height) {
     // Either may be the one changed: both sizes said, neither blamed.
     throw UsageError(fmt::format(

@@ -2,6 +2,7 @@
 // runner measures with a steady clock).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -14,5 +15,9 @@ std::string compact_utc_timestamp();  // "20261121-140307", sorts like time, saf
 // offset ("+02:00") or fractional seconds, and a real date and time of day (no February 30th,
 // no 25:61). Documents are checked with it: merge and history compare these texts as times.
 bool is_iso8601_time(std::string_view text);
+
+// The same time as seconds since 1970-01-01T00:00:00Z (its offset applied: 12:00+02:00 is
+// 10:00Z), to put two such times in order; nullopt when `text` is not one.
+std::optional<double> iso8601_epoch_seconds(std::string_view text);
 
 }  // namespace raygate

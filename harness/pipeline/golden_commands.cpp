@@ -15,12 +15,33 @@ BaselineGoldens open_goldens(const GoldenOptions& options) {
                                options.baseline);
 }
 
+// What the options ask that raygate would do wrongly or not at all, refused before any work:
+// --work-dir in the golden folder itself (its scenes/, renders/ and evidence/ would sit among
+// the goldens), and --role, which only --from-run reads.
+void check_golden_options(const GoldenOptions& options) {
+  if (!options.role.empty() && options.from_run.empty()) {
+    throw UsageError("--role " + options.role +
+                     ": whose images to take from a results document, so it needs --from-run");
+  }
+  if (options.golden_dir.empty()) return;
+  std::error_code error;
+  const auto folder = [&error](const std::string& path) {
+    return std::filesystem::weakly_canonical(std::filesystem::absolute(path, error), error);
+  };
+  if (folder(options.work_dir) == folder(options.golden_dir)) {
+    throw UsageError(fmt::format(
+        "--work-dir and --golden-dir are the same folder, {}: the scenes, renders and evidence "
+        "would sit among the goldens; give --work-dir a folder of its own",
+        folder(options.golden_dir).string()));
+  }
+}
+
 }  // namespace
 
 BlessFromRun from_run_request(const GoldenOptions& options) {
   BlessFromRun request;
   request.results = std::filesystem::absolute(options.from_run);
-  const std::optional<Role> role = parse_role(options.role);
+  const std::optional<Role> role = parse_role(options.role.empty() ? "tracer" : options.role);
   if (!role || *role == Role::baseline) {
     throw UsageError("--role: no such revision role '" + options.role + "' (tracer, base or head)");
   }
@@ -57,6 +78,7 @@ GoldenOutcome run_verification_outcome(const GoldenVerification& v) {
 }
 
 GoldenOutcome verify_goldens(const GoldenOptions& options, ProgressSink& lines) {
+  check_golden_options(options);
   if (!options.from_run.empty()) {
     return run_verification_outcome(verify_goldens_from_run(
         from_run_request(options), std::filesystem::path(options.work_dir) / "evidence", lines));
@@ -67,6 +89,7 @@ GoldenOutcome verify_goldens(const GoldenOptions& options, ProgressSink& lines) 
 }
 
 void bless_goldens(const GoldenOptions& options, ProgressSink& lines) {
+  check_golden_options(options);
   if (options.from_run.empty()) {
     bless_baseline_goldens(open_goldens(options), lines);
   } else {

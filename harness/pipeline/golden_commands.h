@@ -19,8 +19,8 @@ struct GoldenOptions {
   std::string golden_dir;  // default: <data root>/golden/raygate-baseline (from_run: /<adapter>)
   std::string work_dir = ".raygate/golden";  // scenes, renders and evidence
   std::string baseline;                      // "": the raygate-baseline beside raygate
-  std::string from_run;         // a results document whose images are verified or blessed
-  std::string role = "tracer";  // with from_run: whose images (tracer, head, base)
+  std::string from_run;  // a results document whose images are verified or blessed
+  std::string role;      // with from_run: whose images (tracer, head, base; "" is tracer)
 };
 
 struct GoldenOutcome {

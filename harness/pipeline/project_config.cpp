@@ -64,6 +64,19 @@ void require_config_file(const std::filesystem::path& file, const std::string& n
                                folder ? "is a directory, not a config file" : "no such file"));
 }
 
+// ./raygate.toml is read when it exists: one that exists and is no file (a folder, a FIFO) would
+// leave the project's defaults out without a word.
+void refuse_default_config_of_another_kind() {
+  std::error_code ec;
+  const std::filesystem::file_status status = std::filesystem::status(kProjectConfigFile, ec);
+  if (!std::filesystem::exists(status)) return;
+  throw UsageError(fmt::format(
+      "./{} is {}, not a config file (raygate reads ./{} when it exists): rename it, or give "
+      "--config FILE",
+      kProjectConfigFile, std::filesystem::is_directory(status) ? "a directory" : "not a file",
+      kProjectConfigFile));
+}
+
 // What CLI11's reader lets through: a quoted value that never closes (the quote would become
 // part of a path) and a key with nothing after its `=` (the built-in default would be used
 // without a word). Each is refused at its file:line:column.
@@ -164,6 +177,8 @@ ProjectDefaults load_project_defaults(const std::string& config_argument,
     defaults = read_project_config(from_env);
   } else if (is_config_file(kProjectConfigFile, "")) {
     defaults = read_project_config(kProjectConfigFile);
+  } else {
+    refuse_default_config_of_another_kind();
   }
   for (const std::string& key : project_keys()) {
     const std::string name = environment_name(key);

@@ -147,6 +147,18 @@ void check_timestamps(const JsonField& object, std::initializer_list<std::string
   }
 }
 
+// merge orders shards and history orders runs by these times: a run cannot finish before it began.
+void check_started_before_finished(const JsonField& document) {
+  const auto started = iso8601_epoch_seconds(document.member("started_at").as_string());
+  const auto finished = iso8601_epoch_seconds(document.member("finished_at").as_string());
+  if (started && finished && *finished < *started) {
+    document.member("finished_at")
+        .fail(fmt::format("\"{}\" is before started_at \"{}\"",
+                          document.member("finished_at").as_string().substr(0, 40),
+                          document.member("started_at").as_string().substr(0, 40)));
+  }
+}
+
 void check_seconds(const JsonField& object, std::initializer_list<std::string_view> keys) {
   for (const std::string_view key : keys) number(object.member(key), 0.0, kMaxSeconds);
 }
@@ -200,10 +212,21 @@ void check_ratio(const JsonField& r) {
   const std::int64_t rounds = integer(r.member("rounds"), 0, kMaxCount);
   // Null is a ratio of no rounds: read back as 0, one with rounds would print as 0.000 beside
   // its own interval.
-  if (!number_or_null(r.member("normalized_ratio"), 0.0, kInf) && rounds > 0) {
+  const auto ratio = number_or_null(r.member("normalized_ratio"), 0.0, kInf);
+  if (!ratio && rounds > 0) {
     r.member("normalized_ratio").fail(fmt::format("is null, but {} rounds measured it", rounds));
   }
-  check_interval(r.member("ratio_interval"), 0.0, kInf);
+  // A ratio of two measured times is above 0 (0 would be printed "+-inf%" and trended as a
+  // thousandfold speed-up) and inside the interval drawn around it from the same rounds.
+  if (ratio && *ratio == 0.0 && rounds > 0) {
+    r.member("normalized_ratio").fail("is 0: a ratio of two measured times is above 0");
+  }
+  const auto [lower, upper] = check_interval(r.member("ratio_interval"), 0.0, kInf);
+  const double slack = 1e-9 * (1.0 + (ratio ? *ratio : 0.0));  // printed and read as decimals
+  if (ratio && lower && upper && (*ratio < *lower - slack || *ratio > *upper + slack)) {
+    r.member("normalized_ratio")
+        .fail(fmt::format("{} lies outside its ratio_interval [{}, {}]", *ratio, *lower, *upper));
+  }
   number_or_null(r.member("relative_half_width"), 0.0, kInf);
   number_or_null(r.member("log_ratio_median"), -kMaxLog, kMaxLog);
   number_or_null(r.member("log_ratio_mad_scaled"), 0.0, kInf);
@@ -574,6 +597,7 @@ void check_results_json(const nlohmann::json& document, const TimingModeList& mo
   const std::string kind = word_at(d, "kind", {"run", "compare"});
   check_strings(d, {"raygate_version", "suite"});
   check_timestamps(d, {"started_at", "finished_at"});
+  check_started_before_finished(d);
   d.member("complete").as_bool();
   check_machine(d.member("machine"));
   check_settings(d.member("settings"));

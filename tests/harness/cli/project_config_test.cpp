@@ -118,6 +118,24 @@ TEST(ProjectConfig, AFolderNamedAsTheConfigIsSaidToBeAFolder) {
   }
 }
 
+// The fourth sweep: a folder named raygate.toml in the working directory was passed over, and
+// the project's defaults with it, without a word.
+TEST(ProjectConfig, ADefaultConfigThatIsAFolderIsSaidToBeOne) {
+  const TempDir dir;
+  std::filesystem::create_directory(dir.path() / "raygate.toml");
+  const std::filesystem::path before = std::filesystem::current_path();
+  std::filesystem::current_path(dir.path());
+  std::string said = "accepted";
+  try {
+    load_project_defaults("", [](const char*) -> const char* { return nullptr; });
+  } catch (const UsageError& e) {
+    said = e.what();
+  }
+  std::filesystem::current_path(before);
+  EXPECT_THAT(said, HasSubstr("./raygate.toml is a directory, not a config file"));
+  EXPECT_THAT(said, HasSubstr("--config FILE"));
+}
+
 TEST(ProjectConfig, ConfigArgumentIsFoundBeforeParsing) {
   const char* spaced[] = {"raygate", "history", "--config", "x.toml"};
   EXPECT_EQ(find_config_argument(4, spaced), "x.toml");

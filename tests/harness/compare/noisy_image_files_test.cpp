@@ -3,6 +3,7 @@
 // against the per-pixel one on the same files (printed; docs/monte-carlo-images.md quotes it).
 #include "compare/noisy_image_files.h"
 
+#include <OpenImageIO/imagebuf.h>
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -18,6 +19,7 @@ namespace raygate {
 namespace {
 
 namespace fs = std::filesystem;
+namespace OIIO = OIIO_NAMESPACE;
 
 RgbImage noisy(int size, std::mt19937_64& rng) {
   std::gamma_distribution<double> noise(4.0, 0.25);  // mean 1, relative sd 0.5
@@ -82,6 +84,13 @@ TEST(NoisyImageFiles, GoldenManifestKeepsTheNoiseOfEachEntry) {
   const GoldenNoise one_run = load_golden_manifest(dir.path()).noise.at("balls");
   EXPECT_EQ(golden_noise_problem(one_run, "m: 'balls'"),
             "m: 'balls': noise.runs 1 is not a number of runs (2 to 1000000)");
+  // No factor at all (`"inflation": []`): every tile judged as if its pixels' noise were
+  // independent, which bless never writes.
+  GoldenNoise no_inflation = manifest.noise.at("balls");
+  no_inflation.inflation.clear();
+  ASSERT_TRUE(golden_noise_problem(no_inflation, "m: 'balls'"));
+  EXPECT_NE(golden_noise_problem(no_inflation, "m: 'balls'")->find("noise.inflation is empty"),
+            std::string::npos);
 }
 
 TEST(NoisyImageFiles, ImagesOfDifferentSizesAreAUsageError) {
@@ -114,6 +123,36 @@ TEST(NoisyImageFiles, AGoldensMeanAndVarianceOfTwoSizesNameBoth) {
     EXPECT_NE(std::string(e.what()).find("m.exr is 16x16 and "), std::string::npos) << e.what();
     EXPECT_NE(std::string(e.what()).find("v.exr is 20x20"), std::string::npos) << e.what();
   }
+}
+
+// The fourth sweep: a variance of one channel (read as one variance for all three colours) or of
+// 8-bit whole numbers (small variances rounded to 0) judged against noise never measured.
+TEST(NoisyImageFiles, AVarianceNotAsBlessWritesItIsRefused) {
+  const TempDir dir;
+  std::mt19937_64 rng(7);
+  write_rgb_image(noisy(16, rng), dir.path() / "m.exr");
+  write_rgb_image(noisy(16, rng), dir.path() / "v8.png");  // 8-bit, as every PNG it writes
+  const std::vector<float> grey(16 * 16, 0.01f);
+  OIIO::ImageBuf one(OIIO::ImageSpec(16, 16, 1, OIIO::TypeDesc::FLOAT));
+  one.set_pixels(one.roi(), OIIO::TypeDesc::FLOAT, grey.data());
+  ASSERT_TRUE(one.write((dir.path() / "v1.exr").string()));
+  const auto refusal = [&](const char* variance) -> std::string {
+    try {
+      read_stats_images(dir.path() / "m.exr", dir.path() / variance, 4, {{8, 1.0}});
+      return "accepted";
+    } catch (const UsageError& e) {
+      return e.what();
+    }
+  };
+  EXPECT_NE(refusal("v8.png").find("v8.png stores 8-bit whole numbers: a variance is kept in "
+                                   "floating point"),
+            std::string::npos)
+      << refusal("v8.png");
+  EXPECT_NE(refusal("v1.exr").find("v1.exr has 1 channel: a variance has one per colour"),
+            std::string::npos)
+      << refusal("v1.exr");
+  write_rgb_image(noisy(16, rng), dir.path() / "v.exr");
+  EXPECT_EQ(refusal("v.exr"), "accepted");
 }
 
 // 9 runs a side of 128x128 float EXR images (what a compare with a warm-up and 8 rounds has), from

@@ -89,6 +89,30 @@ TEST(Fs, ANodeThatIsNotARegularFileIsNeverReplaced) {
   EXPECT_THROW(write_file_atomically(dir.path(), "x"), WriteError);  // a directory
 }
 
+TEST(Fs, ASymlinkIsWrittenThroughAndStaysALink) {
+  // `-o latest.json` where latest.json links to the real file: the file gets the content and the
+  // link stays a link (a rename over the link would have replaced it by a plain file). A dangling
+  // link names the file to create, a relative target is read from the link's folder, and a loop
+  // is a WriteError, not a hang.
+  TempDir dir;
+  std::filesystem::create_directory(dir.path() / "runs");
+  write_file_atomically(dir.path() / "runs" / "real.json", "old");
+  std::filesystem::create_symlink("runs/real.json", dir.path() / "latest.json");
+  write_file_atomically(dir.path() / "latest.json", "new");
+  EXPECT_TRUE(std::filesystem::is_symlink(dir.path() / "latest.json"));
+  EXPECT_EQ(read_file(dir.path() / "runs" / "real.json"), "new");
+
+  std::filesystem::create_symlink("runs/later.json", dir.path() / "dangling.json");
+  write_file_atomically(dir.path() / "dangling.json", "made");
+  EXPECT_TRUE(std::filesystem::is_symlink(dir.path() / "dangling.json"));
+  EXPECT_EQ(read_file(dir.path() / "runs" / "later.json"), "made");
+
+  std::filesystem::create_symlink("loop-b", dir.path() / "loop-a");
+  std::filesystem::create_symlink("loop-a", dir.path() / "loop-b");
+  EXPECT_THROW(write_file_atomically(dir.path() / "loop-a", "x"), WriteError);
+  EXPECT_TRUE(std::filesystem::is_symlink(dir.path() / "loop-a"));
+}
+
 TEST(Fs, SyncDirectoryNamesAFolderThatCannotBeOpened) {
   TempDir dir;
   sync_directory(dir.path());

@@ -28,5 +28,17 @@ TEST(TimeText, WhatIsNoRealTimeIsRefused) {
   EXPECT_FALSE(is_iso8601_time(std::string(100000, '1')));
 }
 
+// A document's finished_at is checked to follow its started_at, whatever zones the two are in.
+TEST(TimeText, ATimeIsSecondsSinceTheEpochWithItsZoneApplied) {
+  EXPECT_EQ(iso8601_epoch_seconds("1970-01-01T00:00:00Z"), 0.0);
+  EXPECT_EQ(iso8601_epoch_seconds("2000-03-01T00:00:00Z"), 951868800.0);  // after a leap day
+  EXPECT_EQ(iso8601_epoch_seconds("2026-11-29T14:37:00Z"), 1795963020.0);
+  EXPECT_EQ(iso8601_epoch_seconds("2026-11-29T16:37:00+02:00"), 1795963020.0);
+  EXPECT_EQ(iso8601_epoch_seconds("2026-11-29T13:07:00-0130"), 1795963020.0);
+  EXPECT_EQ(iso8601_epoch_seconds("2026-11-29T14:37:00.25Z"), 1795963020.25);
+  EXPECT_EQ(iso8601_epoch_seconds("1969-12-31T23:59:59Z"), -1.0);
+  EXPECT_EQ(iso8601_epoch_seconds("2026-02-30T10:00:00Z"), std::nullopt);
+}
+
 }  // namespace
 }  // namespace raygate

@@ -112,6 +112,22 @@ const std::vector<BadDocument>& bad_documents() {
          j["scenes"][0]["ratios"]["tracer"]["ratio_interval"] = {{"lower", 3.0}, {"upper", 1.0}};
        },
        "$.scenes[0].ratios.tracer.ratio_interval", "lower is above upper"},
+      // The fourth sweep: a ratio of 0 printed "+-inf%" in history; one outside its own
+      // interval was stored as it read; a run that finished before it began was merged.
+      {"a ratio of 0", false,
+       [](json& j) { j["scenes"][0]["ratios"]["tracer"]["normalized_ratio"] = 0.0; },
+       "$.scenes[0].ratios.tracer.normalized_ratio", "is 0"},
+      {"a ratio outside its interval", false,
+       [](json& j) {
+         j["scenes"][0]["ratios"]["tracer"]["ratio_interval"] = {{"lower", 3.0}, {"upper", 4.0}};
+       },
+       "$.scenes[0].ratios.tracer.normalized_ratio", "outside its ratio_interval [3, 4]"},
+      {"finished before it started", false,
+       [](json& j) {
+         j["started_at"] = "2026-11-28T10:00:00+01:00";
+         j["finished_at"] = "2026-11-28T08:59:59Z";
+       },
+       "$.finished_at", "is before started_at"},
       {"a p-value above 1", true,
        [](json& j) { j["scenes"][0]["change"]["mann_whitney"]["p_value"] = 1.5; },
        "$.scenes[0].change.mann_whitney.p_value", "out of range"},

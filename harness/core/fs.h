@@ -39,7 +39,6 @@ class WriteError : public InfraError {
 // (including a full disk) the old file is untouched and a WriteError names the path and why.
 // Only a regular file (or nothing) is replaced: a device, FIFO or socket at `path` (/dev/full,
 // /dev/stdout) is refused, since renaming over it would replace the node, not write through it.
-// A symlink is followed: its target is replaced and the link stays.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
 
 // Flushes a directory's entries to disk (after files were created or renamed in it), so a

@@ -132,6 +132,17 @@ std::string output_file_problem(const std::string& path) {
         "output",
         target.string());
   }
+  // A link is written through (core/fs.h): the folder tried is its target's, and a loop of links
+  // is said now, not after the measuring.
+  std::error_code link_error;
+  std::filesystem::status(target, link_error);
+  if (link_error && link_error != std::errc::no_such_file_or_directory) {
+    return fmt::format("{} cannot be followed: {}", target.string(), link_error.message());
+  }
+  if (std::filesystem::is_symlink(std::filesystem::symlink_status(target, error))) {
+    const std::filesystem::path written = std::filesystem::weakly_canonical(target, error);
+    if (!error) return folder_problem(written.parent_path(), written);
+  }
   return folder_problem(target.parent_path(), target);
 }
 

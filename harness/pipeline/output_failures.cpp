@@ -135,7 +135,7 @@ std::string output_file_problem(const std::string& path) {
   // A link is written through (core/fs.h): the folder tried is its target's, and a loop of links
   // is said now, not after the measuring.
   std::error_code link_error;
-  std::filesystem::status(target, link_error);
+  static_cast<void>(std::filesystem::status(target, link_error));  // only its error is asked
   if (link_error && link_error != std::errc::no_such_file_or_directory) {
     return fmt::format("{} cannot be followed: {}", target.string(), link_error.message());
   }

@@ -19,6 +19,7 @@
 #include "core/memory_cgroup.h"
 #include "core/path_component.h"
 #include "core/time_text.h"
+#include "results/shard.h"
 #include "core/json_field.h"
 #include "runner/timing/timing_check.h"
 #include "runner/timing/timing_modes.h"
@@ -144,6 +145,17 @@ void check_timestamps(const JsonField& object, std::initializer_list<std::string
       field.fail(fmt::format("\"{}\" is not an ISO 8601 time such as 2026-11-29T14:37:00Z",
                              text.substr(0, 40)));
     }
+  }
+}
+
+// "" (no shard) or "K/N" with 1 <= K <= N, as --shard takes it: reports print it as it reads.
+void check_shard_label(const JsonField& shard) {
+  const std::string label = shard.as_string();
+  if (label.empty()) return;
+  try {
+    parse_shard(label);
+  } catch (const UsageError&) {
+    shard.fail(fmt::format("\"{}\" is not a shard K/N with 1 <= K <= N", label.substr(0, 40)));
   }
 }
 
@@ -434,6 +446,15 @@ void check_rounds(const JsonField& rounds, const Roles& roles) {
   }
 }
 
+// A ratio or change drawn from more rounds than the scene lists was edited: every round a
+// figure is drawn from is in its scene's rounds.
+void check_rounds_listed(const JsonField& figure, std::size_t listed) {
+  const JsonField rounds = figure.member("rounds");
+  if (static_cast<std::size_t>(rounds.value().get<std::int64_t>()) > listed) {
+    rounds.fail(fmt::format("{} rounds, but the scene lists {}", rounds.value().dump(), listed));
+  }
+}
+
 void check_scene(const JsonField& s, const Roles& roles) {
   object(s);
   check_scene_entry(s.member("scene"));
@@ -465,12 +486,17 @@ void check_scene(const JsonField& s, const Roles& roles) {
   check_rounds(s.member("rounds"), roles);
   if (const auto partial = find(s, "partial_round")) check_runs_by_role(*partial, roles.runs);
   const JsonField ratios = object(s.member("ratios"));
+  const std::size_t listed = s.member("rounds").value().size();
   for (const std::string& role : ratios.keys()) {
     require_role(ratios.member(role), role, roles.revisions);
     check_ratio(ratios.member(role));
+    check_rounds_listed(ratios.member(role), listed);
   }
   s.member("change");  // required, even when null
-  if (const auto change = find_non_null(s, "change")) check_change(*change);
+  if (const auto change = find_non_null(s, "change")) {
+    check_change(*change);
+    check_rounds_listed(*change, listed);
+  }
   for (const JsonField& image : array(s.member("images")).elements()) {
     check_image(image, roles.revisions);
   }
@@ -601,7 +627,7 @@ void check_results_json(const nlohmann::json& document, const TimingModeList& mo
   d.member("complete").as_bool();
   check_machine(d.member("machine"));
   check_settings(d.member("settings"));
-  if (const auto shard = find(d, "shard")) shard->as_string();
+  if (const auto shard = find(d, "shard")) check_shard_label(*shard);
   const JsonField baseline = object(d.member("baseline"));
   check_strings(baseline, {"version", "source_sha256"});
   word_at(baseline, "accel", {"none", "bbox"});

@@ -128,6 +128,11 @@ const std::vector<BadDocument>& bad_documents() {
          j["finished_at"] = "2026-11-28T08:59:59Z";
        },
        "$.finished_at", "is before started_at"},
+      {"a shard that is none", false, [](json& j) { j["shard"] = "5/2"; }, "$.shard",
+       "\"5/2\" is not a shard K/N"},
+      {"a ratio of more rounds than listed", false,
+       [](json& j) { j["scenes"][0]["rounds"] = json::array(); },
+       "$.scenes[0].ratios.tracer.rounds", "but the scene lists 0"},
       {"a p-value above 1", true,
        [](json& j) { j["scenes"][0]["change"]["mann_whitney"]["p_value"] = 1.5; },
        "$.scenes[0].change.mann_whitney.p_value", "out of range"},

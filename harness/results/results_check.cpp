@@ -16,6 +16,7 @@
 #include "compare/noisy_image_compare.h"
 #include "measure/change.h"
 #include "core/domain.h"
+#include "core/error.h"
 #include "core/memory_cgroup.h"
 #include "core/path_component.h"
 #include "core/time_text.h"

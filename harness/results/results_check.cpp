@@ -447,15 +447,6 @@ void check_rounds(const JsonField& rounds, const Roles& roles) {
   }
 }
 
-// A ratio or change drawn from more rounds than the scene lists was edited: every round a
-// figure is drawn from is in its scene's rounds.
-void check_rounds_listed(const JsonField& figure, std::size_t listed) {
-  const JsonField rounds = figure.member("rounds");
-  if (static_cast<std::size_t>(rounds.value().get<std::int64_t>()) > listed) {
-    rounds.fail(fmt::format("{} rounds, but the scene lists {}", rounds.value().dump(), listed));
-  }
-}
-
 void check_scene(const JsonField& s, const Roles& roles) {
   object(s);
   check_scene_entry(s.member("scene"));
@@ -487,17 +478,12 @@ void check_scene(const JsonField& s, const Roles& roles) {
   check_rounds(s.member("rounds"), roles);
   if (const auto partial = find(s, "partial_round")) check_runs_by_role(*partial, roles.runs);
   const JsonField ratios = object(s.member("ratios"));
-  const std::size_t listed = s.member("rounds").value().size();
   for (const std::string& role : ratios.keys()) {
     require_role(ratios.member(role), role, roles.revisions);
     check_ratio(ratios.member(role));
-    check_rounds_listed(ratios.member(role), listed);
   }
   s.member("change");  // required, even when null
-  if (const auto change = find_non_null(s, "change")) {
-    check_change(*change);
-    check_rounds_listed(*change, listed);
-  }
+  if (const auto change = find_non_null(s, "change")) check_change(*change);
   for (const JsonField& image : array(s.member("images")).elements()) {
     check_image(image, roles.revisions);
   }

@@ -26,7 +26,9 @@ void check_golden_options(const GoldenOptions& options) {
   if (options.golden_dir.empty()) return;
   std::error_code error;
   const auto folder = [&error](const std::string& path) {
-    return std::filesystem::weakly_canonical(std::filesystem::absolute(path, error), error);
+    const std::filesystem::path named =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(path, error), error);
+    return named.has_filename() ? named : named.parent_path();  // "dir/" is "dir"
   };
   if (folder(options.work_dir) == folder(options.golden_dir)) {
     throw UsageError(fmt::format(

@@ -136,7 +136,7 @@ std::string output_file_problem(const std::string& path) {
   // is said now, not after the measuring.
   std::error_code link_error;
   static_cast<void>(std::filesystem::status(target, link_error));  // only its error is asked
-  if (link_error && link_error != std::errc::no_such_file_or_directory) {
+  if (link_error == std::errc::too_many_symbolic_link_levels) {
     return fmt::format("{} cannot be followed: {}", target.string(), link_error.message());
   }
   if (std::filesystem::is_symlink(std::filesystem::symlink_status(target, error))) {

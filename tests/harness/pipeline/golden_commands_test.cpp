@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "pipeline/golden_commands.h"
+#include "pipeline/pipeline_io.h"
 
 namespace raygate {
 namespace {
@@ -46,9 +47,38 @@ TEST(GoldenCommands, ARunsImagesComeFromOneOfItsRevisions) {
   EXPECT_EQ(tracer.golden_dir.string(), "golden/povray");
   options.role = "head";
   EXPECT_EQ(from_run_request(options).role, Role::head);
-  for (const char* refused : {"baseline", "HEAD", ""}) {
+  for (const char* refused : {"baseline", "HEAD"}) {
     options.role = refused;
     EXPECT_THROW(from_run_request(options), UsageError) << refused;
+  }
+}
+
+// The fourth sweep: --role without --from-run was read by nobody, and a --work-dir that is the
+// --golden-dir put scenes/, renders/ and evidence/ among the goldens. Both are refused before
+// anything is rendered or read.
+TEST(GoldenCommands, OptionsNobodyWouldReadOrAWorkDirAmongTheGoldensAreRefused) {
+  SilentProgress lines;
+  GoldenOptions role_alone;
+  role_alone.role = "head";
+  try {
+    verify_goldens(role_alone, lines);
+    FAIL() << "--role without --from-run was accepted";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("--role head: whose images to take from a results "
+                                         "document, so it needs --from-run"),
+              std::string::npos)
+        << e.what();
+  }
+  GoldenOptions same;
+  same.golden_dir = "golden/mine";
+  same.work_dir = "golden/./mine/";
+  try {
+    bless_goldens(same, lines);
+    FAIL() << "--work-dir equal to --golden-dir was accepted";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("--work-dir and --golden-dir are the same folder"),
+              std::string::npos)
+        << e.what();
   }
 }
 

@@ -123,6 +123,17 @@ TEST(OutputFailures, PathsThatCannotBeWrittenAreNamedBeforeAnyWork) {
   EXPECT_EQ(output_file_problem(file.string()), "");
   EXPECT_EQ(output_file_problem("-"), "");
   EXPECT_EQ(output_file_problem(""), "");
+  // A link is written through: a loop of links is said now, a link into a folder that cannot be
+  // written is tried there, and a link to a file that can be is fine.
+  std::filesystem::create_symlink("loop-b", dir.path() / "loop-a");
+  std::filesystem::create_symlink("loop-a", dir.path() / "loop-b");
+  EXPECT_THAT(output_file_problem((dir.path() / "loop-a").string()),
+              HasSubstr("loop-a cannot be followed"));
+  std::filesystem::create_symlink(file / "r.md", dir.path() / "into-a-file");
+  EXPECT_THAT(output_file_problem((dir.path() / "into-a-file").string()),
+              HasSubstr("is not a directory"));
+  std::filesystem::create_symlink(file, dir.path() / "to-a-file");
+  EXPECT_EQ(output_file_problem((dir.path() / "to-a-file").string()), "");
   EXPECT_EQ(output_folder_problem((dir.path() / "new" / "work").string()), "");
   EXPECT_EQ(output_folder_problem(dir.path().string()), "");
   EXPECT_THROW(check_output_folder(file, "--work-dir"), UsageError);

@@ -140,11 +140,9 @@ std::string output_file_problem(const std::string& path) {
     return fmt::format("{} cannot be followed: {}", target.string(), link_error.message());
   }
   if (std::filesystem::is_symlink(std::filesystem::symlink_status(target, error))) {
-    std::filesystem::path written = std::filesystem::weakly_canonical(target, error);
-    if (error) {  // a link through a file: its own text names the place
-      const std::filesystem::path link = std::filesystem::read_symlink(target, error);
-      written = link.is_absolute() ? link : target.parent_path() / link;
-    }
+    // Its text, not weakly_canonical: that leaves a link into a file's "folder" unresolved.
+    const std::filesystem::path link = std::filesystem::read_symlink(target, error);
+    const std::filesystem::path written = link.is_absolute() ? link : target.parent_path() / link;
     if (!error) return folder_problem(written.parent_path(), written);
   }
   return folder_problem(target.parent_path(), target);

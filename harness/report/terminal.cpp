@@ -51,6 +51,15 @@ std::string bounded_message(std::string text) {
 }
 
 std::string plain_usage_words(std::string text) {
+  // "--store excludes --no-store": which is given is the user's choice, so both are named.
+  const std::string_view excludes = " excludes ";
+  if (const std::size_t at = text.find(excludes);
+      at != std::string::npos && text.rfind("--", 0) == 0) {
+    const std::size_t end = std::min(text.find('\n', at), text.size());
+    const std::size_t other = at + excludes.size();
+    return text.substr(0, at) + " and " + text.substr(other, end - other) +
+           " cannot be given together; give one" + text.substr(end);
+  }
   const std::string_view said = ": At Most 1 required but received ";
   const std::size_t at = text.find(said);
   if (at == std::string::npos) return text;

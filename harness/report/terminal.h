@@ -56,7 +56,8 @@ class Console final : public MessageSink {
 std::string bounded_message(std::string text);
 
 // A command-line parser's words where a user stops at them: CLI11's "--x: At Most 1 required but
-// received 2" becomes "--x is given 2 times; give it once". Other text is returned as it is.
+// received 2" becomes "--x is given 2 times; give it once", and "--a excludes --b" becomes "--a
+// and --b cannot be given together; give one". Other text is returned as it is.
 std::string plain_usage_words(std::string text);
 
 // The last words of a command (its error, or what an interrupt kept), bounded, on standard

@@ -274,6 +274,9 @@ TEST_F(HostileDocuments, ThirdSweepValuesAreRefusedInRaygatesWords) {
                      "--size: \"1e9\" is not a whole number");
   expect_usage_error(run_raygate({"report", run, "--format", "json", "--format", "html"}, dir),
                      "--format is given 2 times; give it once");
+  expect_usage_error(
+      run_raygate({"run", "--adapter", "make-nff", "--store", "s.db", "--no-store"}, dir),
+      "raygate: error: --store and --no-store cannot be given together; give one");
   // history and merge compare these times as text: "yesterday" sorted among them.
   const std::string dated = document("dated.json", [](json& j) { j["started_at"] = "yesterday"; });
   expect_usage_error(run_raygate({"gate", dated}, dir),

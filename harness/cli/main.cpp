@@ -132,11 +132,10 @@ int main(int argc, char** argv) {
   } catch (const raygate::Error& e) {
     say_last_words(fmt::format("raygate: error: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(e.code());
-  } catch (const std::filesystem::filesystem_error& e) {
-    // The system refused a path (permissions, a symlink loop, a full disk): raygate could not do
-    // its work and says on what ("cannot create directories: Permission denied [/srv/cache]").
-    say_last_words(fmt::format("raygate: error: {}", raygate::terminal_text(e.what())));
-    return raygate::to_int(raygate::ExitCode::infrastructure);
+  } catch (const std::filesystem::filesystem_error& e) {  // a path too long 2, else 3, said on what
+    const raygate::FilesystemFailure failure = raygate::filesystem_failure(e);
+    say_last_words("raygate: error: " + raygate::terminal_text(failure.message));
+    return failure.exit_code;
   } catch (const std::exception& e) {
     say_last_words(fmt::format("raygate: internal error: {}", raygate::terminal_text(e.what())));
     return raygate::to_int(raygate::ExitCode::infrastructure);

@@ -67,9 +67,12 @@ void write_file_atomically(const std::filesystem::path& link_or_path, std::strin
   }
 
   // "." + name + ".tmp-XXXXXX", built step by step (GCC 12 warns falsely on the one-liner).
+  // A name of 244 bytes or more would make the temporary's too long for the file system (255):
+  // that file is written beside it under a short name instead.
   std::string temp_name = ".";
   temp_name += path.filename().string();
   temp_name += ".tmp-XXXXXX";
+  if (temp_name.size() > 255) temp_name = ".raygate.tmp-XXXXXX";
   std::string temp = (parent / temp_name).string();
   const int fd = ::mkstemp(temp.data());
   if (fd < 0) throw WriteError(path, system_reason());

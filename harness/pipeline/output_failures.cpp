@@ -208,4 +208,28 @@ void check_output_beside_inputs(const NamedFile& output, const std::vector<std::
   }
 }
 
+namespace {
+
+// "/tmp/aaaa…aaaa/x.json (300012 bytes)" for a path too long to echo whole.
+std::string shortened(const std::filesystem::path& path) {
+  const std::string text = path.string();
+  if (text.size() <= 200) return text;
+  return fmt::format("{}…{} ({} bytes)", text.substr(0, 120), text.substr(text.size() - 60),
+                     text.size());
+}
+
+}  // namespace
+
+FilesystemFailure filesystem_failure(const std::filesystem::filesystem_error& error) {
+  const bool too_long = error.code() == std::errc::filename_too_long;
+  std::string message = too_long ? "a path is too long for the file system (a name has at most "
+                                   "255 bytes): " +
+                                       shortened(error.path1())
+                                 : std::string(error.what());
+  if (!too_long && (error.path1().native().size() > 200 || error.path2().native().size() > 200)) {
+    message = fmt::format("{} [{}]", error.code().message(), shortened(error.path1()));
+  }
+  return {too_long ? to_int(ExitCode::usage) : to_int(ExitCode::infrastructure), message};
+}
+
 }  // namespace raygate

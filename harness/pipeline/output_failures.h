@@ -98,4 +98,14 @@ void check_standard_output(OutputFailures& failures, const std::string& output, 
 // outranks it, and a command that found it already (check_standard_output) exits 3 anyway.
 int exit_code_after_standard_output(int exit_code);
 
+// What a filesystem error that reached main says, and its exit code. A name the system refuses as
+// too long (ENAMETOOLONG: a name of more than 255 bytes in a path given for reading) is the
+// user's to fix, 2; any other refusal (permissions, a full disk) is raygate unable to work, 3.
+// Paths over 200 bytes are shortened (a 300,000-byte name once filled the message).
+struct FilesystemFailure {
+  int exit_code = 3;
+  std::string message;
+};
+FilesystemFailure filesystem_failure(const std::filesystem::filesystem_error& error);
+
 }  // namespace raygate

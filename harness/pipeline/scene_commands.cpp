@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "nff/parser.h"
+#include "pipeline/output_failures.h"
 #include "spd.h"
 #include "writers/scene_writers.h"
 
@@ -75,6 +76,14 @@ std::vector<std::filesystem::path> convert_scene(const ConvertRequest& request) 
   if (!format) {
     throw UsageError("--to: unknown format '" + request.format + "' (expected pov, obj or pbrt)");
   }
+  // The converted files must not replace the scene they are made from (the fifth sweep: `-o` as
+  // the input, a hard link to it, or `-o in.obj` whose MTL is the input, replaced it).
+  std::vector<NamedFile> files{{"the input scene", request.input}, {"-o", request.output}};
+  if (*format == writers::OutputFormat::obj && !request.output.empty() && request.output != "-") {
+    files.push_back(
+        {"-o's MTL file", std::filesystem::path(request.output).replace_extension(".mtl")});
+  }
+  check_distinct_files(files);
   try {
     const nff::Scene scene = nff::read_nff_file(request.input);
     const writers::WriteOptions options{request.segments};

@@ -267,12 +267,25 @@ void check_verdict(const JsonField& verdict) {
   }
 }
 
+// A level the gate judges at again: 0 and 1 leave no error to spend (the sweep's 0 ended in an
+// internal error where the confidence sequence was drawn).
+void confidence_level(const JsonField& field) {
+  const double level = number(field, 0.0, 1.0);
+  if (level == 0.0 || level == 1.0)
+    field.fail(fmt::format("{} is not a confidence level: one lies strictly between 0 and 1",
+                           field.value().dump()));
+}
+
+void confidence_level_or_null(const JsonField& field) {
+  if (!field.value().is_null()) confidence_level(field);
+}
+
 void check_change(const JsonField& c) {
   object(c);
   integer(c.member("rounds"), 0, kMaxCount);
   const auto change = number_or_null(c.member("change"), -1.0, kInf);  // head / base - 1
   check_change_in_interval(c.member("change"), change, c.member("change_interval"));
-  if (const auto confidence = find(c, "confidence")) number(*confidence, 0.0, 1.0);
+  if (const auto confidence = find(c, "confidence")) confidence_level(*confidence);
   std::string kind = "order-statistic";  // documents from before the confidence sequences
   if (const auto k = find(c, "interval_kind")) {
     kind = k->as_string();
@@ -280,9 +293,9 @@ void check_change(const JsonField& c) {
   }
   if (change_interval_kind(kind) == ChangeIntervalKind::confidence_sequence) {
     check_interval(c.member("equivalence_interval"), -1.0, kInf);
-    number_or_null(c.member("equivalence_confidence"), 0.0, 1.0);
+    confidence_level_or_null(c.member("equivalence_confidence"));
     check_interval(c.member("one_look_interval"), -1.0, kInf);
-    number_or_null(c.member("one_look_confidence"), 0.0, 1.0);
+    confidence_level_or_null(c.member("one_look_confidence"));
   }
   number_or_null(c.member("log_change_median"), -kMaxLog, kMaxLog);
   number_or_null(c.member("log_change_mad_scaled"), 0.0, kInf);

@@ -296,6 +296,19 @@ TEST_F(HostileDocuments, ThirdSweepValuesAreRefusedInRaygatesWords) {
 // The fourth sweep (2026-11-29): outputs that would overwrite what the command reads, a tracer's
 // images blessed over the baseline's goldens, places only trying could show unwritable, a store
 // that is no database, and a compare scene with no change.
+// The fifth sweep: a name of more than 255 bytes in a path raygate reads ended in the system's
+// "filesystem error: status: File name too long [<5,000 bytes>]", exit 3.
+TEST_F(HostileDocuments, FifthSweepNamesTooLongToReadAreTheUsers) {
+  const std::string long_name = (dir.path() / std::string(5000, 'a')).string();
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"history", "--store", long_name},
+        {"adapter", "check", long_name}}) {
+    const CliRun r = run_raygate(args, dir);
+    expect_usage_error(r, "too long");
+    EXPECT_LT(r.out.size(), 1000u) << r.out.size();
+  }
+}
+
 TEST_F(HostileDocuments, FourthSweepInputsAreNotOverwrittenAndPlacesAreTried) {
   const std::string run = document("run.json", [](json&) {});
   write_file_atomically(dir.path() / "policy.json", "{}");

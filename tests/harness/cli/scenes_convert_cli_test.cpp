@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "cli_support.h"
 
@@ -86,6 +88,29 @@ TEST(ScenesConvertCli, UnknownFormatMissingFileAndBadViewAreExitTwo) {
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.out.find("'up' must not be parallel"), std::string::npos) << r.out;
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.pov"));
+}
+
+// The fifth sweep: `-o` naming the input (in any spelling, or a hard link to it), or an OBJ
+// whose MTL is the input, replaced the scene it was converted from.
+TEST(ScenesConvertCli, TheInputSceneIsNeverOverwritten) {
+  TempDir dir;
+  write(dir, "in.nff", kScene);
+  std::filesystem::create_directory(dir.path() / "sub");
+  std::filesystem::create_hard_link(dir.path() / "in.nff", dir.path() / "same.nff");
+  write(dir, "in.mtl", kScene);
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"in.nff", "--to", "pov", "-o", "in.nff"},
+        {"in.nff", "--to", "pbrt", "-o", "sub/../in.nff"},
+        {"in.nff", "--to", "pov", "-o", "same.nff"},
+        {"in.mtl", "--to", "obj", "-o", "in.obj"}}) {
+    std::vector<std::string> command{"scenes", "convert"};
+    command.insert(command.end(), args.begin(), args.end());
+    const CliRun r = run_raygate(command, dir);
+    EXPECT_EQ(r.exit_code, 2) << args.back() << ": " << r.out;
+    EXPECT_NE(r.out.find("name the same file"), std::string::npos) << r.out;
+  }
+  EXPECT_EQ(read_file(dir.path() / "in.nff"), kScene);
+  EXPECT_EQ(read_file(dir.path() / "in.mtl"), kScene);
 }
 
 }  // namespace

@@ -144,5 +144,21 @@ TEST(OutputFailures, PathsThatCannotBeWrittenAreNamedBeforeAnyWork) {
   check_output_beside_inputs({"--markdown", dir.path() / "c.md"}, {file.string()}, "the document");
 }
 
+// A name too long is the user's (2) and said in a line; another refusal is raygate's (3).
+TEST(OutputFailures, AFilesystemErrorIsSaidShortAndTold) {
+  const std::string name(300000, 'a');
+  const FilesystemFailure too_long = filesystem_failure(std::filesystem::filesystem_error(
+      "status", name, std::make_error_code(std::errc::filename_too_long)));
+  EXPECT_EQ(too_long.exit_code, 2);
+  EXPECT_THAT(too_long.message, HasSubstr("a path is too long for the file system"));
+  EXPECT_THAT(too_long.message, HasSubstr("(300000 bytes)"));
+  EXPECT_LT(too_long.message.size(), 400u);
+  const FilesystemFailure denied = filesystem_failure(
+      std::filesystem::filesystem_error("cannot create directories", "/srv/cache",
+                                        std::make_error_code(std::errc::permission_denied)));
+  EXPECT_EQ(denied.exit_code, 3);
+  EXPECT_THAT(denied.message, HasSubstr("Permission denied [/srv/cache]"));
+}
+
 }  // namespace
 }  // namespace raygate

@@ -130,6 +130,15 @@ const std::vector<BadDocument>& bad_documents() {
        "$.finished_at", "is before started_at"},
       {"a shard that is none", false, [](json& j) { j["shard"] = "5/2"; }, "$.shard",
        "\"5/2\" is not a shard K/N"},
+      // The fifth sweep: a confidence of 0 (or 1) ended in an internal error.
+      {"a confidence of 0", true, [](json& j) { j["scenes"][0]["change"]["confidence"] = 0.0; },
+       "$.scenes[0].change.confidence", "0.0 is not a confidence level"},
+      {"a one-look confidence of 1", true,
+       [](json& j) {
+         j["scenes"][0]["change"]["interval_kind"] = "confidence-sequence";
+         j["scenes"][0]["change"]["one_look_confidence"] = 1.0;
+       },
+       "$.scenes[0].change.", "is not a confidence level"},
       {"a p-value above 1", true,
        [](json& j) { j["scenes"][0]["change"]["mann_whitney"]["p_value"] = 1.5; },
        "$.scenes[0].change.mann_whitney.p_value", "out of range"},

@@ -138,7 +138,7 @@ const std::vector<BadDocument>& bad_documents() {
          j["scenes"][0]["change"]["interval_kind"] = "confidence-sequence";
          j["scenes"][0]["change"]["one_look_confidence"] = 1.0;
        },
-       "$.scenes[0].change.", "is not a confidence level"},
+       "$.scenes[0].change.one_look_confidence", "1.0 is not a confidence level"},
       {"a p-value above 1", true,
        [](json& j) { j["scenes"][0]["change"]["mann_whitney"]["p_value"] = 1.5; },
        "$.scenes[0].change.mann_whitney.p_value", "out of range"},

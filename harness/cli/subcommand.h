@@ -66,7 +66,7 @@ CLI::Option* add_bounded_option(CLI::App& command, const std::string& name, Valu
 
 // Paths a command writes, refused when the command line is parsed (exit 2, the option named), not
 // found unwritable once the work is done (pipeline/output_failures.h). "-" is standard output.
-inline CLI::Validator writable_file() { return {output_file_problem, "", "WRITABLE FILE"}; }
+inline CLI::Validator writable_file() { return {output_document_problem, "", "WRITABLE FILE"}; }
 inline CLI::Validator writable_folder() { return {output_folder_problem, "", "WRITABLE FOLDER"}; }
 
 }  // namespace raygate::cli

@@ -7,7 +7,9 @@
 #include <climits>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 #include <iostream>
+#include <string_view>
 
 #include "core/error.h"
 #include "core/exit_codes.h"
@@ -155,8 +157,21 @@ std::string output_folder_problem(const std::string& path) {
   return folder_problem(target, target);
 }
 
+std::string output_document_problem(const std::string& path) {
+  if (std::string problem = output_file_problem(path); !problem.empty()) return problem;
+  if (path.empty() || path == "-") return "";
+  char header[16] = {};
+  std::ifstream(path, std::ios::binary).read(header, sizeof header);
+  if (std::string_view(header, sizeof header) == std::string_view("SQLite format 3\0", 16)) {
+    return path +
+           " is an SQLite database (a results store?): a document or report is never "
+           "written over one; name another file";
+  }
+  return "";
+}
+
 void check_output_path(const std::filesystem::path& path, const std::string& option) {
-  if (const std::string problem = output_file_problem(path.string()); !problem.empty()) {
+  if (const std::string problem = output_document_problem(path.string()); !problem.empty()) {
     throw UsageError(option + ": " + problem);
   }
 }

@@ -116,6 +116,12 @@ std::string export_stored_documents(const ExportRequest& request) {
     check_output_path(request.out, "--output");
     check_distinct_files({{"--output", request.out}, {"--store", request.store}});
   } else {
+    std::error_code error;
+    if (std::filesystem::is_regular_file(request.out, error)) {
+      throw UsageError("--output " + request.out +
+                       ": a file not named .json; export writes FILE.json, or a directory of "
+                       "documents");
+    }
     check_output_folder(request.out, "--output");
   }
   const auto store = open_store(request.store, StoreOpen::must_exist);

@@ -307,6 +307,19 @@ TEST_F(HostileDocuments, FifthSweepNamesTooLongToReadAreTheUsers) {
     expect_usage_error(r, "too long");
     EXPECT_LT(r.out.size(), 1000u) << r.out.size();
   }
+  // ... and a results store was replaced by a report or a scene (`report -o results.db`), and
+  // `export -o results.db` said only "is not a directory".
+  const std::string run = document("run.json", [](json&) {});
+  ASSERT_EQ(run_raygate({"import", run, "--store", "team.db"}, dir).exit_code, 0);
+  const std::string store = read_file(dir.path() / "team.db");
+  expect_usage_error(run_raygate({"report", run, "-o", "team.db"}, dir),
+                     "team.db is an SQLite database (a results store?)");
+  expect_usage_error(run_raygate({"scenes", "generate", "tetra", "-o", "team.db"}, dir),
+                     "is an SQLite database");
+  EXPECT_EQ(read_file(dir.path() / "team.db"), store);
+  write_file_atomically(dir.path() / "notes.txt", "x");
+  expect_usage_error(run_raygate({"export", "--store", "team.db", "-o", "notes.txt"}, dir),
+                     "a file not named .json; export writes FILE.json, or a directory");
 }
 
 TEST_F(HostileDocuments, FourthSweepInputsAreNotOverwrittenAndPlacesAreTried) {

@@ -317,6 +317,18 @@ TEST_F(HostileDocuments, FifthSweepNamesTooLongToReadAreTheUsers) {
   expect_usage_error(run_raygate({"scenes", "generate", "tetra", "-o", "team.db"}, dir),
                      "is an SQLite database");
   EXPECT_EQ(read_file(dir.path() / "team.db"), store);
+  // gate printed a document's control bytes (a NUL, an escape) as they were; report escaped them.
+  const std::string odd = document("odd.json", [](json& j) {
+    for (json& revision : j["revisions"]) revision["worktree"]["subject"] = "x\u0000\u001b[2Jy";
+    json run = j["scenes"][0]["rounds"][0]["runs"]["tracer"];
+    run["ok"] = false;
+    run["outcome"] = "a\u0000\u001b[2Jb";
+    j["scenes"][0]["failure"] = {{"role", "tracer"}, {"run", run}};
+    j["scenes"][0]["status"] = "failed";
+  });
+  const CliRun gated = run_raygate({"gate", odd}, dir);
+  EXPECT_EQ(gated.out.find('\0'), std::string::npos) << gated.out;
+  EXPECT_EQ(gated.out.find('\x1b'), std::string::npos) << gated.out;
   write_file_atomically(dir.path() / "notes.txt", "x");
   expect_usage_error(run_raygate({"export", "--store", "team.db", "-o", "notes.txt"}, dir),
                      "a file not named .json; export writes FILE.json, or a directory");

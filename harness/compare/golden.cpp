@@ -5,7 +5,9 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <initializer_list>
 #include <limits>
+#include <string_view>
 
 #include "core/error.h"
 #include "core/fs.h"
@@ -75,6 +77,16 @@ GoldenNoise read_noise(const JsonField& field, const std::string& file) {
   return noise;
 }
 
+// One of the words bless writes, or "" (a tracer's golden, whose sampling is its own): another
+// word is an edit, said here with its path, not found later as a golden that cannot judge.
+std::string word_of(const JsonField& field, std::initializer_list<std::string_view> words) {
+  const std::string word = field.as_string();
+  if (word.empty() || std::find(words.begin(), words.end(), word) != words.end()) return word;
+  std::string known;
+  for (const std::string_view w : words) known += (known.empty() ? "" : ", ") + std::string(w);
+  field.fail(fmt::format("unknown value \"{}\" (bless writes {})", word.substr(0, 40), known));
+}
+
 // The file is read, compared and overwritten by bless: it must stay in the golden folder.
 GoldenEntry read_entry(const JsonField& field, const std::string& file) {
   field.expect_object(
@@ -86,8 +98,8 @@ GoldenEntry read_entry(const JsonField& field, const std::string& file) {
           whole_int(field.member("size"), 0, kMaxSceneSize),
           whole_int(field.member("width"), 1, kMaxSide),
           whole_int(field.member("height"), 1, kMaxSide),
-          field.member("sampling").as_string(),
-          field.member("accel").as_string(),
+          word_of(field.member("sampling"), {"center", "corners"}),
+          word_of(field.member("accel"), {"none", "bbox"}),
           checked_component(image.as_string(), file + ": " + image.path()),
           sha256_at(field.member("sha256"))};
 }

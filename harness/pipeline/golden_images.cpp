@@ -340,6 +340,12 @@ void verify_baseline_scene(const BaselineGoldens& goldens, const GoldenManifest&
                                     entry->width, entry->height, width, height));
   }
   const ImageMetrics m = compare_images(render.image, goldens.golden_dir / entry->file, {});
+  if (m.expected_width != entry->width || m.expected_height != entry->height) {
+    // The manifest describes another image than the one its hash vouches for: both were edited.
+    return unverifiable(fmt::format("{} is {}x{}, but the manifest lists it at {}x{}", entry->file,
+                                    m.expected_width, m.expected_height, entry->width,
+                                    entry->height));
+  }
   if (m.identical()) {
     progress.line(fmt::format("ok        {:<12} identical ({:.2f} s)", scene.id,
                               render.process.wall_seconds));

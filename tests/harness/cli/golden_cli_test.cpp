@@ -111,6 +111,29 @@ TEST(GoldenCli, AnUnreadableGoldenIsAnErrorOfItsSceneOnly) {
   }
 }
 
+// The fifth sweep: a golden of another size than its manifest lists, its hash updated, was
+// judged DIFFERENT (exit 1, "your change regressed"); the manifest does not describe its image,
+// so the golden cannot judge (exit 3).
+TEST(GoldenCli, AGoldenOfAnotherSizeThanItsManifestCannotJudge) {
+  TempDir dir;
+  std::filesystem::copy(kGolden, dir.path() / "golden");
+  const std::filesystem::path tetra = dir.path() / "golden" / "tetra.png";
+  const OIIO::ImageBuf small =
+      OIIO::ImageBufAlgo::resize(OIIO::ImageBuf(tetra.string()), "", 0, OIIO::ROI(0, 16, 0, 16));
+  ASSERT_TRUE(small.write(tetra.string(), OIIO::TypeDesc::UINT8));
+  const std::filesystem::path manifest = dir.path() / "golden" / "manifest.json";
+  std::string text = read_file(manifest);
+  const std::string old_hash = sha256_file_hex(kGolden / "tetra.png");
+  text.replace(text.find(old_hash), old_hash.size(), sha256_file_hex(tetra));
+  write_file_atomically(manifest, text);
+  const CliRun r = run_raygate(
+      {"golden", "verify", "tetra", "--golden-dir", "golden", "--work-dir", "work"}, dir);
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_NE(r.out.find("ERROR     tetra        tetra.png is 16x16, but the manifest lists it at"),
+            std::string::npos)
+      << r.out;
+}
+
 // Images without their manifest are not goldens nobody has: the words say the manifest is
 // missing, and do not invite a bless over pictures no one has looked at.
 TEST(GoldenCli, AMissingManifestIsSaidSo) {

@@ -65,7 +65,12 @@ std::string whole_number_problem(const std::string& text) {
   const std::size_t digits = text.find_first_not_of("+-");
   if (digits <= 1 && digits < text.size() &&
       text.find_first_not_of("0123456789", digits) == std::string::npos) {
-    return "";
+    // Past any 64-bit number (20 digits or more): CLI11's own words were "Could not convert".
+    const std::size_t significant = text.find_first_not_of('0', digits);
+    const bool huge = significant != std::string::npos && text.size() - significant > 19;
+    return huge ? fmt::format("{} is past any count raygate takes; give a smaller whole number",
+                              quoted(text))
+                : "";
   }
   long double value = 0;
   if (read_number(text, value) && text.find_first_of("xX") != std::string::npos) {

@@ -161,6 +161,9 @@ MeasureContext load_measure_context(const MeasureOptions& args,
         "--repeats applies to the alternate schedule (a duet round runs each "
         "program once)");
   }
+  for (const int cpu : args.duet_cpus) {
+    if (cpu < 0) throw UsageError(fmt::format("--duet-cpus {}: CPUs are numbered from 0", cpu));
+  }
   if (c.schedule.kind == ScheduleKind::duet &&
       (args.duet_cpus.size() != 2 || args.duet_cpus[0] == args.duet_cpus[1])) {
     throw UsageError("--duet-cpus needs two different CPUs, e.g. --duet-cpus 0,1");

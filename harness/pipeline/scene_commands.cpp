@@ -16,18 +16,19 @@ namespace {
 
 void parse_resolution(const std::string& text, scenes::GenerateOptions& options) {
   if (text.empty()) return;
-  int w = 0;
-  int h = 0;
+  long long w = 0;  // wider than a side may be, so 16x99999999999 is a side out of range
+  long long h = 0;
   char x = 0;
   std::istringstream in(text);
   if (!(in >> w >> x >> h) || x != 'x' || !in.eof()) {
     throw UsageError("--resolution: expected WIDTHxHEIGHT (e.g. 128x128), found '" + text + "'");
   }
-  if (w < 1 || h < 1) {  // 0 in the generator keeps the scene's own; given, it is a mistake
+  // 0 in the generator keeps the scene's own; given, it is a mistake.
+  if (w < 1 || h < 1 || w > 16384 || h > 16384) {
     throw UsageError(fmt::format("--resolution {}: each side must be in 1..16384", text));
   }
-  options.width = w;
-  options.height = h;
+  options.width = static_cast<int>(w);
+  options.height = static_cast<int>(h);
 }
 
 }  // namespace

@@ -329,6 +329,16 @@ TEST_F(HostileDocuments, FifthSweepNamesTooLongToReadAreTheUsers) {
   const CliRun gated = run_raygate({"gate", odd}, dir);
   EXPECT_EQ(gated.out.find('\0'), std::string::npos) << gated.out;
   EXPECT_EQ(gated.out.find('\x1b'), std::string::npos) << gated.out;
+  // Values said in CLI11's words, or a form blamed for a number out of range.
+  expect_usage_error(
+      run_raygate({"scenes", "generate", "tetra", "-s", "99999999999999999999"}, dir),
+      "is past any count raygate takes");
+  expect_usage_error(
+      run_raygate({"scenes", "generate", "tetra", "--resolution", "16x99999999999"}, dir),
+      "each side must be in 1..16384");
+  expect_usage_error(
+      run_raygate({"run", "--adapter", "make-nff", "--schedule", "duet", "--duet-cpus", "-1"}, dir),
+      "--duet-cpus -1: CPUs are numbered from 0");
   write_file_atomically(dir.path() / "notes.txt", "x");
   expect_usage_error(run_raygate({"export", "--store", "team.db", "-o", "notes.txt"}, dir),
                      "a file not named .json; export writes FILE.json, or a directory");

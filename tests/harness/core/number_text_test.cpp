@@ -56,6 +56,10 @@ TEST(NumberText, AWholeNumberIsDigitsOnly) {
     EXPECT_EQ(whole_number_problem(whole), "") << whole;
   }
   EXPECT_THAT(whole_number_problem("0x5"), HasSubstr("is hexadecimal"));  // CLI11 took it as 5
+  // The fifth sweep: 20 digits got CLI11's "Could not convert"; 19 are a 64-bit seed's.
+  EXPECT_THAT(whole_number_problem("99999999999999999999"), HasSubstr("is past any count"));
+  EXPECT_EQ(whole_number_problem("9223372036854775807"), "");
+  EXPECT_EQ(whole_number_problem("000000000000000000000042"), "");
   for (const char* not_whole : {"1e9", "2.5", "5.0", "1e0", "2x", "abc", "-", "--5"}) {
     EXPECT_THAT(whole_number_problem(not_whole), HasSubstr("is not a whole number")) << not_whole;
   }

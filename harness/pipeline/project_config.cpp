@@ -84,6 +84,11 @@ void check_values(const std::string& text, const std::filesystem::path& file) {
   std::istringstream lines(text);
   std::string line;
   for (int number = 1; std::getline(lines, line); ++number) {
+    // CLI11 ends a value at a NUL byte: `store = "a<NUL>b.db"` was the store `a`.
+    if (const std::size_t nul = line.find('\0'); nul != std::string::npos) {
+      throw UsageError(fmt::format("{}:{}:{}: a NUL byte; a config file is text", file.string(),
+                                   number, nul + 1));
+    }
     const std::size_t start = line.find_first_not_of(" \t");
     if (start == std::string::npos || line[start] == '#' || line[start] == ';' ||
         line[start] == '[') {

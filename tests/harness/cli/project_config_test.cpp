@@ -99,6 +99,9 @@ TEST(ProjectConfig, AnUnterminatedStringOrAMissingValueIsRefusedAtItsLine) {
   EXPECT_THAT(refusal("repo = \".\"\nstore = \n"), HasSubstr(file + ":2: store has no value"));
   EXPECT_THAT(refusal("store =\r\n"), HasSubstr(file + ":1: store has no value"));
   EXPECT_EQ(refusal("store = \"x.db\"  \nsuite = 'ci'\n# adapter = \"\n"), "accepted");
+  // The fifth sweep: a NUL byte cut the value short without a word.
+  EXPECT_THAT(refusal(std::string("suite = 'ci'\nstore = \"a\0b.db\"\n", 30)),
+              HasSubstr(file + ":2:11: a NUL byte"));
 }
 
 TEST(ProjectConfig, AFolderNamedAsTheConfigIsSaidToBeAFolder) {

@@ -139,6 +139,15 @@ const std::vector<BadDocument>& bad_documents() {
          j["scenes"][0]["change"]["one_look_confidence"] = 1.0;
        },
        "$.scenes[0].change.one_look_confidence", "1.0 is not a confidence level"},
+      {"a run with head's ratio", false,
+       [](json& j) { j["scenes"][0]["ratios"]["head"] = j["scenes"][0]["ratios"]["tracer"]; },
+       "$.scenes[0].ratios.head", "unknown role"},
+      {"a compare with a tracer's run", true,
+       [](json& j) {
+         j["scenes"][0]["rounds"][0]["runs"]["tracer"] =
+             j["scenes"][0]["rounds"][0]["runs"]["base"];
+       },
+       "$.scenes[0].rounds[0].runs.tracer", "unknown role"},
       {"a p-value above 1", true,
        [](json& j) { j["scenes"][0]["change"]["mann_whitney"]["p_value"] = 1.5; },
        "$.scenes[0].change.mann_whitney.p_value", "out of range"},

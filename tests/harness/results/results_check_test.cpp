@@ -142,12 +142,21 @@ const std::vector<BadDocument>& bad_documents() {
       {"a run with head's ratio", false,
        [](json& j) { j["scenes"][0]["ratios"]["head"] = j["scenes"][0]["ratios"]["tracer"]; },
        "$.scenes[0].ratios.head", "unknown role"},
-      {"a compare with a tracer's run", true,
+      {"a compare with a tracer's ratio", true,
+       [](json& j) { j["scenes"][0]["ratios"]["tracer"] = j["scenes"][0]["ratios"]["base"]; },
+       "$.scenes[0].ratios.tracer", "unknown role"},
+      {"a run with a change", false,
        [](json& j) {
-         j["scenes"][0]["rounds"][0]["runs"]["tracer"] =
-             j["scenes"][0]["rounds"][0]["runs"]["base"];
+         j["scenes"][0]["change"] = {{"rounds", 3},
+                                     {"change", 0.0},
+                                     {"change_interval", {{"lower", 0.0}, {"upper", 0.0}}},
+                                     {"log_change_median", 0.0},
+                                     {"log_change_mad_scaled", 0.0},
+                                     {"base", j["scenes"][0]["ratios"]["tracer"]},
+                                     {"head", j["scenes"][0]["ratios"]["tracer"]},
+                                     {"verdict", "UNCHANGED"}};
        },
-       "$.scenes[0].rounds[0].runs.tracer", "unknown role"},
+       "$.scenes[0].change", "has no change"},
       {"a p-value above 1", true,
        [](json& j) { j["scenes"][0]["change"]["mann_whitney"]["p_value"] = 1.5; },
        "$.scenes[0].change.mann_whitney.p_value", "out of range"},

@@ -633,21 +633,10 @@ void check_results_json(const nlohmann::json& document, const TimingModeList& mo
   word_at(baseline, "accel", {"none", "bbox"});
   word_at(baseline, "sampling", {"center", "corners"});
   check_revisions(d.member("revisions"), kind);
-  // A run measures one tracer and has no change; a compare, base and head (the fifth sweep: a
-  // run document with head's ratios or a change was read and reported as it was).
-  const bool run = kind == "run";
   const Roles roles{};
-  const std::set<Role> ratio_roles =
-      run ? std::set<Role>{Role::tracer} : std::set<Role>{Role::base, Role::head};
   std::set<std::string> ids;
   for (const JsonField& scene : array(d.member("scenes")).elements()) {
     check_scene(scene, roles);
-    for (const std::string& role : scene.member("ratios").keys()) {
-      require_role(scene.member("ratios").member(role), role, ratio_roles);
-    }
-    if (run && find_non_null(scene, "change")) {
-      scene.member("change").fail("a run measures one revision, so it has no change");
-    }
     const JsonField id = scene.member("scene").member("id");
     // A scene id names its run folders and golden files.
     if (std::string problem = component_problem(id.as_string()); !problem.empty()) {

@@ -32,41 +32,22 @@ bool write_all(int fd, std::string_view content) {
 
 }  // namespace
 
-namespace {
-
-// Where a write to `link` lands: a symlink's target (followed link by link, so a dangling one
-// names the file it will create), not the link itself, which a rename would replace by a plain
-// file. More than 40 links is a loop, as the kernel's ELOOP says.
-std::filesystem::path followed_links(const std::filesystem::path& link) {
-  std::filesystem::path path = link;
-  for (int hops = 0; hops < 40; ++hops) {
-    std::error_code ec;
-    if (!std::filesystem::is_symlink(std::filesystem::symlink_status(path, ec))) return path;
-    const std::filesystem::path target = std::filesystem::read_symlink(path, ec);
-    if (ec) throw WriteError(link, "cannot read the link: " + ec.message());
-    path = target.is_absolute() ? target : path.parent_path() / target;
-  }
-  throw WriteError(link, "too many levels of symbolic links");
-}
-
-}  // namespace
-
-void write_file_atomically(const std::filesystem::path& link_or_path, std::string_view content) {
+void write_file_atomically(const std::filesystem::path& path, std::string_view content) {
+  // A symbolic link at `path` is replaced by the file, never followed: a link planted in a
+  // repository or a shared folder cannot send raygate's write anywhere else. Outputs a user
+  // names are refused up front when they are links (pipeline/output_failures.h).
   std::error_code ec;
-  const std::filesystem::file_status existing = std::filesystem::status(link_or_path, ec);
-  if (std::filesystem::is_directory(existing)) throw WriteError(link_or_path, "it is a directory");
+  const std::filesystem::file_status existing = std::filesystem::status(path, ec);
+  if (std::filesystem::is_directory(existing)) throw WriteError(path, "it is a directory");
   if (std::filesystem::exists(existing) && !std::filesystem::is_regular_file(existing)) {
-    throw WriteError(link_or_path,
-                     "not a regular file (a device, FIFO or socket is never replaced)");
+    throw WriteError(path, "not a regular file (a device, FIFO or socket is never replaced)");
   }
-  const std::filesystem::path path = followed_links(link_or_path);
   const std::filesystem::path parent = path.parent_path().empty() ? "." : path.parent_path();
   std::filesystem::create_directories(parent, ec);
   if (ec) {
     throw WriteError(path, "cannot create directory " + parent.string() + ": " + ec.message());
   }
 
-  // "." + name + ".tmp-XXXXXX", built step by step (GCC 12 warns falsely on the one-liner).
   // A name of 244 bytes or more would make the temporary's too long for the file system (255):
   // that file is written beside it under a short name instead.
   std::string temp_name = ".";

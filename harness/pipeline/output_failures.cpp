@@ -134,19 +134,6 @@ std::string output_file_problem(const std::string& path) {
         "output",
         target.string());
   }
-  // A link is written through (core/fs.h): the folder tried is its target's, and a loop of links
-  // is said now, not after the measuring.
-  std::error_code link_error;
-  static_cast<void>(std::filesystem::status(target, link_error));  // only its error is asked
-  if (link_error == std::errc::too_many_symbolic_link_levels) {
-    return fmt::format("{} cannot be followed: {}", target.string(), link_error.message());
-  }
-  if (std::filesystem::is_symlink(std::filesystem::symlink_status(target, error))) {
-    // Its text, not weakly_canonical: that leaves a link into a file's "folder" unresolved.
-    const std::filesystem::path link = std::filesystem::read_symlink(target, error);
-    const std::filesystem::path written = link.is_absolute() ? link : target.parent_path() / link;
-    if (!error) return folder_problem(written.parent_path(), written);
-  }
   return folder_problem(target.parent_path(), target);
 }
 
@@ -160,6 +147,17 @@ std::string output_folder_problem(const std::string& path) {
 std::string output_document_problem(const std::string& path) {
   if (std::string problem = output_file_problem(path); !problem.empty()) return problem;
   if (path.empty() || path == "-") return "";
+  // Files are replaced whole, so a link would be replaced by the file, not written through (and
+  // a link planted in a repository must not send a write elsewhere): said now, with its target.
+  // A store may be a link (SQLite writes through it); a document may not.
+  std::error_code error;
+  if (std::filesystem::is_symlink(std::filesystem::symlink_status(path, error))) {
+    const std::filesystem::path link = std::filesystem::read_symlink(path, error);
+    return fmt::format(
+        "{} is a symbolic link (to {}): raygate writes a file whole and would replace the link; "
+        "name the file itself",
+        path, link.string());
+  }
   char header[16] = {};
   std::ifstream(path, std::ios::binary).read(header, sizeof header);
   if (std::string_view(header, sizeof header) == std::string_view("SQLite format 3\0", 16)) {

@@ -59,8 +59,9 @@ class OutputFailures {
 // The text names the path, not the option: a CLI11 check (cli/subcommand.h) puts that before it.
 std::string output_file_problem(const std::string& path);
 
-// output_file_problem, and for a document, report or scene: a file that is there and is an
-// SQLite database (a results store) is not replaced by one (the fifth sweep: `run --no-store -o
+// output_file_problem, and for a document, report or scene: a symbolic link is not replaced by
+// one (nor followed), and a file that is there and is an SQLite database (a results store) is not
+// replaced by one (the fifth sweep: `run --no-store -o
 // results.db` replaced a team's store after the measuring). -o and --report are checked with it.
 std::string output_document_problem(const std::string& path);
 

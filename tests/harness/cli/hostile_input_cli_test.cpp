@@ -317,6 +317,14 @@ TEST_F(HostileDocuments, FifthSweepNamesTooLongToReadAreTheUsers) {
   expect_usage_error(run_raygate({"scenes", "generate", "tetra", "-o", "team.db"}, dir),
                      "is an SQLite database");
   EXPECT_EQ(read_file(dir.path() / "team.db"), store);
+  // An output named by a link: refused, the link and its target as they were (a link planted in
+  // a tracer's repository must not send a report over another file).
+  write_file_atomically(dir.path() / "keep.txt", "kept");
+  fs::create_symlink(dir.path() / "keep.txt", dir.path() / "latest.md");
+  expect_usage_error(run_raygate({"report", run, "-o", "latest.md"}, dir),
+                     "latest.md is a symbolic link (to ");
+  EXPECT_TRUE(fs::is_symlink(dir.path() / "latest.md"));
+  EXPECT_EQ(read_file(dir.path() / "keep.txt"), "kept");
   // gate printed a document's control bytes (a NUL, an escape) as they were; report escaped them.
   const std::string odd = document("odd.json", [](json& j) {
     for (json& revision : j["revisions"]) revision["worktree"]["subject"] = "x\u0000\u001b[2Jy";

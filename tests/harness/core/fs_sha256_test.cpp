@@ -89,28 +89,17 @@ TEST(Fs, ANodeThatIsNotARegularFileIsNeverReplaced) {
   EXPECT_THROW(write_file_atomically(dir.path(), "x"), WriteError);  // a directory
 }
 
-TEST(Fs, ASymlinkIsWrittenThroughAndStaysALink) {
-  // `-o latest.json` where latest.json links to the real file: the file gets the content and the
-  // link stays a link (a rename over the link would have replaced it by a plain file). A dangling
-  // link names the file to create, a relative target is read from the link's folder, and a loop
-  // is a WriteError, not a hang.
+TEST(Fs, ASymlinkIsReplacedNeverFollowed) {
+  // A link planted where raygate writes (a repository's `results.json -> ~/.bashrc`) must not
+  // send the write to its target: the link is replaced by the file, and the target stays as it
+  // was. (Outputs a user names are refused up front when they are links.)
   TempDir dir;
-  std::filesystem::create_directory(dir.path() / "runs");
-  write_file_atomically(dir.path() / "runs" / "real.json", "old");
-  std::filesystem::create_symlink("runs/real.json", dir.path() / "latest.json");
-  write_file_atomically(dir.path() / "latest.json", "new");
-  EXPECT_TRUE(std::filesystem::is_symlink(dir.path() / "latest.json"));
-  EXPECT_EQ(read_file(dir.path() / "runs" / "real.json"), "new");
-
-  std::filesystem::create_symlink("runs/later.json", dir.path() / "dangling.json");
-  write_file_atomically(dir.path() / "dangling.json", "made");
-  EXPECT_TRUE(std::filesystem::is_symlink(dir.path() / "dangling.json"));
-  EXPECT_EQ(read_file(dir.path() / "runs" / "later.json"), "made");
-
-  std::filesystem::create_symlink("loop-b", dir.path() / "loop-a");
-  std::filesystem::create_symlink("loop-a", dir.path() / "loop-b");
-  EXPECT_THROW(write_file_atomically(dir.path() / "loop-a", "x"), WriteError);
-  EXPECT_TRUE(std::filesystem::is_symlink(dir.path() / "loop-a"));
+  write_file_atomically(dir.path() / "target.txt", "kept");
+  std::filesystem::create_symlink(dir.path() / "target.txt", dir.path() / "results.json");
+  write_file_atomically(dir.path() / "results.json", "new");
+  EXPECT_FALSE(std::filesystem::is_symlink(dir.path() / "results.json"));
+  EXPECT_EQ(read_file(dir.path() / "results.json"), "new");
+  EXPECT_EQ(read_file(dir.path() / "target.txt"), "kept");
 }
 
 // The fifth sweep: names of 244 to 255 bytes passed the up-front check and failed at the write,

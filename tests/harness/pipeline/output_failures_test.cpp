@@ -123,17 +123,18 @@ TEST(OutputFailures, PathsThatCannotBeWrittenAreNamedBeforeAnyWork) {
   EXPECT_EQ(output_file_problem(file.string()), "");
   EXPECT_EQ(output_file_problem("-"), "");
   EXPECT_EQ(output_file_problem(""), "");
-  // A link is written through: a loop of links is said now, a link into a folder that cannot be
-  // written is tried there, and a link to a file that can be is fine.
+  // A document named by a link is refused (written whole, it would replace the link; followed,
+  // a link planted in a repository would send it anywhere), loops and links to files alike. A
+  // store may be a link: SQLite writes through it.
   std::filesystem::create_symlink("loop-b", dir.path() / "loop-a");
   std::filesystem::create_symlink("loop-a", dir.path() / "loop-b");
-  EXPECT_THAT(output_file_problem((dir.path() / "loop-a").string()),
-              HasSubstr("loop-a cannot be followed"));
-  std::filesystem::create_symlink(file / "r.md", dir.path() / "into-a-file");
-  EXPECT_THAT(output_file_problem((dir.path() / "into-a-file").string()),
-              HasSubstr("is not a directory"));
+  EXPECT_THAT(output_document_problem((dir.path() / "loop-a").string()),
+              HasSubstr("loop-a is a symbolic link (to loop-b)"));
   std::filesystem::create_symlink(file, dir.path() / "to-a-file");
+  EXPECT_THAT(output_document_problem((dir.path() / "to-a-file").string()),
+              HasSubstr("would replace the link; name the file itself"));
   EXPECT_EQ(output_file_problem((dir.path() / "to-a-file").string()), "");
+  EXPECT_EQ(output_document_problem(file.string()), "");
   EXPECT_EQ(output_folder_problem((dir.path() / "new" / "work").string()), "");
   EXPECT_EQ(output_folder_problem(dir.path().string()), "");
   EXPECT_THROW(check_output_folder(file, "--work-dir"), UsageError);

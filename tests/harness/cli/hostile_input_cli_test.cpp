@@ -328,10 +328,10 @@ TEST_F(HostileDocuments, FifthSweepNamesTooLongToReadAreTheUsers) {
   // gate printed a document's control bytes (a NUL, an escape) as they were; report escaped them.
   const std::string odd = document("odd.json", [](json& j) {
     for (json& revision : j["revisions"]) revision["worktree"]["subject"] = "x\u0000\u001b[2Jy";
-    json run = j["scenes"][0]["rounds"][0]["runs"]["tracer"];
-    run["ok"] = false;
-    run["outcome"] = "a\u0000\u001b[2Jb";
-    j["scenes"][0]["failure"] = {{"role", "tracer"}, {"run", run}};
+    json failed = j["scenes"][0]["rounds"][0]["runs"]["tracer"];
+    failed["ok"] = false;
+    failed["outcome"] = "a\u0000\u001b[2Jb";
+    j["scenes"][0]["failure"] = {{"role", "tracer"}, {"run", failed}};
     j["scenes"][0]["status"] = "failed";
   });
   const CliRun gated = run_raygate({"gate", odd}, dir);

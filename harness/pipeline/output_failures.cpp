@@ -234,15 +234,16 @@ std::string shortened(const std::filesystem::path& path) {
 }  // namespace
 
 FilesystemFailure filesystem_failure(const std::filesystem::filesystem_error& error) {
-  const bool too_long = error.code() == std::errc::filename_too_long;
-  std::string message = too_long ? "a path is too long for the file system (a name has at most "
-                                   "255 bytes): " +
-                                       shortened(error.path1())
-                                 : std::string(error.what());
-  if (!too_long && (error.path1().native().size() > 200 || error.path2().native().size() > 200)) {
-    message = fmt::format("{} [{}]", error.code().message(), shortened(error.path1()));
+  if (error.code() == std::errc::filename_too_long) {
+    return {to_int(ExitCode::usage),
+            "a path is too long for the file system (a name has at most 255 bytes): " +
+                shortened(error.path1())};
   }
-  return {too_long ? to_int(ExitCode::usage) : to_int(ExitCode::infrastructure), message};
+  const bool long_paths =
+      error.path1().native().size() > 200 || error.path2().native().size() > 200;
+  return {to_int(ExitCode::infrastructure),
+          long_paths ? fmt::format("{} [{}]", error.code().message(), shortened(error.path1()))
+                     : std::string(error.what())};
 }
 
 }  // namespace raygate

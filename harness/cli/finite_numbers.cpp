@@ -21,6 +21,7 @@ void refuse_empty_and_non_finite_values(CLI::App& app) {
     if (type.rfind("INT", 0) == 0 || type.rfind("UINT", 0) == 0) option->check(whole);
     if (type.rfind("FLOAT", 0) != 0) continue;
     option->check(finite);  // after any range check, which NaN passes and infinity fails
+    option->check(CLI::Validator(padded_number_problem, "", ""));
   }
   for (CLI::App* command : app.get_subcommands([](CLI::App*) { return true; })) {
     refuse_empty_and_non_finite_values(*command);

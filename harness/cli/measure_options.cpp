@@ -44,9 +44,8 @@ void add_schedule_options(CLI::App& command, MeasureArgs& args) {
   command.add_flag("--no-idle-poll", args.no_idle_poll,
                    "let idle CPUs sleep (by default they poll while raygate measures, "
                    "/dev/cpu_dma_latency: a CPU woken from sleep runs slow)");
-  command.add_option("--duet-cpus", args.duet_cpus, "the two CPUs of the duet schedule")
-      ->delimiter(',')
-      ->capture_default_str();
+  command.add_option("--duet-cpus", args.duet_cpus, "the two CPUs of the duet schedule (0,1)")
+      ->delimiter(',');
   add_bounded_option(command, "--warmup", args.warmup, 0, 10,
                      "untimed runs per program before the rounds");
   command.add_option("--timing", args.metric, timing_choices_help())

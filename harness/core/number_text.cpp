@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -36,10 +37,17 @@ std::string non_finite_problem(const std::string& text) {
   return "";
 }
 
+std::string padded_number_problem(const std::string& text) {
+  const auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  if (text.empty() || (!space(text.front()) && !space(text.back()))) return "";
+  return quoted(text) + " has space around the number; give the number alone";
+}
+
 std::string number_problem(const std::string& text, bool whole, double lowest, double highest) {
   const std::string kind = whole ? "a whole number" : "a number";
   const std::string wanted = fmt::format("give {} from {} to {}", kind, lowest, highest);
   if (text.empty()) return fmt::format("the value is empty; {}", wanted);
+  if (const std::string problem = padded_number_problem(text); !problem.empty()) return problem;
   long double value = 0;
   if (!read_number(text, value)) return fmt::format("{} is not {}; {}", quoted(text), kind, wanted);
   if (text.find_first_of("xX") != std::string::npos) {

@@ -13,6 +13,10 @@ namespace raygate {
 // itself); else why it is not finite ("nan", "inf", "1e999").
 std::string non_finite_problem(const std::string& text);
 
+// "" unless `text` begins or ends with white space (" 5", "5\n"); strtold skips leading space, so
+// a decimal option took " 5" while a count refused it.
+std::string padded_number_problem(const std::string& text);
+
 // "" when `text` is a decimal number within [lowest, highest] (a whole one, in digits only, when
 // `whole`); else
 // what is wrong with it: empty, not a number, hexadecimal, not finite, not whole, or out of range,

@@ -20,8 +20,14 @@ namespace {
 // mean the current directory or the default) or when it names a file.
 void check_folder_option(const std::string& option, const std::filesystem::path& folder) {
   if (folder.empty()) throw UsageError(fmt::format("{} is empty: give a directory", option));
-  if (std::error_code error;
-      std::filesystem::exists(folder, error) && !std::filesystem::is_directory(folder, error)) {
+  std::error_code error;
+  const bool exists = std::filesystem::exists(folder, error);
+  // Found only after the build before, when the first golden was read.
+  if (error == std::errc::filename_too_long) {
+    throw UsageError(fmt::format(
+        "{}: the path is too long for the file system (a name has at most 255 bytes)", option));
+  }
+  if (exists && !std::filesystem::is_directory(folder, error)) {
     throw UsageError(fmt::format("{} {}: exists and is not a directory", option, folder.string()));
   }
 }
@@ -100,6 +106,26 @@ std::vector<int> default_round_cpus(const MeasureOptions& args, const MeasureCon
   return allowed_cpu_list();
 }
 
+// The duet's two CPUs, 0 and 1 unless given. Given to the alternate schedule, they would go unused
+// while the user believed the programs ran there.
+std::vector<int> duet_cpus(const MeasureOptions& args, ScheduleKind kind) {
+  if (kind != ScheduleKind::duet) {
+    if (!args.duet_cpus.empty()) {
+      throw UsageError(
+          "--duet-cpus applies to the duet schedule; add --schedule duet, or leave it out");
+    }
+    return {0, 1};  // recorded in settings as before; no run uses them
+  }
+  if (args.duet_cpus.empty()) return {0, 1};
+  for (const int cpu : args.duet_cpus) {
+    if (cpu < 0) throw UsageError(fmt::format("--duet-cpus {}: CPUs are numbered from 0", cpu));
+  }
+  if (args.duet_cpus.size() != 2 || args.duet_cpus[0] == args.duet_cpus[1]) {
+    throw UsageError("--duet-cpus needs two different CPUs, e.g. --duet-cpus 0,1");
+  }
+  return args.duet_cpus;
+}
+
 // CPUs named on the command line must be ones raygate may run on: another number fails every
 // run's sched_setaffinity, which would read as the tracer not running (exit 3), not as the
 // option's mistake.
@@ -119,7 +145,7 @@ void check_named_cpus(const MeasureOptions& args, ScheduleKind kind) {
     }
   };
   check("--pin", args.pin_cpus);
-  if (kind == ScheduleKind::duet) check("--duet-cpus", args.duet_cpus);
+  if (kind == ScheduleKind::duet) check("--duet-cpus", duet_cpus(args, kind));
   // A duet places its programs on --duet-cpus: a --pin beside it would be silently not used.
   if (kind == ScheduleKind::duet && !args.pin_cpus.empty()) {
     throw UsageError("--pin applies to the alternate schedule; a duet runs on --duet-cpus");
@@ -150,7 +176,7 @@ MeasureContext load_measure_context(const MeasureOptions& args,
   c.schedule.kind = args.schedule == "duet" ? ScheduleKind::duet : ScheduleKind::alternate;
   c.schedule.warmup_runs = args.warmup;
   c.schedule.pin_cpus = args.pin_cpus;
-  c.schedule.duet_cpus = args.duet_cpus;
+  c.schedule.duet_cpus = duet_cpus(args, c.schedule.kind);
   c.schedule.round_cpus = default_round_cpus(args, c);
   c.schedule.normalizer_rounds = args.baseline_rounds;
   c.schedule.repeats = std::max<std::size_t>(args.repeats, 1);
@@ -160,13 +186,6 @@ MeasureContext load_measure_context(const MeasureOptions& args,
     throw UsageError(
         "--repeats applies to the alternate schedule (a duet round runs each "
         "program once)");
-  }
-  for (const int cpu : args.duet_cpus) {
-    if (cpu < 0) throw UsageError(fmt::format("--duet-cpus {}: CPUs are numbered from 0", cpu));
-  }
-  if (c.schedule.kind == ScheduleKind::duet &&
-      (args.duet_cpus.size() != 2 || args.duet_cpus[0] == args.duet_cpus[1])) {
-    throw UsageError("--duet-cpus needs two different CPUs, e.g. --duet-cpus 0,1");
   }
   check_named_cpus(args, c.schedule.kind);
   c.stopping = args.stopping;

@@ -30,7 +30,7 @@ struct MeasureOptions {
   // Runs of each contender per round, the fastest kept; 0 (not given): one, and compare's second
   // pass repeats where it pays (MeasureContext::repeat_where_it_pays).
   std::size_t repeats = 0;
-  std::vector<int> duet_cpus{0, 1};
+  std::vector<int> duet_cpus;  // --duet-cpus; none given: 0,1 (refused with --schedule alternate)
   int warmup = 1;
   StoppingPolicy stopping;  // --target, --min-rounds, ...; its defaults are the policy's own
   std::string metric;       // --timing: "" (the adapter's) or a mode's name (runner/timing/)

@@ -20,7 +20,9 @@ void parse_resolution(const std::string& text, scenes::GenerateOptions& options)
   long long h = 0;
   char x = 0;
   std::istringstream in(text);
-  if (!(in >> w >> x >> h) || x != 'x' || !in.eof()) {
+  // >> skips space, so " 10x10" and "10 x 10" read as 10x10.
+  const bool spaced = text.find_first_of(" \t\n\r\v\f") != std::string::npos;
+  if (spaced || !(in >> w >> x >> h) || x != 'x' || !in.eof()) {
     throw UsageError("--resolution: expected WIDTHxHEIGHT (e.g. 128x128), found '" + text + "'");
   }
   // 0 in the generator keeps the scene's own; given, it is a mistake.

@@ -518,6 +518,19 @@ void check_build(const JsonField& b) {
   }
 }
 
+// What checkout records (checkout/describe.cpp, uncommitted.cpp): a commit's id, 40 hex digits
+// (64 in a SHA-256 repository), or "uncommitted". History, consistency and the HTML trend's marks
+// match revisions by it, so "zzzz" would match nothing and say nothing.
+void check_commit_id(const JsonField& sha) {
+  const std::string text = sha.as_string();
+  if (text == "uncommitted") return;
+  const bool hex = text.find_first_not_of("0123456789abcdef") == std::string::npos;
+  if (!hex || (text.size() != 40 && text.size() != 64)) {
+    sha.fail(fmt::format("\"{}\" is not a commit id (40 or 64 hex digits) or \"uncommitted\"",
+                         text.substr(0, 80)));
+  }
+}
+
 void check_revision(const JsonField& r) {
   object(r);
   check_strings(r, {"repository"});
@@ -525,6 +538,7 @@ void check_revision(const JsonField& r) {
   const JsonField w = object(r.member("worktree"));
   check_strings(w, {"path", "revision", "ref_name", "sha", "short_sha", "subject", "author"});
   check_timestamps(w, {"commit_time"});
+  check_commit_id(w.member("sha"));
   w.member("dirty").as_bool();
   const JsonField adapter = object(r.member("adapter"));
   check_strings(adapter, {"name", "hash", "file"});

@@ -352,6 +352,36 @@ TEST_F(HostileDocuments, FifthSweepNamesTooLongToReadAreTheUsers) {
                      "a file not named .json; export writes FILE.json, or a directory");
 }
 
+// The fifth sweep's leftovers: a decimal option took " 5" where a count refused it, --duet-cpus
+// without the duet went unused, a 300-byte --golden-dir was found after the build, and a
+// revision's commit id "zzzz" was read (history and the trend marks match revisions by it).
+TEST_F(HostileDocuments, FifthSweepLeftoversAreRefusedBeforeAnythingRuns) {
+  const std::vector<std::string> run = {"run", "--adapter", "make-nff", "--no-store"};
+  const auto with = [&run](std::vector<std::string> extra) {
+    extra.insert(extra.begin(), run.begin(), run.end());
+    return extra;
+  };
+  expect_usage_error(run_raygate(with({"--max-seconds", " 5"}), dir),
+                     "--max-seconds: \" 5\" has space around the number");
+  expect_usage_error(run_raygate(with({"--target", "0.5 "}), dir), "has space around");
+  expect_usage_error(run_raygate({"scenes", "generate", "tetra", "--resolution", " 10x10"}, dir),
+                     "expected WIDTHxHEIGHT");
+  expect_usage_error(run_raygate(with({"--duet-cpus", "0,1"}), dir),
+                     "--duet-cpus applies to the duet schedule");
+  expect_usage_error(run_raygate(with({"--golden-dir", std::string(300, 'g')}), dir),
+                     "--golden-dir: the path is too long for the file system");
+  const std::string odd =
+      document("sha.json", [](json& j) { j["revisions"][0]["worktree"]["sha"] = "zzzz"; });
+  for (const char* command : {"gate", "report"}) {
+    expect_usage_error(run_raygate({command, odd}, dir),
+                       "worktree.sha: \"zzzz\" is not a commit id");
+  }
+  const std::string uncommitted = document("mine.json", [](json& j) {
+    j["revisions"][0]["worktree"]["sha"] = "uncommitted";
+  });
+  EXPECT_EQ(run_raygate({"gate", uncommitted}, dir).exit_code, 0);
+}
+
 TEST_F(HostileDocuments, FourthSweepInputsAreNotOverwrittenAndPlacesAreTried) {
   const std::string run = document("run.json", [](json&) {});
   write_file_atomically(dir.path() / "policy.json", "{}");

@@ -65,6 +65,17 @@ TEST(NumberText, AWholeNumberIsDigitsOnly) {
   }
 }
 
+TEST(NumberText, SpaceAroundANumberIsNamed) {
+  // strtold skips leading space: " 5" was taken by a decimal option and refused by a count.
+  EXPECT_EQ(padded_number_problem("5"), "");
+  EXPECT_EQ(padded_number_problem(""), "");
+  EXPECT_EQ(padded_number_problem(" 5"),
+            "\" 5\" has space around the number; give the number alone");
+  EXPECT_THAT(padded_number_problem("5\n"), HasSubstr("has space around"));
+  EXPECT_THAT(number_problem(" 0.5", false, 0, 1), HasSubstr("has space around"));
+  EXPECT_THAT(number_problem("\t3", true, 1, 10), HasSubstr("has space around"));
+}
+
 TEST(NumberText, NonFiniteProblemLeavesOtherTextToTheParser) {
   EXPECT_EQ(non_finite_problem("1.5"), "");
   EXPECT_EQ(non_finite_problem("abc"), "");

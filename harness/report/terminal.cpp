@@ -42,7 +42,47 @@ void Console::warning(const std::string& text) const {
 
 void Console::problem(const std::string& text) const { std::fputs(text.c_str(), stderr); }
 
+namespace {
+
+// The byte at or before `at` where a UTF-8 character starts: a cut inside one would leave bytes
+// no terminal can show.
+std::size_t character_start(const std::string& text, std::size_t at) {
+  while (at > 0 && (static_cast<unsigned char>(text[at]) & 0xC0) == 0x80) --at;
+  return at;
+}
+
+// Each word (a run without white space) over 240 bytes shown by its ends and its length: such a
+// word is a path or a pasted value, and a 6,000-byte path once filled the error line. Its ends
+// are what tell a user which one it was.
+std::string shortened_long_words(const std::string& text) {
+  constexpr std::size_t kLongest = 240;
+  constexpr std::size_t kEnd = 100;
+  std::string out;
+  std::size_t at = 0;
+  while (at < text.size()) {
+    const std::size_t end = std::min(text.find_first_of(" \t\n", at), text.size());
+    const std::size_t length = end - at;
+    if (length <= kLongest) {
+      out.append(text, at, length);
+    } else {
+      // "PATH: reason": the colon follows the length, as it followed the path.
+      const std::size_t last =
+          std::string_view(":;,").find(text[end - 1]) != std::string::npos ? end - 1 : end;
+      const std::size_t head_end = character_start(text, at + kEnd);
+      const std::size_t tail_start = character_start(text, last - kEnd);
+      out += text.substr(at, head_end - at) + "…" + text.substr(tail_start, last - tail_start) +
+             fmt::format(" ({} bytes)", last - at) + text.substr(last, end - last);
+    }
+    if (end < text.size()) out += text[end];
+    at = end + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
 std::string bounded_message(std::string text) {
+  text = shortened_long_words(text);
   constexpr std::size_t kMaxChars = 16 * 1024;
   if (text.size() <= kMaxChars) return text;
   const std::size_t cut = text.size() - kMaxChars;

@@ -52,7 +52,8 @@ class Console final : public MessageSink {
 
 // A message cut to a length a CI log and a terminal stay readable at: what a user pasted (a
 // 100,000-character --rev, a value for a number) is echoed back only as far as it helps. Long
-// enough for any message raygate itself composes (a build's log tail included).
+// enough for any message raygate itself composes (a build's log tail included). A word of over
+// 240 bytes (a path) is shown by its first and last 100 and its length.
 std::string bounded_message(std::string text);
 
 // A command-line parser's words where a user stops at them: CLI11's "--x: At Most 1 required but

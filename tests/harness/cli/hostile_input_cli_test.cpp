@@ -376,9 +376,8 @@ TEST_F(HostileDocuments, FifthSweepLeftoversAreRefusedBeforeAnythingRuns) {
     expect_usage_error(run_raygate({command, odd}, dir),
                        "worktree.sha: \"zzzz\" is not a commit id");
   }
-  const std::string uncommitted = document("mine.json", [](json& j) {
-    j["revisions"][0]["worktree"]["sha"] = "uncommitted";
-  });
+  const std::string uncommitted =
+      document("mine.json", [](json& j) { j["revisions"][0]["worktree"]["sha"] = "uncommitted"; });
   EXPECT_EQ(run_raygate({"gate", uncommitted}, dir).exit_code, 0);
 }
 

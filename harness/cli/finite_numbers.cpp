@@ -8,8 +8,7 @@ void refuse_empty_and_non_finite_values(CLI::App& app) {
   // A check per option rather than one on the App: CLI11 names the option in the error it
   // throws for a failed check ("--max-minutes: ..."), and a value from raygate.toml or
   // RAYGATE_* passes the same checks when it becomes the option's default.
-  // No description: --help's "FLOAT in [0 - 1e6]" already says it.
-  const CLI::Validator finite(non_finite_problem, "", "FINITE");
+  const CLI::Validator finite(non_finite_problem, "", "FINITE");  // --help says "FLOAT in [..]"
   // `golden verify --golden-dir ''` checked the shipped goldens, which bless would overwrite.
   const CLI::Validator given(empty_value_problem, "", "");
   const CLI::Validator whole(whole_number_problem, "", "");

@@ -445,10 +445,18 @@ void check_scene_entry(const JsonField& entry) {
 // and, for runs, the baseline's too. Any of the words, not only the document's own revisions:
 // documents merged or written by older versions mix them, and a word raygate does not know is
 // what would mislead a reader.
+// The roles a document of its kind measures: a run the tracer, a compare base and head, both
+// beside the baseline. A run carrying head's ratios or a change was hand-made, and each reader
+// would pick what it looks for out of it.
 struct Roles {
-  std::set<Role> revisions{Role::tracer, Role::base, Role::head};
-  std::set<Role> runs{Role::tracer, Role::base, Role::head, Role::baseline};
+  std::set<Role> revisions;
+  std::set<Role> runs;
 };
+
+Roles roles_of(const std::string& kind) {
+  if (kind == "run") return {{Role::tracer}, {Role::tracer, Role::baseline}};
+  return {{Role::base, Role::head}, {Role::base, Role::head, Role::baseline}};
+}
 
 void check_rounds(const JsonField& rounds, const Roles& roles) {
   for (const JsonField& round : array(rounds).elements()) {
@@ -496,7 +504,10 @@ void check_scene(const JsonField& s, const Roles& roles) {
     check_ratio(ratios.member(role));
   }
   s.member("change");  // required, even when null
-  if (const auto change = find_non_null(s, "change")) check_change(*change);
+  if (const auto change = find_non_null(s, "change")) {
+    if (roles.revisions.count(Role::head) == 0) change->fail("a run document has no change");
+    check_change(*change);
+  }
   for (const JsonField& image : array(s.member("images")).elements()) {
     check_image(image, roles.revisions);
   }
@@ -647,7 +658,7 @@ void check_results_json(const nlohmann::json& document, const TimingModeList& mo
   word_at(baseline, "accel", {"none", "bbox"});
   word_at(baseline, "sampling", {"center", "corners"});
   check_revisions(d.member("revisions"), kind);
-  const Roles roles{};
+  const Roles roles = roles_of(kind);
   std::set<std::string> ids;
   for (const JsonField& scene : array(d.member("scenes")).elements()) {
     check_scene(scene, roles);

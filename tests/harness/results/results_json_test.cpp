@@ -1,6 +1,7 @@
 // The results document's JSON form: a full document (rounds, a failure, image checks with an
 // infinite PSNR, ratios, a change, scores) survives to_json -> results_from_json field by field;
 // newer or broken documents are UsageErrors naming the file; write_results replaces atomically.
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <limits>
@@ -14,6 +15,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using ::testing::HasSubstr;
 
 RunRecord make_run(double seconds, const std::string& dir) {
   RunRecord run;
@@ -117,10 +119,10 @@ SceneResult failed_scene() {
   s.images[0].verdict = ImageVerdict::fail;
   s.images[0].metrics = make_metrics(false);
   s.images[0].evidence = {"/e/tetra.actual.png", "/e/tetra.expected.png", "/e/tetra.diff.png"};
-  s.images.push_back(ImageCheck{Role::head,
-                                ImageReference::base,
+  s.images.push_back(ImageCheck{Role::tracer,
+                                ImageReference::golden,
                                 "/h.png",
-                                "/b.png",
+                                "/g/tetra-small.png",
                                 ImageVerdict::error,
                                 "cannot read /h.png",
                                 std::nullopt,
@@ -129,10 +131,32 @@ SceneResult failed_scene() {
   return s;
 }
 
-// A compare scene: three roles and the change of head against base.
+// A compare scene: three roles and the change of head against base, head's image read
+// against base's.
 SceneResult compared_scene() {
   SceneResult s = measured_scene();
   s.entry.id = "gears";
+  const auto as_compare = [](std::map<std::string, RunRecord>& runs) {
+    runs["base"] = runs.at("tracer");
+    runs["head"] = runs.at("tracer");
+    runs.erase("tracer");
+  };
+  for (Round& round : s.runs.rounds) {
+    as_compare(round.runs);
+    round.order = {"baseline", "base", "head"};
+  }
+  s.runs.warmup["base"] = s.runs.warmup.at("tracer");
+  s.runs.warmup.erase("tracer");
+  s.ratios.clear();
+  s.images = {ImageCheck{Role::head,
+                         ImageReference::base,
+                         "/h.png",
+                         "/b.png",
+                         ImageVerdict::error,
+                         "cannot read /h.png",
+                         std::nullopt,
+                         {},
+                         std::nullopt}};
   ChangeSummary c;
   c.rounds = 2;
   c.change = 0.0625;
@@ -147,6 +171,8 @@ SceneResult compared_scene() {
   c.log_change_mad_scaled = 0.01;
   c.base = make_ratio(0.5);
   c.head = make_ratio(0.53125);
+  s.ratios[Role::base] = c.base;
+  s.ratios[Role::head] = c.head;
   c.mann_whitney = {3.0, 1.5, 0.125};
   s.change = c;
   s.change_verdict = ChangeVerdict::regressed;
@@ -196,8 +222,23 @@ ResultsDocument full_document() {
   r.adapter_file = "/adapters/make-nff.json";
   r.build = make_build();
   d.revisions.push_back(r);
-  d.scenes = {measured_scene(), failed_scene(), compared_scene()};
+  d.scenes = {measured_scene(), failed_scene()};
   d.scores[Role::tracer] = SuiteScore{2, 0.5, {0.48, 0.52}};
+  return d;
+}
+
+// The run document as a compare of two revisions: base and head where it had the tracer, and a
+// third scene with the change of head against base.
+ResultsDocument compare_document() {
+  ResultsDocument d = full_document();
+  d.kind = DocumentKind::compare;
+  d.revisions.push_back(d.revisions[0]);
+  d.revisions[0].role = Role::base;
+  d.revisions[1].role = Role::head;
+  d.scenes = {compared_scene()};
+  d.scores.clear();
+  d.scores[Role::base] = SuiteScore{1, 0.5, {0.48, 0.52}};
+  d.scores[Role::head] = SuiteScore{1, 0.53125, {0.5, 0.56}};
   return d;
 }
 
@@ -355,16 +396,33 @@ std::string usage_error(const json& document) {
 // --- tests -------------------------------------------------------------------------------------
 
 TEST(ResultsJson, FullDocumentSurvivesTheRoundTrip) {
-  const ResultsDocument original = full_document();
-  expect_same(original, results_from_json(to_json(original), "memory"));
+  for (const ResultsDocument& original : {full_document(), compare_document()}) {
+    expect_same(original, results_from_json(to_json(original), "memory"));
+  }
 }
 
 TEST(ResultsJson, RoundTripThroughTextIsExact) {
-  const ResultsDocument original = full_document();
-  const std::string text = to_json(original).dump(1);
-  const ResultsDocument back = results_from_json(json::parse(text), "memory");
-  expect_same(original, back);
-  EXPECT_EQ(to_json(back).dump(1), text);
+  for (const ResultsDocument& original : {full_document(), compare_document()}) {
+    const std::string text = to_json(original).dump(1);
+    const ResultsDocument back = results_from_json(json::parse(text), "memory");
+    expect_same(original, back);
+    EXPECT_EQ(to_json(back).dump(1), text);
+  }
+}
+
+// Each document measures the roles of its kind: head's ratios or a change in a run document, or
+// the tracer's in a compare, were hand-made, and each reader picked out what it looked for.
+TEST(ResultsJson, ADocumentCarriesOnlyTheRolesOfItsKind) {
+  json run = to_json(full_document());
+  run["scenes"][0]["ratios"]["head"] = run["scenes"][0]["ratios"]["tracer"];
+  EXPECT_THAT(usage_error(run), HasSubstr("$.scenes[0].ratios.head: unknown role \"head\""));
+  run = to_json(full_document());
+  run["scenes"][0]["change"] = to_json(compare_document())["scenes"][0]["change"];
+  EXPECT_THAT(usage_error(run), HasSubstr("$.scenes[0].change: a run document has no change"));
+  json compare = to_json(compare_document());
+  compare["scenes"][0]["rounds"][0]["runs"]["tracer"] =
+      compare["scenes"][0]["rounds"][0]["runs"]["base"];
+  EXPECT_THAT(usage_error(compare), HasSubstr("unknown role \"tracer\""));
 }
 
 TEST(ResultsJson, InfinitePsnrIsWrittenAsNullAndReadBackAsInfinity) {
@@ -398,13 +456,13 @@ TEST(ResultsJson, FailureIsStoredWithItsRoleAndRun) {
 }
 
 TEST(ResultsJson, ChangeIntervalKindIsCheckedAndDefaultsForOldDocuments) {
-  json j = to_json(full_document());
-  json& change = j["scenes"][2]["change"];
+  json j = to_json(compare_document());
+  json& change = j["scenes"][0]["change"];
   EXPECT_EQ(change["interval_kind"], "confidence-sequence");
   change["interval_kind"] = "bootstrap";
   const std::string message = usage_error(j);
   EXPECT_NE(message.find("shard-7.json"), std::string::npos) << message;
-  EXPECT_NE(message.find("$.scenes[2].change.interval_kind: unknown value \"bootstrap\""),
+  EXPECT_NE(message.find("$.scenes[0].change.interval_kind: unknown value \"bootstrap\""),
             std::string::npos)
       << message;
   // A document from before the sequences: no kind, no extra intervals, the one-look rule.
@@ -413,7 +471,7 @@ TEST(ResultsJson, ChangeIntervalKindIsCheckedAndDefaultsForOldDocuments) {
     change.erase(key);
   }
   const ResultsDocument old = results_from_json(j, "old.json");
-  EXPECT_EQ(old.scenes[2].change->interval_kind, ChangeIntervalKind::order_statistic);
+  EXPECT_EQ(old.scenes[0].change->interval_kind, ChangeIntervalKind::order_statistic);
 }
 
 TEST(ResultsJson, AnUnknownImageVerdictIsAUsageErrorNamingTheField) {

@@ -25,6 +25,9 @@ struct GoldenEntry {
   std::string accel;
   std::string file;    // relative to the golden directory
   std::string sha256;  // of the image file's bytes
+  // Set only on the entry describing what a measurement renders (not written in a manifest,
+  // which names its suite once): a manifest of that same suite whose entry differs was edited.
+  std::string rendering_suite;
 };
 
 // A Monte Carlo tracer's golden (docs/monte-carlo-images.md): the entry's file is the per-pixel

@@ -141,6 +141,24 @@ ImageCheck check_image(Role role, ImageReference reference, const std::filesyste
 
 namespace {
 
+// A manifest of the suite being measured whose entry is not what bless wrote for it (another
+// size, resolution, sampling or accel: edited): its golden cannot be trusted to judge, and an
+// edit must not switch the check off as a golden of another suite is (docs/gate.md).
+std::optional<std::string> edited_entry(const std::filesystem::path& golden_dir,
+                                        const GoldenManifest& manifest,
+                                        const GoldenEntry& rendered) {
+  const GoldenEntry* entry = manifest.find(rendered.id);
+  if (entry == nullptr || rendered.rendering_suite.empty() ||
+      manifest.suite != rendered.rendering_suite || same_settings(*entry, rendered)) {
+    return std::nullopt;
+  }
+  return fmt::format(
+      "{}: the entry of '{}' is {}, but suite {} renders {} (edited after bless?); bless it "
+      "again after looking at it",
+      (golden_dir / "manifest.json").string(), rendered.id, describe_settings(*entry),
+      manifest.suite, describe_settings(rendered));
+}
+
 // Why no golden of `manifest` judges the image of `rendered` (the same words for every scene of
 // an empty set), or nullopt when one does.
 std::optional<std::string> no_golden(const std::filesystem::path& golden_dir,
@@ -166,6 +184,7 @@ struct GoldenLookup {
   std::optional<std::string> missing;  // why no golden judges the image; nullopt when one does
   std::string stem;                    // of the evidence files: <scene>.<role>-vs-golden
   const GoldenEntry* entry = nullptr;  // set when it is not missing
+  std::optional<std::string> edited;   // why the manifest's entry cannot be trusted (edited_entry)
 };
 
 // A golden that does not match its manifest judges nothing: the check could not be made.
@@ -184,7 +203,7 @@ GoldenLookup look_up_golden(Role role, const std::filesystem::path& golden_dir,
   const GoldenEntry* entry = manifest.find(id);
   return {golden_dir / (entry != nullptr ? entry->file : id + std::string(extension)),
           no_golden(golden_dir, manifest, rendered), id + "." + role_name(role) + "-vs-golden",
-          entry};
+          entry, edited_entry(golden_dir, manifest, rendered)};
 }
 
 }  // namespace
@@ -196,6 +215,7 @@ ImageCheck check_runs_against_golden(Role role, const std::vector<std::filesyste
                                      const std::filesystem::path& evidence_dir) {
   const GoldenLookup golden = look_up_golden(role, golden_dir, manifest, rendered, ".exr");
   const std::filesystem::path first = actual.empty() ? std::filesystem::path() : actual.front();
+  if (golden.edited) return untrusted_golden(role, first, golden.expected, *golden.edited);
   if (golden.missing) {
     return without_golden(role, first, golden.expected, *golden.missing, rendered);
   }
@@ -229,6 +249,7 @@ ImageCheck check_against_golden(Role role, const std::filesystem::path& actual,
                                 const ImageThresholds& thresholds,
                                 const std::filesystem::path& evidence_dir) {
   const GoldenLookup golden = look_up_golden(role, golden_dir, manifest, rendered, ".png");
+  if (golden.edited) return untrusted_golden(role, actual, golden.expected, *golden.edited);
   if (golden.missing) {
     return without_golden(role, actual, golden.expected, *golden.missing, rendered);
   }

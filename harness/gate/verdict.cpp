@@ -43,13 +43,14 @@ std::string failure_text(Role role, const RunRecord& run) {
                      run.log.string());
 }
 
-// A crash of head where base ran is the change's doing; anything else failing is not.
+// A crash of head where base ran is the change's doing; anything else failing is not, nor is a
+// run raygate's own time budget stopped (docs/statistics.md §6c: exit 3).
 void judge_failure(const ResultsDocument& document, const SceneResult& scene, SceneGate& gate) {
   const RunRecord& run = *scene.runs.failed_run;
   gate.speed = SpeedVerdict::failed;
   const std::string what = failure_text(scene.runs.failed_role, run);
   const bool head_only = is_compare(document.kind) && scene.runs.failed_role == Role::head &&
-                         scene.runs.first_run(Role::base) != nullptr;
+                         scene.runs.first_run(Role::base) != nullptr && !run.stopped_by_budget;
   raise_speed(gate, head_only ? GateOutcome::fail : GateOutcome::unmeasured,
               head_only ? "head failed where base ran: " + what : what);
 }

@@ -555,8 +555,9 @@ GoldenVerification verify_goldens_from_run(const BlessFromRun& request,
       ++counts.missing;
       continue;
     }
-    const GoldenEntry rendered{e.id, e.scene, e.size, e.width, e.height, document.baseline.sampling,
-                               {},   {},      {}};
+    const GoldenEntry rendered{
+        e.id, e.scene, e.size, e.width,       e.height, document.baseline.sampling,
+        {},   {},      {},     document.suite};
     const ImageCheck check = kind == ImageKind::monte_carlo
                                  ? check_runs_against_golden(
                                        request.role, run_images(scene.runs, request.role),

@@ -41,9 +41,11 @@ using suite_pass::update_scores;
 namespace {
 
 void check_images(SceneResult& result, const SuiteMeasurement& m, const GoldenManifest& manifest,
-                  const std::string& sampling) {
+                  const ResultsDocument& document) {
   const SuiteScene& e = result.entry;
-  const GoldenEntry rendered{e.id, e.scene, e.size, e.width, e.height, sampling, {}, {}, {}};
+  const GoldenEntry rendered{
+      e.id, e.scene, e.size, e.width,       e.height, document.baseline.sampling,
+      {},   {},      {},     document.suite};
   for (const Role role : m.tracer_roles) {
     const RunRecord* run = result.runs.first_run(role);
     if (run == nullptr) continue;  // failed before producing an image; the failure says why
@@ -171,7 +173,7 @@ void measure_scenes(ResultsDocument& document, const SuiteMeasurement& m, Measur
                                 executor, clock, scene_dir(m, entry), observe);
     result.status = result.runs.failed() ? SceneStatus::failed : SceneStatus::measured;
     summarize_ratios(result, m);
-    check_images(result, m, manifest, document.baseline.sampling);
+    check_images(result, m, manifest, document);
     if (!result.runs.failed()) plan.finish_scene(result);
 
     document.scenes.push_back(std::move(result));

@@ -26,6 +26,7 @@ void to_json(nlohmann::json& json, const RunRecord& run) {
   // same (the store's duplicate check compares canonical JSON).
   if (run.max_rss_own) json["max_rss_own"] = true;
   if (run.max_rss_own) json["peak_method"] = std::string(to_string(run.peak_method));
+  if (run.stopped_by_budget) json["stopped_by_budget"] = true;  // only then, as above
 }
 
 void from_json(const nlohmann::json& json, RunRecord& run) {
@@ -58,6 +59,7 @@ void from_json(const nlohmann::json& json, RunRecord& run) {
   }
   run.image = json.at("image").get<std::string>();
   run.log = json.at("log").get<std::string>();
+  run.stopped_by_budget = json.value("stopped_by_budget", false);
 }
 
 }  // namespace raygate

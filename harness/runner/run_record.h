@@ -40,6 +40,10 @@ struct RunRecord : ProcessUsage {
   std::map<std::string, Counter> counters;
   std::filesystem::path image;
   std::filesystem::path log;  // stdout and stderr together
+  // Timed out before its own limit (the adapter's timeout_s.run): raygate's time budget
+  // (--max-seconds, --max-minutes) ended it, so the run says nothing of the revision, and a
+  // compare whose head it was could not be measured (exit 3), not regressed.
+  bool stopped_by_budget = false;
 
   bool operator==(const RunRecord&) const = default;
 };

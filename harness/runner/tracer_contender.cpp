@@ -1,5 +1,7 @@
 #include "runner/tracer_contender.h"
 
+#include <fmt/core.h>
+
 #include <cstdint>
 #include <system_error>
 
@@ -106,6 +108,14 @@ RunRecord TracerContender::interpret(const SceneInput& scene, const ProcessResul
                                      const std::filesystem::path& run_dir) const {
   const Adapter& adapter = setup_.adapter;
   RunRecord run = record_process(result, spec);
+  if (result.outcome == ProcessOutcome::timed_out &&
+      result.wall_seconds < adapter.timeouts.run_seconds - 0.5) {
+    run.stopped_by_budget = true;
+    run.failure += fmt::format(
+        " (the time budget's cut, not the adapter's {:g} s timeout_s.run: give --max-seconds "
+        "or --max-minutes more)",
+        adapter.timeouts.run_seconds);
+  }
   run.image = expand(adapter.image, placeholders(scene, run_dir));
   if (!run.ok) return run;
   if (const std::string problem = image_problem(run.image); !problem.empty()) {

@@ -7,6 +7,7 @@
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
+#include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -18,6 +19,7 @@ namespace {
 
 namespace fs = std::filesystem;
 namespace OIIO = OIIO_NAMESPACE;
+using ::testing::HasSubstr;
 
 const fs::path kGoldenRoot = fs::path(RAYGATE_SOURCE_DIR) / "golden";
 const fs::path kGolden = kGoldenRoot / "raygate-baseline";
@@ -249,6 +251,27 @@ TEST_F(ImageCheckTest, GoldenOfAnotherSizeFactorIsNotCompared) {
   EXPECT_NE(c.error.find("bless this suite's goldens into a directory of their own (--golden-dir"),
             std::string::npos)
       << c.error;
+}
+
+// The tenth sweep: a manifest entry edited (width 160 to 161) made run pass the image unchecked,
+// "no golden". Of the suite being measured, it is a golden that cannot judge (ERROR, exit 3); of
+// another suite (a calibrated one beside the ci goldens), it stays a note.
+TEST_F(ImageCheckTest, AnEditedEntryOfTheSuiteMeasuredIsAnError) {
+  GoldenManifest edited = manifest_;
+  for (GoldenEntry& entry : edited.entries) {
+    if (entry.id == "tetra") entry.width = 161;
+  }
+  GoldenEntry rendered = ci_tetra();
+  rendered.rendering_suite = edited.suite;
+  const ImageCheck same_suite = check_against_golden(Role::tracer, kGolden / "tetra.png", kGolden,
+                                                     edited, rendered, {}, dir_.path());
+  EXPECT_EQ(same_suite.verdict, ImageVerdict::error);
+  EXPECT_THAT(same_suite.error, HasSubstr("the entry of 'tetra' is tetra size 6 at 161x160"));
+  EXPECT_THAT(same_suite.error, HasSubstr("(edited after bless?)"));
+  rendered.rendering_suite = edited.suite + "-calibrated";
+  const ImageCheck other_suite = check_against_golden(Role::tracer, kGolden / "tetra.png", kGolden,
+                                                      edited, rendered, {}, dir_.path());
+  EXPECT_EQ(other_suite.verdict, ImageVerdict::missing);
 }
 
 // A grey `width` x `height` PNG, written as `name`.

@@ -220,6 +220,18 @@ TEST(GateVerdict, HeadCrashingWhereBaseRanIsTheChangesFault) {
   EXPECT_EQ(gate.exit_code, 1);
 }
 
+// The tenth sweep: raygate's own budget (--max-seconds 2.5) cut off head's run of an A/A compare,
+// and the gate called it "tetra crashed", exit 1. The budget's cut says nothing of head.
+TEST(GateVerdict, HeadStoppedByTheBudgetIsNotMeasuredNotRegressed) {
+  SceneResult scene = failed("tetra", Role::head, true);
+  scene.runs.failed_run->outcome = "timed out after 2.5 s";
+  scene.runs.failed_run->stopped_by_budget = true;
+  const GateResult gate = evaluate_gate(compare_document({scene}), GatePolicy{});
+  EXPECT_EQ(gate.scenes[0].outcome, GateOutcome::unmeasured);
+  EXPECT_EQ(gate.scenes[0].reasons[0].find("head failed where base ran"), std::string::npos);
+  EXPECT_EQ(gate.exit_code, 3);
+}
+
 // The sweep of 2026-11-28: "baseline exited with status 0: raygate-baseline took no measurable
 // process-user time" read as if the exit status were the problem.
 TEST(GateVerdict, ARunThatEndedWellAndFailedAfterSaysBut) {

@@ -23,6 +23,15 @@ JudgedDocument judge_document(const std::string& results, const std::string& pol
   j.document = read_results(j.path);
   if (!policy_file.empty()) {
     j.policy = load_policy(policy_file);
+    // An image's verdict needs its pixels, which a document does not hold: a stricter or looser
+    // image_tolerance given here changed nothing, silently (the tenth sweep).
+    const auto has_images = [](const SceneResult& scene) { return !scene.images.empty(); };
+    if (std::any_of(j.document.scenes.begin(), j.document.scenes.end(), has_images)) {
+      note = fmt::format(
+          "{} for speed and memory; images keep the verdicts they were measured with (its "
+          "image thresholds and image_tolerance apply when measuring: compare --policy)",
+          policy_file);
+    }
   } else {
     j.policy = recorded_policy(j.document.settings, note);
   }

@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <array>
 #include <set>
 #include <string>
@@ -130,7 +131,23 @@ ShardRecord shard_from(const JsonField& j) {
   record.spec.index = int_of(j.member("index"));
   record.spec.count = int_of(j.member("count"));
   if (j.has("suite_scenes")) record.suite_scenes = string_list(j.member("suite_scenes"));
-  if (j.has("cost_basis")) record.cost_basis = j.member("cost_basis").as_string();
+  // merge finds a missing shard's scenes by this list: a scene twice would be looked for twice.
+  for (std::size_t i = 0; i < record.suite_scenes.size(); ++i) {
+    const auto& scenes = record.suite_scenes;
+    if (std::find(scenes.begin(), scenes.begin() + i, scenes[i]) != scenes.begin() + i) {
+      j.member("suite_scenes").fail("scene \"" + scenes[i].substr(0, 80) + "\" is listed twice");
+    }
+  }
+  if (j.has("cost_basis")) {
+    record.cost_basis = j.member("cost_basis").as_string();
+    // "equal", or the document whose times were the costs (pipeline/measure_options.cpp).
+    if (record.cost_basis != "equal" && record.cost_basis.find("sha256:") == std::string::npos) {
+      j.member("cost_basis")
+          .fail("\"" + record.cost_basis.substr(0, 80) +
+                "\" is not a cost basis (\"equal\", or the results "
+                "document's sha256:<hex>)");
+    }
+  }
   if (record.spec.count < 1 || record.spec.index < 1 || record.spec.index > record.spec.count) {
     j.fail("index " + std::to_string(record.spec.index) + " of count " +
            std::to_string(record.spec.count) + " is not a shard (1 <= index <= count)");

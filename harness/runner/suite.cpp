@@ -75,6 +75,12 @@ SuiteScene read_scene(const Suite& suite, const json& entry, const std::string& 
     if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384) {
       fail(suite, where + ".resolution", "each side must be in 1..16384");
     }
+    // The baseline renders every suite picture and refuses more than 2^26 pixels (its camera):
+    // found only after the build before.
+    if (static_cast<long long>(s.width) * s.height > (1LL << 26)) {
+      fail(suite, where + ".resolution",
+           "at most 2^26 pixels (8192x8192), which the baseline renders too");
+    }
   }
   if (entry.contains("id") && !entry["id"].is_string()) {
     fail(suite, where + ".id", "expected a string");

@@ -94,6 +94,14 @@ void check_settings_timing(const JsonField& settings, const TimingModeList& mode
     const JsonField unit = settings.member("unit");
     require_known(unit, unit.as_string(), known_units(modes));
   }
+  // What --timing named (a mode), an exact mode's clock, or the adapter's wall or cpu.
+  if (settings.has("metric")) {
+    std::vector<std::string> metrics = known_clock_names(modes);
+    for (const TimingMode* mode : modes) add_once(metrics, mode->name());
+    for (const char* adapter_metric : {"wall", "cpu"}) add_once(metrics, adapter_metric);
+    const JsonField metric = settings.member("metric");
+    require_known(metric, metric.as_string(), metrics);
+  }
 }
 
 }  // namespace

@@ -381,6 +381,48 @@ TEST_F(HostileDocuments, FifthSweepLeftoversAreRefusedBeforeAnythingRuns) {
   EXPECT_EQ(run_raygate({"gate", uncommitted}, dir).exit_code, 0);
 }
 
+// The tenth sweep: words and counts a reader acts on that it took as they came.
+TEST_F(HostileDocuments, TenthSweepFieldsAreCheckedWithTheirPath) {
+  const std::vector<std::pair<std::string, std::string>> cases = {
+      {document("metric.json", [](json& j) { j["settings"]["metric"] = "sundial"; }),
+       "$.settings.metric"},
+      {document("basis.json",
+                [](json& j) {
+                  j["settings"]["shard"] = {{"index", 1},
+                                            {"count", 2},
+                                            {"suite_scenes", {"balls", "gears"}},
+                                            {"cost_basis", "vibes"}};
+                }),
+       "$.settings.shard.cost_basis: \"vibes\" is not a cost basis"},
+      {document("twice.json",
+                [](json& j) {
+                  j["settings"]["shard"] = {
+                      {"index", 1}, {"count", 2}, {"suite_scenes", {"balls", "balls"}}};
+                }),
+       "scene \"balls\" is listed twice"},
+      {document(
+           "own.json",
+           [](json& j) { j["scenes"][0]["rounds"][0]["runs"]["tracer"]["max_rss_own"] = "yes"; }),
+       "$.scenes[0].rounds[0].runs.tracer.max_rss_own"},
+      {document("moon.json", [](json& j) { j["scenes"][0]["images"][0]["reference"] = "moon"; }),
+       "$.scenes[0].images[0].reference: unknown value \"moon\""},
+      {document("budget.json",
+                [](json& j) {
+                  j["scenes"][0]["rounds"][0]["runs"]["tracer"]["stopped_by_budget"] = true;
+                }),
+       "a run stopped by the budget did not succeed"},
+  };
+  for (const auto& [file, what] : cases) {
+    SCOPED_TRACE(file);
+    expect_usage_error(run_raygate({"gate", file}, dir), what);
+  }
+  // A policy given to gate judges speed and memory; an image's verdict needs its pixels.
+  write_file_atomically(dir.path() / "loose.json", R"({"image_tolerance": 0.5})");
+  const CliRun judged =
+      run_raygate({"gate", document("fine.json", [](json&) {}), "--policy", "loose.json"}, dir);
+  EXPECT_THAT(judged.out, HasSubstr("images keep the verdicts they were measured with"));
+}
+
 TEST_F(HostileDocuments, FourthSweepInputsAreNotOverwrittenAndPlacesAreTried) {
   const std::string run = document("run.json", [](json&) {});
   write_file_atomically(dir.path() / "policy.json", "{}");

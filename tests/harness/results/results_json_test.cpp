@@ -474,6 +474,18 @@ TEST(ResultsJson, ChangeIntervalKindIsCheckedAndDefaultsForOldDocuments) {
   EXPECT_EQ(old.scenes[0].change->interval_kind, ChangeIntervalKind::order_statistic);
 }
 
+// The tenth sweep: a null change beside its interval read as +0% (INCONCLUSIVE where the interval
+// said REGRESSED), and a change of 0 rounds as any other.
+TEST(ResultsJson, AChangeAgreesWithItsIntervalAndRounds) {
+  json j = to_json(compare_document());
+  j["scenes"][0]["change"]["change"] = nullptr;
+  EXPECT_THAT(usage_error(j),
+              HasSubstr("$.scenes[0].change.change: is null, but its change_interval is not"));
+  j = to_json(compare_document());
+  j["scenes"][0]["change"]["rounds"] = 0;
+  EXPECT_THAT(usage_error(j), HasSubstr("$.scenes[0].change.rounds: 0 rounds, but a change"));
+}
+
 TEST(ResultsJson, AnUnknownImageVerdictIsAUsageErrorNamingTheField) {
   json j = to_json(full_document());
   EXPECT_EQ(j["scenes"][1]["images"][0]["verdict"], "fail");

@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <fstream>
 #include <string_view>
 
@@ -88,20 +89,41 @@ AlertJudgement judge_store_history(const AlertRequest& request,
   return judgement;
 }
 
+namespace {
+
+// Keys a newer raygate added are not stored, nor compared when a document is found stored
+// already: said, not dropped silently (the tenth sweep).
+std::string not_kept_line(const std::string& file, const std::vector<std::string>& keys) {
+  if (keys.empty()) return "";
+  constexpr std::size_t kShown = 5;
+  std::string shown;
+  for (std::size_t i = 0; i < std::min(keys.size(), kShown); ++i) {
+    shown += (i == 0 ? "" : ", ") + keys[i].substr(0, 120);
+  }
+  if (keys.size() > kShown) shown += fmt::format(" and {} more", keys.size() - kShown);
+  return fmt::format(
+      "{}: warning: keys this raygate does not know are not stored (a newer raygate's? the "
+      "file keeps them): {}\n",
+      file, shown);
+}
+
+}  // namespace
+
 std::string import_documents(const std::vector<std::string>& files, const std::string& location,
                              const std::string& branch) {
-  std::vector<ResultsDocument> documents;  // all checked before any is stored
-  for (const std::string& file : files) documents.push_back(load_results_file(file));
+  std::vector<ImportedFile> documents;  // all checked before any is stored
+  for (const std::string& file : files) documents.push_back(read_import_file(file));
   const auto store = open_store(location, StoreOpen::create_if_missing);
   std::size_t fresh = 0;
   std::string lines;
   for (std::size_t i = 0; i < documents.size(); ++i) {
-    const std::string recorded = branch_of(documents[i], branch);
-    const AddOutcome outcome = store->add(documents[i], recorded);
+    const std::string recorded = branch_of(documents[i].document, branch);
+    const AddOutcome outcome = store->add(documents[i].document, recorded);
     fresh += outcome.duplicate ? 0 : 1;
     lines += fmt::format("{}: {} document {}{}\n", files[i],
                          outcome.duplicate ? "already stored as" : "stored as", outcome.document_id,
                          recorded.empty() ? "" : " (branch " + recorded + ")");
+    lines += not_kept_line(files[i], documents[i].keys_not_kept);
   }
   return lines + fmt::format("imported {} of {} documents into {}\n", fresh, documents.size(),
                              store->location());

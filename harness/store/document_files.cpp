@@ -25,11 +25,28 @@ std::string short_sha_of(const nlohmann::json& document) {
 // The document's text exactly as write_results writes it.
 std::string document_text(const StoredDocument& stored) { return stored.document.dump(1) + "\n"; }
 
-}  // namespace
+// The JSON paths of keys in `read` that `written` lacks, where both are objects or arrays.
+void keys_missing(const nlohmann::json& read, const nlohmann::json& written,
+                  const std::string& path, std::vector<std::string>& missing) {
+  if (read.is_object() && written.is_object()) {
+    for (const auto& [key, value] : read.items()) {
+      const auto kept = written.find(key);
+      if (kept == written.end()) {
+        missing.push_back(path + "." + key);
+      } else {
+        keys_missing(value, *kept, path + "." + key, missing);
+      }
+    }
+  } else if (read.is_array() && written.is_array()) {
+    for (std::size_t i = 0; i < std::min(read.size(), written.size()); ++i) {
+      keys_missing(read[i], written[i], fmt::format("{}[{}]", path, i), missing);
+    }
+  }
+}
 
-ResultsDocument load_results_file(const std::filesystem::path& file) {
+nlohmann::json results_json_file(const std::filesystem::path& file) {
   // Duplicate keys and out-of-range numbers refused with where they are (core/json_reader.h).
-  const nlohmann::json json = read_json_file(file);
+  nlohmann::json json = read_json_file(file);
   const bool looks_like_results = json.is_object() && json.contains("schema_version") &&
                                   json.contains("revisions") && json.contains("scenes");
   if (!looks_like_results) {
@@ -39,7 +56,20 @@ ResultsDocument load_results_file(const std::filesystem::path& file) {
                     "`raygate run` writes",
                     file.string()));
   }
-  return results_from_json(json, file.string());
+  return json;
+}
+
+}  // namespace
+
+ResultsDocument load_results_file(const std::filesystem::path& file) {
+  return results_from_json(results_json_file(file), file.string());
+}
+
+ImportedFile read_import_file(const std::filesystem::path& file) {
+  const nlohmann::json json = results_json_file(file);
+  ImportedFile imported{results_from_json(json, file.string()), {}};
+  keys_missing(json, to_json(imported.document), "$", imported.keys_not_kept);
+  return imported;
 }
 
 std::string checked_sha_prefix(std::string sha) {

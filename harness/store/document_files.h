@@ -16,6 +16,15 @@ namespace raygate {
 // that is not a results document (an adapter, a suite, a build record).
 ResultsDocument load_results_file(const std::filesystem::path& file);
 
+// A document as import reads it, and the keys of its file that are not stored: this raygate
+// stores what it knows (and settings' and machine's unknown keys), so a newer raygate's added
+// keys elsewhere are dropped, and import says which ("$.scenes[0].extra").
+struct ImportedFile {
+  ResultsDocument document;
+  std::vector<std::string> keys_not_kept;  // JSON paths, in the file's order
+};
+ImportedFile read_import_file(const std::filesystem::path& file);
+
 // A commit sha or prefix, lower-cased; UsageError for anything else.
 std::string checked_sha_prefix(std::string sha);
 

@@ -421,6 +421,17 @@ TEST_F(HostileDocuments, TenthSweepFieldsAreCheckedWithTheirPath) {
   const CliRun judged =
       run_raygate({"gate", document("fine.json", [](json&) {}), "--policy", "loose.json"}, dir);
   EXPECT_THAT(judged.out, HasSubstr("images keep the verdicts they were measured with"));
+  // A newer raygate's keys: the settings' are kept, the others said to be dropped.
+  const std::string newer = document("newer.json", [](json& j) {
+    j["zzz_top"] = 1;
+    j["scenes"][0]["zzz_scene"] = "x";
+    j["settings"]["zzz_setting"] = true;
+  });
+  const CliRun imported = run_raygate({"import", "--store", "s.db", newer}, dir);
+  EXPECT_EQ(imported.exit_code, 0) << imported.out;
+  EXPECT_THAT(imported.out, HasSubstr("keys this raygate does not know are not stored"));
+  EXPECT_THAT(imported.out, HasSubstr("$.scenes[0].zzz_scene, $.zzz_top"));
+  EXPECT_THAT(imported.out, Not(HasSubstr("zzz_setting")));
 }
 
 TEST_F(HostileDocuments, FourthSweepInputsAreNotOverwrittenAndPlacesAreTried) {

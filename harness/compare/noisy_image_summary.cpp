@@ -13,7 +13,12 @@ namespace {
 
 constexpr const char* kChannelNames[3] = {"R", "G", "B"};
 
-std::string percent(double relative) { return fmt::format("{:+.2f}%", 100 * relative); }
+// A change of a black reference can be 10^40 %: past a million per cent, three significant digits.
+std::string percent(double relative) {
+  const double percent = 100 * relative;
+  return std::abs(percent) < 1e6 ? fmt::format("{:+.2f}%", percent)
+                                 : fmt::format("{:+.3g}%", percent);
+}
 
 std::string interval_text(const RelativeChange& c) {
   return fmt::format("{} [{}, {}]", percent(c.change), percent(c.low), percent(c.high));

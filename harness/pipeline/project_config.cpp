@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <sstream>
+#include <string_view>
 #include <system_error>
 
 #include "core/error.h"
@@ -19,12 +20,17 @@ bool is_url(const std::string& value) {
 }
 
 // The line of `file` where `key` is set, for messages ("" when not found).
-std::string line_of(const std::string& text, const std::string& key) {
+// ":N", the line where `key` is given the `occurrence`th time; "" when it is not.
+std::string line_of(const std::string& text, const std::string& key, int occurrence = 1) {
   std::istringstream lines(text);
   std::string line;
   for (int number = 1; std::getline(lines, line); ++number) {
     const auto start = line.find_first_not_of(" \t");
-    if (start != std::string::npos && line.compare(start, key.size(), key) == 0) {
+    const auto after = start == std::string::npos ? start : start + key.size();
+    const bool is_key = start != std::string::npos && line.compare(start, key.size(), key) == 0 &&
+                        (after >= line.size() ||
+                         std::string_view(" \t=").find(line[after]) != std::string_view::npos);
+    if (is_key && --occurrence == 0) {
       return ":" + std::to_string(number);
     }
   }
@@ -161,6 +167,12 @@ ProjectDefaults read_project_config(const std::filesystem::path& file) {
           fmt::format("{}: unknown key '{}'; the keys are repo, adapter, suite, "
                       "policy and store",
                       where, item.name));
+    }
+    // CLI11 joins a key given twice into one with two values: the second line is the mistake.
+    if (const std::string again = line_of(text, item.name, 2); !again.empty()) {
+      throw UsageError(fmt::format("{}{}: {} is given again (first at line {}); give it once",
+                                   absolute.string(), again, item.name,
+                                   where.substr(where.rfind(':') + 1)));
     }
     if (item.inputs.size() != 1) {
       throw UsageError(fmt::format("{}: {}: expected one value", where, item.name));

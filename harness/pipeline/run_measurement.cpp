@@ -66,10 +66,12 @@ MeasuredDocument measure_prepared_run(const RunRequest& request, const PreparedR
 
   ResultsDocument document = new_document(DocumentKind::run, context, request.baseline);
   document.revisions.push_back(tracer.record);
+  // An uncommitted folder outside git has no subject: "uncommitted ()" said nothing.
+  const std::string subject = worktree.subject.empty() ? "" : " (" + worktree.subject + ")";
   const std::string opening =
-      fmt::format("measuring {} {} ({}) against {} on suite {}: {}{}", context.adapter.name,
-                  worktree.short_sha, worktree.subject, request.baseline.version_line(),
-                  context.suite.name, count_text(m.scenes.size(), "scene"), shard_note(context));
+      fmt::format("measuring {} {}{} against {} on suite {}: {}{}", context.adapter.name,
+                  worktree.short_sha, subject, request.baseline.version_line(), context.suite.name,
+                  count_text(m.scenes.size(), "scene"), shard_note(context));
   return measure_document(std::move(document), m, plan, opening, io);
 }
 

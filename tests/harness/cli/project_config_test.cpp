@@ -79,6 +79,27 @@ TEST(ProjectConfig, SectionsAndListsAreRefusedWithTheLine) {
   }
 }
 
+// The tenth sweep: a key given twice was "raygate.toml:1: store: expected one value", at the line
+// that was right; a key that begins with another's name ("storex") was placed on its line.
+TEST(ProjectConfig, AKeyGivenTwiceIsRefusedAtItsSecondLine) {
+  const TempDir dir;
+  write_file_atomically(dir.path() / "a.toml",
+                        "store = \"a.db\"\nsuite = \"ci\"\nstore = \"b.db\"\n");
+  try {
+    read_project_config(dir.path() / "a.toml");
+    FAIL() << "a key given twice was accepted";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("a.toml:3: store is given again (first at line 1)"));
+  }
+  write_file_atomically(dir.path() / "b.toml", "store = \"a.db\"\nstorex = 1\n");
+  try {
+    read_project_config(dir.path() / "b.toml");
+    FAIL() << "an unknown key was accepted";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("b.toml:2: unknown key 'storex'"));
+  }
+}
+
 // Hostile sweep Y1, y-bad: CLI11 kept the quote of an unterminated string as part of the value
 // (a store named `"x.db`) and took `store =` as no line at all.
 TEST(ProjectConfig, AnUnterminatedStringOrAMissingValueIsRefusedAtItsLine) {

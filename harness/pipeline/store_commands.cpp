@@ -118,7 +118,13 @@ std::string import_documents(const std::vector<std::string>& files, const std::s
   std::string lines;
   for (std::size_t i = 0; i < documents.size(); ++i) {
     const std::string recorded = branch_of(documents[i].document, branch);
-    const AddOutcome outcome = store->add(documents[i].document, recorded);
+    AddOutcome outcome;
+    try {
+      outcome = store->add(documents[i].document, recorded);
+    } catch (const InfraError& e) {  // a full disk said only "SQLite error 13 ... COMMIT"
+      throw InfraError(fmt::format("{}: not stored: {} ({} of {} documents stored before it)",
+                                   files[i], e.what(), fresh, documents.size()));
+    }
     fresh += outcome.duplicate ? 0 : 1;
     lines += fmt::format("{}: {} document {}{}\n", files[i],
                          outcome.duplicate ? "already stored as" : "stored as", outcome.document_id,

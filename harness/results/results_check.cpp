@@ -160,6 +160,23 @@ void check_shard_label(const JsonField& shard) {
   }
 }
 
+// The top-level label is the store's index of settings.shard, which merge reads: the two name
+// one shard (the tenth sweep merged and gated a 1/2 labelled 2/2).
+void check_shard_agrees(const JsonField& shard, const JsonField& settings) {
+  if (shard.as_string().empty() || !settings.value().is_object() || !settings.has("shard")) return;
+  const nlohmann::json& record = settings.member("shard").value();
+  if (!record.is_object() || !record.contains("index") || !record.contains("count") ||
+      !record["index"].is_number_integer() || !record["count"].is_number_integer()) {
+    return;  // settings_json says what is wrong with it, at its path
+  }
+  const std::string recorded = fmt::format("{}/{}", record["index"].get<std::int64_t>(),
+                                           record["count"].get<std::int64_t>());
+  if (shard.as_string() != recorded) {
+    shard.fail(
+        fmt::format("\"{}\", but settings.shard is {}", shard.as_string().substr(0, 40), recorded));
+  }
+}
+
 // merge orders shards and history orders runs by these times: a run cannot finish before it began.
 void check_started_before_finished(const JsonField& document) {
   const auto started = iso8601_epoch_seconds(document.member("started_at").as_string());
@@ -668,7 +685,10 @@ void check_results_json(const nlohmann::json& document, const TimingModeList& mo
   d.member("complete").as_bool();
   check_machine(d.member("machine"));
   check_settings(d.member("settings"));
-  if (const auto shard = find(d, "shard")) check_shard_label(*shard);
+  if (const auto shard = find(d, "shard")) {
+    check_shard_label(*shard);
+    check_shard_agrees(*shard, d.member("settings"));
+  }
   const JsonField baseline = object(d.member("baseline"));
   check_strings(baseline, {"version", "source_sha256"});
   word_at(baseline, "accel", {"none", "bbox"});

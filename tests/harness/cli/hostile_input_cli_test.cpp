@@ -406,6 +406,13 @@ TEST_F(HostileDocuments, TenthSweepFieldsAreCheckedWithTheirPath) {
        "$.scenes[0].rounds[0].runs.tracer.max_rss_own"},
       {document("moon.json", [](json& j) { j["scenes"][0]["images"][0]["reference"] = "moon"; }),
        "$.scenes[0].images[0].reference: unknown value \"moon\""},
+      {document("label.json",
+                [](json& j) {
+                  j["shard"] = "2/2";
+                  j["settings"]["shard"] = {
+                      {"index", 1}, {"count", 2}, {"suite_scenes", {"balls", "gears"}}};
+                }),
+       "$.shard: \"2/2\", but settings.shard is 1/2"},
       {document("budget.json",
                 [](json& j) {
                   j["scenes"][0]["rounds"][0]["runs"]["tracer"]["stopped_by_budget"] = true;

@@ -55,7 +55,7 @@ std::string OutputFailures::summary() const {
   for (const Failure& failure : failures_) {
     names += (names.empty() ? "" : ", ") + failure.output;
   }
-  return fmt::format("{} output{} could not be written ({}); everything else was written",
+  return fmt::format("{} output{} could not be written ({}); the other outputs were written",
                      failures_.size(), failures_.size() == 1 ? "" : "s", names);
 }
 

@@ -67,7 +67,7 @@ TEST(OutputFailures, AFailedWriteIsSaidAndTheCommandGoesOnToExit3) {
             "1 output could not be written (--report junit:/full/j.xml); everything else was "
             "written");
   failures.say_summary(3);
-  EXPECT_NE(said.text().find("; everything else was written; exit 3\n"), std::string::npos);
+  EXPECT_NE(said.text().find("; the other outputs were written; exit 3\n"), std::string::npos);
 }
 
 TEST(OutputFailures, OnlyWriteErrorsAreKeptOthersTravelUp) {

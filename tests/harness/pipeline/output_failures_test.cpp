@@ -64,8 +64,8 @@ TEST(OutputFailures, AFailedWriteIsSaidAndTheCommandGoesOnToExit3) {
   EXPECT_EQ(failures.exit_code(3), 3);
   EXPECT_EQ(failures.exit_code(1), 1);  // a found regression outranks a lost file
   EXPECT_EQ(failures.summary(),
-            "1 output could not be written (--report junit:/full/j.xml); everything else was "
-            "written");
+            "1 output could not be written (--report junit:/full/j.xml); the other outputs "
+            "were written");
   failures.say_summary(3);
   EXPECT_NE(said.text().find("; the other outputs were written; exit 3\n"), std::string::npos);
 }

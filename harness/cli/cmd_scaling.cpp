@@ -1,8 +1,7 @@
-// `raygate scaling RESULTS.json`: the complexity gate on a document that run or compare wrote
-// (usually of the `scaling` suite): each scene family's growth exponent for the baseline and the
-// tracer, and for a compare the change of exponent judged against the policy. Fits again and
-// writes them into the document unless --no-write. Exit 0 pass, 1 an exponent regressed, 2 no
-// family measured at 3 sizes or more.
+// `raygate scaling RESULTS.json`: the complexity gate on a run or compare document (usually of
+// the `scaling` suite): each scene family's growth exponent, and for a compare its change judged
+// against the policy. Fits again and writes them into the document (no report may name it) unless
+// --no-write. Exit 0 pass, 1 an exponent regressed, 2 no family measured at 3 sizes or more.
 #include <fmt/core.h>
 
 #include "cli/commands.h"
@@ -28,7 +27,8 @@ struct ScalingArgs {
 };
 
 int scaling_command(const ScalingArgs& args, const Console& console) {
-  parse_report_targets(args.publish.reports);
+  check_publish_targets(args.publish, args.results, "the results document",
+                        {{"--policy", args.policy}});
   OutputFailures failures;
   const ScalingJudgement j = judge_scaling(args.results, args.policy, args.no_write, failures);
   for (const std::string& line : scaling_lines(j.analysis)) fmt::print("{}\n", line);

@@ -123,7 +123,7 @@ ChosenImages chosen_images(const ResultsDocument& document, const BlessFromRun& 
       throw UsageError(results + ": no successful " + role_name(request.role) + " run of '" + id +
                        "', so no image to bless");
     }
-    if (!std::filesystem::is_regular_file(run->image)) {
+    if (std::error_code unreadable; !std::filesystem::is_regular_file(run->image, unreadable)) {
       throw UsageError(results + ": the " + role_name(request.role) + " image of '" + id + "', " +
                        run->image.string() + ", is gone (was the run directory removed?)");
     }

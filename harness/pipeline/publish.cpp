@@ -13,7 +13,7 @@
 
 namespace raygate {
 
-std::vector<ReportTarget> parse_report_targets(const std::vector<std::string>& specs) {
+std::vector<ReportTarget> report_targets_unchecked(const std::vector<std::string>& specs) {
   std::vector<ReportTarget> targets;
   for (const std::string& spec : specs) {
     const std::size_t colon = spec.find(':');
@@ -22,8 +22,14 @@ std::vector<ReportTarget> parse_report_targets(const std::vector<std::string>& s
           fmt::format("--report {}: expected FORMAT:PATH, e.g. html:report.html", spec));
     }
     targets.push_back({parse_report_format(spec.substr(0, colon)), spec.substr(colon + 1)});
-    const std::filesystem::path& path = targets.back().path;
-    if (path != "-") check_output_path(path, "--report " + path.string());
+  }
+  return targets;
+}
+
+std::vector<ReportTarget> parse_report_targets(const std::vector<std::string>& specs) {
+  std::vector<ReportTarget> targets = report_targets_unchecked(specs);
+  for (const ReportTarget& target : targets) {
+    if (target.path != "-") check_output_path(target.path, "--report " + target.path.string());
   }
   return targets;
 }

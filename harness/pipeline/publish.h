@@ -38,6 +38,10 @@ struct PublishRequest {
 // known format, or whose PATH cannot be written (check_output_path). Called before measuring.
 std::vector<ReportTarget> parse_report_targets(const std::vector<std::string>& specs);
 
+// The same targets, their paths not checked again: once measured, a place that can no longer
+// be written (its folder removed mid-run) is a failed output (exit 3), not a usage error.
+std::vector<ReportTarget> report_targets_unchecked(const std::vector<std::string>& specs);
+
 // Records `document` in request.store (complete or not: the store keeps the flag) and says
 // where. A store that cannot be written is a problem said, not a failure of the measurement:
 // the document file stays, and the message says how to import it later.

@@ -54,8 +54,8 @@ PublishRequest publish_request(const PublishOptions& options,
   }
   request.branch = options.branch;
   request.policy = policy;
-  request.reports = parse_report_targets(options.reports);
-  if (!console.quiet()) request.table = &std::cerr;  // chatter: standard error
+  request.reports = report_targets_unchecked(options.reports);  // checked before measuring
+  if (!console.quiet()) request.table = &std::cerr;             // chatter: standard error
   request.table_colour = console.colour(stderr);
   request.report_colour = console.colour(stdout);
   return request;

@@ -303,9 +303,14 @@ void confidence_level_or_null(const JsonField& field) {
   if (!field.value().is_null()) confidence_level(field);
 }
 
-void check_change(const JsonField& c) {
+// `scene_rounds`: the rounds the scene lists, of which the change's are some (a forged 50 beside
+// 3 listed decided the gate, the eleventh sweep).
+void check_change(const JsonField& c, std::size_t scene_rounds) {
   object(c);
   const std::int64_t rounds = integer(c.member("rounds"), 0, kMaxCount);
+  if (static_cast<std::size_t>(rounds) > scene_rounds) {
+    c.member("rounds").fail(fmt::format("{} rounds, but the scene lists {}", rounds, scene_rounds));
+  }
   const auto change = number_or_null(c.member("change"), -1.0, kInf);  // head / base - 1
   // A change is null only where no round measured one; the gate reads a null as +0% and judged
   // [+881.7%, +1714.9%] beside it INCONCLUSIVE (the tenth sweep).
@@ -368,6 +373,26 @@ void check_metrics(const JsonField& m) {
     if (const auto count = find(m, key)) integer(*count, 0, kMaxCount);
   }
   if (const auto first = find(m, "first_nonfinite_pixel")) check_pixel(*first, 2, "[x, y]");
+}
+
+// A comparison's verdict where its own metrics rule it out, whatever the thresholds were: a
+// failure of identical images, a pass of images of two sizes or with NaN (the eleventh sweep's
+// forged "fail … identical" exited 1).
+void check_verdict_against_metrics(const JsonField& verdict, const JsonField& m) {
+  const std::string word = verdict.as_string();
+  const bool mismatch = m.member("size_mismatch").as_bool();
+  const bool nonfinite = m.member("nonfinite_values").value() != 0;
+  const nlohmann::json& max_error = m.member("max_error").value();
+  const bool identical = !mismatch && !nonfinite && max_error.is_number() &&
+                         max_error.get<double>() == 0.0 &&
+                         m.member("pixels_over_warn").value() == 0;
+  if ((word == "fail" || word == "warn") && identical) {
+    verdict.fail(fmt::format("\"{}\", but its metrics say the images are identical", word));
+  }
+  if (word == "pass" && (mismatch || nonfinite)) {
+    verdict.fail(mismatch ? "\"pass\", but its metrics say the sizes differ"
+                          : "\"pass\", but its metrics count NaN or Inf values");
+  }
 }
 
 // A relative change: finite (against a black reference it can be huge, never infinite).
@@ -461,7 +486,10 @@ void check_image(const JsonField& image, const std::set<Role>& roles) {
   }
   if (const auto error = find(image, "error")) error->as_string();
   image.member("metrics");  // required, even when null
-  if (const auto metrics = find_non_null(image, "metrics")) check_metrics(*metrics);
+  if (const auto metrics = find_non_null(image, "metrics")) {
+    check_metrics(*metrics);
+    if (!find(image, "monte_carlo")) check_verdict_against_metrics(verdict, *metrics);
+  }
   for (const JsonField& path : array(image.member("evidence")).elements()) path.as_string();
 }
 
@@ -539,7 +567,7 @@ void check_scene(const JsonField& s, const Roles& roles) {
   s.member("change");  // required, even when null
   if (const auto change = find_non_null(s, "change")) {
     if (roles.revisions.count(Role::head) == 0) change->fail("a run document has no change");
-    check_change(*change);
+    check_change(*change, array(s.member("rounds")).elements().size());
   }
   for (const JsonField& image : array(s.member("images")).elements()) {
     check_image(image, roles.revisions);

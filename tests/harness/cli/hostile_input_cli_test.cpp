@@ -413,6 +413,19 @@ TEST_F(HostileDocuments, TenthSweepFieldsAreCheckedWithTheirPath) {
                       {"index", 1}, {"count", 2}, {"suite_scenes", {"balls", "gears"}}};
                 }),
        "$.shard: \"2/2\", but settings.shard is 1/2"},
+      {document("identical.json",
+                [](json& j) {
+                  json& image = j["scenes"][0]["images"][0];
+                  image["verdict"] = "fail";
+                  for (const char* zero : {"max_error", "pixels_over_warn", "nonfinite_values"}) {
+                    image["metrics"][zero] = 0;
+                  }
+                  image["metrics"]["size_mismatch"] = false;
+                }),
+       "\"fail\", but its metrics say the images are identical"},
+      {document("sizes.json",
+                [](json& j) { j["scenes"][0]["images"][0]["metrics"]["size_mismatch"] = true; }),
+       "\"pass\", but its metrics say the sizes differ"},
       {document("budget.json",
                 [](json& j) {
                   j["scenes"][0]["rounds"][0]["runs"]["tracer"]["stopped_by_budget"] = true;

@@ -130,6 +130,22 @@ TEST_F(ScalingCli, LinearPrimaryRaysFailTheGateOnTheExponentAndSayByHowMuch) {
   EXPECT_EQ(again.exit_code, 1) << again.out;
   EXPECT_TRUE(has(again.out, "fail       scaling:balls balls growth: exponent head - base +"))
       << again.out;
+
+  // The eleventh sweep: a report over the document it reads replaced it; rewriting the fits
+  // dropped a newer raygate's keys.
+  const std::string kept = read_file(dir_.path() / "c.json");
+  const CliRun over = run_raygate({"scaling", "c.json", "--report", "html:c.json"}, dir_);
+  EXPECT_EQ(over.exit_code, 2) << over.out;
+  EXPECT_EQ(read_file(dir_.path() / "c.json"), kept);
+  nlohmann::json newer = nlohmann::json::parse(kept);
+  newer["zz_future"] = 1;
+  newer["scenes"][0]["zz_scene_future"] = "x";
+  write_file_atomically(dir_.path() / "c.json", newer.dump(1) + "\n");
+  EXPECT_EQ(run_raygate({"scaling", "c.json"}, dir_).exit_code, 1);
+  const nlohmann::json rewritten = nlohmann::json::parse(read_file(dir_.path() / "c.json"));
+  EXPECT_EQ(rewritten["zz_future"], 1);
+  EXPECT_EQ(rewritten["scenes"][0]["zz_scene_future"], "x");
+  EXPECT_TRUE(rewritten.contains("scaling"));
 }
 
 TEST_F(ScalingCli, ADocumentWithoutSizesToFitIsAUsageError) {

@@ -274,6 +274,19 @@ TEST_F(ImageCheckTest, AnEditedEntryOfTheSuiteMeasuredIsAnError) {
   EXPECT_EQ(other_suite.verdict, ImageVerdict::missing);
 }
 
+// The eleventh sweep: a golden that is a symbolic link loop threw "filesystem error: status: Too
+// many levels of symbolic links" over the whole run, whose document was then never written.
+TEST_F(ImageCheckTest, AGoldenThatIsALinkLoopIsAnErrorOfItsScene) {
+  const fs::path loop_dir = dir_.path() / "loop";
+  fs::create_directories(loop_dir);
+  const std::string file = manifest_.find("tetra")->file;
+  fs::create_symlink(file, loop_dir / file);  // links to itself
+  const ImageCheck c = check_against_golden(Role::tracer, kGolden / "tetra.png", loop_dir,
+                                            manifest_, ci_tetra(), {}, dir_.path());
+  EXPECT_EQ(c.verdict, ImageVerdict::error);
+  EXPECT_THAT(c.error, HasSubstr("golden file cannot be read"));
+}
+
 // A grey `width` x `height` PNG, written as `name`.
 fs::path grey_png(const TempDir& dir, const std::string& name, int width, int height) {
   OIIO::ImageBuf image(OIIO::ImageSpec(width, height, 3, OIIO::TypeDesc::UINT8));

@@ -94,7 +94,9 @@ SceneResult scene(const SceneSpec& s, const std::vector<Role>& roles) {
     r.ratios[role] = ratio_summary(s);
     r.images.push_back(image(s, role));
   }
-  r.runs.rounds = {round};
+  // As many rounds as the ratios and the change say (5): a change of more rounds than the scene
+  // lists is refused on reading.
+  r.runs.rounds = std::vector<Round>(5, round);
   return r;
 }
 

@@ -475,7 +475,7 @@ TEST(ResultsJson, ChangeIntervalKindIsCheckedAndDefaultsForOldDocuments) {
 }
 
 // The tenth sweep: a null change beside its interval read as +0% (INCONCLUSIVE where the interval
-// said REGRESSED), and a change of 0 rounds as any other.
+// said REGRESSED), and a change of 0 rounds, or of more rounds than listed, as any other.
 TEST(ResultsJson, AChangeAgreesWithItsIntervalAndRounds) {
   json j = to_json(compare_document());
   j["scenes"][0]["change"]["change"] = nullptr;
@@ -484,6 +484,10 @@ TEST(ResultsJson, AChangeAgreesWithItsIntervalAndRounds) {
   j = to_json(compare_document());
   j["scenes"][0]["change"]["rounds"] = 0;
   EXPECT_THAT(usage_error(j), HasSubstr("$.scenes[0].change.rounds: 0 rounds, but a change"));
+  // The eleventh sweep: 50 beside the 2 listed made the gate's sequence decide.
+  j = to_json(compare_document());
+  j["scenes"][0]["change"]["rounds"] = 50;
+  EXPECT_THAT(usage_error(j), HasSubstr("50 rounds, but the scene lists 2"));
 }
 
 TEST(ResultsJson, AnUnknownImageVerdictIsAUsageErrorNamingTheField) {

@@ -26,15 +26,13 @@ struct HistoryArgs {
   std::string html_dir;
 };
 
-void write_html(const HistoryView& view, const std::string& dir) {
-  const std::filesystem::path page = std::filesystem::path(dir) / "history.html";
-  write_file_atomically(page, history_html(view));
-  fmt::print(stderr, "history page: {}\n", page.string());
-}
-
 int history_command(const HistoryArgs& args) {
+  const std::filesystem::path page = history_page(args.html_dir);  // checked before reading
   const HistoryView view = store_history_view(args.store, args.query);
-  if (!args.html_dir.empty()) write_html(view, args.html_dir);
+  if (!page.empty()) {
+    write_file_atomically(page, history_html(view));
+    fmt::print(stderr, "history page: {}\n", page.string());
+  }
   print_result(
       args.format, [&] { return history_json(view); }, [&] { return history_table(view); });
   return 0;

@@ -72,6 +72,14 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   }
 }
 
+std::string symbolic_link_problem(const std::filesystem::path& path) {
+  std::error_code error;
+  if (!std::filesystem::is_symlink(std::filesystem::symlink_status(path, error))) return "";
+  const std::filesystem::path target = std::filesystem::read_symlink(path, error);
+  return path.string() + " is a symbolic link (to " + target.string() +
+         "): raygate writes a file whole and would replace the link; name the file itself";
+}
+
 void sync_directory(const std::filesystem::path& folder) {
   const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
   if (fd < 0) throw WriteError(folder, "cannot open the folder to sync it: " + system_reason());
@@ -107,10 +115,20 @@ std::string read_file(const std::filesystem::path& path) {
 }
 
 TempDir::TempDir(std::string_view prefix) {
-  std::string pattern =
-      (std::filesystem::temp_directory_path() / (std::string(prefix) + "-XXXXXX")).string();
+  // The system's words for a TMPDIR that is no folder were "temp_directory_path: No such file
+  // or directory", naming neither the variable nor its value.
+  std::error_code error;
+  const std::filesystem::path folder = std::filesystem::temp_directory_path(error);
+  if (error) {
+    const char* tmpdir = std::getenv("TMPDIR");
+    throw UsageError("TMPDIR=" + std::string(tmpdir ? tmpdir : "") +
+                     " is not a folder that can be used (" + error.message() +
+                     "): raygate's temporary files go there; name a folder, or unset it");
+  }
+  std::string pattern = (folder / (std::string(prefix) + "-XXXXXX")).string();
   if (::mkdtemp(pattern.data()) == nullptr) {
-    throw InfraError("cannot create a temporary directory: " + system_reason());
+    throw InfraError("cannot create a temporary folder in " + folder.string() + ": " +
+                     system_reason());
   }
   path_ = pattern;
 }

@@ -41,6 +41,11 @@ class WriteError : public InfraError {
 // /dev/stdout) is refused, since renaming over it would replace the node, not write through it.
 void write_file_atomically(const std::filesystem::path& path, std::string_view content);
 
+// Why a file the user named must not be written whole at `path`: it is a symbolic link, which the
+// write would replace (and a link planted in a repository must not send a write elsewhere). The
+// text names the path and the link's target; "" when `path` is no link.
+std::string symbolic_link_problem(const std::filesystem::path& path);
+
 // Flushes a directory's entries to disk (after files were created or renamed in it), so a
 // rename that was reported done survives a crash. A WriteError names the folder on failure.
 void sync_directory(const std::filesystem::path& folder);
@@ -53,7 +58,8 @@ std::string read_file(const std::filesystem::path& path);
 // cannot be read, which for such files means "unknown", not an error.
 std::optional<std::string> read_pseudo_file(const std::filesystem::path& path);
 
-// A fresh, empty directory under the system temp dir, removed by the destructor.
+// A fresh, empty directory under the system temp dir, removed by the destructor. A TMPDIR that
+// is no folder is a UsageError naming it; a folder that cannot be made in, an InfraError.
 class TempDir {
  public:
   explicit TempDir(std::string_view prefix = "raygate");

@@ -124,8 +124,11 @@ ChosenImages chosen_images(const ResultsDocument& document, const BlessFromRun& 
                        "', so no image to bless");
     }
     if (std::error_code unreadable; !std::filesystem::is_regular_file(run->image, unreadable)) {
+      const bool there = std::filesystem::exists(run->image, unreadable);
       throw UsageError(results + ": the " + role_name(request.role) + " image of '" + id + "', " +
-                       run->image.string() + ", is gone (was the run directory removed?)");
+                       run->image.string() +
+                       (there ? ", is not a regular file (a folder, device or FIFO)"
+                              : ", is gone (was the run directory removed?)"));
     }
     checked_component(id, results + ": scenes[].entry.id");
     checked_image_extension(
@@ -174,6 +177,12 @@ void write_new_set(const std::filesystem::path& golden_dir, const std::filesyste
 // core/replace_directory.h. `manifest` is updated once the new set is in.
 void swap_in_goldens(const std::filesystem::path& golden_dir, GoldenManifest& manifest,
                      const std::vector<Blessing>& blessings) {
+  for (const Blessing& b : blessings) {  // a link would be replaced: refused, as -o refuses one
+    for (const std::string& file : {b.file, b.noise ? b.noise->variance_file : std::string()}) {
+      const std::string problem = file.empty() ? "" : symbolic_link_problem(golden_dir / file);
+      if (!problem.empty()) throw UsageError("--golden-dir: " + problem);
+    }
+  }
   GoldenManifest next = manifest;
   try {
     replace_directory(golden_dir, [&](const std::filesystem::path& fresh) {

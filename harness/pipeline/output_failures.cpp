@@ -147,17 +147,8 @@ std::string output_folder_problem(const std::string& path) {
 std::string output_document_problem(const std::string& path) {
   if (std::string problem = output_file_problem(path); !problem.empty()) return problem;
   if (path.empty() || path == "-") return "";
-  // Files are replaced whole, so a link would be replaced by the file, not written through (and
-  // a link planted in a repository must not send a write elsewhere): said now, with its target.
   // A store may be a link (SQLite writes through it); a document may not.
-  std::error_code error;
-  if (std::filesystem::is_symlink(std::filesystem::symlink_status(path, error))) {
-    const std::filesystem::path link = std::filesystem::read_symlink(path, error);
-    return fmt::format(
-        "{} is a symbolic link (to {}): raygate writes a file whole and would replace the link; "
-        "name the file itself",
-        path, link.string());
-  }
+  if (std::string problem = symbolic_link_problem(path); !problem.empty()) return problem;
   char header[16] = {};
   std::ifstream(path, std::ios::binary).read(header, sizeof header);
   if (std::string_view(header, sizeof header) == std::string_view("SQLite format 3\0", 16)) {
@@ -203,10 +194,11 @@ void check_distinct_files(const std::vector<NamedFile>& files) {
     for (std::size_t j = i + 1; j < files.size(); ++j) {
       if (files[j].path.empty() || files[j].path == "-") continue;
       if (!same_file(files[i].path, files[j].path)) continue;
+      const bool both_read = files[i].only_read && files[j].only_read;
       throw UsageError(
-          fmt::format("{} and {} name the same file, {}: one would overwrite the "
-                      "other; give each its own file",
-                      files[i].option, files[j].option, file_named(files[i].path).string()));
+          fmt::format("{} and {} name the same file, {}: {}; give each its own file",
+                      files[i].option, files[j].option, file_named(files[i].path).string(),
+                      both_read ? "one file given twice" : "one would overwrite the other"));
     }
   }
 }

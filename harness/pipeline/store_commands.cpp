@@ -60,6 +60,13 @@ HistoryQuery machine_query(const HistoryQuery& query) {
 
 }  // namespace
 
+std::filesystem::path history_page(const std::string& html_dir) {
+  if (html_dir.empty()) return {};
+  const std::filesystem::path page = std::filesystem::path(html_dir) / "history.html";
+  check_output_path(page, "--html");
+  return page;
+}
+
 HistoryView store_history_view(const std::string& location, const HistoryQuery& query) {
   const auto store = open_store(location, StoreOpen::must_exist);
   HistoryView view = make_history_view(store->measurements(query), query.last_commits,
@@ -67,6 +74,13 @@ HistoryView store_history_view(const std::string& location, const HistoryQuery& 
   view.store = store->location();
   view.role = query.role;
   view.branch = query.branch;
+  // A series the user named that is not there is a typo, as alert says (exit 2), not "no results".
+  if (!query.series.empty() && view.tables.empty()) {
+    throw UsageError(fmt::format(
+        "--series {}: no series in {} matches it (with the other filters); `raygate history "
+        "--format json` lists their ids",
+        query.series, view.store));
+  }
   return view;
 }
 

@@ -23,6 +23,10 @@ namespace raygate {
 std::string store_location_problem(const std::string& location);
 std::string written_store_problem(const std::string& location);
 
+// `history --html DIR`'s page, DIR/history.html, checked as any output is before the store is
+// read (a symbolic link there is refused, exit 2); "" for "".
+std::filesystem::path history_page(const std::string& html_dir);
+
 // The newest query.last_commits commits of each series matching `query`, with the machine's
 // whole history beside them for the drift rule. UsageError when the store does not exist.
 HistoryView store_history_view(const std::string& store, const HistoryQuery& query);

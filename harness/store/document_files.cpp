@@ -59,6 +59,13 @@ nlohmann::json results_json_file(const std::filesystem::path& file) {
   return json;
 }
 
+// -o's files are written whole: a link there is refused before anything is written.
+void refuse_symbolic_link(const std::filesystem::path& file) {
+  if (const std::string problem = symbolic_link_problem(file); !problem.empty()) {
+    throw UsageError("-o: " + problem);
+  }
+}
+
 }  // namespace
 
 ResultsDocument load_results_file(const std::filesystem::path& file) {
@@ -92,6 +99,7 @@ ExportedFiles export_documents(const std::vector<StoredDocument>& documents,
                       "directory, or narrow with --sha or --last 1",
                       documents.size(), out.string()));
     }
+    refuse_symbolic_link(out);
     write_file_atomically(out, document_text(documents.front()));
     return {{out}, true};
   }
@@ -103,6 +111,7 @@ ExportedFiles export_documents(const std::vector<StoredDocument>& documents,
         fmt::format("stored document {}: revisions[].worktree.short_sha", stored.id));
     exported.files.push_back(join_component(out, fmt::format("{}-{}", stored.id, sha),
                                             "exported document name", ".json"));
+    refuse_symbolic_link(exported.files.back());
   }
   for (std::size_t i = 0; i < documents.size(); ++i) {
     write_file_atomically(exported.files[i], document_text(documents[i]));

@@ -257,6 +257,10 @@ TEST_F(HistoryCli, OneTablePerRepositoryAndAdapterWithTrendsThatStayInTheirSerie
   EXPECT_EQ(tables[0]["adapter"], "meson");
   const CliRun suite = run_raygate({"history", "--store", "store.db", "--suite", "full"}, dir);
   EXPECT_THAT(suite.out, HasSubstr("no results in"));
+  // A series named that is not there: a typo, exit 2 as alert's, not "no results" and exit 0.
+  const CliRun series = run_raygate({"history", "--store", "store.db", "--series", "zz"}, dir);
+  EXPECT_EQ(series.exit_code, 2) << series.out;
+  EXPECT_THAT(series.out, HasSubstr("--series zz: no series in"));
 }
 
 // The HTML report's trend plot (trends_from_store, here through `raygate merge`) shows the
@@ -330,6 +334,33 @@ TEST_F(HistoryCli, ExportGivesBackTheImportedFilesByteForByte) {
       run_raygate({"export", "--store", "store.db", "--sha", "ffff", "-o", "x"}, dir);
   EXPECT_EQ(none.exit_code, 2) << none.out;
   EXPECT_THAT(none.out, HasSubstr("no document"));
+}
+
+// The seventh sweep: `history --html DIR` and `export -o DIR/` replaced a symbolic link where
+// they write (its target untouched), where -o and --report refuse one. Both are refused now,
+// before anything is written, and the link and its target stay as they were.
+TEST_F(HistoryCli, ALinkWhereHistoryOrExportWritesIsRefused) {
+  ASSERT_EQ(import(three_commits()).exit_code, 0);
+  write_file_atomically(dir.path() / "keep.txt", "kept");
+  std::filesystem::create_directories(dir.path() / "page");
+  std::filesystem::create_symlink(dir.path() / "keep.txt", dir.path() / "page" / "history.html");
+  const CliRun html = run_raygate({"history", "--store", "store.db", "--html", "page"}, dir);
+  EXPECT_EQ(html.exit_code, 2) << html.out;
+  EXPECT_THAT(html.out, HasSubstr("--html: page/history.html is a symbolic link (to "));
+  ASSERT_EQ(run_raygate({"export", "--store", "store.db", "-o", "out"}, dir).exit_code, 0);
+  const std::filesystem::path first = *std::filesystem::directory_iterator(dir.path() / "out");
+  std::filesystem::remove(first);
+  std::filesystem::create_symlink(dir.path() / "keep.txt", first);
+  const CliRun exported = run_raygate({"export", "--store", "store.db", "-o", "out/"}, dir);
+  EXPECT_EQ(exported.exit_code, 2) << exported.out;
+  EXPECT_THAT(exported.out, HasSubstr(first.filename().string() + " is a symbolic link"));
+  std::filesystem::create_symlink(dir.path() / "keep.txt", dir.path() / "one.json");
+  const CliRun one = run_raygate(
+      {"export", "--store", "store.db", "--sha", fake_sha(2).substr(0, 10), "-o", "one.json"}, dir);
+  EXPECT_EQ(one.exit_code, 2) << one.out;
+  EXPECT_THAT(one.out, HasSubstr("one.json is a symbolic link"));
+  EXPECT_TRUE(std::filesystem::is_symlink(first));
+  EXPECT_EQ(read_file(dir.path() / "keep.txt"), "kept");
 }
 
 // A missing store file is the user's to fix; a team store server that is not there is not.

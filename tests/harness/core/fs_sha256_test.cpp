@@ -52,6 +52,24 @@ TEST(Fs, FailedWriteKeepsTheOldFileAndNamesThePath) {
   EXPECT_EQ(read_file(path), "precious");
 }
 
+// The seventh sweep: a TMPDIR that is no folder was "filesystem error: temp_directory_path: No
+// such file or directory" from run and doctor alike.
+TEST(Fs, ATmpdirThatIsNoFolderIsNamed) {
+  const TempDir dir;
+  const std::string saved = std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "";
+  const std::string missing = (dir.path() / "gone").string();
+  setenv("TMPDIR", missing.c_str(), 1);
+  try {
+    TempDir unusable;
+    ADD_FAILURE() << "a TempDir was made in " << unusable.path();
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("TMPDIR=" + missing + " is not a folder that can be used"),
+              std::string::npos)
+        << e.what();
+  }
+  saved.empty() ? unsetenv("TMPDIR") : setenv("TMPDIR", saved.c_str(), 1);
+}
+
 TEST(Fs, WriteFailingMidwayKeepsTheOldFile) {
   // A file-size limit makes write() fail part way (EFBIG), as a full disk does (ENOSPC): the
   // old content must survive and no temp file may be left.

@@ -3,10 +3,8 @@
 // image file, or an image that is gone blesses nothing at all; a write that fails midway (a
 // full disk) leaves the old set and its manifest whole and in agreement.
 #include <gtest/gtest.h>
-#include <sys/resource.h>
 
 #include <cerrno>
-#include <csignal>
 #include <cstring>
 
 #include <string>
@@ -16,6 +14,7 @@
 #include "core/error.h"
 #include "core/fs.h"
 #include "core/sha256.h"
+#include "../core/file_size_limit.h"
 #include "pipeline/golden_images.h"
 #include "results_fixture.h"
 
@@ -98,7 +97,35 @@ TEST_F(BlessFromRunTest, AHostileDocumentBlessesNothing) {
     EXPECT_NE(std::string(e.what()).find("is gone"), std::string::npos) << e.what();
   }
   EXPECT_FALSE(fs::exists(request_.golden_dir));
+  // The seventh sweep: a folder, device or FIFO where the image was called "gone".
+  tracer_run(1).image = dir_.path() / "run";
+  try {
+    bless();
+    ADD_FAILURE() << "a folder was blessed";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("is not a regular file"), std::string::npos) << e.what();
+  }
   EXPECT_TRUE(log_.lines.empty());
+}
+
+// The seventh sweep: a golden file that is a symbolic link was replaced by the blessed image;
+// refused, as -o refuses one, and nothing blessed.
+TEST_F(BlessFromRunTest, AGoldenThatIsALinkIsRefused) {
+  bless();
+  const fs::path elsewhere = dir_.path() / "elsewhere.ppm";
+  write_file_atomically(elsewhere, "P3\n1 1\n255\n1 2 3\n");
+  fs::remove(request_.golden_dir / "gears.ppm");
+  fs::create_symlink(elsewhere, request_.golden_dir / "gears.ppm");
+  try {
+    bless();
+    ADD_FAILURE() << "blessed over a link";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("gears.ppm is a symbolic link (to " + elsewhere.string()),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_TRUE(fs::is_symlink(request_.golden_dir / "gears.ppm"));
+  EXPECT_EQ(read_file(elsewhere), "P3\n1 1\n255\n1 2 3\n");
 }
 
 TEST_F(BlessFromRunTest, AnotherAdaptersGoldensAreNotOverwritten) {
@@ -137,29 +164,6 @@ bool leftover_temporaries(const fs::path& parent) {
   }
   return false;
 }
-
-// The process may write files of at most `bytes` while it lives: a write past that fails with
-// EFBIG, as one on a full disk fails with ENOSPC.
-class FileSizeLimit {
- public:
-  explicit FileSizeLimit(rlim_t bytes) {
-    getrlimit(RLIMIT_FSIZE, &saved_);
-    previous_ = std::signal(SIGXFSZ, SIG_IGN);
-    rlimit small = saved_;
-    small.rlim_cur = bytes;
-    setrlimit(RLIMIT_FSIZE, &small);
-  }
-  ~FileSizeLimit() {
-    setrlimit(RLIMIT_FSIZE, &saved_);
-    std::signal(SIGXFSZ, previous_);
-  }
-  FileSizeLimit(const FileSizeLimit&) = delete;
-  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
-
- private:
-  rlimit saved_{};
-  void (*previous_)(int) = nullptr;
-};
 
 TEST_F(BlessFromRunTest, AWriteFailingMidwayLeavesTheOldSetAndItsManifestInAgreement) {
   bless();

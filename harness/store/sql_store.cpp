@@ -177,10 +177,22 @@ std::unique_ptr<ResultsStore> open_sqlite_store(const std::filesystem::path& pat
     throw InfraError(fmt::format("results store {}: cannot create its directory: {}", path.string(),
                                  error.message()));
   }
-  auto db = std::make_unique<SqliteDb>(
-      SqliteDb::open(path, mode == StoreOpen::create_if_missing, busy_timeout));
-  db->configure_for_store();
-  return std::make_unique<SqlStore>(std::move(db));
+  const bool existed = std::filesystem::exists(path, error);
+  try {
+    auto db = std::make_unique<SqliteDb>(
+        SqliteDb::open(path, mode == StoreOpen::create_if_missing, busy_timeout));
+    db->configure_for_store();
+    return std::make_unique<SqlStore>(std::move(db));
+  } catch (...) {
+    // A store this call created and could not set up (a full disk) holds nothing: it is not
+    // left behind as an empty file that the next command would take for a broken store.
+    if (!existed) {
+      for (const char* suffix : {"", "-wal", "-shm", "-journal"}) {
+        std::filesystem::remove(path.string() + suffix, error);
+      }
+    }
+    throw;
+  }
 }
 
 std::unique_ptr<ResultsStore> open_postgres_store(const std::string& url, StoreOpen mode) {

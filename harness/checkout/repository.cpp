@@ -101,12 +101,35 @@ void discard_tree(const fs::path& dir) {
   fs::remove_all(aside, ec);
 }
 
+// A URL libgit2 has no transport for is the user's to fix (exit 2), not a fetch that failed (3):
+// git's remote helpers (`ext::cmd`, `fd::`) and schemes other than libgit2's.
+void check_url_transport(const std::string& location) {
+  const std::size_t helper = location.find("::");
+  if (helper != std::string::npos &&
+      location.substr(0, helper).find_first_of("/:") == std::string::npos) {
+    throw UsageError(fmt::format(
+        "repository {}: git's remote helpers ({}::) are not supported; give a path, or an "
+        "https, ssh, git or file URL",
+        location, location.substr(0, helper)));
+  }
+  const std::size_t scheme = location.find("://");
+  if (scheme == std::string::npos) return;  // scp-like: user@host:path
+  const std::string name = location.substr(0, scheme);
+  for (const char* known : {"http", "https", "ssh", "git", "file", "git+ssh", "ssh+git"}) {
+    if (name == known) return;
+  }
+  throw UsageError(fmt::format(
+      "repository {}: no way to fetch a {}:// URL; give a path, or an https, ssh, git or file URL",
+      location, name));
+}
+
 }  // namespace
 
 Repository Repository::open(const std::string& location, const fs::path& cache_dir) {
   Repository out;
   out.cache_dir_ = fs::absolute(cache_dir);
   if (is_url(location)) {
+    check_url_transport(location);
     out.repo_ = open_cached_clone(out.cache_dir_, location, Fetch::always);
     out.where_ = location;
     out.url_base_ = location;

@@ -40,7 +40,7 @@ void add_consistency_command(CLI::App& command, int& exit_code) {
                      "results documents (raygate run/compare --out), one per machine or run");
   add_bounded_option(command, "--min-r2", args.options.min_r2, 0.0, 1.0,
                      "every pair of documents needs at least this r² of per-scene ratios");
-  add_bounded_option(command, "--max-deviation", args.options.max_deviation, 0.0, 100.0,
+  add_bounded_option(command, "--max-deviation", args.options.max_deviation, 0.0001, 1.0,
                      "a scene whose ratio strays further than this fraction from its mean "
                      "over documents is not machine-stable");
   command.add_flag("--allow-mixed", args.options.allow_mixed,

@@ -33,7 +33,7 @@ void add_golden_subcommand(CLI::App& golden, const std::string& name, const std:
                            const std::string& from_run_help, int (*run)(const GoldenOptions&),
                            int& exit_code) {
   const auto [cmd, args] = add_subcommand<GoldenOptions>(golden, name, help, run, exit_code);
-  cmd->add_option("--suite", args->suite, "suite name or file")->capture_default_str();
+  cmd->add_option("--suite", args->suite, "suite name or file (default ci; --from-run: the run's)");
   cmd->add_option("--golden-dir", args->golden_dir,
                   "golden directory (default: golden/raygate-baseline/, the baseline's)")
       ->check(run == run_bless ? writable_folder() : CLI::Validator());  // before bless renders

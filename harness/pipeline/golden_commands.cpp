@@ -11,17 +11,22 @@ namespace raygate {
 namespace {
 
 BaselineGoldens open_goldens(const GoldenOptions& options) {
-  return open_baseline_goldens(options.suite, options.scenes, options.golden_dir, options.work_dir,
-                               options.baseline);
+  return open_baseline_goldens(options.suite.empty() ? "ci" : options.suite, options.scenes,
+                               options.golden_dir, options.work_dir, options.baseline);
 }
 
 // What the options ask that raygate would do wrongly or not at all, refused before any work:
 // --work-dir in the golden folder itself (its scenes/, renders/ and evidence/ would sit among
-// the goldens), and --role, which only --from-run reads.
+// the goldens), --role, which only --from-run reads, and --suite beside it, which it cannot.
 void check_golden_options(const GoldenOptions& options) {
   if (!options.role.empty() && options.from_run.empty()) {
     throw UsageError("--role " + options.role +
                      ": whose images to take from a results document, so it needs --from-run");
+  }
+  if (!options.suite.empty() && !options.from_run.empty()) {
+    throw UsageError("--suite " + options.suite +
+                     ": --from-run takes the suite its results document was measured on; leave "
+                     "--suite out");
   }
   if (options.golden_dir.empty()) return;
   std::error_code error;

@@ -14,7 +14,7 @@
 namespace raygate {
 
 struct GoldenOptions {
-  std::string suite = "ci";
+  std::string suite;                // "": ci; with from_run, the suite the document was measured on
   std::vector<std::string> scenes;  // suite scene ids; empty: all
   std::string golden_dir;  // default: <data root>/golden/raygate-baseline (from_run: /<adapter>)
   std::string work_dir = ".raygate/golden";  // scenes, renders and evidence

@@ -65,9 +65,13 @@ bool is_config_file(const std::filesystem::path& file, const std::string& named_
 void require_config_file(const std::filesystem::path& file, const std::string& named_by) {
   if (is_config_file(file, named_by)) return;
   std::error_code ec;
-  const bool folder = std::filesystem::is_directory(file, ec);
-  throw UsageError(fmt::format("{}{}: {}", named_by, file.string(),
-                               folder ? "is a directory, not a config file" : "no such file"));
+  const std::filesystem::file_status status = std::filesystem::status(file, ec);
+  // /dev/zero is there: "no such file" sent the user looking for a file that exists.
+  const char* what = std::filesystem::is_directory(status) ? "is a directory, not a config file"
+                     : std::filesystem::exists(status)
+                         ? "is not a regular file (a device, FIFO or socket), not a config file"
+                         : "no such file";
+  throw UsageError(fmt::format("{}{}: {}", named_by, file.string(), what));
 }
 
 // ./raygate.toml is read when it exists: one that exists and is no file (a folder, a FIFO) would
@@ -83,9 +87,14 @@ void refuse_default_config_of_another_kind() {
       kProjectConfigFile));
 }
 
+// A line as shown in a message: from its first character, without trailing blanks.
+std::string trimmed_line(const std::string& line, std::size_t start) {
+  return line.substr(start, line.find_last_not_of(" \t\r") + 1 - start);
+}
+
 // What CLI11's reader lets through: a quoted value that never closes (the quote would become
-// part of a path) and a key with nothing after its `=` (the built-in default would be used
-// without a word). Each is refused at its file:line:column.
+// part of a path), a key with nothing after its `=` (the built-in default would be used
+// without a word) and a section, even one with no key after it. Each is refused at its file:line:column.
 void check_values(const std::string& text, const std::filesystem::path& file) {
   std::istringstream lines(text);
   std::string line;
@@ -96,9 +105,12 @@ void check_values(const std::string& text, const std::filesystem::path& file) {
                                    number, nul + 1));
     }
     const std::size_t start = line.find_first_not_of(" \t");
-    if (start == std::string::npos || line[start] == '#' || line[start] == ';' ||
-        line[start] == '[') {
-      continue;
+    if (start == std::string::npos || line[start] == '#' || line[start] == ';') continue;
+    if (line[start] == '[') {  // with no key after it, CLI11 read a section as nothing
+      throw UsageError(
+          fmt::format("{}:{}:{}: {}: sections are not read; write the keys at the "
+                      "top of the file",
+                      file.string(), number, start + 1, trimmed_line(line, start)));
     }
     const std::size_t equals = line.find('=');
     if (equals == std::string::npos || equals <= start) continue;  // CLI11 says what is wrong

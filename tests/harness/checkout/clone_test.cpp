@@ -111,6 +111,21 @@ TEST(CheckoutCloneErrors, AnUnreachableUrlIsAnInfraErrorNamingIt) {
   EXPECT_FALSE(fs::exists(clone_cache_path(dir.path() / "cache", url)));
 }
 
+// Sweeps 10 and 11: `--repo ext::sh -c ...` and an unknown scheme exited 3, "could not measure";
+// libgit2 has no transport for them, so they are the user's to fix, said before any fetch.
+TEST(CheckoutCloneErrors, AUrlNoTransportTakesIsAUsageError) {
+  TempDir dir("raygate-clone-error");
+  for (const std::string url : {"ext::sh -c touch% /tmp/x", "fd::17", "gopher://host/tracer"}) {
+    try {
+      Repository::open(url, dir.path() / "cache");
+      ADD_FAILURE() << "accepted " << url;
+    } catch (const UsageError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("repository " + url + ": ")) << e.what();
+    }
+  }
+  EXPECT_FALSE(fs::exists(dir.path() / "cache" / "repos"));
+}
+
 // A superproject with a submodule "lib" (relative URL ../lib) that itself has a submodule
 // "deep" (absolute URL). Two superproject commits pin "lib" at different commits.
 class CheckoutSubmodule : public ::testing::Test {

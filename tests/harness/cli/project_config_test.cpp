@@ -72,7 +72,12 @@ TEST(ProjectConfig, EnvironmentOverTheFileAndEmptyIsUnset) {
 TEST(ProjectConfig, SectionsAndListsAreRefusedWithTheLine) {
   const TempDir dir;
   write_file_atomically(dir.path() / "a.toml", "store = \"x.db\"\n[run]\nadapter = \"y\"\n");
-  EXPECT_THAT(refusal(dir.path() / "a.toml"), HasSubstr("sections are not read"));
+  EXPECT_THAT(refusal(dir.path() / "a.toml"),
+              HasSubstr("a.toml:2:1: [run]: sections are not read"));
+  // The seventh sweep: a section with no key after it was read as nothing, even by --version.
+  write_file_atomically(dir.path() / "end.toml", "store = \"x.db\"\n  [x]  \n");
+  EXPECT_THAT(refusal(dir.path() / "end.toml"),
+              HasSubstr("end.toml:2:3: [x]: sections are not read"));
   write_file_atomically(dir.path() / "b.toml", "suite = [\"ci\", \"full\"]\n");
   EXPECT_THROW(read_project_config(dir.path() / "b.toml"), UsageError);
   // A list of one was read as its one value (the sweep of 2026-11-29: a store named `a`).
@@ -132,6 +137,16 @@ TEST(ProjectConfig, AFolderNamedAsTheConfigIsSaidToBeAFolder) {
     FAIL() << "a missing --config was accepted";
   } catch (const UsageError& e) {
     EXPECT_THAT(e.what(), HasSubstr("none.toml: no such file"));
+  }
+  // The seventh sweep: RAYGATE_CONFIG=/dev/zero was "no such file".
+  const auto dev_zero = [](const char* name) -> const char* {
+    return std::string_view(name) == "RAYGATE_CONFIG" ? "/dev/zero" : nullptr;
+  };
+  try {
+    load_project_defaults("", dev_zero);
+    FAIL() << "a device was accepted as RAYGATE_CONFIG";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("RAYGATE_CONFIG=/dev/zero: is not a regular file"));
   }
 }
 

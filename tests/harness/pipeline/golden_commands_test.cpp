@@ -82,5 +82,25 @@ TEST(GoldenCommands, OptionsNobodyWouldReadOrAWorkDirAmongTheGoldensAreRefused) 
   }
 }
 
+// The seventh sweep: `golden verify --from-run run.json --suite nosuch` ignored --suite and
+// checked the run's suite, exit 0. A run's images are of the suite it was measured on.
+TEST(GoldenCommands, ASuiteBesideFromRunIsRefused) {
+  SilentProgress lines;
+  GoldenOptions options;
+  options.from_run = "results.json";
+  options.suite = "nosuch";
+  for (const bool bless : {false, true}) {
+    try {
+      bless ? bless_goldens(options, lines) : static_cast<void>(verify_goldens(options, lines));
+      FAIL() << "--suite beside --from-run was accepted";
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("--suite nosuch: --from-run takes the suite its "
+                                           "results document was measured on"),
+                std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace raygate

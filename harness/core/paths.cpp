@@ -31,11 +31,12 @@ ToolPaths locate_tools(const std::filesystem::path& baseline_override) {
   }
   if (!baseline_override.empty()) {
     // The user named it: one that is not there is a usage error (exit 2), not a broken install.
-    paths.baseline = baseline_override;
+    // Absolute: the baseline runs in each run's own folder, where `./raygate-baseline` is not.
     std::error_code ec;
+    paths.baseline = std::filesystem::absolute(baseline_override, ec);
     if (!std::filesystem::is_regular_file(paths.baseline, ec) ||
         ::access(paths.baseline.c_str(), X_OK) != 0) {
-      throw UsageError("--baseline " + paths.baseline.string() +
+      throw UsageError("--baseline " + baseline_override.string() +
                        ": not an executable file (give the path of a raygate-baseline)");
     }
     return paths;

@@ -11,6 +11,7 @@
 #include "core/enum_words.h"
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/process.h"
 #include "doctor/system_facts.h"
 #include "measure/descriptive.h"
 #include "runner/baseline_contender.h"
@@ -25,6 +26,15 @@ TimeSpread spread_of(const std::vector<double>& values) {
   return {median(values), coefficient_of_variation(values), *high / *low};
 }
 
+// Why the doctor's run of the baseline failed, with the end of its log: the log is in the
+// doctor's temporary folder, which is gone by the time the message is read.
+InfraError baseline_failure(const std::string& why, const ProcessSpec& spec) {
+  const std::string tail = log_tail(spec.stdout_path, 10);
+  return InfraError(
+      fmt::format("raygate-baseline could not run the doctor's scene: {}{}", why,
+                  tail.empty() ? " (its log is empty)" : "; its log ended:\n" + tail));
+}
+
 // One timed run of the baseline: the contender's own command and interpretation (its in-process
 // seconds), plus the in-process CPU seconds from its --stats file.
 NoiseRun run_once(const BaselineContender& baseline, const SceneInput& scene,
@@ -33,16 +43,15 @@ NoiseRun run_once(const BaselineContender& baseline, const SceneInput& scene,
   const ProcessSpec spec = baseline.command(scene, run_dir);
   const RunRecord run = baseline.interpret(scene, run_process(spec), spec, run_dir);
   if (!run.ok) {
-    throw InfraError(fmt::format(
-        "raygate-baseline could not run the doctor's scene: {}{} (log: {})", run.outcome,
-        run.failure.empty() ? "" : "; " + run.failure, spec.stdout_path.string()));
+    throw baseline_failure(run.outcome + (run.failure.empty() ? "" : "; " + run.failure), spec);
   }
   double cpu_seconds = 0.0;
   try {
     cpu_seconds =
         nlohmann::json::parse(read_file(run_dir / "stats.json")).at("cpu_seconds").get<double>();
   } catch (const std::exception& e) {
-    throw InfraError((run_dir / "stats.json").string() + ": no cpu_seconds: " + e.what());
+    throw baseline_failure(std::string("its --stats file has no cpu_seconds (") + e.what() + ")",
+                           spec);
   }
   return {run.seconds, cpu_seconds};
 }

@@ -172,8 +172,11 @@ std::vector<std::string> missing_golden_notes(const MissingGoldens& missing,
 std::vector<std::string> document_problems(const ResultsDocument& document) {
   if (document.scenes.empty()) return {"the document holds no scenes: nothing was measured"};
   if (!document.complete) {
-    return {fmt::format("the document is incomplete: the run stopped after {} {}",
-                        document.scenes.size(), document.scenes.size() == 1 ? "scene" : "scenes")};
+    // A partial merge is incomplete too: "the run stopped" was not what happened to its shard.
+    return {
+        fmt::format("the document is incomplete: it holds {} {} (its run stopped early, or "
+                    "a merge lacked shards)",
+                    document.scenes.size(), document.scenes.size() == 1 ? "scene" : "scenes")};
   }
   return {};
 }

@@ -193,10 +193,10 @@ MeasureContext load_measure_context(const MeasureOptions& args,
   if (c.stopping.max_rounds < c.stopping.min_rounds) c.stopping.min_rounds = c.stopping.max_rounds;
   if (!args.policy.empty()) c.policy = load_policy(args.policy);
   c.jobs = args.jobs;
-  c.input_files = {{"--adapter", c.adapter.file},
-                   {"--suite", c.suite.path},
-                   {"--policy", args.policy},
-                   {"--shard-costs", args.shard_costs}};
+  c.input_files = {{"--adapter", c.adapter.file, true},
+                   {"--suite", c.suite.path, true},
+                   {"--policy", args.policy, true},
+                   {"--shard-costs", args.shard_costs, true}};
   warnings = choose_timing(c, args.metric, !args.policy.empty());
   if (const std::string note = repository_unused_note(c.adapter); !note.empty()) {
     warnings.push_back(note);

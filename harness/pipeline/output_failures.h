@@ -79,6 +79,7 @@ void check_output_folder(const std::filesystem::path& path, const std::string& o
 struct NamedFile {
   std::string option;  // "--output", "--report markdown:r.md", "--store", "the results document"
   std::filesystem::path path;
+  bool only_read = false;  // an input: two of them the same file are one file given twice
 };
 
 // Throws UsageError, naming both options, when two of `files` are the same file (one path spelt

@@ -76,8 +76,8 @@ int merge_and_publish(MergeRequest request, const PublishOptions& options,
   if (request.out.empty()) throw UsageError("merge: --output is required (the merged document)");
   std::vector<NamedFile> shards;
   for (const std::string& shard : request.documents)
-    shards.push_back({"the shard " + shard, shard});
-  shards.push_back({"--policy", request.policy});
+    shards.push_back({"the shard " + shard, shard, true});
+  shards.push_back({"--policy", request.policy, true});
   check_publish_targets(options, request.out, "--output", shards);
   request.out = std::filesystem::absolute(request.out).string();
   OutputFailures failures;

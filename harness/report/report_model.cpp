@@ -107,6 +107,13 @@ std::size_t failed_families(const GateResult& gate) {
                     [](const SceneGate& g) { return g.outcome == GateOutcome::fail; }));
 }
 
+// Scenes whose speed change the gate could not decide (INCONCLUSIVE, a warning).
+std::size_t undecided_speed(const std::vector<SceneView>& views) {
+  return static_cast<std::size_t>(std::count_if(views.begin(), views.end(), [](const SceneView& v) {
+    return v.gate.speed == SpeedVerdict::inconclusive && v.speed_outcome == GateOutcome::warn;
+  }));
+}
+
 }  // namespace
 
 Headline headline(const ReportInput& input, const std::vector<SceneView>& views) {
@@ -131,14 +138,20 @@ Headline headline(const ReportInput& input, const std::vector<SceneView>& views)
     line.detail = "nothing was measured";
   } else if (gate.exit_code != 0) {
     line.title = "raygate: incomplete";
-    line.detail = fmt::format("the run stopped after {}", plural(views.size(), "scene", "scenes"));
+    line.detail = "only " + plural(views.size(), "scene", "scenes") + " measured";
   } else {
+    // An undecided speed change is named as such: "pass (1 scene, 1 warning; suite +1418.9%)"
+    // read as a clean result with a huge change (the seventh sweep).
+    const std::size_t undecided = undecided_speed(views);
     line.title = "raygate: pass";
     line.detail = plural(views.size(), "scene", "scenes");
-    if (warned > 0) line.detail += ", " + plural(warned, "warning", "warnings");
+    if (undecided > 0) line.detail += ", " + std::to_string(undecided) + " undecided";
+    if (warned > undecided) line.detail += ", " + plural(warned - undecided, "warning", "warnings");
   }
   if (const auto change = suite_change(input.document)) {
-    line.detail += fmt::format("; suite {}", signed_percent(*change));
+    const bool decided = undecided_speed(views) == 0;
+    line.detail +=
+        fmt::format("; suite {}{}", signed_percent(*change), decided ? "" : ", undecided");
   } else if (const auto score = input.document.scores.find(Role::tracer);
              score != input.document.scores.end() && score->second.score > 0.0) {
     line.detail += fmt::format("; suite score {:.3f}", score->second.score);

@@ -100,6 +100,15 @@ std::string plain_usage_words(std::string text) {
     return text.substr(0, at) + " and " + text.substr(other, end - other) +
            " cannot be given together; give one" + text.substr(end);
   }
+  // "files is required": CLI11's words for an argument left out, named as its help lists it.
+  const std::string_view required = " is required";
+  const std::size_t line_end = std::min(text.find('\n'), text.size());
+  if (const std::string_view first(text.data(), line_end);
+      first.ends_with(required) && !first.starts_with("-") &&
+      first.find(' ') == line_end - required.size()) {
+    return "no " + text.substr(0, line_end - required.size()) + " given; name at least one" +
+           text.substr(line_end);
+  }
   const std::string_view said = ": At Most 1 required but received ";
   const std::size_t at = text.find(said);
   if (at == std::string::npos) return text;

@@ -13,6 +13,7 @@ namespace raygate::test {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 DocumentSpec machine(const std::string& host, double mount_ratio) {
   DocumentSpec spec;
@@ -124,6 +125,22 @@ TEST(DoctorCli, BadRoundsAndMissingBaseline) {
   EXPECT_EQ(r.exit_code, 3) << r.out;
   EXPECT_THAT(r.out, HasSubstr("noise: not measured"));
   EXPECT_THAT(r.out, HasSubstr("governor"));  // the checks are still reported
+}
+
+// The seventh sweep: a baseline that answers --version but fails its run was reported with a log
+// in the doctor's temporary folder, removed on exit; its end is shown instead. A relative
+// --baseline runs too (it did not: each run starts in its own folder).
+TEST(DoctorCli, ABaselineThatFailsItsRunIsShownByItsLog) {
+  TempDir dir;
+  write_file_atomically(dir.path() / "failing-baseline",
+                        "#!/bin/sh\nif [ \"$1\" = --version ]; then echo raygate-baseline 0.0; "
+                        "exit 0; fi\necho 'broken: no scene here'\nexit 7\n");
+  std::filesystem::permissions(dir.path() / "failing-baseline", std::filesystem::perms::owner_all);
+  const CliRun r =
+      run_raygate({"doctor", "--rounds", "2", "--baseline", "./failing-baseline"}, dir);
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_THAT(r.out, HasSubstr("its log ended:\nbroken: no scene here"));
+  EXPECT_THAT(r.out, Not(HasSubstr("(log: ")));
 }
 
 }  // namespace

@@ -277,6 +277,10 @@ TEST_F(HostileDocuments, ThirdSweepValuesAreRefusedInRaygatesWords) {
   expect_usage_error(
       run_raygate({"run", "--adapter", "make-nff", "--store", "s.db", "--no-store"}, dir),
       "raygate: error: --store and --no-store cannot be given together; give one");
+  // The seventh sweep: an argument left out was CLI11's "files is required".
+  expect_usage_error(run_raygate({"import", "--store", "s.db"}, dir),
+                     "raygate: error: no files given; name at least one");
+  expect_usage_error(run_raygate({"adapter", "check"}, dir), "no files given; name at least one");
   // history and merge compare these times as text: "yesterday" sorted among them.
   const std::string dated = document("dated.json", [](json& j) { j["started_at"] = "yesterday"; });
   expect_usage_error(run_raygate({"gate", dated}, dir),

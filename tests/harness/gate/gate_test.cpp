@@ -359,7 +359,9 @@ TEST(GateVerdict, AnIncompleteDocumentCannotPass) {
   const GateResult gate = evaluate_gate(document, GatePolicy{});
   EXPECT_EQ(gate.exit_code, 3);
   ASSERT_EQ(gate.problems.size(), 1u);
-  EXPECT_EQ(gate.problems[0], "the document is incomplete: the run stopped after 1 scene");
+  EXPECT_EQ(gate.problems[0],
+            "the document is incomplete: it holds 1 scene (its run stopped early, or a merge "
+            "lacked shards)");
 }
 
 // Nothing measured is not a pass, complete or not.

@@ -98,6 +98,17 @@ TEST(OutputFailures, TwoNamesForOneFileAreRefused) {
   EXPECT_THROW(check_distinct_files({{"--report markdown:link.db", dir.path() / "link.db"},
                                      {"the results document", store}}),
                UsageError);
+  // Two inputs that are one file (`merge a.json a.json`) are not one overwriting the other.
+  try {
+    check_distinct_files(
+        {{"the shard a.json", store, true}, {"the shard link.db", dir.path() / "link.db", true}});
+    ADD_FAILURE() << "one shard given twice was taken";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("name the same file, " + store.string() +
+                                         ": one file given twice"),
+              std::string::npos)
+        << e.what();
+  }
   // Different files, standard output twice and the default place pass.
   check_distinct_files({{"--output", dir.path() / "r.json"},
                         {"--report markdown:-", "-"},

@@ -358,6 +358,21 @@ TEST(ConsoleReport, NoScenesIsNoPass) {
   at(text, "exit 3");
 }
 
+// The seventh sweep: an undecided change of +1418.9% ended "raygate: pass (1 scene, 1 warning;
+// suite +1418.9%)", which a newcomer read as a clean result with a huge change.
+TEST(Reports, AnUndecidedChangeIsCalledUndecidedInTheLastLine) {
+  Fixture f(true);
+  f.document.scenes.resize(1);  // balls alone
+  ChangeSummary& change = *f.document.scenes[0].change;
+  change.change = 14.189;
+  change.change_interval = {-0.5, 30.0};
+  f.document.scenes[0].change_verdict = ChangeVerdict::inconclusive;
+  f.gate = evaluate_gate(f.document, f.policy);
+  for (const char* format : {"console", "markdown"}) {
+    at(f.render(format), "(1 scene, 1 undecided; suite +1418.9%, undecided)");
+  }
+}
+
 TEST(MarkdownReport, NoGoldensIsSaidOnce) {
   Fixture f(false);
   without_goldens(f);

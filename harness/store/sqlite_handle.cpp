@@ -28,6 +28,20 @@ std::string sql_context(const std::string& sql) {
   return line.size() > 72 ? line.substr(0, 69) + "..." : line;
 }
 
+// SQLite cannot open a store whose -wal or -shm file is a symbolic link (it refuses to follow
+// one), and says only "unable to open database file": the link is named.
+std::string side_file_note(const std::filesystem::path& path) {
+  for (const char* suffix : {"-wal", "-shm"}) {
+    std::error_code error;
+    const std::filesystem::path side = path.string() + suffix;
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(side, error))) {
+      return fmt::format("; {} is a symbolic link, which SQLite does not open: remove it",
+                         side.string());
+    }
+  }
+  return "";
+}
+
 [[noreturn]] void throw_sqlite_error(int code, const std::string& message,
                                      const std::filesystem::path& path, const std::string& sql,
                                      std::chrono::milliseconds busy_timeout) {
@@ -46,8 +60,8 @@ std::string sql_context(const std::string& sql) {
                     "name a raygate results database",
                     path.string(), message));
   }
-  throw InfraError(fmt::format("results store {}: SQLite error {} ({}) while {}", path.string(),
-                               code, message, where));
+  throw InfraError(fmt::format("results store {}: SQLite error {} ({}) while {}{}", path.string(),
+                               code, message, where, side_file_note(path)));
 }
 
 }  // namespace

@@ -172,6 +172,24 @@ TEST(StoreSqlite, AnInjectedFailureRollsBackAndKeepsEarlierDocuments) {
   EXPECT_EQ(store->documents({}).size(), 2u);
 }
 
+// The seventh sweep: a store whose -wal file is a symbolic link gave only SQLite's "unable to
+// open database file"; the link is named now.
+TEST(StoreSqlite, AWalFileThatIsALinkIsNamed) {
+  TempDir dir;
+  const auto path = dir.path() / "results.db";
+  open_store(path.string())->add(make_document(two_scenes(1)), "main");
+  write_file_atomically(dir.path() / "elsewhere", "");
+  std::filesystem::create_symlink(dir.path() / "elsewhere", path.string() + "-wal");
+  try {
+    open_store(path.string())->add(make_document(two_scenes(2)), "main");
+    FAIL() << "a -wal link was opened";
+  } catch (const InfraError& e) {
+    EXPECT_THAT(e.what(),
+                HasSubstr("results.db-wal is a symbolic link, which SQLite does not open"));
+  }
+  EXPECT_EQ(read_file(dir.path() / "elsewhere"), "");
+}
+
 TEST(StoreSqlite, ALockedDatabaseIsAnInfrastructureError) {
   TempDir dir;
   const auto path = dir.path() / "results.db";

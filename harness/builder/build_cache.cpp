@@ -185,7 +185,9 @@ void prepare_fresh_entry(const BuildCacheEntry& entry) {
 
 void publish_build(const BuildCacheEntry& entry, const BuildRecord& record) {
   sync_filesystem_of(entry.dir);
-  write_file_atomically(entry.record, build_record_to_json(record).dump(2) + "\n");
+  const nlohmann::json json = build_record_to_json(record);
+  write_file_atomically(entry.record,
+                        json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 fs::path set_aside_failed_build(const BuildCacheEntry& entry) {

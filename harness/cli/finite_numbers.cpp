@@ -1,6 +1,7 @@
 #include "cli/finite_numbers.h"
 
 #include "core/number_text.h"
+#include "core/utf8.h"
 
 namespace raygate::cli {
 
@@ -13,8 +14,8 @@ void refuse_empty_and_non_finite_values(CLI::App& app) {
   const CLI::Validator given(empty_value_problem, "", "");
   const CLI::Validator whole(whole_number_problem, "", "");
   for (CLI::Option* option : app.get_options()) {
-    if (option->get_type_size() == 0) continue;  // a flag
-    option->check(given);
+    if (option->get_type_size() == 0) continue;                               // a flag
+    option->check(given)->check(CLI::Validator(utf8_value_problem, "", ""));  // paths in JSON
     const std::string type = option->get_type_name();
     // "1e9" for a count: CLI11 said only "Could not convert".
     if (type.rfind("INT", 0) == 0 || type.rfind("UINT", 0) == 0) option->check(whole);

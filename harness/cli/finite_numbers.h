@@ -8,8 +8,8 @@
 
 namespace raygate::cli {
 
-// Checks under `app` (itself and its subcommands, however deep): each option's value is not
-// empty, and each FLOAT option's is finite; a usage error naming the option, exit 2.
+// Checks under `app` and its subcommands, however deep: each option's value is not empty and is
+// UTF-8 text, and each FLOAT option's is finite; a usage error naming the option, exit 2.
 void refuse_empty_and_non_finite_values(CLI::App& app);
 
 }  // namespace raygate::cli

@@ -243,8 +243,8 @@ ImageCheck check_runs_against_golden(Role role, const std::vector<std::filesyste
   if (auto problem = golden_noise_problem(stats, where)) {
     return untrusted_golden(role, first, golden.expected, std::move(*problem));
   }
-  return check_noisy_against_stats(role, actual, golden.expected, golden_dir, noise->second,
-                                   thresholds, evidence_dir, golden.stem);
+  return check_noisy_against_stats(role, actual, golden.expected, golden_dir, *golden.entry,
+                                   noise->second, thresholds, evidence_dir, golden.stem);
 }
 
 ImageCheck check_against_golden(Role role, const std::filesystem::path& actual,

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include "compare/image_file.h"
 #include "core/error.h"
 
 namespace raygate {
@@ -26,7 +27,7 @@ std::string first_line(const std::string& text) {
 }
 
 OIIO::ImageBuf load_rgb(const std::filesystem::path& path) {
-  OIIO::ImageBuf buf(path.string());
+  OIIO::ImageBuf buf = current_image(path);
   if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
     throw UsageError(path.string() + ": cannot read image: " + first_line(buf.geterror()));
   }
@@ -74,7 +75,7 @@ NonFinite nonfinite_pixels(const OIIO::ImageBuf& rgb) {
 }  // namespace
 
 std::string unreadable_image(const std::filesystem::path& image) {
-  OIIO::ImageBuf buf(image.string());
+  OIIO::ImageBuf buf = current_image(image);
   if (buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) return {};
   return image.string() + ": cannot read image: " + first_line(buf.geterror());
 }

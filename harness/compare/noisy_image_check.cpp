@@ -254,7 +254,8 @@ ImageCheck check_noisy_images(Role role, ImageReference reference,
 ImageCheck check_noisy_against_stats(Role role, const std::vector<std::filesystem::path>& actual,
                                      const std::filesystem::path& mean_file,
                                      const std::filesystem::path& golden_dir,
-                                     const GoldenNoise& noise, const NoisyThresholds& thresholds,
+                                     const GoldenEntry& entry, const GoldenNoise& noise,
+                                     const NoisyThresholds& thresholds,
                                      const std::filesystem::path& evidence_dir,
                                      const std::string& stem) {
   ImageCheck check{role,
@@ -274,6 +275,13 @@ ImageCheck check_noisy_against_stats(Role role, const std::vector<std::filesyste
                                static_cast<int>(noise.runs), noise.inflation);
   } catch (const Error& e) {
     check.error = e.what();
+    return check;
+  }
+  // Sweep 12: both images resized, their hashes updated, called the tracer's image DIFFERENT.
+  if (golden.width != entry.width || golden.height != entry.height) {
+    check.error = fmt::format("{} is {}x{}, but the manifest lists it at {}x{} ({})", entry.file,
+                              golden.width, golden.height, entry.width, entry.height,
+                              (golden_dir / "manifest.json").string());
     return check;
   }
   if (auto problem = nonsense_statistics(golden, mean_file, golden_dir / noise.variance_file)) {

@@ -35,11 +35,14 @@ ImageCheck check_noisy_images(Role role, ImageReference reference,
                               const NoisyThresholds& thresholds,
                               const std::filesystem::path& evidence_dir, const std::string& stem);
 
-// Against the golden statistics `noise` (whose mean image is `mean_file`).
+// Against the golden statistics `noise` (whose mean image is `mean_file`, listed in the manifest
+// as `entry`): statistics of another size than the entry lists are an error of the golden, not
+// a difference of the tracer's.
 ImageCheck check_noisy_against_stats(Role role, const std::vector<std::filesystem::path>& actual,
                                      const std::filesystem::path& mean_file,
                                      const std::filesystem::path& golden_dir,
-                                     const GoldenNoise& noise, const NoisyThresholds& thresholds,
+                                     const GoldenEntry& entry, const GoldenNoise& noise,
+                                     const NoisyThresholds& thresholds,
                                      const std::filesystem::path& evidence_dir,
                                      const std::string& stem);
 

@@ -8,6 +8,7 @@
 
 #include <stdexcept>
 
+#include "compare/image_file.h"
 #include "core/error.h"
 
 namespace raygate {
@@ -50,7 +51,7 @@ const std::vector<int>& default_tile_sides() {
 }
 
 RgbImage read_rgb_image(const std::filesystem::path& path) {
-  OIIO::ImageBuf buf(path.string());
+  OIIO::ImageBuf buf = current_image(path);
   if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
     throw UsageError(path.string() + ": cannot read image: " + buf.geterror());
   }

@@ -70,6 +70,10 @@ std::string terminal_text(std::string_view text) {
   return escaped_where(text, is_terminal_control);
 }
 
+std::string terminal_line(std::string_view text) {
+  return escaped_where(text, [](std::uint32_t code) { return code != '\t' && is_unseen(code); });
+}
+
 std::string markup_text(std::string_view text) { return escaped_where(text, is_markup_control); }
 
 }  // namespace raygate

@@ -17,6 +17,11 @@ namespace raygate {
 // "\x7f", "\u009b", "\u202e". Everything else is kept.
 std::string terminal_text(std::string_view text);
 
+// terminal_text for one line of output that quotes a document or a tracer: a newline escaped too
+// ("\x0a"), so a forged failure text cannot start a line of its own (a fake "gate: PASS" in a CI
+// log).
+std::string terminal_line(std::string_view text);
+
 // For documents: XML 1.0 (JUnit), HTML and Markdown, before their markup is escaped. What XML
 // 1.0 forbids (C0 controls except tab, newline and carriage return; U+FFFE, U+FFFF) and what
 // terminal_text hides for being unseen or reordering (DEL, C1, bidi controls) become the same

@@ -1,5 +1,7 @@
 #include "core/utf8.h"
 
+#include <cstdio>
+
 namespace raygate {
 namespace {
 
@@ -59,6 +61,23 @@ bool is_valid_utf8(std::string_view text) {
     text.remove_prefix(sequence.length);
   }
   return true;
+}
+
+std::string utf8_value_problem(const std::string& text) {
+  std::string_view rest = text;
+  while (!rest.empty()) {
+    const Sequence sequence = next_sequence(rest);
+    if (!sequence.valid) {
+      char hex[8];
+      std::snprintf(hex, sizeof hex, "0x%02X", static_cast<unsigned char>(rest.front()));
+      return std::string("not UTF-8 text (byte ") + hex + " at " +
+             std::to_string(text.size() - rest.size() + 1) +
+             "): raygate writes names and paths into JSON documents, which hold only text; "
+             "rename it";
+    }
+    rest.remove_prefix(sequence.length);
+  }
+  return "";
 }
 
 std::string repaired_utf8(std::string_view text) {

@@ -18,6 +18,11 @@ inline constexpr std::string_view kReplacementCharacter = "\xEF\xBF\xBD";
 // (U+D800..U+DFFF), nothing above U+10FFFF, no truncated sequence.
 bool is_valid_utf8(std::string_view text);
 
+// Why a value the user gave cannot be taken as text (a path or name with bytes that are not
+// UTF-8): it would be written into JSON, which holds only text. "" when it is UTF-8. A check on
+// every option (cli/finite_numbers.h): paths cannot be repaired without naming another file.
+std::string utf8_value_problem(const std::string& text);
+
 // `text` with every maximal invalid subpart replaced by one U+FFFD (Unicode's recommended
 // practice, also the WHATWG decoder's): "\xE2\x82" (a truncated euro sign) is one U+FFFD,
 // "\xC0\xAF" (an overlong '/') two. Valid text comes back unchanged.

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <utility>
 
+#include "compare/image_file.h"
 #include "adapter/adapter.h"
 #include "compare/golden.h"
 #include "compare/image_check.h"
@@ -213,6 +215,20 @@ ImageKind run_image_kind(const ResultsDocument& document, const RevisionRecord& 
   return ImageKind::deterministic;
 }
 
+// A golden judges every later image: one holding NaN or infinite values is refused before it is
+// written (sweep 12: bless wrote such a mean and variance, which verify then refused).
+void refuse_nonfinite(const std::vector<float>& values, int width, const std::string& what) {
+  const auto bad =
+      std::find_if(values.begin(), values.end(), [](float v) { return !std::isfinite(v); });
+  if (bad == values.end()) return;
+  const auto pixel = static_cast<std::size_t>(bad - values.begin()) / 3;
+  const auto columns = static_cast<std::size_t>(std::max(width, 1));
+  throw UsageError(fmt::format(
+      "{} holds NaN or infinite values (the first at pixel ({}, {})): a golden must be finite; "
+      "fix the tracer's images before blessing them",
+      what, pixel % columns, pixel / columns));
+}
+
 // A Monte Carlo tracer's goldens: per scene the mean and variance of every run's image (each
 // rendered with its own seed), written into `stats_dir` before any is blessed.
 std::vector<Blessing> monte_carlo_blessings(const ChosenImages& chosen, Role role,
@@ -229,6 +245,9 @@ std::vector<Blessing> monte_carlo_blessings(const ChosenImages& chosen, Role rol
                        "seeds (run with more rounds: --min-rounds)");
     }
     const NoisyImageStats stats = stats_of_images(images);
+    const std::string of = " of the " + role_name(role) + " images of '" + e.id + "'";
+    refuse_nonfinite(stats.mean, stats.width, "the mean" + of);
+    refuse_nonfinite(stats.variance, stats.width, "the variance" + of);
     const std::string mean_file = e.id + ".mean.exr";
     GoldenNoise noise{stats.runs, e.id + ".variance.exr", {}, stats.inflation};
     write_stats_images(stats, stats_dir / mean_file, stats_dir / noise.variance_file);
@@ -450,10 +469,12 @@ std::vector<Blessing> deterministic_blessings(const ChosenImages& chosen,
   std::vector<Blessing> blessings;
   for (const auto& [scene, image] : chosen) {
     const SuiteScene& e = scene->entry;
-    OIIO_NAMESPACE::ImageBuf decoded(image.string());
+    OIIO_NAMESPACE::ImageBuf decoded = current_image(image);
     if (!decoded.init_spec(image.string(), 0, 0)) {
       throw UsageError(image.string() + ": cannot read image: " + decoded.geterror());
     }
+    const RgbImage pixels = read_rgb_image(image);
+    refuse_nonfinite(pixels.rgb, pixels.width, "'" + e.id + "': " + image.string());
     // The hash is provenance only: goldens are compared by decoded pixels, never by bytes.
     blessings.push_back(
         {e.id + image.extension().string(),

@@ -188,6 +188,13 @@ MeasureContext load_measure_context(const MeasureOptions& args,
         "program once)");
   }
   check_named_cpus(args, c.schedule.kind);
+  // Sweep 12: a 2-thread adapter with pin_cpus ran on both duet CPUs while the other side ran.
+  if (c.schedule.kind == ScheduleKind::duet && c.adapter.threads > 1) {
+    throw UsageError(fmt::format(
+        "--schedule duet runs two programs at once, one CPU each, but {}'s tracer runs {} "
+        "threads (its adapter's threads); measure it with the alternate schedule",
+        c.adapter.name, c.adapter.threads));
+  }
   c.stopping = args.stopping;
   c.stopping.max_rounds = std::max(c.stopping.max_rounds, std::size_t{1});
   if (c.stopping.max_rounds < c.stopping.min_rounds) c.stopping.min_rounds = c.stopping.max_rounds;

@@ -11,6 +11,7 @@
 #include "pipeline/output_failures.h"
 #include "store/document_files.h"
 #include "store/postgres_url.h"
+#include "store/schema.h"
 
 namespace raygate {
 
@@ -34,10 +35,20 @@ std::string written_store_problem(const std::string& location) {
   // A file that is there and is no SQLite database (a results document, a text file) was found
   // only once the measurement was done, and the store left unwritten with a warning.
   if (std::filesystem::file_size(location, error) > 0 && !error) {
-    char header[16] = {};
-    std::ifstream(location, std::ios::binary).read(header, sizeof header);
-    if (std::string_view(header, sizeof header) != std::string_view("SQLite format 3\0", 16)) {
+    unsigned char header[64] = {};
+    std::ifstream(location, std::ios::binary).read(reinterpret_cast<char*>(header), sizeof header);
+    if (std::string_view(reinterpret_cast<const char*>(header), 16) !=
+        std::string_view("SQLite format 3\0", 16)) {
       return location + " is not an SQLite database; name a raygate results store, or a new file";
+    }
+    // The schema version (SQLite's user_version, bytes 60..63 of the header, big-endian): a
+    // newer raygate's store was found only after the whole measurement (sweep 12).
+    const int version = (header[60] << 24) | (header[61] << 16) | (header[62] << 8) | header[63];
+    if (const int known = store_migrations().back().version; version > known) {
+      return fmt::format(
+          "{}: schema version {} is newer than this raygate knows ({}); use a "
+          "newer raygate, or another store",
+          location, version, known);
     }
   }
   return output_file_problem(location);

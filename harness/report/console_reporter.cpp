@@ -80,7 +80,7 @@ std::vector<std::size_t> widths_of(const std::vector<Row>& rows) {
   std::vector<std::size_t> widths(rows.front().size(), 0);
   for (const Row& row : rows) {
     for (std::size_t i = 0; i < row.size(); ++i) {
-      widths[i] = std::max(widths[i], terminal_text(row[i]).size());
+      widths[i] = std::max(widths[i], terminal_line(row[i]).size());
     }
   }
   return widths;
@@ -90,7 +90,7 @@ std::string padded(const Row& row, const std::vector<std::size_t>& widths, std::
   std::string line;
   for (std::size_t i = 0; i < columns; ++i) {
     if (widths[i] == 0) continue;
-    line += fmt::format("{:<{}}  ", terminal_text(row[i]), widths[i]);
+    line += fmt::format("{:<{}}  ", terminal_line(row[i]), widths[i]);
   }
   return line;
 }
@@ -104,7 +104,7 @@ void add_header(const ReportInput& input, Spans& spans) {
   } else if (const std::string tracer = revision_line(d, Role::tracer); !tracer.empty()) {
     line += ": " + tracer;
   }
-  spans.push_back(plain(line + "\n"));
+  spans.push_back(plain(terminal_line(line) + "\n"));
   if (const std::string machine = machine_line(d.machine); !machine.empty()) {
     spans.push_back(dim("machine: " + machine));
     spans.push_back(plain("\n"));
@@ -154,7 +154,9 @@ void add_footer(const ReportInput& input, const std::vector<SceneView>& views, S
     spans.push_back(painted("problem: " + problem, GateOutcome::unmeasured));
     spans.push_back(plain("\n"));
   }
-  for (const std::string& note : input.gate.notes) spans.push_back(plain("note: " + note + "\n"));
+  for (const std::string& note : input.gate.notes) {
+    spans.push_back(plain("note: " + terminal_line(note) + "\n"));
+  }
   const Headline line = headline(input, views);
   const int exit_code = input.exit_code();
   const GateOutcome overall = exit_code == 0   ? GateOutcome::pass
@@ -168,7 +170,9 @@ void add_footer(const ReportInput& input, const std::vector<SceneView>& views, S
 
 void ConsoleReporter::render(const Spans& spans, std::ostream& out) const {
   for (const Span& span : spans) {
-    const std::string text = terminal_text(span.text);
+    // A styled span is one line (a reason, a machine line); plain ones carry the line ends.
+    const std::string text =
+        span.style == Style::plain ? terminal_text(span.text) : terminal_line(span.text);
     if (!colour_ || span.style == Style::plain) {
       out << text;
     } else if (span.style == Style::dim) {

@@ -65,19 +65,19 @@ void print_gate_summary(const GateResult& gate, std::FILE* stream) {
     for (const SceneGate& scene : all_gates(gate)) {
       if (scene.outcome != outcome) continue;
       for (const std::string& reason : scene.reasons) {
-        fmt::print(stream, "{:<10} {:<10} {}\n", to_string(outcome), terminal_text(scene.id),
-                   terminal_text(reason));
+        fmt::print(stream, "{:<10} {:<10} {}\n", to_string(outcome), terminal_line(scene.id),
+                   terminal_line(reason));
       }
     }
   }
   // A document's text (commit subjects, paths) reaches these lines: a terminal must not obey it.
-  for (const std::string& note : gate.notes) fmt::print(stream, "note: {}\n", terminal_text(note));
+  for (const std::string& note : gate.notes) fmt::print(stream, "note: {}\n", terminal_line(note));
   const char* verdict = gate.exit_code == 0   ? "PASS"
                         : gate.exit_code == 1 ? "FAIL (regression)"
                                               : "COULD NOT MEASURE";
   std::string why;
   for (const std::string& problem : gate.problems) why += "; " + problem;
-  fmt::print(stream, "gate: {}: {}{}\n", verdict, counts(gate), terminal_text(why));
+  fmt::print(stream, "gate: {}: {}{}\n", verdict, counts(gate), terminal_line(why));
 }
 
 }  // namespace raygate

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/fs.h"
+#include "compare/image_file.h"
 #include "core/sanitize.h"
 #include "report/html_parts.h"
 
@@ -39,7 +40,7 @@ std::string lower_extension(const std::filesystem::path& path) {
 
 // Browsers do not show PPM or EXR: convert through OpenImageIO (8 bits, as the evidence is).
 std::optional<std::string> converted_png(const std::filesystem::path& path) {
-  OIIO::ImageBuf image(path.string());
+  OIIO::ImageBuf image = current_image(path);
   if (!image.read(0, 0, true)) return std::nullopt;
   const TempDir temp("raygate-report");
   const std::filesystem::path png = temp.path() / "image.png";

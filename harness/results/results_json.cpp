@@ -307,7 +307,10 @@ ResultsDocument results_from_json(const nlohmann::json& j, const std::string& or
 }
 
 void write_results(const ResultsDocument& document, const std::filesystem::path& path) {
-  write_file_atomically(path, to_json(document).dump(1) + "\n");
+  // A byte that is not UTF-8 (a path from a folder named in Latin-1) is written as U+FFFD: the
+  // document is kept, not lost to nlohmann's type_error.316 after the measuring.
+  write_file_atomically(
+      path, to_json(document).dump(1, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 ResultsDocument read_results(const std::filesystem::path& path) {

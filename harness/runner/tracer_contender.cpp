@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <system_error>
 
@@ -101,6 +102,20 @@ std::string image_problem(const std::filesystem::path& image) {
   return {};
 }
 
+// A reported time the process could not have spent (the sweep's `RTIME: 1e308` from a 0.03 s
+// process, or a unit of ms read as s): its threads' time at most, with the clocks' slack. Taken,
+// it was written into documents raygate's own readers refuse.
+std::string reported_time_problem(double reported_seconds, const ProcessResult& result,
+                                  const Adapter& adapter) {
+  const double threads = static_cast<double>(std::max(adapter.threads, 1));
+  if (reported_seconds <= result.wall_seconds * threads * 1.05 + 0.05) return "";
+  return fmt::format(
+      "printed a time of {:.6g} s, longer than its process ran ({:.3f} s of wall time{}): "
+      "timing.regex or timing.unit does not read what the tracer prints",
+      reported_seconds, result.wall_seconds,
+      adapter.threads > 1 ? fmt::format(", {} threads", adapter.threads) : "");
+}
+
 }  // namespace
 
 RunRecord TracerContender::interpret(const SceneInput& scene, const ProcessResult& result,
@@ -131,6 +146,12 @@ RunRecord TracerContender::interpret(const SceneInput& scene, const ProcessResul
       run.ok = false;
       run.failure = adapter.name + " printed no positive time matching timing.regex '" +
                     adapter.timing.regex + "'";
+      return run;
+    }
+    if (const std::string problem = reported_time_problem(*reported, result, adapter);
+        !problem.empty()) {
+      run.ok = false;
+      run.failure = adapter.name + " " + problem;
       return run;
     }
     run.reported_seconds = reported;

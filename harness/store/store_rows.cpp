@@ -179,7 +179,9 @@ std::optional<int> offset_seconds(std::string_view text, std::size_t pos) {
 
 }  // namespace
 
-std::string canonical_json(const ResultsDocument& document) { return to_json(document).dump(); }
+std::string canonical_json(const ResultsDocument& document) {
+  return to_json(document).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
 
 DocumentRows document_rows(const ResultsDocument& document, const std::string& branch,
                            const std::string& stored_at) {

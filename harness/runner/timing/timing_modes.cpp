@@ -100,12 +100,10 @@ const TimingMode& adapter_timing_mode(const Timing& timing) {
 }
 
 const TimingMode& resolve_timing_mode(const Timing& adapter_timing, std::string_view choice) {
+  // Sweep 12: `--timing wall` on an adapter that reports its time was dropped without a word
+  // (and the document recorded a metric never used); --timing is the user's, for both sides.
   if (choice.empty()) return adapter_timing_mode(adapter_timing);
-  const TimingMode& chosen = timing_mode(choice);
-  if (chosen.source() == TimingSource::process && adapter_timing.source != TimingSource::process) {
-    return adapter_timing_mode(adapter_timing);
-  }
-  return chosen;
+  return timing_mode(choice);
 }
 
 }  // namespace raygate

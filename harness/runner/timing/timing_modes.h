@@ -25,9 +25,9 @@ std::string timing_choices_help();
 // one mode of a reported or simulated source.
 const TimingMode& adapter_timing_mode(const Timing& timing);
 
-// The mode of a measurement: `choice` (--timing; "" = none) or the adapter's. A process clock
-// chosen replaces only a process-timed adapter's clock: a tracer that reports its own time, or
-// one timed by simulation, keeps its source.
+// The mode of a measurement: `choice` (--timing; "" = none) or the adapter's. A choice replaces
+// any source: `--timing wall` times a tracer that reports its own time by its process's wall
+// clock, start-up and all.
 const TimingMode& resolve_timing_mode(const Timing& adapter_timing, std::string_view choice);
 
 }  // namespace raygate

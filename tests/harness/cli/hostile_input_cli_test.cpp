@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -281,6 +282,14 @@ TEST_F(HostileDocuments, ThirdSweepValuesAreRefusedInRaygatesWords) {
   expect_usage_error(run_raygate({"import", "--store", "s.db"}, dir),
                      "raygate: error: no files given; name at least one");
   expect_usage_error(run_raygate({"adapter", "check"}, dir), "no files given; name at least one");
+  // Sweep 12: a path with bytes that are not UTF-8 ended in "internal error: [json.exception.
+  // type_error.316]", for --golden-dir only after the whole measurement.
+  for (const std::vector<std::string>& args :
+       {std::vector<std::string>{"run", "--adapter", "make-nff", "--cache-dir", "nu\xff\xfe"},
+        {"run", "--adapter", "make-nff", "--golden-dir", "\xff"},
+        {"merge", "a\xff.json", "b.json", "-o", "m.json"}}) {
+    expect_usage_error(run_raygate(args, dir), "not UTF-8 text (byte 0xFF at ");
+  }
   // history and merge compare these times as text: "yesterday" sorted among them.
   const std::string dated = document("dated.json", [](json& j) { j["started_at"] = "yesterday"; });
   expect_usage_error(run_raygate({"gate", dated}, dir),
@@ -341,6 +350,20 @@ TEST_F(HostileDocuments, FifthSweepNamesTooLongToReadAreTheUsers) {
   const CliRun gated = run_raygate({"gate", odd}, dir);
   EXPECT_EQ(gated.out.find('\0'), std::string::npos) << gated.out;
   EXPECT_EQ(gated.out.find('\x1b'), std::string::npos) << gated.out;
+  // Sweep 12: a newline in a forged failure text started a line of its own in gate's and
+  // report's console output (a fake "gate: PASS" in a CI log).
+  const std::string forged = document("forged.json", [](json& j) {
+    json failed = j["scenes"][0]["rounds"][0]["runs"]["tracer"];
+    failed["ok"] = false;
+    failed["outcome"] = "crashed\ngate: PASS: 1 scene";
+    j["scenes"][0]["failure"] = {{"role", "tracer"}, {"run", failed}};
+    j["scenes"][0]["status"] = "failed";
+  });
+  for (const char* command : {"gate", "report"}) {
+    const CliRun r = run_raygate({command, forged}, dir);
+    EXPECT_EQ(r.out.find("\ngate: PASS"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("crashed\\x0agate: PASS"), std::string::npos) << r.out;
+  }
   // Values said in CLI11's words, or a form blamed for a number out of range.
   expect_usage_error(
       run_raygate({"scenes", "generate", "tetra", "-s", "99999999999999999999"}, dir),
@@ -351,6 +374,16 @@ TEST_F(HostileDocuments, FifthSweepNamesTooLongToReadAreTheUsers) {
   expect_usage_error(
       run_raygate({"run", "--adapter", "make-nff", "--schedule", "duet", "--duet-cpus", "-1"}, dir),
       "--duet-cpus -1: CPUs are numbered from 0");
+  // Sweep 12: a tracer of 2 pinned threads ran on both duet CPUs while the other side ran.
+  json threaded =
+      json::parse(read_file(fs::path(RAYGATE_SOURCE_DIR) / "adapters" / "make-nff.json"));
+  threaded["threads"] = 2;
+  threaded["pin_cpus"] = true;
+  write_file_atomically(dir.path() / "threaded.json", threaded.dump());
+  expect_usage_error(
+      run_raygate({"run", "--adapter", "threaded.json", "--schedule", "duet"}, dir),
+      "--schedule duet runs two programs at once, one CPU each, but make-nff's tracer runs 2 "
+      "threads");
   write_file_atomically(dir.path() / "notes.txt", "x");
   expect_usage_error(run_raygate({"export", "--store", "team.db", "-o", "notes.txt"}, dir),
                      "a file not named .json; export writes FILE.json, or a directory");
@@ -481,6 +514,15 @@ TEST_F(HostileDocuments, FourthSweepInputsAreNotOverwrittenAndPlacesAreTried) {
                      "more than the 255 a file system allows");
   expect_usage_error(run_raygate({"run", "--adapter", "make-nff", "--store", "policy.json"}, dir),
                      "--store: policy.json is not an SQLite database");
+  // Sweep 12: a store of a newer raygate's schema was found only after the whole measurement.
+  ASSERT_EQ(run_raygate({"import", run, "--store", "newer.db"}, dir).exit_code, 0);
+  {
+    std::fstream store(dir.path() / "newer.db", std::ios::in | std::ios::out | std::ios::binary);
+    store.seekp(60);
+    store.write("\0\0\0\x63", 4);  // SQLite's user_version, big-endian: schema 99
+  }
+  expect_usage_error(run_raygate({"run", "--adapter", "make-nff", "--store", "newer.db"}, dir),
+                     "newer.db: schema version 99 is newer than this raygate knows");
   // The baseline's goldens, copied: a tracer's run blessed into them mixed two tracers.
   fs::copy(fs::path(RAYGATE_SOURCE_DIR) / "golden" / "raygate-baseline", dir.path() / "g",
            fs::copy_options::recursive);

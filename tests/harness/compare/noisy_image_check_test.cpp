@@ -203,6 +203,29 @@ TEST_F(NoisyGoldenTest, ANegativeOrNaNVarianceIsRefusedNamingTheFileAndTheValue)
   EXPECT_NE(c.error.find("found nan at (4,3)"), std::string::npos) << c.error;
 }
 
+// Sweep 12: mean and variance both resized to another size than the manifest lists, their
+// hashes updated, called the tracer's images DIFFERENT (exit 1); a deterministic golden so
+// edited was an error of the golden (exit 3), and so is this one.
+TEST_F(NoisyGoldenTest, StatisticsOfAnotherSizeThanTheManifestListsAreAnErrorOfTheGolden) {
+  for (const char* file : {"s.mean.exr", "s.variance.exr"}) {
+    const RgbImage whole = read_rgb_image(golden() / file);
+    RgbImage half{16, 16, {}};
+    for (int y = 0; y < 16; ++y) {
+      for (int x = 0; x < 16; ++x) {
+        for (int c = 0; c < 3; ++c) half.rgb.push_back(whole.at(x, y, c));
+      }
+    }
+    write_rgb_image(half, golden() / file);
+  }
+  manifest_.entries[0].sha256 = sha256_file_hex(golden() / "s.mean.exr");
+  manifest_.noise["s"].variance_sha256 = sha256_file_hex(golden() / "s.variance.exr");
+  const ImageCheck c = check();
+  EXPECT_EQ(c.verdict, ImageVerdict::error) << check_detail(c);
+  EXPECT_NE(c.error.find("s.mean.exr is 16x16, but the manifest lists it at 32x32"),
+            std::string::npos)
+      << c.error;
+}
+
 TEST_F(NoisyGoldenTest, AnInflationThatCouldNeverFailIsRefused) {
   for (const double factor : {-1.0, 1e308, 0.5}) {
     manifest_.noise["s"].inflation = {{8, 1.0}, {kWholeImage, factor}};

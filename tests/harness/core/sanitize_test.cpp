@@ -33,6 +33,10 @@ TEST(TerminalText, KeepsTabsNewlinesAndPrintableUnicode) {
   EXPECT_EQ(terminal_text(text), text);
 }
 
+TEST(TerminalLine, ANewlineIsEscapedTooATabIsKept) {
+  EXPECT_EQ(terminal_line("a\tb\ngate: PASS\r\x1b"), "a\tb\\x0agate: PASS\\x0d\\x1b");
+}
+
 TEST(TerminalText, RepairsInvalidUtf8First) {
   // A Latin-1 byte 0x9B is not the C1 CSI: it is invalid UTF-8, so it is one U+FFFD. (After
   // \xE9, a 3-byte lead, it would be part of the same invalid sequence: hence the space.)

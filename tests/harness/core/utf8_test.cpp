@@ -24,6 +24,11 @@ TEST(Utf8, ValidTextOfEveryLengthIsKeptByteForByte) {
   }
 }
 
+TEST(Utf8, AValueThatIsNotTextIsNamedByItsFirstBadByte) {
+  EXPECT_EQ(utf8_value_problem("caf\xC3\xA9/x.json"), "");
+  EXPECT_EQ(utf8_value_problem("nu\xFF\xFE").substr(0, 31), "not UTF-8 text (byte 0xFF at 3)");
+}
+
 TEST(Utf8, OverlongFormsAreInvalidByteByByte) {
   // '/' as 2, 3 and 4 bytes; NUL as C0 80 (Java's "modified UTF-8").
   EXPECT_FALSE(is_valid_utf8("\xC0\xAF"));

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstring>
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -126,6 +127,26 @@ TEST_F(BlessFromRunTest, AGoldenThatIsALinkIsRefused) {
   }
   EXPECT_TRUE(fs::is_symlink(request_.golden_dir / "gears.ppm"));
   EXPECT_EQ(read_file(elsewhere), "P3\n1 1\n255\n1 2 3\n");
+}
+
+// Sweep 12: an image with NaN pixels was blessed (the run's own check had failed it), and the
+// golden then judged nothing. Refused before anything is written.
+TEST_F(BlessFromRunTest, AnImageWithNanPixelsIsNotBlessed) {
+  const float pixels[3] = {0.5f, std::numeric_limits<float>::quiet_NaN(), 0.25f};
+  std::string pfm = "PF\n1 1\n-1.0\n";
+  pfm.append(reinterpret_cast<const char*>(pixels), sizeof pixels);
+  tracer_run(1).image = dir_.path() / "run" / "gears.pfm";
+  write_file_atomically(tracer_run(1).image, pfm);
+  try {
+    bless();
+    ADD_FAILURE() << "a NaN image was blessed";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("gears.pfm holds NaN or infinite values (the first at "
+                                         "pixel (0, 0))"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_FALSE(fs::exists(request_.golden_dir));
 }
 
 TEST_F(BlessFromRunTest, AnotherAdaptersGoldensAreNotOverwritten) {

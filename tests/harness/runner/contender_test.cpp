@@ -247,6 +247,21 @@ TEST_F(ContenderTest, ReportedZeroIsAFailure) {
   EXPECT_FALSE(r.ok);
 }
 
+// Sweep 12: `RTIME: 1e308` from a 0.03 s process was taken, and written into documents raygate's
+// readers refuse. A time longer than the process ran is a failed run, saying why.
+TEST_F(ContenderTest, AReportedTimeLongerThanTheProcessRanIsAFailure) {
+  const RunRecord huge =
+      run(tracer(kReported), exited_with(0, 2.0), "png", "render time: 100000000 ms\n");
+  EXPECT_FALSE(huge.ok);
+  EXPECT_EQ(contains(huge.failure,
+                     "printed a time of 100000 s, longer than its process ran "
+                     "(2.000 s of wall time)"),
+            "");
+  // Within the clocks' slack it stands: a tracer's clock and wait4's are read apart.
+  EXPECT_TRUE(run(tracer(kReported), exited_with(0, 2.0), "png", "render time: 2050 ms\n").ok);
+  EXPECT_FALSE(run(tracer(kReported), exited_with(0, 2.0), "png", "render time: 2200 ms\n").ok);
+}
+
 // --- the baseline ------------------------------------------------------------------------------
 
 class BaselineContenderTest : public ContenderTest {

@@ -95,8 +95,11 @@ raygate::nff::Scene read_scene(const std::string& path) {
 
 bool write_stats(const std::string& path, const raygate::render::RunReport& report,
                  std::string& error) {
-  return raygate::write_file_replacing(path, raygate::render::to_json(report).dump(2) + "\n",
-                                       error);
+  // The scene's path is in the report: a byte that is not UTF-8 is written as U+FFFD (it made
+  // nlohmann throw, and the baseline abort, in a folder named in Latin-1).
+  const nlohmann::json json = raygate::render::to_json(report);
+  return raygate::write_file_replacing(
+      path, json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n", error);
 }
 
 int run(const Options& options) {

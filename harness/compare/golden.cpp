@@ -290,7 +290,9 @@ void save_golden_manifest(const GoldenManifest& manifest, const std::filesystem:
                      {"dirty", t.dirty},          {"results", t.results},
                      {"started_at", t.started_at}};
   }
-  write_file_atomically(golden_dir / kManifestName, doc.dump(2) + "\n");
+  // The provenance's results path may hold a byte that is not UTF-8: written as U+FFFD.
+  write_file_atomically(golden_dir / kManifestName,
+                        doc.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
 }
 
 std::filesystem::path adapter_golden_dir(const std::filesystem::path& golden_root,

@@ -5,6 +5,7 @@
 #include <cstdlib>
 
 #include "core/error.h"
+#include "core/utf8.h"
 
 #ifndef RAYGATE_SOURCE_DIR
 #error "RAYGATE_SOURCE_DIR must be defined by the build"
@@ -19,7 +20,34 @@ std::filesystem::path executable_directory() {
   return self.parent_path();
 }
 
+namespace {
+
+// Every command that builds, renders or measures finds its tools here, before the work: paths
+// raygate makes from the working directory, TMPDIR and RAYGATE_HOME go into JSON (documents,
+// the baseline's stats), which holds only text. From a folder named in Latin-1 the baseline
+// aborted on every render and `golden bless` ended in an internal error (sweep 13).
+void refuse_folders_that_are_not_text() {
+  std::error_code error;
+  const std::string cwd = std::filesystem::current_path(error).string();
+  if (!error && !is_valid_utf8(cwd)) {
+    throw UsageError("the working directory, " + repaired_utf8(cwd) +
+                     ", is not UTF-8 text: raygate writes the paths it makes into JSON, which "
+                     "holds only text; run it from a folder whose path is");
+  }
+  for (const char* name : {"TMPDIR", "RAYGATE_HOME"}) {
+    const char* value = std::getenv(name);
+    if (value != nullptr && !is_valid_utf8(value)) {
+      throw UsageError(std::string(name) + "=" + repaired_utf8(value) +
+                       " is not UTF-8 text: raygate writes the paths it makes into JSON, which "
+                       "holds only text; name a folder whose path is");
+    }
+  }
+}
+
+}  // namespace
+
 ToolPaths locate_tools(const std::filesystem::path& baseline_override) {
+  refuse_folders_that_are_not_text();
   ToolPaths paths;
   const std::filesystem::path bin = executable_directory();
   if (const char* home = std::getenv("RAYGATE_HOME"); home != nullptr && *home != '\0') {

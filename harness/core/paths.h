@@ -13,6 +13,8 @@ struct ToolPaths {
 };
 
 // Resolved from the running executable; `baseline_override`, if set, wins for the baseline.
+// A UsageError first when the working directory, TMPDIR or RAYGATE_HOME is not UTF-8 text: the
+// paths made from them go into JSON.
 ToolPaths locate_tools(const std::filesystem::path& baseline_override = {});
 
 // The directory of the running executable (/proc/self/exe).

@@ -19,6 +19,8 @@
 // It uses only the C library: a C++ runtime would raise the very floor it is there to keep low.
 #include <errno.h>
 #include <fcntl.h>
+#include <linux/magic.h>
+#include <sys/vfs.h>
 #include <signal.h>
 #include <spawn.h>
 #include <stdio.h>
@@ -106,10 +108,18 @@ void install_forwarding(sigset_t& blocked) {
   _exit(128 + sig);
 }
 
-// Moves this process into the cgroup whose cgroup.procs is `procs_file`; 1 when it did.
+// Moves this process into the cgroup whose cgroup.procs is `procs_file`; 1 when it did. Only a
+// file of a cgroup file system (v2, or v1's memory hierarchy) is written: given any other path (a results document), the
+// meter wrote its pid over the file's start (sweep 13).
 int join_cgroup(const char* procs_file) {
   const int fd = open(procs_file, O_WRONLY | O_CLOEXEC);
   if (fd < 0) return 0;
+  struct statfs where {};
+  if (fstatfs(fd, &where) != 0 ||
+      (where.f_type != CGROUP2_SUPER_MAGIC && where.f_type != CGROUP_SUPER_MAGIC)) {
+    close(fd);
+    return 0;
+  }
   char pid[32];
   snprintf(pid, sizeof pid, "%d\n", static_cast<int>(getpid()));
   const ssize_t n = write(fd, pid, strlen(pid));

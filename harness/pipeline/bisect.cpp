@@ -66,8 +66,10 @@ struct Bisector {
     }
     const bool bad =
         request.metric == BisectMetric::image ? image_failed(scene) : speed_regressed(scene);
+    const bool undecided_end = steps.empty() && scene.change_verdict == ChangeVerdict::inconclusive;
     io.progress.line(fmt::format("  {} {}: {} -> {}", candidate.short_sha, candidate.subject,
-                                 describe(scene), bad ? "bad" : "good"));
+                                 describe(scene),
+                                 bad ? "bad" : (undecided_end ? "not shown worse" : "good")));
     if (bad && !split && scene.change) {
       const double limit = context.policy.for_scene(scene.entry.id).max_slowdown;
       split = std::max(limit, scene.change->change_interval.lower / 2);
@@ -87,13 +89,9 @@ struct Bisector {
   }
 
   bool speed_regressed(const SceneResult& scene) const {
-    // An INCONCLUSIVE step is decided by its point estimate against the limit: bisect must
-    // choose a side, and the printed numbers show how close the call was.
     const double limit =
         split.value_or(request.context.policy.for_scene(scene.entry.id).max_slowdown);
-    const ChangeVerdict verdict = classify_change(*scene.change, limit);
-    return verdict == ChangeVerdict::regressed ||
-           (verdict == ChangeVerdict::inconclusive && scene.change->change > limit);
+    return slower_step(*scene.change, limit, steps.empty());  // the bad end is judged first
   }
 
   static std::optional<ChangeVerdict> verdict_of(const SceneResult& scene) {
@@ -174,6 +172,14 @@ std::string_view to_string(BisectStep step) {
     case BisectStep::skipped: break;
   }
   return "skipped";
+}
+
+bool slower_step(const ChangeSummary& change, double limit, bool bad_end) {
+  // Between the ends, an INCONCLUSIVE step is decided by its point estimate: bisect must choose
+  // a side, and the printed numbers show how close the call was.
+  const ChangeVerdict verdict = classify_change(change, limit);
+  if (verdict == ChangeVerdict::regressed) return true;
+  return !bad_end && verdict == ChangeVerdict::inconclusive && change.change > limit;
 }
 
 BisectResult bisect_search(const std::vector<Revision>& candidates, const BisectJudge& judge) {

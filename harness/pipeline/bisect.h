@@ -76,6 +76,12 @@ using BisectJudge = std::function<BisectStep(const Revision& candidate)>;
 // UsageError when `candidates` is empty.
 BisectResult bisect_search(const std::vector<Revision>& candidates, const BisectJudge& judge);
 
+// Whether a step is bad by speed: regressed against `limit`. The bad end must be shown worse
+// (REGRESSED); a step between the ends that stays INCONCLUSIVE is decided by its estimate against
+// the limit, since bisect must choose a side (sweep 13: an undecided bad end named a culprit
+// out of noise).
+bool slower_step(const ChangeSummary& change, double limit, bool bad_end);
+
 // Resolves the range, builds and measures each probed commit against the good one, and says
 // each step through io.progress. A range without commits is a UsageError before anything is
 // built: both ends one commit, the good end newer than the bad one, unrelated or diverged ends.

@@ -68,7 +68,13 @@ void apply_shard(const MeasureOptions& args, MeasureContext& c) {
   }
   ShardRecord record;
   record.spec = parse_shard(args.shard);
-  for (const SuiteScene& scene : c.scenes) record.suite_scenes.push_back(scene.id);
+  std::string contents = c.suite.sampling + "\n";
+  for (const SuiteScene& scene : c.scenes) {
+    record.suite_scenes.push_back(scene.id);
+    contents += fmt::format("{}\t{}\t{}\t{}x{}\n", scene.id, scene.scene, scene.size, scene.width,
+                            scene.height);
+  }
+  record.suite_sha256 = sha256_hex(contents);
   std::map<std::string, double> expected_seconds;
   if (!args.shard_costs.empty()) {
     ResultsDocument costs;

@@ -149,6 +149,10 @@ void check_shard_records(const Shard& a, const Shard& b) {
        fmt::format("{}", fmt::join(a.record.suite_scenes, ",")),
        fmt::format("{}", fmt::join(b.record.suite_scenes, ",")));
   same(a, b, "settings.shard.cost_basis", a.record.cost_basis, b.record.cost_basis);
+  if (!a.record.suite_sha256.empty() && !b.record.suite_sha256.empty()) {
+    same(a, b, "the suite's scenes, sizes and resolutions (settings.shard.suite_sha256)",
+         a.record.suite_sha256, b.record.suite_sha256);
+  }
   if (a.record.spec.index == b.record.spec.index) {
     throw UsageError(
         fmt::format("merge: {} and {} are both shard {} (settings.shard.index): "

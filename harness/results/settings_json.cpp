@@ -120,10 +120,12 @@ constexpr std::array<CpuIdle, 2> kIdles{CpuIdle::os, CpuIdle::poll};
 constexpr std::array<ImageKind, 2> kImageKinds{ImageKind::deterministic, ImageKind::monte_carlo};
 
 json shard_json(const ShardRecord& record) {
-  return {{"index", record.spec.index},
-          {"count", record.spec.count},
-          {"suite_scenes", record.suite_scenes},
-          {"cost_basis", record.cost_basis}};
+  json j = {{"index", record.spec.index},
+            {"count", record.spec.count},
+            {"suite_scenes", record.suite_scenes},
+            {"cost_basis", record.cost_basis}};
+  if (!record.suite_sha256.empty()) j["suite_sha256"] = record.suite_sha256;
+  return j;
 }
 
 ShardRecord shard_from(const JsonField& j) {
@@ -146,6 +148,13 @@ ShardRecord shard_from(const JsonField& j) {
           .fail("\"" + record.cost_basis.substr(0, 80) +
                 "\" is not a cost basis (\"equal\", or the results "
                 "document's sha256:<hex>)");
+    }
+  }
+  if (j.has("suite_sha256")) {
+    record.suite_sha256 = j.member("suite_sha256").as_string();
+    if (record.suite_sha256.size() != 64 ||
+        record.suite_sha256.find_first_not_of("0123456789abcdef") != std::string::npos) {
+      j.member("suite_sha256").fail("not a SHA-256 (64 lower-case hex digits)");
     }
   }
   if (record.spec.count < 1 || record.spec.index < 1 || record.spec.index > record.spec.count) {

@@ -20,6 +20,9 @@ struct ShardRecord {
   ShardSpec spec;
   std::vector<std::string> suite_scenes;  // every selected scene of the suite, in suite order
   std::string cost_basis = "equal";       // "equal", or which document's times were the costs
+  // The selected scenes' content (id, generator, size, resolution, sampling), hashed: shards of
+  // one suite name with other sizes must not merge (sweep 13). "" in documents before it.
+  std::string suite_sha256;
 
   bool operator==(const ShardRecord&) const = default;
 };

@@ -258,6 +258,19 @@ TEST_F(BaselineCli, StatsJsonIsCompleteAndConsistent) {
   EXPECT_NE(version.find(doc["source_sha256"].get<std::string>()), std::string::npos);
 }
 
+// Sweep 13: a scene in a folder whose name is not UTF-8 aborted the baseline when --stats wrote
+// its path (nlohmann's type_error.316): every compare in such a folder failed on the baseline.
+TEST_F(BaselineCli, StatsOfASceneInAFolderNamedInLatin1AreWritten) {
+  const fs::path folder = temp_dir() / "d\xff";
+  fs::create_directories(folder);
+  fs::copy_file(scene_file(), folder / "scene.nff");
+  const fs::path stats = temp_dir() / "stats.json";
+  const RunResult r = run({(folder / "scene.nff").string(), "-o", (temp_dir() / "o.ppm").string(),
+                           "--stats", stats.string()});
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(read_text(stats))["width"], 24);
+}
+
 TEST_F(BaselineCli, CornerSamplingCastsOneMoreRowAndColumn) {
   const fs::path image = temp_dir() / "corners.png";
   const fs::path stats = temp_dir() / "corners.json";

@@ -290,6 +290,19 @@ TEST_F(HostileDocuments, ThirdSweepValuesAreRefusedInRaygatesWords) {
         {"merge", "a\xff.json", "b.json", "-o", "m.json"}}) {
     expect_usage_error(run_raygate(args, dir), "not UTF-8 text (byte 0xFF at ");
   }
+  // Sweep 13: from a folder named in Latin-1, every baseline render aborted (its stats held the
+  // path) and `golden bless` ended in an internal error; TMPDIR so named did the same to doctor.
+  fs::create_directories(dir.path() / "d\xff");
+  ProcessSpec latin1 = raygate_spec({"validate", "tetra"}, dir);
+  latin1.working_directory = dir.path() / "d\xff";
+  const ProcessResult r = run_process(latin1);
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_THAT(read_file(latin1.stdout_path),
+              HasSubstr("is not UTF-8 text: raygate writes the paths"));
+  const CliStreams tmpdir = run_raygate_streams({"doctor", "--rounds", "2"}, dir,
+                                                {{"TMPDIR", (dir.path() / "d\xff").string()}});
+  EXPECT_EQ(tmpdir.exit_code, 2) << tmpdir.err;
+  EXPECT_THAT(tmpdir.err, HasSubstr("d\xef\xbf\xbd is not UTF-8 text"));
   // history and merge compare these times as text: "yesterday" sorted among them.
   const std::string dated = document("dated.json", [](json& j) { j["started_at"] = "yesterday"; });
   expect_usage_error(run_raygate({"gate", dated}, dir),

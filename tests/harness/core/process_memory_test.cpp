@@ -129,6 +129,19 @@ TEST(ProcessMemory, MeterForwardsASignalToTheProgram) {
   EXPECT_TRUE(r.max_rss_own);
 }
 
+// Sweep 13: `raygate-meter --cgroup FILE` wrote its pid over the start of any file it was given
+// (a results document). Only a cgroup file is joined; any other is left as it was.
+TEST(ProcessMemory, TheMeterJoinsOnlyACgroupFile) {
+  const TempDir dir;
+  const std::filesystem::path document = dir.path() / "results.json";
+  write_file_atomically(document, "{\"kind\": \"run\"}\n");
+  ProcessSpec spec;
+  spec.argv = {meter_executable().string(), "--cgroup", document.string(), "1", "/bin/true"};
+  spec.stdout_path = dir.path() / "log.txt";
+  EXPECT_TRUE(run_process(spec).succeeded());
+  EXPECT_EQ(read_file(document), "{\"kind\": \"run\"}\n");
+}
+
 // Issue 40: four workers of 100 MiB side by side. Where a memory cgroup can be made (root, a
 // kernel with cgroup v2 memory.peak or a v1 memory hierarchy) the peak is the tree's at once,
 // >= 400 MiB; elsewhere the record names the fallback, the largest single process (~100 MiB).

@@ -69,6 +69,22 @@ TEST(BisectSearch, ABadEndThatIsNotWorseOrNotMeasurableEndsTheSearch) {
   EXPECT_EQ(broken.asked.size(), 1u);
 }
 
+// Sweep 13: the bad end read +10.0% [-16.4%, +145.5%] INCONCLUSIVE was taken as bad, and bisect
+// named a culprit of a tracer identical at every commit. The bad end must be shown worse; a step
+// between the ends may still be decided by its estimate.
+TEST(BisectSearch, AnUndecidedBadEndIsNotBadButAnUndecidedStepBetweenIsByItsEstimate) {
+  ChangeSummary undecided;
+  undecided.rounds = 4;
+  undecided.change = 0.10;
+  undecided.change_interval = {-0.164, 1.455};
+  EXPECT_FALSE(slower_step(undecided, 0.03, true));
+  EXPECT_TRUE(slower_step(undecided, 0.03, false));
+  ChangeSummary shown = undecided;
+  shown.rounds = 20;  // enough for the order-statistic interval to be bounded
+  shown.change_interval = {0.06, 0.14};
+  EXPECT_TRUE(slower_step(shown, 0.03, true));
+}
+
 TEST(BisectSearch, SkipsAroundTheCulpritLeaveARange) {
   const std::vector<Revision> candidates = history(8);
   ScriptedJudge judge{5, {3, 4}, {}};  // c3, c4 do not build; c5 is the culprit

@@ -23,7 +23,7 @@ std::string merge_error(const std::function<void(ResultsDocument&)>& edit) {
     spec.scenes = {{.id = ids[static_cast<std::size_t>(index - 1)]}};
     ResultsDocument d = test::make_document(spec);
     d.shard = to_string(ShardSpec{index, 2});
-    d.settings.shard = ShardRecord{{index, 2}, ids, "equal"};
+    d.settings.shard = ShardRecord{{index, 2}, ids, "equal", {}};
     inputs.push_back({index == 1 ? "a.json" : "b.json", d});
   }
   edit(inputs[0].document);

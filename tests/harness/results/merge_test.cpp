@@ -66,7 +66,7 @@ ResultsDocument shard_document(int index, int count) {
   spec.started_at = "2026-01-02T00:0" + std::to_string(index) + ":00Z";
   ResultsDocument d = test::make_document(spec);
   d.shard = to_string(ShardSpec{index, count});
-  d.settings.shard = ShardRecord{{index, count}, ids_of(kScenes), "equal"};
+  d.settings.shard = ShardRecord{{index, count}, ids_of(kScenes), "equal", std::string(64, 'a')};
   d.settings.golden_dir = "/runner-" + std::to_string(index) + "/golden";  // per runner
   d.scores = suite_scores(d.scenes, scored_roles(d));
   return d;
@@ -173,6 +173,9 @@ TEST(Merge, RefusesInconsistentShardsNamingBothFilesAndTheField) {
        [](ResultsDocument& d) {
          d.settings.shard->suite_scenes = {"balls", "gears"};
        }},
+      // Sweep 13: a shard of another suite file named ci (balls at another size) merged.
+      {"suite contents", "settings.shard.suite_sha256",
+       [](ResultsDocument& d) { d.settings.shard->suite_sha256 = std::string(64, 'e'); }},
       {"settings", "settings.target",
        [](ResultsDocument& d) { d.settings.unknown["target"] = 0.05; }},
       {"typed settings", "settings.max_rounds",

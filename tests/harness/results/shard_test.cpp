@@ -172,7 +172,7 @@ TEST(ShardRecord, RoundTripsThroughSettingsAndOldDocumentsStillLoad) {
   EXPECT_FALSE(old.settings.shard.has_value());
   EXPECT_TRUE(old.shard.empty());
 
-  d.settings.shard = ShardRecord{{2, 3}, {"a", "b", "c"}, "equal"};
+  d.settings.shard = ShardRecord{{2, 3}, {"a", "b", "c"}, "equal", {}};
   d.shard = "2/3";
   const ResultsDocument back = results_from_json(to_json(d), "new.json");
   const std::optional<ShardRecord>& record = back.settings.shard;

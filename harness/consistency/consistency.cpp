@@ -103,6 +103,24 @@ PairFit fit_pair(const std::vector<SceneConsistency>& scenes, std::size_t a, std
   return pair;
 }
 
+// A document whose ratio is the same on every scene gives no line to fit: r² is undefined, as it
+// is for two scenes, so the input cannot answer the question (exit 2), rather than failing it.
+void refuse_ratios_without_spread(const ConsistencyResult& result) {
+  for (std::size_t d = 0; d < result.documents.size(); ++d) {
+    const double first = result.scenes.front().ratios[d];
+    const bool varies =
+        std::any_of(result.scenes.begin(), result.scenes.end(),
+                    [&](const SceneConsistency& s) { return s.ratios[d] != first; });
+    if (!varies) {
+      throw UsageError(fmt::format(
+          "{} ({}) has the same ratio, {:.4f}, on all {}; an r² needs scenes whose ratios differ "
+          "(measure scenes of different cost)",
+          result.documents[d].label, result.documents[d].path, first,
+          count_text(result.scenes.size(), "scene")));
+    }
+  }
+}
+
 // Overall: every pair's points in one fit, so two documents give exactly their pair's r².
 double pooled_r2(const std::vector<SceneConsistency>& scenes, std::size_t documents) {
   std::vector<double> x, y;
@@ -335,6 +353,7 @@ ConsistencyResult analyse_consistency(std::vector<DocumentRatios> documents,
   for (const std::string& id : common) {
     result.scenes.push_back(scene_consistency(id, result.documents, options));
   }
+  refuse_ratios_without_spread(result);
   const std::size_t n = result.documents.size();
   result.min_pair_r2 = std::numeric_limits<double>::infinity();
   for (std::size_t a = 0; a < n; ++a) {

@@ -42,6 +42,21 @@ std::int64_t monotonic_ns() {
   return std::int64_t{now.tv_sec} * 1'000'000'000 + now.tv_nsec;
 }
 
+// The one line raygate leaves when a signal ends it at once (the shell says only "Terminated",
+// a CI log nothing): which signal. A constant per signal, as write() of a fixed buffer is all a
+// handler may do.
+void say_ended_at_once(int sig) {
+  const char* line = "raygate: ended at once by a signal\n";
+  switch (sig) {
+    case SIGINT: line = "raygate: ended at once by SIGINT\n"; break;
+    case SIGTERM: line = "raygate: ended at once by SIGTERM\n"; break;
+    case SIGHUP: line = "raygate: ended at once by SIGHUP\n"; break;
+    case SIGQUIT: line = "raygate: ended at once by SIGQUIT\n"; break;
+    default: break;
+  }
+  [[maybe_unused]] const ssize_t ignored = ::write(STDERR_FILENO, line, std::strlen(line));
+}
+
 // Records the first request (decide_stop: record), lets a repeat of it pass (ignore), or, when
 // nobody would look or this is a second signal, kills the children's groups and dies of the
 // signal, as without a handler (end_now). Two threads may run it at once for two copies of one
@@ -67,6 +82,7 @@ extern "C" void on_stop_signal(int sig) {
   for (const std::atomic<pid_t>& group : g_groups) {
     if (const pid_t g = group.load(); g > 0) ::kill(-g, SIGKILL);
   }
+  say_ended_at_once(sig);
   ::signal(sig, SIG_DFL);
   ::raise(sig);  // blocked while this handler runs; delivered, and fatal, when it returns
   errno = saved_errno;

@@ -129,6 +129,14 @@ std::size_t number_start(std::string_view text, std::size_t read) {
 
 }  // namespace
 
+std::string plain_exception_text(const std::exception& e) {
+  const std::string what = e.what();
+  constexpr std::string_view kLabel = "[json.exception.";
+  if (!what.starts_with(kLabel)) return what;
+  const std::size_t end = what.find("] ");
+  return end == std::string::npos ? what : what.substr(end + 2);
+}
+
 JsonInputError::JsonInputError(std::string origin, std::size_t line, std::size_t column,
                                std::string json_path, std::string problem)
     : UsageError(origin + ":" + std::to_string(line) + ":" + std::to_string(column) + ": " +

@@ -46,4 +46,8 @@ nlohmann::json parse_json_input(std::string_view text, const std::string& origin
 // The file's text parsed by parse_json_input; a file that cannot be read is a UsageError too.
 nlohmann::json read_json_file(const std::filesystem::path& file);
 
+// An exception's text without nlohmann's "[json.exception.out_of_range.403] " label, for a
+// message a user reads ("key 'parse_seconds' not found"); other exceptions' text as it is.
+std::string plain_exception_text(const std::exception& e);
+
 }  // namespace raygate

@@ -10,6 +10,7 @@
 
 #include "core/enum_words.h"
 #include "core/error.h"
+#include "core/json_reader.h"
 #include "core/fs.h"
 #include "core/process.h"
 #include "doctor/system_facts.h"
@@ -50,8 +51,8 @@ NoiseRun run_once(const BaselineContender& baseline, const SceneInput& scene,
     cpu_seconds =
         nlohmann::json::parse(read_file(run_dir / "stats.json")).at("cpu_seconds").get<double>();
   } catch (const std::exception& e) {
-    throw baseline_failure(std::string("its --stats file has no cpu_seconds (") + e.what() + ")",
-                           spec);
+    throw baseline_failure(
+        std::string("its --stats file has no cpu_seconds (") + plain_exception_text(e) + ")", spec);
   }
   return {run.seconds, cpu_seconds};
 }

@@ -66,7 +66,8 @@ struct Bisector {
     }
     const bool bad =
         request.metric == BisectMetric::image ? image_failed(scene) : speed_regressed(scene);
-    const bool undecided_end = steps.empty() && scene.change_verdict == ChangeVerdict::inconclusive;
+    const bool undecided_end = request.metric == BisectMetric::ratio && steps.empty() &&
+                               scene.change_verdict == ChangeVerdict::inconclusive;
     io.progress.line(fmt::format("  {} {}: {} -> {}", candidate.short_sha, candidate.subject,
                                  describe(scene),
                                  bad ? "bad" : (undecided_end ? "not shown worse" : "good")));
@@ -228,6 +229,7 @@ BisectResult bisect(const BisectRequest& request, PipelineIo& io) {
   BisectResult result = bisect_search(
       candidates, [&](const Revision& candidate) { return bisector.judge(candidate); });
   result.good = bisector.good;
+  result.metric = request.metric;
   result.steps = std::move(bisector.steps);
   if (result.outcome == BisectOutcome::found || result.outcome == BisectOutcome::hidden_by_skips) {
     result.merge_note = merge_note(request.repository, result.first_bad);

@@ -66,6 +66,7 @@ struct BisectResult {
   // found or hidden_by_skips with a merge as first_bad: the range its merged commits span, to
   // bisect next (bisect follows first parents); empty otherwise.
   std::string merge_note;
+  BisectMetric metric = BisectMetric::ratio;  // what "bad" meant (the answer's words follow it)
 };
 
 // Decides one candidate (the real one builds and measures it; tests pass their own).

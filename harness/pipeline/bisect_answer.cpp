@@ -51,6 +51,12 @@ const BisectStepRecord* bad_end_step(const BisectResult& result) {
 // The bad end was judged good: shown not worse, or only not shown worse (INCONCLUSIVE, its
 // point estimate under the limit), which is said as what it is.
 std::string not_worse_text(const BisectResult& result) {
+  if (result.metric == BisectMetric::image) {  // its speed is beside the point (a sweep)
+    return fmt::format(
+        "{}'s image is not shown to differ from {}'s on this scene; nothing to "
+        "bisect by image",
+        result.first_bad.short_sha, result.good.short_sha);
+  }
   const BisectStepRecord* step = bad_end_step(result);
   if (step == nullptr || !step->change || step->verdict != ChangeVerdict::inconclusive) {
     return fmt::format("{} is not worse than {} on this scene; nothing to bisect",
@@ -92,7 +98,8 @@ nlohmann::json answer_json(const BisectResult& result) {
   switch (result.outcome) {
     case BisectOutcome::bad_not_worse: {
       const BisectStepRecord* step = bad_end_step(result);
-      const bool undecided = step != nullptr && step->verdict == ChangeVerdict::inconclusive;
+      const bool undecided = result.metric == BisectMetric::ratio && step != nullptr &&
+                             step->verdict == ChangeVerdict::inconclusive;
       return {{"kind", undecided ? "not_shown_worse" : "not_worse"},
               {"bad", revision_json(result.first_bad)}};
     }

@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/json_reader.h"
 #include "core/paths.h"
 #include "runner/baseline_tool.h"
 #include "runner/scene_files.h"
@@ -58,6 +59,28 @@ bool selected(const SpdValidationRequest& args, const std::string& scene) {
   return false;
 }
 
+// One table row: the baseline's ray counts against the published ones. Statistics without
+// the counts (a baseline that is not raygate's) are named, not a library's exception text.
+std::string counts_row(const std::string& id, const BaselineRender& r, const PublishedCounts& p,
+                       bool& all_ok) {
+  try {
+    const auto& rays = r.stats.at("rays");
+    bool ok = true;
+    std::string row = fmt::format("| {} | {} | {} | {} | {} | {:.1f} |\n", id,
+                                  cell(rays.at("eye_hits").get<long>(), p.eye_hits, ok),
+                                  cell(rays.at("reflection").get<long>(), p.reflection, ok),
+                                  cell(rays.at("refraction").get<long>(), p.refraction, ok),
+                                  cell(rays.at("shadow").get<long>(), p.shadow, ok),
+                                  r.stats.at("render_seconds").get<double>());
+    all_ok = all_ok && ok;
+    return row;
+  } catch (const nlohmann::json::exception& e) {
+    throw InfraError(r.stats_path.string() +
+                     ": raygate-baseline's statistics lack the ray counts (" +
+                     plain_exception_text(e) + ")");
+  }
+}
+
 }  // namespace
 
 SpdValidation validate_spd_counts(const SpdValidationRequest& args,
@@ -91,15 +114,7 @@ SpdValidation validate_spd_counts(const SpdValidationRequest& args,
       throw InfraError("raygate-baseline " + r.process.describe() + " on " + nff.string() + "\n" +
                        log_tail(r.log, 10));
     }
-    const auto& rays = r.stats.at("rays");
-    bool ok = true;
-    table += fmt::format("| {} | {} | {} | {} | {} | {:.1f} |\n", scene.id,
-                         cell(rays.at("eye_hits").get<long>(), p.eye_hits, ok),
-                         cell(rays.at("reflection").get<long>(), p.reflection, ok),
-                         cell(rays.at("refraction").get<long>(), p.refraction, ok),
-                         cell(rays.at("shadow").get<long>(), p.shadow, ok),
-                         r.stats.at("render_seconds").get<double>());
-    all_ok = all_ok && ok;
+    table += counts_row(scene.id, r, p, all_ok);
   }
   table += fmt::format("\nEach cell: baseline / published (deviation). Tolerance ±{:.0f}%. {}\n",
                        100 * kTolerance, baseline.version_line());

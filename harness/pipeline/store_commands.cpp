@@ -97,6 +97,13 @@ HistoryView store_history_view(const std::string& location, const HistoryQuery& 
 
 AlertJudgement judge_store_history(const AlertRequest& request,
                                    const std::function<void(const std::string&)>& say) {
+  const std::size_t points_needed = 2 * request.detection.min_segment;
+  if (request.query.last_commits != 0 && request.query.last_commits < points_needed) {
+    // Such a judgement could never alert, and would say OK: refused, not passed (a sweep).
+    throw UsageError(fmt::format(
+        "--min-segment {} needs {} commits, more than --last {} keeps: no change could be found",
+        request.detection.min_segment, points_needed, request.query.last_commits));
+  }
   const GatePolicy policy = request.policy.empty() ? GatePolicy{} : load_policy(request.policy);
   const auto store = open_store(request.store, StoreOpen::must_exist);
   const std::vector<HistoryRow> rows = store->history(request.query);

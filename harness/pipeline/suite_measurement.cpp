@@ -202,6 +202,8 @@ SceneInput prepare_scene_input(const SuiteScene& entry, const SuiteMeasurement& 
       input.files[format] = prepare_converted_scene(input.nff, format, m.scene_cache);
     }
   }
+  for (const auto& [format, file] : input.files)
+    input.prepared_sha256[file] = sha256_file_hex(file);
   return input;
 }
 
@@ -259,8 +261,9 @@ MeasuredDocument measure_document(ResultsDocument document, const SuiteMeasureme
 
 BaselineContender baseline_contender(const MeasureContext& context,
                                      const std::string& baseline_source_sha256) {
-  // Its own limit is 30 minutes a run; the user's budget bounds it too (issue 25, class 10).
-  const double timeout_seconds = budgeted_run_seconds(context.stopping, 30.0 * 60.0);
+  // Its own limit a run; the user's budget bounds it too (issue 25, class 10).
+  const double timeout_seconds = budgeted_run_seconds(
+      context.stopping, std::chrono::duration<double>(kBaselineRunLimit).count());
   const std::chrono::milliseconds timeout(static_cast<long long>(1000.0 * timeout_seconds));
   BaselineContender baseline(context.tools.baseline, context.suite.sampling, timeout, "none",
                              &timing_mode(context));

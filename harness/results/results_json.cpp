@@ -300,7 +300,7 @@ ResultsDocument results_from_json(const nlohmann::json& j, const std::string& or
   } catch (const FieldError& e) {
     throw UsageError(origin + ": " + e.path() + ": " + e.what());
   } catch (const nlohmann::json::exception& e) {
-    throw UsageError(origin + ": not a raygate results document: " + e.what());
+    throw UsageError(origin + ": not a raygate results document: " + plain_exception_text(e));
   } catch (const std::invalid_argument& e) {  // a field of a known name with an unknown value
     throw UsageError(origin + ": " + e.what());
   }

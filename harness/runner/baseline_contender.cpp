@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/json_reader.h"
 #include "core/fs.h"
 #include "core/sha256.h"
 #include "runner/timing/timing_modes.h"
@@ -93,6 +94,14 @@ RunRecord BaselineContender::interpret(const SceneInput& scene, const ProcessRes
                                        const std::filesystem::path& run_dir) const {
   RunRecord run = record_process(result, spec);
   run.image = run_dir / kImageName;
+  const double own_limit_seconds = std::chrono::duration<double>(kBaselineRunLimit).count();
+  if (result.outcome == ProcessOutcome::timed_out &&
+      result.wall_seconds < own_limit_seconds - 0.5) {
+    run.stopped_by_budget = true;  // as a tracer's (tracer_contender.cpp): the budget's, said so
+    run.failure +=
+        " (the time budget's cut, not raygate-baseline's 30-minute limit: give "
+        "--max-seconds or --max-minutes more)";
+  }
   if (!run.ok) return run;
   if (!clock_->exact()) {  // its own account of its time, as a tracer's regex gives one
     try {
@@ -100,7 +109,7 @@ RunRecord BaselineContender::interpret(const SceneInput& scene, const ProcessRes
     } catch (const std::exception& e) {
       run.ok = false;
       run.failure = "raygate-baseline wrote unusable statistics " +
-                    (run_dir / kStatsName).string() + ": " + e.what();
+                    (run_dir / kStatsName).string() + ": " + plain_exception_text(e);
       return run;
     }
   }

@@ -28,10 +28,13 @@ struct BaselineSimulation {
   std::string source_sha256;
 };
 
+// The baseline's own limit on one run; a user's time budget may cut it shorter.
+inline constexpr std::chrono::minutes kBaselineRunLimit{30};
+
 class BaselineContender final : public Contender {
  public:
   BaselineContender(std::filesystem::path executable, std::string sampling,
-                    std::chrono::milliseconds timeout = std::chrono::minutes(30),
+                    std::chrono::milliseconds timeout = kBaselineRunLimit,
                     std::string accel = "none", const TimingMode* clock = nullptr);
 
   ProcessSpec command(const SceneInput& scene, const std::filesystem::path& run_dir) const override;

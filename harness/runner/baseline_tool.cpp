@@ -1,6 +1,7 @@
 #include "runner/baseline_tool.h"
 
 #include "core/error.h"
+#include "core/json_reader.h"
 #include "core/fs.h"
 
 namespace raygate {
@@ -47,7 +48,8 @@ BaselineRender BaselineTool::render(const std::filesystem::path& scene,
     try {
       out.stats = nlohmann::json::parse(read_file(out.stats_path));
     } catch (const std::exception& e) {
-      throw InfraError(out.stats_path.string() + ": unreadable baseline statistics: " + e.what());
+      throw InfraError(out.stats_path.string() +
+                       ": unreadable baseline statistics: " + plain_exception_text(e));
     }
   }
   return out;

@@ -152,5 +152,14 @@ TEST_F(AlertCli, PolicyLimitAndUnknownBranch) {
   EXPECT_THAT(none.err, HasSubstr("no measured commits"));
 }
 
+TEST_F(AlertCli, ASegmentLongerThanTheHistoryKeptIsRefusedNotPassed) {
+  record_history(1.10, 9);
+  const CliStreams r = run_raygate_streams(
+      {"alert", "--store", "store.db", "--last", "10", "--min-segment", "6"}, dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out << r.err;
+  EXPECT_THAT(r.err, HasSubstr("--min-segment 6 needs 12 commits, more than --last 10 keeps"));
+  EXPECT_THAT(r.out, Not(HasSubstr("OK")));
+}
+
 }  // namespace
 }  // namespace raygate::test

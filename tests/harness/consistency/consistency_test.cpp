@@ -194,6 +194,18 @@ TEST(Consistency, RefusesTooFewDocumentsOrScenes) {
   EXPECT_THROW(analyse({machine("straylight", kA), machine("neolith", kB)}, bad), UsageError);
 }
 
+TEST(Consistency, RatiosThatDoNotVaryAcrossScenesCannotBeFittedAndAreRefused) {
+  const std::vector<double> flat{0.5, 0.5, 0.5};
+  try {
+    analyse({machine("straylight", flat), machine("neolith", flat)});
+    FAIL() << "identical flat documents accepted";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("A (straylight.json) has the same ratio, 0.5000, on all 3"));
+  }
+  EXPECT_THROW(analyse({machine("straylight", {0.5, 0.8, 1.2}), machine("neolith", flat)}),
+               UsageError);
+}
+
 TEST(Consistency, ReportsNameMachinesAndCarryTheNumbers) {
   const ConsistencyResult r = analyse({machine("straylight", kA), machine("neolith", kB)});
   const std::string table = consistency_table(r);

@@ -84,5 +84,18 @@ TEST(JsonReader, ReadsAFileAndNamesIt) {
   EXPECT_THROW(read_json_file(dir.path() / "missing.json"), UsageError);
 }
 
+TEST(JsonReader, PlainTextDropsTheLibrarysLabelOnly) {
+  try {
+    (void)nlohmann::json::object().at("parse_seconds");
+    ADD_FAILURE() << "no exception";
+  } catch (const nlohmann::json::exception& e) {
+    EXPECT_EQ(plain_exception_text(e), "key 'parse_seconds' not found");
+  }
+  EXPECT_EQ(plain_exception_text(std::runtime_error("[json.exception.x] y")), "y");
+  EXPECT_EQ(plain_exception_text(std::runtime_error("disk full")), "disk full");
+  EXPECT_EQ(plain_exception_text(std::runtime_error("[json.exception.no end")),
+            "[json.exception.no end");
+}
+
 }  // namespace
 }  // namespace raygate

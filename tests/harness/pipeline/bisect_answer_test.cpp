@@ -52,6 +52,17 @@ TEST(BisectAnswer, AnUndecidedBadEndIsNotCalledNotWorse) {
   EXPECT_EQ(bisect_json(result, {})["result"]["kind"], "not_shown_worse");
 }
 
+TEST(BisectAnswer, ByImageABadEndWithTheSameImageIsSaidInWordsOfImagesNotSpeed) {
+  BisectResult result = bad_end_judged(
+      BisectOutcome::bad_not_worse,
+      {{}, BisectStep::good, "", change_of(-0.0, -0.009, 0.001), ChangeVerdict::inconclusive, {}});
+  result.metric = BisectMetric::image;
+  EXPECT_EQ(bisect_text(result),
+            "bbbbbbb's image is not shown to differ from aaaaaaa's on this scene; nothing to "
+            "bisect by image\n");
+  EXPECT_EQ(bisect_json(result, {})["result"]["kind"], "not_worse");
+}
+
 TEST(BisectAnswer, AnUnmeasurableBadEndSaysWhy) {
   const BisectResult result =
       bad_end_judged(BisectOutcome::bad_unmeasurable,

@@ -395,7 +395,21 @@ std::string adapter_hash(const Adapter& adapter) { return sha256_hex(adapter.can
 
 std::filesystem::path source_directory(const Adapter& adapter,
                                        const std::filesystem::path& repo_root) {
-  return adapter.source_dir.empty() ? repo_root : repo_root / adapter.source_dir;
+  if (adapter.source_dir.empty()) return repo_root;
+  std::filesystem::path folder = repo_root;
+  for (const std::filesystem::path& part : std::filesystem::path(adapter.source_dir)) {
+    if (part.empty() || part == ".") continue;
+    folder /= part;
+    std::error_code error;
+    if (std::filesystem::is_symlink(std::filesystem::symlink_status(folder, error))) {
+      throw UsageError(fmt::format(
+          "source_dir \"{}\": {} is a symbolic link in this commit (to {}); the build runs in "
+          "a folder inside the repository only",
+          adapter.source_dir, (folder.lexically_relative(repo_root)).string(),
+          std::filesystem::read_symlink(folder, error).string()));
+    }
+  }
+  return repo_root / adapter.source_dir;
 }
 
 std::string_view to_string(SceneFormat format) { return word_of(kSceneFormatWords, format, "?"); }

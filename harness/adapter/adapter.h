@@ -86,7 +86,9 @@ Adapter load_adapter(const std::filesystem::path& path);
 // when any value changes. Builds are cached by (commit, adapter hash).
 std::string adapter_hash(const Adapter& adapter);
 
-// The folder {src} stands for: the repository root, or its source_dir subfolder.
+// The folder {src} stands for: the repository root, or its source_dir subfolder. A UsageError
+// when a folder on the way to it is a symbolic link in the checkout: the commit is untrusted,
+// and a link would send the build steps anywhere, as the `..` read_source_dir refuses would.
 std::filesystem::path source_directory(const Adapter& adapter,
                                        const std::filesystem::path& repo_root);
 

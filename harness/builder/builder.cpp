@@ -19,6 +19,7 @@
 #include "checkout/file_lock.h"
 #include "core/error.h"
 #include "core/interrupt.h"
+#include "core/sanitize.h"
 
 namespace fs = std::filesystem;
 
@@ -235,8 +236,9 @@ std::string failure_message(const BuildRecord& record) {
     const fs::path& log = record.steps.back().log;
     message += fmt::format("\n  log: {}", log.string());
     if (const std::optional<LogLine> first = first_error_line(log)) {
-      message +=
-          fmt::format("\n  first error (line {} of the log): {}", first->number, first->text);
+      // The log's bytes escaped: a NUL in it ended the error's what() there, dropping the rest.
+      message += fmt::format("\n  first error (line {} of the log): {}", first->number,
+                             terminal_line(first->text));
       message += download_hint(first->text);
     }
     if (record.log_tail.empty()) {
@@ -246,7 +248,7 @@ std::string failure_message(const BuildRecord& record) {
       std::string_view tail = record.log_tail;
       while (!tail.empty()) {
         const std::size_t end = std::min(tail.find('\n'), tail.size());
-        message += fmt::format("\n    | {}", tail.substr(0, end));
+        message += fmt::format("\n    | {}", terminal_line(tail.substr(0, end)));
         tail.remove_prefix(std::min(end + 1, tail.size()));
       }
     }

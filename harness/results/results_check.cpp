@@ -604,6 +604,20 @@ void check_commit_id(const JsonField& sha) {
   }
 }
 
+// The short id names folders (export's runs/<time>-<short_sha>) and is printed for the commit:
+// the start of the sha, or "uncommitted" beside it, or nothing (a forged "../../esc" was
+// imported, then blocked export of the whole store; a sweep).
+void check_short_id(const JsonField& worktree) {
+  const std::string sha = worktree.member("sha").as_string();
+  const JsonField short_sha = worktree.member("short_sha");
+  const std::string text = short_sha.as_string();
+  const bool prefix = text.size() >= 4 && sha != "uncommitted" && sha.starts_with(text);
+  if (!text.empty() && !prefix && !(sha == "uncommitted" && text == sha)) {
+    short_sha.fail(fmt::format("\"{}\" is not the start of sha \"{}\"", text.substr(0, 80),
+                               sha.substr(0, 80)));
+  }
+}
+
 void check_revision(const JsonField& r) {
   object(r);
   check_strings(r, {"repository"});
@@ -612,6 +626,7 @@ void check_revision(const JsonField& r) {
   check_strings(w, {"path", "revision", "ref_name", "sha", "short_sha", "subject", "author"});
   check_timestamps(w, {"commit_time"});
   check_commit_id(w.member("sha"));
+  check_short_id(w);
   w.member("dirty").as_bool();
   const JsonField adapter = object(r.member("adapter"));
   check_strings(adapter, {"name", "hash", "file"});

@@ -9,6 +9,7 @@
 #include <string_view>
 
 #include "core/error.h"
+#include "core/sha256.h"
 
 namespace raygate {
 
@@ -48,6 +49,28 @@ RunRecord require_positive_time(RunRecord run, const std::string& role) {
   return run;
 }
 
+// A run that wrote its scene file changed what every later run is timed on (a sweep's tracer
+// appended 3000 spheres a run: the baseline's time grew with it, and the run passed). The run
+// fails, so the scene is measured no further (exit 3).
+RunRecord with_scene_checked(RunRecord run, const SceneInput& scene, const std::string& who) {
+  for (const auto& [file, prepared] : scene.prepared_sha256) {
+    std::string now;
+    try {
+      now = sha256_file_hex(file);
+    } catch (const std::exception&) {  // gone or unreadable: changed all the same
+    }
+    if (now == prepared) continue;
+    run.ok = false;
+    run.failure = (run.failure.empty() ? "" : run.failure + "; ") +
+                  fmt::format(
+                      "{} changed the scene file {} while it ran (a run reads its scene, "
+                      "never writes it); the scene is measured no further",
+                      who, file.string());
+    break;
+  }
+  return run;
+}
+
 // Runs one contender once; `label` names the run directory ("warmup-1", "round-007").
 class RunLauncher {
  public:
@@ -68,8 +91,10 @@ class RunLauncher {
     ProcessSpec spec = contender.command(scene_, dir);
     spec.metered = true;  // the run's peak memory is the contender's own, not raygate's
     if (!cpus.empty()) spec.cpu_affinity = cpus;
-    return require_positive_time(contender.interpret(scene_, executor_.run(spec), spec, dir),
-                                 contender.name());
+    return with_scene_checked(
+        require_positive_time(contender.interpret(scene_, executor_.run(spec), spec, dir),
+                              contender.name()),
+        scene_, contender.name());
   }
 
   // Starts all at once, contender i pinned to cpus[i].
@@ -86,9 +111,15 @@ class RunLauncher {
     }
     const std::vector<ProcessResult> results = executor_.run_together(specs);
     std::vector<RunRecord> records;
+    std::string who;  // both ran at once: either may have written it
     for (std::size_t i = 0; i < contenders.size(); ++i) {
-      records.push_back(require_positive_time(
-          contenders[i]->interpret(scene_, results[i], specs[i], dirs[i]), contenders[i]->name()));
+      who += (who.empty() ? "" : " or ") + contenders[i]->name();
+    }
+    for (std::size_t i = 0; i < contenders.size(); ++i) {
+      records.push_back(with_scene_checked(
+          require_positive_time(contenders[i]->interpret(scene_, results[i], specs[i], dirs[i]),
+                                contenders[i]->name()),
+          scene_, who));
     }
     return records;
   }

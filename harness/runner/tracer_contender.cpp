@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <system_error>
+#include <thread>
 
 #include "core/error.h"
 #include "core/fs.h"
@@ -91,8 +92,21 @@ ProcessSpec TracerContender::command(const SceneInput& scene,
 
 namespace {
 
-std::string image_problem(const std::filesystem::path& image) {
+std::string image_problem(const std::filesystem::path& image,
+                          const std::filesystem::path& run_dir) {
   std::error_code error;
+  if (std::filesystem::is_symlink(std::filesystem::symlink_status(image, error))) {
+    // A link out of the run's fresh folder could name an earlier run's image (or anything).
+    const auto target = std::filesystem::weakly_canonical(image, error);
+    const auto folder = std::filesystem::weakly_canonical(run_dir, error);
+    const auto inside = target.lexically_relative(folder);
+    if (inside.empty() || *inside.begin() == "..") {
+      return fmt::format(
+          "left its image as a symbolic link to {}, outside its run folder {}: "
+          "an image must be a file the run wrote",
+          target.string(), run_dir.string());
+    }
+  }
   const auto status = std::filesystem::status(image, error);
   if (error || !std::filesystem::exists(status)) return "wrote no image at " + image.string();
   if (!std::filesystem::is_regular_file(status)) return image.string() + " is not a regular file";
@@ -107,7 +121,19 @@ std::string image_problem(const std::filesystem::path& image) {
 // it was written into documents raygate's own readers refuse.
 std::string reported_time_problem(double reported_seconds, const ProcessResult& result,
                                   const Adapter& adapter) {
-  const double threads = static_cast<double>(std::max(adapter.threads, 1));
+  // A microsecond is below any render's time (and a clock's print resolution): a smaller time is
+  // a number the regex took from elsewhere, and would make the tracer's score zero.
+  constexpr double kShortestRenderSeconds = 1e-6;
+  if (reported_seconds < kShortestRenderSeconds) {
+    return fmt::format(
+        "printed a time of {:.6g} s, less than a microsecond: timing.regex or timing.unit does "
+        "not read what the tracer prints",
+        reported_seconds);
+  }
+  // Threads beyond the machine's CPUs do not run at once, so they add no CPU time per second.
+  const unsigned cpus = std::max(std::thread::hardware_concurrency(), 1U);
+  const double threads =
+      static_cast<double>(std::clamp(adapter.threads, 1, static_cast<int>(cpus)));
   if (reported_seconds <= result.wall_seconds * threads * 1.05 + 0.05) return "";
   return fmt::format(
       "printed a time of {:.6g} s, longer than its process ran ({:.3f} s of wall time{}): "
@@ -133,7 +159,7 @@ RunRecord TracerContender::interpret(const SceneInput& scene, const ProcessResul
   }
   run.image = expand(adapter.image, placeholders(scene, run_dir));
   if (!run.ok) return run;
-  if (const std::string problem = image_problem(run.image); !problem.empty()) {
+  if (const std::string problem = image_problem(run.image, run_dir); !problem.empty()) {
     run.ok = false;
     run.failure = adapter.name + " " + problem;
     return run;

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <variant>
 #include <vector>
@@ -39,6 +40,13 @@ class SqlParams {
 
  private:
   std::vector<Value> values_;
+};
+
+// A number column holding text, as only a hand edit of an SQLite file makes (SQLite keeps what it
+// is given; 'abc' read as a number is 0). what() says what it holds; the reader adds where.
+class StoredTypeError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
 };
 
 // One row of a query's result. Columns are numbered from 0; NULL reads as "", nullopt or false.

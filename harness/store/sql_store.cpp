@@ -40,13 +40,21 @@ std::string measurements_from() {
          "\nJOIN documents d ON d.id = s.document_id\n";
 }
 
-HistoryRow history_row(const SqlRow& row) {
+// One row of measurements(), checked as a document's numbers are on import: a store edited by
+// hand must not change what history and alert say without a word.
+HistoryRow history_row(const SqlRow& row, const std::string& location) {
   HistoryRow out;
   out.document_id = row.integer(0).value_or(0);
   int column = 1;
-  for_each_shown([&](const char*, const char*, const FieldOf<HistoryRow>& field) {
-    read_field(row, column++, field, out);
+  for_each_shown([&](const char*, const char* name, const FieldOf<HistoryRow>& field) {
+    try {
+      read_field(row, column++, field, out);
+    } catch (const StoredTypeError& e) {
+      throw InfraError(fmt::format("results store {}: document {}: {} {}; the store is damaged",
+                                   location, out.document_id, name, e.what()));
+    }
   });
+  check_history_row(out, location);
   return out;
 }
 
@@ -159,7 +167,7 @@ std::vector<HistoryRow> SqlStore::measurements(const HistoryQuery& query) {
   std::vector<HistoryRow> rows;
   db_->query(measurements_from() + measurements_where(*db_, query.scenes.size()) +
                  measurements_order(*db_),
-             params, [&rows](const SqlRow& row) { rows.push_back(history_row(row)); });
+             params, [&](const SqlRow& row) { rows.push_back(history_row(row, location())); });
   return rows;
 }
 
@@ -181,6 +189,17 @@ std::unique_ptr<ResultsStore> open_sqlite_store(const std::filesystem::path& pat
   try {
     auto db = std::make_unique<SqliteDb>(
         SqliteDb::open(path, mode == StoreOpen::create_if_missing, busy_timeout));
+    if (mode == StoreOpen::must_exist && db->schema_version() == 0) {
+      // A command that only reads does not turn a file into a store (an empty file, or another
+      // program's database, was given raygate's tables; a sweep).
+      throw UsageError(fmt::format(
+          "results store {} is not a raygate store ({}); `raygate run --store` records into a "
+          "store, `raygate import FILE... --store` fills one",
+          path.string(),
+          std::filesystem::file_size(path, error) == 0
+              ? "an empty file"
+              : "an SQLite file whose schema version, PRAGMA user_version, is 0"));
+    }
     db->configure_for_store();
     return std::make_unique<SqlStore>(std::move(db));
   } catch (...) {

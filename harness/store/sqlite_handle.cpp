@@ -7,6 +7,7 @@
 #include <thread>
 
 #include "core/error.h"
+#include "core/utf8.h"
 
 namespace raygate {
 
@@ -164,13 +165,31 @@ std::int64_t SqliteStatement::integer(int column) const {
   return sqlite3_column_int64(statement_, column);
 }
 
+namespace {
+
+// Text or bytes where a number was asked for: refused, not read as 0 (a sweep's hand edit hid a
+// regression from alert).
+void refuse_text_as_number(sqlite3_stmt* statement, int column) {
+  const int type = sqlite3_column_type(statement, column);
+  if (type != SQLITE_TEXT && type != SQLITE_BLOB) return;
+  const unsigned char* text = sqlite3_column_text(statement, column);
+  const std::string held = text == nullptr ? "" : reinterpret_cast<const char*>(text);
+  throw StoredTypeError(fmt::format("holds {} '{}', not a number",
+                                    type == SQLITE_TEXT ? "text" : "bytes",
+                                    repaired_utf8(held.substr(0, 40))));
+}
+
+}  // namespace
+
 std::optional<std::int64_t> SqliteStatement::optional_integer(int column) const {
   if (sqlite3_column_type(statement_, column) == SQLITE_NULL) return std::nullopt;
+  refuse_text_as_number(statement_, column);
   return sqlite3_column_int64(statement_, column);
 }
 
 std::optional<double> SqliteStatement::real(int column) const {
   if (sqlite3_column_type(statement_, column) == SQLITE_NULL) return std::nullopt;
+  refuse_text_as_number(statement_, column);
   return sqlite3_column_double(statement_, column);
 }
 

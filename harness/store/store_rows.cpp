@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "core/json_reader.h"
 #include "core/sha256.h"
 #include "core/utf8.h"
 #include "gate/memory_gate.h"
@@ -53,7 +54,9 @@ const ImageCheck* golden_check(const SceneResult& scene, Role role) {
 
 void fill_ratio(SceneRow& row, const RatioSummary& r) {
   row.rounds = static_cast<std::int64_t>(r.rounds);
-  row.ratio = finite(r.ratio);
+  // A ratio of no rounds (null in the document, read back as 0) is no ratio: NULL, as the
+  // reader below refuses a stored ratio that is not above 0.
+  row.ratio = r.rounds > 0 && r.ratio > 0.0 ? finite(r.ratio) : std::nullopt;
   row.ratio_lower = finite(r.ratio_interval.lower);
   row.ratio_upper = finite(r.ratio_interval.upper);
   row.tracer_median_seconds = finite(r.tracer_median_seconds);
@@ -247,6 +250,29 @@ std::string short_ref_name(const std::string& ref_name) {
   return ref_name;
 }
 
+void check_history_row(const HistoryRow& row, const std::string& location) {
+  constexpr double kMaxStored = 1e18;  // as results_check's kMaxMeasure
+  // Above 0 where the value is a measured time or a ratio of two; at least 0 where a document may
+  // hold 0 (an interval's end, an image error, an unmeasured median).
+  const auto check = [&](const char* column, const std::optional<double>& value, bool positive) {
+    if (!value) return;
+    const bool sense =
+        std::isfinite(*value) && *value <= kMaxStored && (positive ? *value > 0.0 : *value >= 0.0);
+    if (sense) return;
+    throw InfraError(fmt::format(
+        "results store {}: document {}, scene {}: {} is {:.6g}, which no measurement gives; the "
+        "store is damaged (re-import the document, or remove it)",
+        location, row.document_id, row.scene_id, column, *value));
+  };
+  check("normalized_ratio", row.ratio, true);
+  check("ratio_lower", row.ratio_lower, false);
+  check("ratio_upper", row.ratio_upper, false);
+  check("baseline_median_seconds", row.baseline_median_seconds, false);
+  check("image_max_error", row.image_max_error, false);
+  check("image_rms_error", row.image_rms_error, false);
+  check("peak_memory_kib", row.peak_memory_kib, false);
+}
+
 nlohmann::json parse_stored_document(const std::string& text, std::int64_t id,
                                      const std::string& location) {
   try {
@@ -254,7 +280,7 @@ nlohmann::json parse_stored_document(const std::string& text, std::int64_t id,
   } catch (const nlohmann::json::parse_error& e) {
     throw InfraError(
         fmt::format("results store {}: document {} is not JSON ({}); the store is damaged",
-                    location, id, e.what()));
+                    location, id, plain_exception_text(e)));
   }
 }
 

@@ -110,6 +110,13 @@ std::optional<std::int64_t> parse_iso8601_unix(std::string_view text);
 // "refs/heads/main" -> "main", "refs/remotes/origin/x" -> "origin/x", "refs/tags/v1" -> "v1".
 std::string short_ref_name(const std::string& ref_name);
 
+// A history row's numbers checked as import checks a document's (results_check.cpp): a ratio,
+// its interval, a baseline time or a memory peak that is not above 0 and finite, an image error
+// below 0, was written by hand into the file (sqlite3), and would change what history and
+// alert say (a ratio of 0 hid a +50% regression, exit 0; a sweep). InfraError naming the
+// store, the document, the scene and the column: the store is damaged.
+void check_history_row(const HistoryRow& row, const std::string& location);
+
 // A stored document's JSON text parsed back, invalid UTF-8 in it repaired first (as the text
 // columns are); text that is not JSON means a damaged store (InfraError naming the store and
 // the document id).

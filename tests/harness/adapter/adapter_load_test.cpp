@@ -369,5 +369,27 @@ INSTANTIATE_TEST_SUITE_P(
       return std::string(param_info.param.what);
     });
 
+// A commit is untrusted: a source_dir that is a link in it would run the build steps in any
+// folder the link names (a sweep: a build wrote into /tmp/.../victimdir).
+TEST(AdapterLoad, ASourceDirThatIsALinkInTheCheckoutIsRefused) {
+  TempDir dir;
+  std::filesystem::create_directories(dir.path() / "repo" / "real" / "src");
+  std::filesystem::create_directories(dir.path() / "victim");
+  std::filesystem::create_directory_symlink(dir.path() / "victim", dir.path() / "repo" / "vlink");
+  std::filesystem::create_directory_symlink("real", dir.path() / "repo" / "up");
+  Adapter a = parse_adapter(with(R"("source_dir": "real/src")"), kOrigin);
+  EXPECT_EQ(source_directory(a, dir.path() / "repo"), dir.path() / "repo" / "real" / "src");
+  for (const char* linked : {"vlink", "up/src"}) {
+    a.source_dir = linked;
+    try {
+      source_directory(a, dir.path() / "repo");
+      ADD_FAILURE() << linked << " was followed";
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("is a symbolic link in this commit"), std::string::npos)
+          << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace raygate

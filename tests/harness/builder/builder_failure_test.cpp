@@ -87,6 +87,24 @@ TEST(BuilderFailure, MessageShowsTheFirstErrorLineFarAboveTheTail) {
   EXPECT_EQ(message.find("| fatal: unable"), std::string::npos) << "it is not in the tail";
 }
 
+// A sweep's build printed a NUL: the error's what() ended there, losing the tail and the hint.
+TEST(BuilderFailure, ANulInTheLogIsEscapedAndTheWholeMessageIsKept) {
+  BuilderFixture f;
+  const BuildRecord r = build(
+      f.worktree(), toy_adapter({{"sh", "-c", "printf 'error: a \\000 b\\nsecond\\n'; exit 1"}}),
+      f.options());
+  try {
+    require_success(r);
+    FAIL() << "require_success accepted a failed build";
+  } catch (const InfraError& e) {
+    const std::string what = e.what();  // as main() prints it: up to the first NUL
+    EXPECT_NE(what.find("first error (line 1 of the log): error: a \\x00 b"), std::string::npos)
+        << what;
+    EXPECT_NE(what.find("| second"), std::string::npos) << what;
+    EXPECT_NE(what.find("fix the build of this commit"), std::string::npos) << what;
+  }
+}
+
 TEST(BuilderFailure, FirstErrorLineSkipsCMakeChatter) {
   TempDir dir;
   const fs::path log = dir.path() / "step-1.log";

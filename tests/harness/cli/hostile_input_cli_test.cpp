@@ -426,9 +426,18 @@ TEST_F(HostileDocuments, FifthSweepLeftoversAreRefusedBeforeAnythingRuns) {
     expect_usage_error(run_raygate({command, odd}, dir),
                        "worktree.sha: \"zzzz\" is not a commit id");
   }
-  const std::string uncommitted =
-      document("mine.json", [](json& j) { j["revisions"][0]["worktree"]["sha"] = "uncommitted"; });
+  const std::string uncommitted = document("mine.json", [](json& j) {
+    j["revisions"][0]["worktree"]["sha"] = "uncommitted";
+    j["revisions"][0]["worktree"]["short_sha"] = "uncommitted";  // as checkout writes it
+  });
   EXPECT_EQ(run_raygate({"gate", uncommitted}, dir).exit_code, 0);
+  // A short id is the start of the sha (it names export's files and is printed for the commit).
+  const std::string climbing = document(
+      "short.json", [](json& j) { j["revisions"][0]["worktree"]["short_sha"] = "../../../esc"; });
+  for (const char* command : {"gate", "import"}) {
+    expect_usage_error(run_raygate({command, climbing}, dir),
+                       "worktree.short_sha: \"../../../esc\" is not the start of sha");
+  }
 }
 
 // The tenth sweep: words and counts a reader acts on that it took as they came.

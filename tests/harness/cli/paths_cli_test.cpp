@@ -118,9 +118,11 @@ TEST(PathsCli, RunRefusesSuiteNamesAndIdsThatClimbOutOfTheCache) {
   EXPECT_FALSE(fs::exists(dir.path() / "cache" / "scenes"));
 }
 
-// A stored document's short sha names the exported file: one imported with a crafted sha
-// would have been written outside -o's directory.
-TEST(PathsCli, ExportRefusesAStoredShaThatClimbsOut) {
+// A document's short sha names the exported file: one with a crafted short sha would have been
+// written outside -o's directory. It is refused on import now (a sweep: it was stored, and then
+// blocked the export of the whole store); export's own check (ExportDocuments) stays for stores
+// written before.
+TEST(PathsCli, ImportRefusesAShortShaThatIsNotTheStartOfTheSha) {
   TempDir dir("raygate-paths");
   DocumentSpec spec;
   spec.sha = fake_sha(1);
@@ -128,14 +130,11 @@ TEST(PathsCli, ExportRefusesAStoredShaThatClimbsOut) {
   ResultsDocument doc = make_document(spec);
   doc.revisions[0].worktree.short_sha = "x/../../escaped";
   write_results(doc, dir.path() / "r.json");
-  ASSERT_EQ(run_raygate({"import", "--store", "store.db", "r.json"}, dir).exit_code, 0);
-  fs::create_directories(dir.path() / "a" / "out");
-  const CliRun r = run_raygate({"export", "--store", "store.db", "-o", "a/out"}, dir);
+  const CliRun r = run_raygate({"import", "--store", "store.db", "r.json"}, dir);
   EXPECT_EQ(r.exit_code, 2) << r.out;
-  EXPECT_NE(r.out.find("revisions[].worktree.short_sha 'x/../../escaped'"), std::string::npos)
+  EXPECT_NE(r.out.find("short_sha: \"x/../../escaped\" is not the start of sha"), std::string::npos)
       << r.out;
-  EXPECT_FALSE(fs::exists(dir.path() / "a" / "escaped.json"));
-  EXPECT_TRUE(fs::is_empty(dir.path() / "a" / "out"));
+  EXPECT_EQ(run_raygate({"report", "r.json"}, dir).exit_code, 2);
 }
 
 }  // namespace

@@ -185,6 +185,23 @@ TEST_F(ContenderTest, EmptyImageIsAFailure) {
   EXPECT_EQ(contains(r.failure, "wrote an empty image"), "");
 }
 
+TEST_F(ContenderTest, AnImageLinkedOutOfTheRunFolderIsAFailureOneInsideIsRead) {
+  const fs::path image = run_dir_ / "work" / "trace.ppm";
+  const fs::path earlier = dir_.path() / "earlier.ppm";
+  write_file_atomically(earlier, "P6 ...");
+  const TracerContender fixed = tracer(kWorkdirImage);
+  const ProcessSpec spec = fixed.command(scene_, run_dir_);
+  write_file_atomically(spec.stdout_path, "");
+  fs::create_symlink(earlier, image);
+  const RunRecord out = fixed.interpret(scene_, exited_with(0, 1.0), spec, run_dir_);
+  EXPECT_FALSE(out.ok);
+  EXPECT_EQ(contains(out.failure, "left its image as a symbolic link to " + earlier.string()), "");
+  fs::remove(image);
+  write_file_atomically(run_dir_ / "work" / "real.ppm", "P6 ...");
+  fs::create_symlink("real.ppm", image);
+  EXPECT_TRUE(fixed.interpret(scene_, exited_with(0, 1.0), spec, run_dir_).ok);
+}
+
 TEST_F(ContenderTest, NonZeroExitIsAFailureEvenWithAnImage) {
   const RunRecord r = run(tracer(kWorkdirImage), exited_with(3, 1.0), "P6 ...");
   EXPECT_FALSE(r.ok);
@@ -262,6 +279,23 @@ TEST_F(ContenderTest, AReportedTimeLongerThanTheProcessRanIsAFailure) {
   EXPECT_FALSE(run(tracer(kReported), exited_with(0, 2.0), "png", "render time: 2200 ms\n").ok);
 }
 
+TEST_F(ContenderTest, AReportedTimeBelowAMicrosecondIsAFailureNotAZeroScore) {
+  const RunRecord tiny =
+      run(tracer(kReported), exited_with(0, 2.0), "png", "render time: 0.0000001 ms\n");
+  EXPECT_FALSE(tiny.ok);
+  EXPECT_EQ(contains(tiny.failure, "printed a time of 1e-10 s, less than a microsecond"), "");
+  EXPECT_TRUE(run(tracer(kReported), exited_with(0, 2.0), "png", "render time: 0.002 ms\n").ok);
+}
+
+TEST_F(ContenderTest, ThreadsBeyondTheMachinesCpusAddNoTimeToTheBound) {
+  std::string many_threads = kReported;
+  many_threads.insert(many_threads.find("\"timing\""), "\"threads\": 4096,\n  ");
+  // 4096 threads would allow 8,600 s from a 2 s process; no runner here has 2,000 CPUs.
+  EXPECT_FALSE(
+      run(tracer(many_threads.c_str()), exited_with(0, 2.0), "png", "render time: 4000000 ms\n")
+          .ok);
+}
+
 // --- the baseline ------------------------------------------------------------------------------
 
 class BaselineContenderTest : public ContenderTest {
@@ -306,6 +340,21 @@ TEST_F(BaselineContenderTest, TimedByProcessWallByDefaultKeepingInProcessSeconds
   EXPECT_DOUBLE_EQ(*r.reported_seconds, 1.875);
   EXPECT_DOUBLE_EQ(r.wall_seconds, 2.0);
   EXPECT_EQ(r.image, run_dir_ / "image.ppm");
+}
+
+TEST_F(BaselineContenderTest, ARunTheBudgetCutSaysSoAndStatisticsWithoutTimesArePlainWords) {
+  ProcessResult cut = exited_with(0, 1.0);
+  cut.outcome = ProcessOutcome::timed_out;
+  const RunRecord r = interpret(cut, nullptr);
+  EXPECT_FALSE(r.ok);
+  EXPECT_TRUE(r.stopped_by_budget);
+  EXPECT_EQ(contains(r.failure, "the time budget's cut, not raygate-baseline's 30-minute limit"),
+            "");
+  const std::string no_times = R"({"rays": 7})";
+  const RunRecord unusable = interpret(exited_with(0, 2.0), &no_times);
+  EXPECT_FALSE(unusable.ok);
+  EXPECT_EQ(contains(unusable.failure, "key 'parse_seconds' not found"), "");
+  EXPECT_EQ(unusable.failure.find("json.exception"), std::string::npos) << unusable.failure;
 }
 
 TEST_F(BaselineContenderTest, ProcessCpuClockTimesByUserPlusSystemSeconds) {

@@ -10,6 +10,7 @@
 
 #include "core/error.h"
 #include "core/fs.h"
+#include "core/sha256.h"
 #include "pipeline/stop_rules.h"
 #include "fake_executor.h"
 
@@ -65,7 +66,7 @@ class SchedulerTest : public ::testing::Test {
   FakeClock clock_;
   FakeExecutor executor_{clock_};
   ScheduleOptions options_;
-  SceneInput scene_{SuiteScene{"balls", "balls", 1, 32, 32}, "balls.nff", {}};
+  SceneInput scene_{SuiteScene{"balls", "balls", 1, 32, 32}, "balls.nff", {}, {}};
   FakeContender baseline_{Role::baseline};
   FakeContender tracer_{Role::tracer};
   FakeContender base_{Role::base};
@@ -410,6 +411,29 @@ TEST(RoundSamples, PairTheTracerWithTheBaselineOfTheSameRound) {
 }
 
 // --- failures ----------------------------------------------------------------------------------
+
+// A sweep's tracer appended spheres to its scene after each render: the baseline was timed on a
+// growing scene and the run passed. The run that changed the file fails the scene.
+TEST_F(SchedulerTest, ARunThatWritesItsSceneFileFailsTheScene) {
+  const fs::path nff = dir_.path() / "balls.nff";
+  write_file_atomically(nff, "s 0 0 0 1\n");
+  scene_.nff = nff;
+  scene_.files[SceneFormat::nff] = nff;
+  scene_.prepared_sha256[nff] = sha256_file_hex(nff);
+  int tracer_runs = 0;
+  executor_.on_success([&](const ProcessSpec& spec) {
+    if (spec.argv.front() == "tracer" && ++tracer_runs == 3) {
+      write_file_atomically(nff, "s 0 0 0 1\ns 1 1 1 1\n");
+    }
+  });
+  const SceneRuns runs = measure_pair(stop_after(10));
+  ASSERT_TRUE(runs.failed());
+  EXPECT_EQ(runs.failed_role, Role::tracer);
+  EXPECT_NE(runs.failed_run->failure.find("tracer changed the scene file " + nff.string()),
+            std::string::npos)
+      << runs.failed_run->failure;
+  EXPECT_EQ(runs.rounds.size(), 1u);  // warm-up, round 1, then round 2's tracer changed it
+}
 
 TEST_F(SchedulerTest, CrashStopsTheSceneAndKeepsTheRoundsBefore) {
   executor_.script("tracer", 4, killed_by(SIGSEGV));  // warm-up, rounds 1-2, then round 3

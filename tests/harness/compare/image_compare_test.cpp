@@ -106,6 +106,17 @@ TEST(ImageCompare, ReadsOtherFormatsAndRejectsUnreadableFiles) {
   EXPECT_EQ(why.find('\n'), std::string::npos) << why;
 }
 
+// A header declaring 20000x20000 is refused before its pixels are decoded (a sweep's 1 MB PNG
+// took 67 s and gigabytes); here the pixels are not even there.
+TEST(ImageCompare, AnImageDeclaringHundredsOfMillionsOfPixelsIsRefusedByItsHeader) {
+  TempDir dir;
+  write_file_atomically(dir.path() / "huge.ppm", "P6\n20000 20000\n255\n\x01\x02\x03");
+  const std::string why = unreadable_image(dir.path() / "huge.ppm");
+  EXPECT_NE(why.find("huge.ppm: declares 20000x20000 pixels, more than raygate decodes"),
+            std::string::npos)
+      << why;
+}
+
 TEST(ImageCompare, EvidenceImagesAreWritten) {
   TempDir dir;
   const auto a = make_image(dir, "a.exr", {{2, 2, 0.6f, 0.5f, 0.5f}});

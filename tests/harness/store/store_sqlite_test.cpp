@@ -249,6 +249,48 @@ TEST(StoreSqlite, AMissingStoreIsAnErrorWhenItMustExist) {
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "none.db"));
 }
 
+// Commands that only read do not turn a file into a store: an empty file (a user's notes) or
+// another program's database was given raygate's tables (a sweep).
+TEST(StoreSqlite, AFileThatIsNoStoreIsRefusedWhenItMustExistAndLeftUntouched) {
+  TempDir dir;
+  write_file_atomically(dir.path() / "empty.txt", "");
+  try {
+    open_store((dir.path() / "empty.txt").string(), StoreOpen::must_exist);
+    FAIL() << "an empty file was taken for a store";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("is not a raygate store (an empty file)"));
+  }
+  EXPECT_EQ(std::filesystem::file_size(dir.path() / "empty.txt"), 0u);
+  {
+    Raw other(dir.path() / "other.db");
+    other.exec("CREATE TABLE notes (x TEXT)");
+  }
+  EXPECT_THROW(open_store((dir.path() / "other.db").string(), StoreOpen::must_exist), UsageError);
+  EXPECT_EQ(Raw(dir.path() / "other.db").text("SELECT count(*) FROM sqlite_master"), "1");
+}
+
+// SQLite keeps what a hand edit gives a column: text or an impossible ratio read back would
+// change what history and alert say (a ratio of 'abc' hid a +50% regression; a sweep).
+TEST(StoreSqlite, NumbersEditedByHandAreADamagedStoreNotAnotherVerdict) {
+  TempDir dir;
+  const auto path = dir.path() / "results.db";
+  open_store(path.string())->add(make_document(two_scenes(1)), "main");
+  for (const char* value : {"'abc'", "0", "-1", "1e308"}) {
+    Raw(path).exec(std::string("UPDATE scene_results SET normalized_ratio = ") + value +
+                   " WHERE scene_id = 'gears'");
+    try {
+      open_store(path.string(), StoreOpen::must_exist)->history({});
+      ADD_FAILURE() << value << " was read";
+    } catch (const InfraError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("document 1"));
+      EXPECT_THAT(e.what(), HasSubstr("normalized_ratio"));
+      EXPECT_THAT(e.what(), HasSubstr("the store is damaged"));
+    }
+  }
+  Raw(path).exec("UPDATE scene_results SET normalized_ratio = NULL WHERE scene_id = 'gears'");
+  EXPECT_NO_THROW(open_store(path.string(), StoreOpen::must_exist)->history({}));
+}
+
 // postgresql:// URLs open the team store (store_postgres_test.cpp); other URLs are refused.
 TEST(StoreSqlite, OtherUrlsAreRefusedWithoutEchoingThePassword) {
   try {

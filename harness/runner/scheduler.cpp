@@ -52,7 +52,8 @@ RunRecord require_positive_time(RunRecord run, const std::string& role) {
 // A run that wrote its scene file changed what every later run is timed on (a sweep's tracer
 // appended 3000 spheres a run: the baseline's time grew with it, and the run passed). The run
 // fails, so the scene is measured no further (exit 3).
-RunRecord with_scene_checked(RunRecord run, const SceneInput& scene, const std::string& who) {
+// `during`: "it ran" for one run, "baseline and tracer ran at once" for a duet's pair.
+RunRecord with_scene_checked(RunRecord run, const SceneInput& scene, const std::string& during) {
   for (const auto& [file, prepared] : scene.prepared_sha256) {
     std::string now;
     try {
@@ -63,9 +64,9 @@ RunRecord with_scene_checked(RunRecord run, const SceneInput& scene, const std::
     run.ok = false;
     run.failure = (run.failure.empty() ? "" : run.failure + "; ") +
                   fmt::format(
-                      "{} changed the scene file {} while it ran (a run reads its scene, "
-                      "never writes it); the scene is measured no further",
-                      who, file.string());
+                      "the scene file {} changed while {} (a run reads its scene, never "
+                      "writes it); the scene is measured no further",
+                      file.string(), during);
     break;
   }
   return run;
@@ -94,7 +95,7 @@ class RunLauncher {
     return with_scene_checked(
         require_positive_time(contender.interpret(scene_, executor_.run(spec), spec, dir),
                               contender.name()),
-        scene_, contender.name());
+        scene_, "it ran");
   }
 
   // Starts all at once, contender i pinned to cpus[i].
@@ -113,13 +114,13 @@ class RunLauncher {
     std::vector<RunRecord> records;
     std::string who;  // both ran at once: either may have written it
     for (std::size_t i = 0; i < contenders.size(); ++i) {
-      who += (who.empty() ? "" : " or ") + contenders[i]->name();
+      who += (who.empty() ? "" : " and ") + contenders[i]->name();
     }
     for (std::size_t i = 0; i < contenders.size(); ++i) {
       records.push_back(with_scene_checked(
           require_positive_time(contenders[i]->interpret(scene_, results[i], specs[i], dirs[i]),
                                 contenders[i]->name()),
-          scene_, who));
+          scene_, who + " ran at once"));
     }
     return records;
   }

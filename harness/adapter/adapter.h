@@ -95,6 +95,7 @@ std::filesystem::path source_directory(const Adapter& adapter,
 // The run time a tracer printed, in seconds, for timing.source "reported": the last match of
 // the regex in `output` (a tracer that prints progress prints its total last), converted from
 // the adapter's unit. nullopt if nothing matched or the capture is not a finite number >= 0.
+// Throws RegexTooCostly (adapter/timing_regex.h) when the pattern backtracks past its bound.
 std::optional<double> parse_reported_seconds(const Adapter& adapter, std::string_view output);
 
 // Names as written in adapter files ("nff", "process", "wall", "s").

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "core/error.h"
+#include "store/postgres_url.h"
 
 namespace raygate::cli {
 
@@ -33,6 +34,8 @@ void apply_to_subcommands(CLI::App& app, const ProjectDefaults& defaults,
       if (option == nullptr || is_filter(command->get_name(), key)) continue;
       try {
         option->run_callback_for_default()->default_val(value.value);
+        // --help shows defaults: a team store's password is not one to show (docs/store.md).
+        if (key == "store") option->default_str(redact_postgresql_url(value.value));
       } catch (const CLI::Error& e) {
         refused.push_back(
             {command, option,

@@ -328,7 +328,11 @@ void Process::kill_group(int sig) const {
   if (pid_ > 0) ::kill(-pid_, sig);
 }
 
-void Process::drain(int& fd, int log_fd, std::uint64_t& written, bool& truncated) {
+namespace {
+constexpr std::size_t kTailKept = 64 * 1024;  // what a truncated log ends with
+}  // namespace
+
+void Process::drain(int& fd, int log_fd, LogStream& stream, bool& truncated) {
   char buffer[1 << 15];
   const ssize_t n = ::read(fd, buffer, sizeof buffer);
   if (n < 0 && errno == EINTR) return;
@@ -338,14 +342,34 @@ void Process::drain(int& fd, int log_fd, std::uint64_t& written, bool& truncated
   }
   const auto size = static_cast<std::uint64_t>(n);
   if (log_fd < 0) return;
-  const std::uint64_t room = spec_.log_limit_bytes > written ? spec_.log_limit_bytes - written : 0;
+  const std::uint64_t room =
+      spec_.log_limit_bytes > stream.written ? spec_.log_limit_bytes - stream.written : 0;
   const std::uint64_t keep = std::min(room, size);
-  if (keep > 0 && ::write(log_fd, buffer, keep) > 0) written += keep;
-  if (keep < size && !truncated) {
-    truncated = true;
-    static constexpr char kNote[] = "\n[raygate: log truncated here]\n";
-    [[maybe_unused]] const ssize_t ignored = ::write(log_fd, kNote, sizeof kNote - 1);
+  if (keep > 0 && ::write(log_fd, buffer, keep) > 0) stream.written += keep;
+  if (keep == size) return;
+  truncated = true;
+  stream.dropped += size - keep;
+  stream.tail.append(buffer + keep, size - keep);
+  if (stream.tail.size() > 2 * kTailKept) stream.tail.erase(0, stream.tail.size() - kTailKept);
+}
+
+void Process::end_log(int log_fd, LogStream& stream) {
+  if (log_fd < 0 || stream.dropped == 0) return;
+  std::string_view tail = stream.tail;
+  if (tail.size() > kTailKept) tail.remove_prefix(tail.size() - kTailKept);
+  // From a line's start where a line starts in it, so the first line kept is whole; a tail that
+  // is one line's end (400 MB of 'x' and then the time, with no newline between) stays whole.
+  if (const std::size_t newline = tail.find('\n'); tail.size() < stream.dropped &&
+                                                   newline != std::string_view::npos &&
+                                                   newline + 1 < tail.size()) {
+    tail.remove_prefix(newline + 1);
   }
+  const std::string note =
+      "\n[raygate: log truncated here: " + std::to_string(stream.dropped - tail.size()) +
+      " bytes dropped; the last " + std::to_string(tail.size()) + " follow]\n";
+  [[maybe_unused]] ssize_t ignored = ::write(log_fd, note.data(), note.size());
+  ignored = ::write(log_fd, tail.data(), tail.size());
+  stream = {};
 }
 
 bool Process::has_exited(bool block) const {
@@ -437,8 +461,8 @@ ProcessResult Process::wait() {
   if (early_result_) return *early_result_;
   ProcessResult result;
   result.outcome = ProcessOutcome::exited;
-  std::uint64_t out_written = 0;
-  std::uint64_t err_written = 0;
+  LogStream out_stream;
+  LogStream err_stream;
   const int err_log = stderr_log_ >= 0 ? stderr_log_ : stdout_log_;
   const bool has_timeout = spec_.timeout.count() > 0;
   const auto deadline = started_ + spec_.timeout;
@@ -473,8 +497,8 @@ ProcessResult Process::wait() {
     if (pidfd_ >= 0 && !has_timeout && !kill_at && !pipes_deadline) wait_ms = -1;
     const int ready = ::poll(fds, 4, wait_ms);
     if (ready < 0 && errno != EINTR) break;
-    if (fds[0].revents != 0) drain(stdout_fd_, stdout_log_, out_written, result.stdout_truncated);
-    if (fds[1].revents != 0) drain(stderr_fd_, err_log, err_written, result.stderr_truncated);
+    if (fds[0].revents != 0) drain(stdout_fd_, stdout_log_, out_stream, result.stdout_truncated);
+    if (fds[1].revents != 0) drain(stderr_fd_, err_log, err_stream, result.stderr_truncated);
     if (!exited && has_exited(false)) {
       exited = true;
       exited_at = Clock::now();
@@ -484,6 +508,8 @@ ProcessResult Process::wait() {
     has_exited(true);
     exited_at = Clock::now();
   }
+  end_log(stdout_log_, out_stream);
+  end_log(err_log, err_stream);
   finish(result, exited_at);
   return result;
 }

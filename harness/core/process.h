@@ -102,7 +102,16 @@ class Process {
 
  private:
   Process() = default;
-  void drain(int& fd, int log_fd, std::uint64_t& written, bool& truncated);
+  // One output stream's log: what was written, and past log_limit_bytes what was dropped, of
+  // which the last bytes are kept to end the log (a tracer prints its time last: a sweep's
+  // 400 MB of output lost it, and the run was said to print no time).
+  struct LogStream {
+    std::uint64_t written = 0;
+    std::uint64_t dropped = 0;
+    std::string tail;
+  };
+  void drain(int& fd, int log_fd, LogStream& stream, bool& truncated);
+  static void end_log(int log_fd, LogStream& stream);
   void kill_group(int sig) const;
   bool has_exited(bool block) const;  // leaves the child a zombie, so its pid stays ours
   void reap(ProcessResult& result, std::chrono::steady_clock::time_point exited_at);

@@ -113,7 +113,11 @@ void check_values(const std::string& text, const std::filesystem::path& file) {
                       file.string(), number, start + 1, trimmed_line(line, start)));
     }
     const std::size_t equals = line.find('=');
-    if (equals == std::string::npos || equals <= start) continue;  // CLI11 says what is wrong
+    if (equals == std::string::npos) {  // not echoed: the value may be a store URL's password
+      throw UsageError(fmt::format("{}:{}:{}: no '=' on this line; write key = \"value\"",
+                                   file.string(), number, start + 1));
+    }
+    if (equals <= start) continue;  // CLI11 says what is wrong
     const std::size_t value = line.find_first_not_of(" \t\r", equals + 1);
     const std::string key =
         line.substr(start, line.find_last_not_of(" \t", equals - 1) + 1 - start);

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "core/error.h"
+#include "adapter/timing_regex.h"
 #include "core/fs.h"
 #include "nff/parser.h"
 #include "runner/timing/timing_modes.h"
@@ -166,8 +167,14 @@ RunRecord TracerContender::interpret(const SceneInput& scene, const ProcessResul
   }
   // The adapter's regex is read whenever it has one: the tracer's own account of its time.
   if (adapter.timing.source == TimingSource::reported) {
-    const std::optional<double> reported =
-        parse_reported_seconds(adapter, read_file(spec.stdout_path));
+    std::optional<double> reported;
+    try {
+      reported = parse_reported_seconds(adapter, read_file(spec.stdout_path));
+    } catch (const RegexTooCostly& e) {
+      run.ok = false;
+      run.failure = adapter.name + ": " + e.what();
+      return run;
+    }
     if (!reported || *reported <= 0.0) {
       run.ok = false;
       run.failure = adapter.name + " printed no positive time matching timing.regex '" +

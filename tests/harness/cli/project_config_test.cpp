@@ -212,5 +212,24 @@ TEST(ProjectConfig, ARefusedDefaultFailsOnlyTheCommandThatUsesIt) {
   }
 }
 
+// docs/store.md: passwords are never printed. --help printed a store default from raygate.toml
+// or RAYGATE_STORE whole, and a line without '=' was echoed by CLI11's error (a sweep).
+TEST(ProjectConfig, AStorePasswordIsNeitherShownInHelpNorEchoedByARefusal) {
+  const TempDir dir;
+  write_file_atomically(dir.path() / "raygate.toml",
+                        "store = \"postgresql://ci:s3cr3tPW@db:5432/raygate\"\n");
+  const ProjectDefaults defaults = read_project_config(dir.path() / "raygate.toml");
+  CLI::App app{"test"};
+  std::string store;
+  CLI::Option* option = app.add_subcommand("history")->add_option("--store", store);
+  apply_project_defaults(app, defaults);
+  EXPECT_EQ(option->get_default_str(), "postgresql://ci@db:5432/raygate");
+  write_file_atomically(dir.path() / "bad.toml",
+                        "# team store\nstore \"postgresql://ci:s3cr3tPW@db/raygate\"\n");
+  const std::string refused = refusal(dir.path() / "bad.toml");
+  EXPECT_THAT(refused, HasSubstr("bad.toml:2:1: no '=' on this line"));
+  EXPECT_EQ(refused.find("s3cr3tPW"), std::string::npos) << refused;
+}
+
 }  // namespace
 }  // namespace raygate::cli

@@ -94,17 +94,34 @@ TEST(Process, IgnoringSigtermStillEndsAfterTheGrace) {
   EXPECT_EQ(r.signal, SIGKILL);
 }
 
-TEST(Process, LogsAreBoundedButTheChildIsNotBlocked) {
+// The log keeps its start and, after a note, its last 64 KiB from a line's start: a tracer
+// prints its time last (a sweep's 400 MB of output lost it, and the run "printed no time").
+TEST(Process, LogsAreBoundedButTheChildIsNotBlockedAndTheEndIsKept) {
   TempDir dir;
-  ProcessSpec spec = shell("head -c 1000000 /dev/zero | tr '\\0' x", dir);
+  ProcessSpec spec =
+      shell("head -c 1000000 /dev/zero | tr '\\0' x; echo; echo 'render time: 1.5 s'", dir);
   spec.log_limit_bytes = 1000;
   const ProcessResult r = run_process(spec);
   ASSERT_TRUE(r.succeeded());
   EXPECT_TRUE(r.stdout_truncated);
   const std::string log = read_file(spec.stdout_path);
   EXPECT_EQ(log.substr(0, 1000), std::string(1000, 'x'));
-  EXPECT_NE(log.find("[raygate: log truncated here]"), std::string::npos);
+  EXPECT_NE(log.find("[raygate: log truncated here: 999001 bytes dropped; the last 19 follow]\n"),
+            std::string::npos)
+      << log.substr(1000, 200);
+  EXPECT_TRUE(log.ends_with("\nrender time: 1.5 s\n")) << log.substr(log.size() - 100);
   EXPECT_LT(log.size(), 1100u);
+}
+
+// The time printed on the same line as the flood (no newline between): the tail stays whole.
+TEST(Process, ATruncatedLogKeepsTheEndOfAnEndlessLine) {
+  TempDir dir;
+  ProcessSpec spec = shell("head -c 1000000 /dev/zero | tr '\\0' x; echo ' 1.5 s'", dir);
+  spec.log_limit_bytes = 1000;
+  ASSERT_TRUE(run_process(spec).succeeded());
+  const std::string log = read_file(spec.stdout_path);
+  EXPECT_NE(log.find("bytes dropped; the last 65536 follow]\n"), std::string::npos);
+  EXPECT_TRUE(log.ends_with("xxx 1.5 s\n")) << log.substr(log.size() - 100);
 }
 
 TEST(Process, EnvironmentWorkingDirectoryAndStdin) {

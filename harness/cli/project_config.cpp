@@ -34,8 +34,7 @@ void apply_to_subcommands(CLI::App& app, const ProjectDefaults& defaults,
       if (option == nullptr || is_filter(command->get_name(), key)) continue;
       try {
         option->run_callback_for_default()->default_val(value.value);
-        // --help shows defaults: a team store's password is not one to show (docs/store.md).
-        if (key == "store") option->default_str(redact_postgresql_url(value.value));
+        if (key == "store") option->default_str(redact_postgresql_url(value.value));  // --help
       } catch (const CLI::Error& e) {
         refused.push_back(
             {command, option,

@@ -287,7 +287,7 @@ INSTANTIATE_TEST_SUITE_P(
                "\"{workdir}\", the default) or pass '{workdir}' in run or env"},
         Broken{"bad_regex",
                with(R"("timing": {"source": "reported", "regex": "time: ([0-9.]+ s"})"),
-               "$.timing.regex: does not compile: unmatched '(' or ')'"},
+               "$.timing.regex: does not compile: missing closing parenthesis at character 17"},
         Broken{"regex_without_group",
                with(R"("timing": {"source": "reported", "regex": "time: [0-9.]+"})"),
                "$.timing.regex: must have exactly one capture group (the number), found 0; "

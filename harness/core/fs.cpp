@@ -72,6 +72,14 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
   }
 }
 
+std::optional<FileStamp> file_stamp(const std::filesystem::path& path) {
+  struct stat info {};
+  if (::stat(path.c_str(), &info) != 0) return std::nullopt;
+  const auto ns = [](const timespec& t) { return t.tv_sec * 1'000'000'000LL + t.tv_nsec; };
+  return FileStamp{static_cast<unsigned long long>(info.st_ino),
+                   static_cast<long long>(info.st_size), ns(info.st_mtim), ns(info.st_ctim)};
+}
+
 std::string symbolic_link_problem(const std::filesystem::path& path) {
   std::error_code error;
   if (!std::filesystem::is_symlink(std::filesystem::symlink_status(path, error))) return "";

@@ -46,6 +46,20 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view c
 // text names the path and the link's target; "" when `path` is no link.
 std::string symbolic_link_problem(const std::filesystem::path& path);
 
+// What one stat says of a file's identity and last change: its inode, size, and modification and
+// status-change times in nanoseconds. Any write moves the status-change time, which a process
+// cannot set back (utimensat sets only the others), and a replacement has another inode: equal
+// stamps mean the file was not touched, at the cost of one stat (hashing a 300 KB scene took 3 ms,
+// a tenth of a fast tracer's run). nullopt when the file cannot be stat'ed.
+struct FileStamp {
+  unsigned long long inode = 0;
+  long long size = 0;
+  long long modified_ns = 0;
+  long long changed_ns = 0;
+  bool operator==(const FileStamp&) const = default;
+};
+std::optional<FileStamp> file_stamp(const std::filesystem::path& path);
+
 // Flushes a directory's entries to disk (after files were created or renamed in it), so a
 // rename that was reported done survives a crash. A WriteError names the folder on failure.
 void sync_directory(const std::filesystem::path& folder);

@@ -202,8 +202,10 @@ SceneInput prepare_scene_input(const SuiteScene& entry, const SuiteMeasurement& 
       input.files[format] = prepare_converted_scene(input.nff, format, m.scene_cache);
     }
   }
-  for (const auto& [format, file] : input.files)
-    input.prepared_sha256[file] = sha256_file_hex(file);
+  for (const auto& [format, file] : input.files) {
+    if (const std::optional<FileStamp> stamp = file_stamp(file))
+      input.prepared_stamps[file] = *stamp;
+  }
   return input;
 }
 

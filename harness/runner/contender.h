@@ -12,6 +12,7 @@
 #include "adapter/adapter.h"
 #include "builder/build_record.h"
 #include "core/domain.h"
+#include "core/fs.h"
 #include "core/process.h"
 #include "runner/run_record.h"
 #include "runner/suite.h"
@@ -24,10 +25,10 @@ struct SceneInput {
   SuiteScene entry;
   std::filesystem::path nff;
   std::map<SceneFormat, std::filesystem::path> files;  // always holds nff too
-  // Each file's SHA-256 as prepared, checked after every run (runner/scheduler.cpp): every
+  // Each file's stamp as prepared, checked after every run (runner/scheduler.cpp): every
   // contender reads the same file, so a run that writes it changes what the next is timed on.
   // Empty: not checked (tests' scenes that are only names).
-  std::map<std::filesystem::path, std::string> prepared_sha256;
+  std::map<std::filesystem::path, FileStamp> prepared_stamps;
 
   // The file in `format`; throws InfraError if it was not prepared.
   const std::filesystem::path& file(SceneFormat format) const;

@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "core/error.h"
-#include "core/sha256.h"
+#include "core/fs.h"
 
 namespace raygate {
 
@@ -54,12 +54,8 @@ RunRecord require_positive_time(RunRecord run, const std::string& role) {
 // fails, so the scene is measured no further (exit 3).
 // `during`: "it ran" for one run, "baseline and tracer ran at once" for a duet's pair.
 RunRecord with_scene_checked(RunRecord run, const SceneInput& scene, const std::string& during) {
-  for (const auto& [file, prepared] : scene.prepared_sha256) {
-    std::string now;
-    try {
-      now = sha256_file_hex(file);
-    } catch (const std::exception&) {  // gone or unreadable: changed all the same
-    }
+  for (const auto& [file, prepared] : scene.prepared_stamps) {
+    const std::optional<FileStamp> now = file_stamp(file);  // gone: changed all the same
     if (now == prepared) continue;
     run.ok = false;
     run.failure = (run.failure.empty() ? "" : run.failure + "; ") +

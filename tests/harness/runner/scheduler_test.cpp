@@ -4,13 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <csignal>
+#include <fstream>
+#include <thread>
 #include <map>
 #include <utility>
 
 #include "core/error.h"
 #include "core/fs.h"
-#include "core/sha256.h"
 #include "pipeline/stop_rules.h"
 #include "fake_executor.h"
 
@@ -419,7 +421,7 @@ TEST_F(SchedulerTest, ARunThatWritesItsSceneFileFailsTheScene) {
   write_file_atomically(nff, "s 0 0 0 1\n");
   scene_.nff = nff;
   scene_.files[SceneFormat::nff] = nff;
-  scene_.prepared_sha256[nff] = sha256_file_hex(nff);
+  scene_.prepared_stamps[nff] = *file_stamp(nff);
   int tracer_runs = 0;
   executor_.on_success([&](const ProcessSpec& spec) {
     if (spec.argv.front() == "tracer" && ++tracer_runs == 3) {
@@ -434,6 +436,24 @@ TEST_F(SchedulerTest, ARunThatWritesItsSceneFileFailsTheScene) {
       std::string::npos)
       << runs.failed_run->failure;
   EXPECT_EQ(runs.rounds.size(), 1u);  // warm-up, round 1, then round 2's tracer changed it
+}
+
+// The stamp is one stat, not a hash: a write in place of the same size, its modification time
+// set back, still moves the status-change time, which no process can set.
+TEST_F(SchedulerTest, ASceneWrittenInPlaceWithItsTimeSetBackIsStillSeen) {
+  const fs::path nff = dir_.path() / "balls.nff";
+  write_file_atomically(nff, "s 0 0 0 1\n");
+  const FileStamp prepared = *file_stamp(nff);
+  const auto modified = fs::last_write_time(nff);
+  std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  {
+    std::ofstream same_size(nff, std::ios::in | std::ios::out);
+    same_size << "s 0 0 0 2\n";
+  }
+  fs::last_write_time(nff, modified);
+  EXPECT_EQ(file_stamp(nff)->size, prepared.size);
+  EXPECT_EQ(file_stamp(nff)->modified_ns, prepared.modified_ns);
+  EXPECT_NE(*file_stamp(nff), prepared);
 }
 
 TEST_F(SchedulerTest, CrashStopsTheSceneAndKeepsTheRoundsBefore) {

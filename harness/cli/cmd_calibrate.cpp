@@ -50,7 +50,7 @@ void add_calibrate_command(CLI::App& command, int& exit_code) {
   CalibrateArgs& args = bind_command<CalibrateArgs>(command, calibrate_command, exit_code);
   add_tracer_options(command, args.measure);
   command.add_option("--rev", args.rev, "revision to time")->capture_default_str();
-  command.add_option("--worktree", args.worktree, "time this directory as it is");
+  command.add_option("--worktree", args.worktree, "time this directory as it is (not --repo)");
   add_bounded_option(command, "--target-seconds", args.target_seconds, kMinTargetSeconds,
                      kMaxTargetSeconds, "wall seconds one render of each scene should take")
       ->required();

@@ -55,7 +55,7 @@ void add_run_command(CLI::App& command, int& exit_code) {
   command.add_option("--rev", args.rev, "revision to measure (branch, tag, sha, HEAD~3, ...)")
       ->capture_default_str();
   command.add_option("--worktree", args.worktree,
-                     "measure this directory as it is, uncommitted changes included");
+                     "measure this directory as it is, uncommitted changes included (not --repo)");
   add_publish_options(command, args.out,
                       "results document (default: <cache-dir>/runs/<time>-<sha>/results.json)",
                       args.publish);

@@ -165,8 +165,13 @@ std::optional<std::string> no_golden(const std::filesystem::path& golden_dir,
                                      const GoldenManifest& manifest, const GoldenEntry& rendered) {
   const std::string& id = rendered.id;
   const GoldenEntry* entry = manifest.find(id);
-  if (manifest.entries.empty())
+  if (manifest.entries.empty()) {
+    // A mistyped --golden-dir checks no image either: the words say which it was.
+    std::error_code absent;
+    if (!std::filesystem::exists(golden_dir, absent) && !absent)
+      return "no goldens: " + golden_dir.string() + " does not exist";
     return "no goldens in " + golden_dir.string() + " (none blessed yet)";
+  }
   // A file that cannot even be looked at (a symbolic link loop) is there: golden_file_problem
   // says why it cannot judge (ERROR), where a throw here lost the whole measurement.
   std::error_code unreadable;

@@ -143,6 +143,15 @@ def check_structure(root):
     need(all("shell" in s for s in steps if "run" in s), "action.yml: every run step needs shell: (composite)")
     uses = [s.get("uses", "") for s in steps]
     need(any(u.startswith("actions/upload-artifact@") for u in uses), "action.yml: no artifact upload")
+    # A `${{ }}` spliced into a script's text runs what it holds (a branch named $(...) is a valid
+    # git name): GitHub's values reach scripts through env: only (a sweep found one that did not).
+    for workflow in ("action.yml", "raygate.yml", "comment-from-fork.yml", "example-caller.yml"):
+        doc = yaml.safe_load((gh / workflow).read_text())
+        runs = [s for s in doc.get("runs", {}).get("steps", [])]
+        runs += [s for job in doc.get("jobs", {}).values() for s in job.get("steps", [])]
+        for step in runs:
+            need("${{" not in step.get("run", ""),
+                 f"{workflow}: step '{step.get('name', '?')}' splices ${{{{ }}}} into its script; pass it in env:")
 
     reusable = yaml.safe_load((gh / "raygate.yml").read_text())
     call = workflow_on(reusable).get("workflow_call", None)

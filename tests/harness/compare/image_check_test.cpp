@@ -30,9 +30,8 @@ class ImageCheckTest : public ::testing::Test {
   GoldenEntry ci_tetra() const {
     const GoldenEntry* entry = manifest_.find("tetra");
     EXPECT_NE(entry, nullptr);
-    return GoldenEntry{
-        "tetra", entry->scene, entry->size, entry->width, entry->height, entry->sampling,
-        {},      {},           {}};
+    return GoldenEntry{"tetra",         entry->scene, entry->size, entry->width, entry->height,
+                       entry->sampling, {},           {},          {},           {}};
   }
 
   ImageCheck check(const fs::path& actual, const GoldenEntry& rendered) const {
@@ -135,7 +134,7 @@ TEST_F(ImageCheckTest, TruncatedPngFailsWithOneLine) {
   const std::string png = read_file(kGolden / "tetra.png");
   const fs::path truncated = dir_.path() / "tetra.png";
   write_file_atomically(truncated, png.substr(0, png.size() / 2));
-  const GoldenEntry other{"other", "tetra", 2, 0, 0, "", {}, {}, {}};
+  const GoldenEntry other{"other", "tetra", 2, 0, 0, "", {}, {}, {}, {}};
   for (const GoldenEntry& rendered : {ci_tetra(), other}) {
     const ImageCheck c = check(truncated, rendered);
     EXPECT_EQ(c.verdict, ImageVerdict::fail) << c.error;
@@ -233,7 +232,12 @@ TEST_F(ImageCheckTest, NoGoldensAtAllSaysTheSameForEveryScene) {
   EXPECT_FALSE(a.failed());
   EXPECT_FALSE(a.metrics);
   EXPECT_EQ(a.error, b.error);
-  EXPECT_EQ(a.error, "no goldens in " + empty.string() + " (none blessed yet)");
+  EXPECT_EQ(a.error, "no goldens: " + empty.string() + " does not exist");
+  // A folder that is there but holds no set yet says so: a mistyped --golden-dir is told apart.
+  fs::create_directories(empty);
+  const ImageCheck c = check_against_golden(Role::tracer, kGolden / "tetra.png", empty,
+                                            GoldenManifest{}, ci_tetra(), {}, dir_.path());
+  EXPECT_EQ(c.error, "no goldens in " + empty.string() + " (none blessed yet)");
 }
 
 TEST_F(ImageCheckTest, GoldenOfAnotherSizeFactorIsNotCompared) {
@@ -359,7 +363,7 @@ TEST(AdapterGoldens, EachAdapterHasItsOwnAndTheBaselineSharesOnlyWithItsVariants
   shared.suite = "ci";
   shared.shared_with = {"fast-variant"};
   shared.upsert(
-      {"tetra", "tetra", 6, 160, 160, "center", "none", "tetra.png", std::string(64, 'f')});
+      {"tetra", "tetra", 6, 160, 160, "center", "none", "tetra.png", std::string(64, 'f'), {}});
   save_golden_manifest(shared, dir.path() / "slow");
   EXPECT_EQ(load_golden_manifest(dir.path() / "slow").shared_with, shared.shared_with);
   EXPECT_EQ(adapter_golden_dir(dir.path(), "fast-variant"), dir.path() / "slow");

@@ -147,6 +147,23 @@ JsonInputError::JsonInputError(std::string origin, std::size_t line, std::size_t
       json_path_(std::move(json_path)),
       problem_(std::move(problem)) {}
 
+// No file raygate reads nests past about 10 levels. Deeper input is refused while it is parsed:
+// code that walks a document recursively (import's check of the keys it keeps, dump) overflowed
+// its stack on 20,000 nested arrays (a sweep), where the parser itself does not recurse.
+constexpr std::size_t kMaxNesting = 128;
+
+[[noreturn]] void throw_too_deep(std::string_view text, std::size_t read,
+                                 const std::vector<OpenContainer>& open,
+                                 const std::string& origin) {
+  constexpr std::size_t kShownLevels = 6;
+  std::string path = path_through(open, std::min(open.size(), kShownLevels));
+  if (open.size() > kShownLevels) path += "...";
+  const auto [line, column] = line_and_column(text, read > 0 ? read - 1 : 0);
+  throw JsonInputError(origin, line, column, path,
+                       "nested more than " + std::to_string(kMaxNesting) +
+                           " levels deep (no raygate file nests past about 10)");
+}
+
 Json parse_json_input(std::string_view text, const std::string& origin) {
   using Event = Json::parse_event_t;
   std::size_t read = 0;
@@ -154,7 +171,10 @@ Json parse_json_input(std::string_view text, const std::string& origin) {
   const auto track = [&](int /*depth*/, Event event, Json& parsed) {
     switch (event) {
       case Event::object_start:
-      case Event::array_start: open.push_back({event == Event::object_start, {}, {}, 0}); break;
+      case Event::array_start:
+        if (open.size() >= kMaxNesting) throw_too_deep(text, read, open, origin);
+        open.push_back({event == Event::object_start, {}, {}, 0});
+        break;
       case Event::key: {
         std::string key = parsed.get<std::string>();
         if (!open.back().keys.insert(key).second) {

@@ -6,6 +6,7 @@
 #include <fmt/core.h>
 
 #include "core/error.h"
+#include "core/sha256.h"
 #include "core/time_text.h"
 #include "core/utf8.h"
 #include "store/migrate.h"
@@ -96,6 +97,18 @@ std::string documents_sql(const SqlDatabase& db, bool limited) {
       p1, p2, limited ? " LIMIT " + db.parameter(3, SqlType::int64) : "");
 }
 
+// The stored text is what its content_sha256 was taken of: export gives back the imported file
+// byte for byte, and a row edited by hand (one document's text copied into another, `{}`) was
+// exported as if it were the document (a sweep). Said as damage, as other edited values are.
+const std::string& checked_document_text(const std::string& text, const StoredDocument& stored,
+                                         const std::string& location) {
+  if (sha256_hex(text) == stored.content_sha256) return text;
+  throw InfraError(fmt::format(
+      "results store {}: document {}'s text does not match its content_sha256: edited after "
+      "it was stored; the store is damaged",
+      location, stored.id));
+}
+
 template <class Row>
 void insert_child(SqlDatabase& db, StoreTable table, std::int64_t id, const Row& row) {
   db.query(insert_sql<Row>(db, store_table(table)), insert_params(row, id), {});
@@ -153,7 +166,8 @@ std::vector<StoredDocument> SqlStore::documents(const DocumentQuery& query) {
     d.stored_at = row.text(1);
     d.branch = repaired_utf8(row.text(2));
     d.content_sha256 = row.text(3);
-    d.document = parse_stored_document(row.text(4), d.id, location());
+    d.document =
+        parse_stored_document(checked_document_text(row.text(4), d, location()), d.id, location());
     out.push_back(std::move(d));
   });
   return out;

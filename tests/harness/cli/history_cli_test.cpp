@@ -10,6 +10,7 @@
 
 #include <set>
 
+#include "core/sha256.h"
 #include "cli_support.h"
 #include "results_fixture.h"
 #include "store/sqlite_handle.h"
@@ -138,6 +139,16 @@ TEST_F(HistoryCli, TextThatIsNotUtf8InTheStoreIsRepairedOnTheWayOut) {
     db.exec(
         "UPDATE documents SET document_json = replace(document_json, 'commit number 2', "
         "'commit number 2 ' || CAST(X'FF' AS TEXT))");
+    // As that raygate stored it: the hash of the text it wrote (an edit without it is damage).
+    std::vector<std::pair<std::int64_t, std::string>> texts;
+    SqliteStatement read(db, "SELECT id, document_json FROM documents");
+    while (read.step()) texts.emplace_back(read.integer(0), read.text(1));
+    for (const auto& [id, text] : texts) {
+      SqliteStatement(db, "UPDATE documents SET content_sha256 = ?1 WHERE id = ?2")
+          .bind_text(1, sha256_hex(text))
+          .bind_int(2, id)
+          .run();
+    }
   }
   const CliStreams j =
       run_raygate_streams({"history", "--store", "store.db", "--format", "json"}, dir);

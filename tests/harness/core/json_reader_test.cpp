@@ -61,6 +61,19 @@ TEST(JsonReader, ANumberPastADoublesRangeIsAUsageErrorNamingTheField) {
   EXPECT_EQ(refusal("{\"a\": 1e-400, \"b\": 123456789012345678901234567890}"), "");
 }
 
+// A sweep: 20,000 nested arrays in a document's settings crashed import (a recursive walk of the
+// document overflowed the stack). Deep nesting is refused where it is, at 128 levels.
+TEST(JsonReader, NestingPastAHundredAndTwentyEightLevelsIsRefusedWhereItIs) {
+  const auto nested = [](int levels) {
+    return "{\"settings\": {\"zzz\": " + std::string(levels, '[') + std::string(levels, ']') + "}}";
+  };
+  EXPECT_EQ(refusal(nested(126)), "");  // 128 containers with the two objects
+  EXPECT_EQ(refusal(nested(127)),
+            "in.json:1:148: $.settings.zzz[0][0][0][0]...: nested more than 128 levels deep (no "
+            "raygate file nests past about 10)");
+  EXPECT_NE(refusal(nested(300000)).find("nested more than 128 levels deep"), std::string::npos);
+}
+
 TEST(JsonReader, ASyntaxErrorSaysWhereAndIsAUsageError) {
   const std::string message = refusal("{\n  \"a\": 1,\n  \"b\" 2\n}");
   EXPECT_EQ(message.rfind("in.json:3:7: not JSON: syntax error while parsing object separator", 0),

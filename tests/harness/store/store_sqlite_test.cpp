@@ -291,6 +291,32 @@ TEST(StoreSqlite, NumbersEditedByHandAreADamagedStoreNotAnotherVerdict) {
   EXPECT_NO_THROW(open_store(path.string(), StoreOpen::must_exist)->history({}));
 }
 
+// A document's text is what its content_sha256 was taken of: one document's text copied into
+// another's row, or `{}`, was exported as if it were that document (a sweep).
+TEST(StoreSqlite, ADocumentTextEditedByHandIsADamagedStoreNotAnExport) {
+  TempDir dir;
+  const auto path = dir.path() / "results.db";
+  {
+    const auto store = open_store(path.string());
+    store->add(make_document(two_scenes(1)), "main");
+    store->add(make_document(two_scenes(2)), "main");
+  }
+  EXPECT_EQ(open_store(path.string(), StoreOpen::must_exist)->documents({}).size(), 2u);
+  for (const char* edit :
+       {"UPDATE documents SET document_json = (SELECT document_json FROM documents WHERE id = 2) "
+        "WHERE id = 1",
+        "UPDATE documents SET document_json = '{}' WHERE id = 1"}) {
+    Raw(path).exec(edit);
+    try {
+      open_store(path.string(), StoreOpen::must_exist)->documents({});
+      ADD_FAILURE() << edit << ": exported";
+    } catch (const InfraError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("document 1's text does not match its content_sha256"));
+      EXPECT_THAT(e.what(), HasSubstr("the store is damaged"));
+    }
+  }
+}
+
 // postgresql:// URLs open the team store (store_postgres_test.cpp); other URLs are refused.
 TEST(StoreSqlite, OtherUrlsAreRefusedWithoutEchoingThePassword) {
   try {

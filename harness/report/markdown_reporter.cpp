@@ -177,13 +177,22 @@ std::string MarkdownReporter::compose(const ReportInput& input, const std::vecto
   return text;
 }
 
-// Cuts at a character boundary so the result stays valid UTF-8.
+// The last resort, when even the headline, the notes and the table head are over the limit
+// (text no report shortens: a note of 70,000 characters): cut at the end of a line, with a line
+// saying so, never inside a line (a table row or a link cut in half).
 std::string cut(std::string text, std::size_t limit) {
   if (text.size() <= limit) return text;
-  std::size_t end = limit;
-  while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;
+  static constexpr std::string_view kSaid =
+      "\n_The report was cut here: it would exceed GitHub's comment limit. See the HTML or JSON "
+      "report._\n";
+  const std::size_t room = limit > kSaid.size() ? limit - kSaid.size() : 0;
+  std::size_t end = room == 0 ? 0 : text.rfind('\n', room - 1);
+  if (end == std::string::npos) {  // one long first line: cut at a character
+    end = room;
+    while (end > 0 && (static_cast<unsigned char>(text[end]) & 0xC0) == 0x80) --end;
+  }
   text.resize(end);
-  return text;
+  return text.append(kSaid.substr(0, std::min(kSaid.size(), limit - end)));
 }
 
 void MarkdownReporter::write(const ReportInput& input, std::ostream& out) const {

@@ -7,6 +7,7 @@
 #include <map>
 
 #include "core/format.h"
+#include "core/utf8.h"
 #include "report/ratio_interval_text.h"
 
 namespace raygate::report {
@@ -356,13 +357,34 @@ std::string machine_line(const nlohmann::json& machine) {
   return fmt::format("{}", fmt::join(parts, ", "));
 }
 
+namespace {
+
+// A commit's text as a report line shows it: its first line, at most `max_bytes` (cut at a
+// character, marked "…"). A pull request's author writes it: a 70,000-character subject filled
+// GitHub's comment limit before the scene table (a sweep).
+std::string shown_commit_text(std::string_view text, std::size_t max_bytes) {
+  text = text.substr(0, text.find('\n'));
+  if (text.size() <= max_bytes) return std::string(text);
+  std::size_t end = 0;
+  while (end < max_bytes) {
+    const std::size_t length = std::max<std::size_t>(1, utf8_sequence_length(text.substr(end)));
+    if (end + length > max_bytes) break;
+    end += length;
+  }
+  return std::string(text.substr(0, end)) + "…";
+}
+
+}  // namespace
+
 std::string revision_line(const ResultsDocument& document, Role role) {
   const RevisionRecord* revision = document.revision(role);
   if (revision == nullptr) return "";
   const Worktree& tree = revision->worktree;
-  std::string line = fmt::format("{} {}", tree.short_sha, tree.subject);
+  constexpr std::size_t kSubjectBytes = 200;
+  std::string line =
+      fmt::format("{} {}", tree.short_sha, shown_commit_text(tree.subject, kSubjectBytes));
   if (!tree.revision.empty() && tree.revision != tree.sha)
-    line += fmt::format(" ({})", tree.revision);
+    line += fmt::format(" ({})", shown_commit_text(tree.revision, kSubjectBytes));
   if (tree.dirty) line += " [dirty]";
   return line;
 }

@@ -109,7 +109,8 @@ std::optional<double> suite_change(const ResultsDocument& document);
 std::string value_text(const nlohmann::json& value);
 // "Intel Xeon (2 cores), Linux 6.1.0 x86_64, host ci-runner-3": whatever the machine JSON has.
 std::string machine_line(const nlohmann::json& machine);
-// "abc1234 Fix the BVH split (main)"; "" for a role not in the document.
+// "abc1234 Fix the BVH split (main)"; "" for a role not in the document. The subject and the
+// revision each show their first line, at most 200 bytes ("…" where cut).
 std::string revision_line(const ResultsDocument& document, Role role);
 // "max slowdown +3.0% (...); images fail when more than 0.02% of pixels differ by over 0.004 in
 // a channel and warn when fewer do". A document without a change (`run`) is judged on its images only: its line leaves

@@ -309,6 +309,32 @@ TEST(MarkdownReport, TruncatesToTheLimitWithANote) {
   EXPECT_EQ(text.find("<details>"), std::string::npos);
 }
 
+// A sweep: a 70,000-character commit subject filled GitHub's limit before the scene table, and
+// the report was cut inside that line. A subject shows its first line, at most 200 bytes; text
+// nothing shortens (a note as long) is cut at the end of a line, with a line saying so.
+TEST(MarkdownReport, ALongCommitSubjectLeavesTheTableAndALongNoteIsCutAtALine) {
+  Fixture f(true);
+  for (RevisionRecord& revision : f.document.revisions) {
+    revision.worktree.subject = "fix: " + std::string(70000, 'S') + "\nsecond line";
+  }
+  std::string text = f.render("markdown");
+  EXPECT_LE(text.size(), ReportOptions{}.markdown_limit);
+  at(text, "fix: " + std::string(195, 'S') + "…");
+  EXPECT_EQ(text.find("second line"), std::string::npos);
+  at(text, "| **FAIL** | mount |");
+  at(text, "<details>");
+
+  f.gate.notes.push_back("a note " + std::string(70000, 'N'));
+  text = f.render("markdown");
+  EXPECT_LE(text.size(), ReportOptions{}.markdown_limit);
+  EXPECT_EQ(text.rfind("**raygate: 2 regressions**", 0), 0u) << text.substr(0, 200);
+  EXPECT_TRUE(text.ends_with(
+      "\n_The report was cut here: it would exceed GitHub's comment limit. See the HTML or JSON "
+      "report._\n"))
+      << text.substr(text.size() - 300);
+  EXPECT_EQ(text.find("NNNN"), std::string::npos);  // the long line went whole
+}
+
 TEST(MarkdownReport, RunSaysPass) {
   const Fixture f(false);
   const std::string text = f.render("markdown");

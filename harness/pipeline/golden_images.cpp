@@ -415,26 +415,34 @@ void bless_baseline_goldens(const BaselineGoldens& goldens, ProgressSink& progre
   manifest.suite = goldens.suite.name;
   manifest.baseline_version = goldens.baseline.version_line();
   manifest.baseline_source_sha256 = goldens.baseline.source_hash();
+  // Rendered first, swapped in once: the manifest names one baseline for its whole set, so a
+  // swap per scene left a killed bless with some scenes of the old baseline labelled with the new
+  // one (a sweep). An interrupted bless leaves the old set; its renders are redone.
+  std::vector<Blessing> blessings;
   for (const SuiteScene& scene : goldens.selected) {
     const BaselineRender render = render_scene(goldens, scene);
     const std::string file = scene.id + ".png";
-    // One swap per scene: a render takes seconds, and an interrupted bless keeps its work.
-    swap_in_goldens(goldens.golden_dir, manifest,
-                    {{file,
-                      render.image,
-                      {scene.id,
-                       scene.scene,
-                       scene.size,
-                       render.stats.value("width", 0),
-                       render.stats.value("height", 0),
-                       goldens.suite.sampling,
-                       "none",
-                       file,
-                       {}},
-                      std::nullopt,
-                      {}}});
-    progress.line(fmt::format("blessed   {:<12} {} ({:.2f} s)", scene.id,
-                              (goldens.golden_dir / file).string(), render.process.wall_seconds));
+    blessings.push_back({file,
+                         render.image,
+                         {scene.id,
+                          scene.scene,
+                          scene.size,
+                          render.stats.value("width", 0),
+                          render.stats.value("height", 0),
+                          goldens.suite.sampling,
+                          "none",
+                          file,
+                          {},
+                          {}},
+                         std::nullopt,
+                         {}});
+    progress.line(fmt::format("rendered  {:<12} {} ({:.2f} s)", scene.id, render.image.string(),
+                              render.process.wall_seconds));
+  }
+  swap_in_goldens(goldens.golden_dir, manifest, blessings);
+  for (const Blessing& b : blessings) {
+    progress.line(
+        fmt::format("blessed   {:<12} {}", b.entry.id, (goldens.golden_dir / b.file).string()));
   }
 }
 

@@ -195,6 +195,31 @@ TEST(GoldenCli, BlessKeepsTheSharedWithList) {
   EXPECT_EQ(m.entries.size(), 13u);
 }
 
+// A sweep: a bless killed after 5 of 13 scenes left those 5 new and 8 old, all labelled with the
+// new baseline. The renders come first and the set is swapped once: a bless that fails on its
+// second scene (as a kill there would end it) leaves the old set, manifest and images, whole.
+TEST(GoldenCli, ABlessThatFailsHalfwayLeavesTheOldSetWhole) {
+  TempDir dir;
+  std::filesystem::copy(kGolden, dir.path() / "golden");
+  const std::string manifest = read_file(dir.path() / "golden" / "manifest.json");
+  const std::string real =
+      (std::filesystem::path(RAYGATE_EXE).parent_path() / "raygate-baseline").string();
+  const std::string mark = (dir.path() / "rendered").string();
+  write_file_atomically(dir.path() / "second-fails",
+                        "#!/bin/sh\ncase \"$*\" in *.nff*)\n  if [ -e '" + mark +
+                            "' ]; then exit 7; fi\n  : > '" + mark + "';;\nesac\nexec '" + real +
+                            "' \"$@\"\n");
+  std::filesystem::permissions(dir.path() / "second-fails", std::filesystem::perms::owner_all);
+  std::filesystem::remove(dir.path() / "golden" / "tetra.png");  // the first scene's, to tell
+  const CliRun r = run_raygate({"golden", "bless", "tetra", "balls", "--golden-dir", "golden",
+                                "--work-dir", "work", "--baseline", "./second-fails"},
+                               dir);
+  EXPECT_EQ(r.exit_code, 3) << r.out;
+  EXPECT_TRUE(std::filesystem::exists(dir.path() / "rendered")) << r.out;
+  EXPECT_EQ(read_file(dir.path() / "golden" / "manifest.json"), manifest);
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "golden" / "tetra.png"));  // not blessed
+}
+
 // The ci suite's balls, at the settings of the baseline's golden: the fixture tracer has no
 // reflections, so the baseline's picture would fail it.
 inline constexpr const char* kCiBallsSuite = R"({

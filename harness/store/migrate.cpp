@@ -121,8 +121,13 @@ void backfill(SqlDatabase& db, int version) {
 void apply(SqlDatabase& db, const Migration& migration) {
   SqlTransaction transaction(db);
   db.lock_schema();
+  // Created (if missing) before the version is read: it also makes PostgreSQL see the tables
+  // another process committed while this one waited for the lock (a table name looked up before
+  // is cached until a table is locked).
   db.exec_script(kMigrationsTableSql);
-  if (db.schema_version() >= migration.version) return;
+  const int current = db.schema_version();
+  if (current >= migration.version) return;
+  if (current == 0) refuse_foreign_tables(db);
   const std::string tables = schema_sql(db, migration.version);
   if (!blank(tables)) db.exec_script(tables);
   if (!blank(migration.sql)) db.exec_script(migration.sql);
@@ -137,6 +142,20 @@ void apply(SqlDatabase& db, const Migration& migration) {
 }
 
 }  // namespace
+
+// A database with no raygate schema yet that has a table of a raygate table's name is another
+// program's: creating the store there failed in SQL's words ("relation documents already
+// exists", exit 3; a sweep). Said as the user's to fix, before anything is written.
+void refuse_foreign_tables(SqlDatabase& db) {
+  for (const TableShape& table : store_tables()) {
+    const std::string& name = table.name;
+    if (!db.has_table(name)) continue;
+    throw UsageError(fmt::format(
+        "results store {} is not a raygate store: it has a table '{}' that raygate did not "
+        "make (another program's database?); give raygate a database of its own",
+        db.location(), name));
+  }
+}
 
 int schema_version(SqlDatabase& db) { return db.schema_version(); }
 

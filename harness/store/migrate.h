@@ -17,6 +17,10 @@ namespace raygate {
 // The number of the last migration applied; 0 for a store with no raygate tables yet.
 int schema_version(SqlDatabase& db);
 
+// A UsageError when a database with no raygate schema has a table of a raygate table's name:
+// another program's database, not a store to create or read.
+void refuse_foreign_tables(SqlDatabase& db);
+
 // Applies the migrations newer than the store's version and returns the resulting version.
 // A store newer than `migrations` is a UsageError (this raygate is too old to write it).
 int migrate(SqlDatabase& db, std::span<const Migration> migrations = store_migrations());

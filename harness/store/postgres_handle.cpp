@@ -274,9 +274,27 @@ void PgConnection::lock_schema() {
 }
 
 int PgConnection::schema_version() {
-  if (!exec("SELECT to_regclass('schema_migrations') IS NOT NULL").flag(0, 0)) return 0;
+  if (!has_table("schema_migrations")) return 0;
+  // Another program's table of the name (a text version: "COALESCE types text and integer cannot
+  // be matched", exit 3; a sweep) is no raygate store.
+  const bool ours = exec(
+                        "SELECT count(*) = 3 FROM information_schema.columns WHERE table_schema = "
+                        "current_schema() AND table_name = 'schema_migrations' AND "
+                        "((column_name = 'version' AND data_type = 'integer') OR (column_name IN "
+                        "('description', 'applied_at') AND data_type = 'text'))")
+                        .flag(0, 0);
+  if (!ours) {
+    throw UsageError(fmt::format(
+        "results store {} is not a raygate store: its table schema_migrations is another "
+        "program's; give raygate a database of its own",
+        location()));
+  }
   return static_cast<int>(
       exec("SELECT coalesce(max(version), 0) FROM schema_migrations").integer(0, 0));
+}
+
+bool PgConnection::has_table(const std::string& name) {
+  return exec("SELECT to_regclass($1::text) IS NOT NULL", PgParams().text(name)).flag(0, 0);
 }
 
 }  // namespace raygate

@@ -94,6 +94,7 @@ class PgConnection final : public SqlDatabase {
   void rollback() noexcept override;
   void lock_schema() override;
   int schema_version() override;
+  bool has_table(const std::string& name) override;
   void set_schema_version(int) override {}  // the row in schema_migrations says it
   pg_conn* get() const { return conn_.get(); }
 

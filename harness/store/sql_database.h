@@ -92,8 +92,11 @@ class SqlDatabase {
   // In a migration's transaction, before the version is read: makes other processes migrating
   // the same store wait until this transaction ends.
   virtual void lock_schema() = 0;
-  // The number of the last migration applied; 0 for a store with no raygate tables.
+  // The number of the last migration applied; 0 for a store with no raygate tables. A UsageError
+  // when the table it is read from is another program's.
   virtual int schema_version() = 0;
+  // Whether the database has a table of that name, whoever made it.
+  virtual bool has_table(const std::string& name) = 0;
   // Records `version` where schema_version() reads it (schema_migrations holds a row per
   // migration in both dialects; SQLite also keeps the number in the file's header).
   virtual void set_schema_version(int version) = 0;

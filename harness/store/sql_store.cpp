@@ -231,6 +231,7 @@ std::unique_ptr<ResultsStore> open_sqlite_store(const std::filesystem::path& pat
 std::unique_ptr<ResultsStore> open_postgres_store(const std::string& url, StoreOpen mode) {
   auto db = std::make_unique<PgConnection>(PgConnection::connect(url));
   if (mode == StoreOpen::must_exist && db->schema_version() == 0) {
+    refuse_foreign_tables(*db);
     throw UsageError(
         fmt::format("results store {} has no raygate tables yet; `raygate run --store URL` "
                     "records into it, `raygate import FILE... --store URL` fills it",

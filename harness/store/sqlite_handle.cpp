@@ -271,6 +271,13 @@ int SqliteDb::schema_version() {
   return version;
 }
 
+bool SqliteDb::has_table(const std::string& name) {
+  bool found = false;
+  query("SELECT 1 FROM sqlite_master WHERE type = 'table' AND name = ?1", SqlParams().text(name),
+        [&found](const SqlRow&) { found = true; });
+  return found;
+}
+
 void SqliteDb::set_schema_version(int version) {
   exec(fmt::format("PRAGMA user_version = {}", version));
 }

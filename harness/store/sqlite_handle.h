@@ -56,6 +56,7 @@ class SqliteDb final : public SqlDatabase {
   void rollback() noexcept override;
   void lock_schema() override {}
   int schema_version() override;
+  bool has_table(const std::string& name) override;
   void set_schema_version(int version) override;
 
   sqlite3* get() const { return db_; }

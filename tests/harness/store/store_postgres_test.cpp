@@ -217,6 +217,30 @@ TEST_F(StorePostgres, AnEmptyDatabaseIsAUsageErrorWhenTheStoreMustExist) {
   EXPECT_EQ(raw.text("SELECT to_regclass('documents') IS NULL"), "t");  // nothing created
 }
 
+// A sweep: a database holding another program's tables of raygate's names gave SQL's words
+// ("COALESCE types text and integer cannot be matched", "relation documents already exists"),
+// exit 3. It is the user's to fix: a UsageError, and nothing is written.
+TEST_F(StorePostgres, ADatabaseWithAnotherProgramsTablesIsNotAStore) {
+  RawConnection(url).text("CREATE TABLE documents (x int)");
+  for (StoreOpen mode : {StoreOpen::create_if_missing, StoreOpen::must_exist}) {
+    try {
+      open_store(url, mode);
+      ADD_FAILURE() << "another program's database was taken for a store";
+    } catch (const UsageError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("not a raygate store"));
+      EXPECT_THAT(e.what(), Not(HasSubstr(PostgresServer::kPassword)));
+    }
+  }
+  RawConnection(url).text("CREATE TABLE schema_migrations (version text)");
+  try {
+    open_store(url);
+    ADD_FAILURE() << "another program's schema_migrations was read as raygate's";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("its table schema_migrations is another program's"));
+  }
+  EXPECT_EQ(RawConnection(url).text("SELECT to_regclass('scene_results') IS NULL"), "t");
+}
+
 TEST(StorePostgresErrors, AMalformedUrlIsAUsageErrorWithoutThePassword) {
   for (const std::string bad :
        {"postgresql://ci:s3cret@[::1/raygate", "postgresql://ci:s3cret@db/raygate?no_such_option=1",

@@ -269,6 +269,21 @@ TEST(StoreSqlite, AFileThatIsNoStoreIsRefusedWhenItMustExistAndLeftUntouched) {
   EXPECT_EQ(Raw(dir.path() / "other.db").text("SELECT count(*) FROM sqlite_master"), "1");
 }
 
+// Another program's SQLite database with a table of raygate's names is not made a store by a
+// command that writes either (import stopped in SQL's words, "table documents already exists").
+TEST(StoreSqlite, ADatabaseWithAnotherProgramsTablesIsNotMadeAStore) {
+  TempDir dir;
+  const auto path = dir.path() / "other.db";
+  Raw(path).exec("CREATE TABLE documents (x TEXT)");
+  try {
+    open_store(path.string());
+    FAIL() << "another program's database was made a store";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), HasSubstr("not a raygate store: it has a table 'documents'"));
+  }
+  EXPECT_EQ(Raw(path).text("SELECT count(*) FROM sqlite_master"), "1");
+}
+
 // SQLite keeps what a hand edit gives a column: text or an impossible ratio read back would
 // change what history and alert say (a ratio of 'abc' hid a +50% regression; a sweep).
 TEST(StoreSqlite, NumbersEditedByHandAreADamagedStoreNotAnotherVerdict) {

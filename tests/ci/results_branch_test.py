@@ -55,12 +55,31 @@ def main():
         assert tracer_repo.git(job_b, "status", "--porcelain") == "", "the checkout changed"
         print("ok   a push that lost the race was retried on top of the other job's: both documents kept")
 
-        # pull: the branch's documents go through raygate import (which refuses these stand-ins
-        # as results documents: the command and its files are what this checks).
+        # pull: the branch's documents go through raygate import, which refuses these stand-ins
+        # as results documents; none imported is exit 3, each named.
         r = subprocess.run([str(script), "pull", str(tmp / "store.db")], cwd=job_b, env=env,
                            capture_output=True, text=True)
-        assert r.returncode != 0 and "not a raygate results document" in r.stderr, r.stdout + r.stderr
+        assert r.returncode == 3, r.stdout + r.stderr
+        assert r.stderr.count("warning: skipped results/") == 2, r.stderr
+        assert "not a raygate results document" in r.stderr, r.stderr
         print("ok   pull hands every document of the branch to raygate import")
+
+        # A sweep: one unreadable file in the branch made import (all or nothing) take none, and
+        # the history started empty on every later push. The readable ones are imported.
+        real = source / "tests" / "harness" / "store" / "fixtures" / "main-60ebc9f-run.json"
+        garbage = tmp / "garbage.json"
+        garbage.write_text("garbage{")
+        run(job_b, str(script), "push", str(real), env=env)
+        run(job_b, str(script), "push", str(garbage), env=env)
+        r = subprocess.run([str(script), "pull", str(tmp / "store.db")], cwd=job_b, env=env,
+                           capture_output=True, text=True)
+        assert r.returncode == 0, r.stdout + r.stderr
+        assert "1 of 4 documents" in r.stdout, r.stdout
+        assert r.stderr.count("warning: skipped results/") == 3 and "not JSON" in r.stderr, r.stderr
+        stored = subprocess.run([str(raygate), "export", "--store", str(tmp / "store.db"), "-o",
+                                 str(tmp / "exported")], capture_output=True, text=True)
+        assert stored.returncode == 0 and len(list((tmp / "exported").iterdir())) == 1, stored.stderr
+        print("ok   an unreadable document in the branch is skipped and named; the others are imported")
     return 0
 
 

@@ -8,6 +8,7 @@
 
 #include "core/format.h"
 #include "core/utf8.h"
+#include "gate/memory_gate.h"
 #include "report/ratio_interval_text.h"
 
 namespace raygate::report {
@@ -64,6 +65,11 @@ std::string failure_words(const SceneView& view) {
     }
   }
   if (view.image_outcome == GateOutcome::fail) what.push_back("image");
+  // Said as speed is: "balls failed" for a scene as fast with three times the memory (a sweep).
+  if (view.gate.memory == ChangeVerdict::regressed) {
+    const std::optional<MemorySummary> memory = scene_memory(*view.result);
+    what.push_back(memory ? "memory " + signed_percent(memory->change) : "memory");
+  }
   if (what.empty()) what.push_back("failed");
   return fmt::format("{} {}", view.gate.id, fmt::join(what, ", "));
 }

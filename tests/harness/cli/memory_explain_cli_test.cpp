@@ -91,6 +91,10 @@ TEST_F(MemoryExplainCli, FiftyMoreMebibytesFailTheMemoryGateOnEveryScene) {
   for (const nlohmann::json& scene : report.at("scenes")) {
     EXPECT_EQ(scene.at("memory").at("verdict"), "REGRESSED") << scene.dump();
   }
+  // The summary says what failed, as for speed: "tetra memory +2900.0%", not "tetra failed".
+  const CliRun markdown = run_raygate({"report", out_.string(), "--format", "markdown"}, dir_);
+  EXPECT_TRUE(has(markdown.out, "tetra memory +")) << markdown.out;
+  EXPECT_FALSE(has(markdown.out, "tetra failed")) << markdown.out;
 }
 
 TEST_F(MemoryExplainCli, AaComparePassesMemoryOnEveryScene) {

@@ -28,6 +28,7 @@ std::string first_line(const std::string& text) {
 
 OIIO::ImageBuf load_rgb(const std::filesystem::path& path) {
   OIIO::ImageBuf buf = current_image(path);
+  if (std::string problem = oversized_image(buf, path); !problem.empty()) throw UsageError(problem);
   if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
     throw UsageError(path.string() + ": cannot read image: " + first_line(buf.geterror()));
   }
@@ -76,14 +77,7 @@ NonFinite nonfinite_pixels(const OIIO::ImageBuf& rgb) {
 
 std::string unreadable_image(const std::filesystem::path& image) {
   OIIO::ImageBuf buf = current_image(image);
-  // The header first: a 1 MB PNG declaring 20000x20000 pixels took 67 s and gigabytes to decode
-  // before its size was compared (a sweep). No render raygate compares comes near the limit.
-  constexpr long long kMaxPixels = 1LL << 27;  // 134 million: 11585 pixels square
-  const OIIO::ImageSpec& header = buf.spec();
-  if (static_cast<long long>(header.width) * header.height > kMaxPixels) {
-    return fmt::format("{}: declares {}x{} pixels, more than raygate decodes ({} million)",
-                       image.string(), header.width, header.height, kMaxPixels / 1000000);
-  }
+  if (std::string problem = oversized_image(buf, image); !problem.empty()) return problem;
   if (buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) return {};
   return image.string() + ": cannot read image: " + first_line(buf.geterror());
 }

@@ -7,9 +7,15 @@
 #include <OpenImageIO/imagebuf.h>
 
 #include <filesystem>
+#include <string>
 
 namespace raygate {
 
 OIIO_NAMESPACE::ImageBuf current_image(const std::filesystem::path& path);
+
+// Why `buf` (opened by current_image, not yet read) is not decoded: its header declares more
+// pixels than any render raygate compares (134 million; a 1 MB PNG of 20000x20000 took 67 s and
+// gigabytes, one of 60000x60000 asked for 43 GB). "" when it may be.
+std::string oversized_image(OIIO_NAMESPACE::ImageBuf& buf, const std::filesystem::path& path);
 
 }  // namespace raygate

@@ -52,6 +52,7 @@ const std::vector<int>& default_tile_sides() {
 
 RgbImage read_rgb_image(const std::filesystem::path& path) {
   OIIO::ImageBuf buf = current_image(path);
+  if (std::string problem = oversized_image(buf, path); !problem.empty()) throw UsageError(problem);
   if (!buf.read(0, 0, true, OIIO::TypeDesc::FLOAT)) {
     throw UsageError(path.string() + ": cannot read image: " + buf.geterror());
   }

@@ -6,8 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 
 #include "compare/golden.h"
+#include "compare/noisy_image_files.h"
 #include "core/error.h"
 #include "core/fs.h"
 
@@ -115,6 +117,18 @@ TEST(ImageCompare, AnImageDeclaringHundredsOfMillionsOfPixelsIsRefusedByItsHeade
   EXPECT_NE(why.find("huge.ppm: declares 20000x20000 pixels, more than raygate decodes"),
             std::string::npos)
       << why;
+  // Every reader of pixels: bless from a run (a sweep's 8 KB PNG of 60000x60000 asked for 43 GB
+  // first), Monte Carlo statistics, and the comparison itself.
+  for (const auto& read : std::vector<std::function<void()>>{
+           [&] { read_rgb_image(dir.path() / "huge.ppm"); },
+           [&] { compare_images(dir.path() / "huge.ppm", dir.path() / "huge.ppm", {}); }}) {
+    try {
+      read();
+      ADD_FAILURE() << "decoded";
+    } catch (const UsageError& e) {
+      EXPECT_NE(std::string(e.what()).find("more than raygate decodes"), std::string::npos);
+    }
+  }
 }
 
 TEST(ImageCompare, EvidenceImagesAreWritten) {

@@ -8,8 +8,10 @@
 
 #include "core/error.h"
 #include "core/json_reader.h"
+#include "core/sanitize.h"
 #include "core/sha256.h"
 #include "core/utf8.h"
+#include "compare/image_verdict.h"
 #include "gate/memory_gate.h"
 #include "results/series.h"
 
@@ -271,6 +273,21 @@ void check_history_row(const HistoryRow& row, const std::string& location) {
   check("image_max_error", row.image_max_error, false);
   check("image_rms_error", row.image_rms_error, false);
   check("peak_memory_kib", row.peak_memory_kib, false);
+  // Words are checked as numbers are: `<script>` edited into image_verdict was shown by history as
+  // the verdict (a sweep).
+  const auto word = [&](const char* column, const std::string& value, bool known) {
+    if (known) return;
+    throw InfraError(fmt::format(
+        "results store {}: document {}, scene {}: {} is '{}', a word no document holds; the store "
+        "is damaged (re-import the document, or remove it)",
+        location, row.document_id, row.scene_id, column, terminal_line(value.substr(0, 40))));
+  };
+  word("status", row.status, parse_scene_status(row.status).has_value());
+  word("role", row.role, parse_role(row.role).has_value());
+  word("image_verdict", row.image_verdict,
+       row.image_verdict.empty() || parse_image_verdict(row.image_verdict).has_value());
+  word("memory_verdict", row.memory_verdict,
+       row.memory_verdict.empty() || change_verdict_named(row.memory_verdict).has_value());
 }
 
 nlohmann::json parse_stored_document(const std::string& text, std::int64_t id,

@@ -304,6 +304,21 @@ TEST(StoreSqlite, NumbersEditedByHandAreADamagedStoreNotAnotherVerdict) {
   }
   Raw(path).exec("UPDATE scene_results SET normalized_ratio = NULL WHERE scene_id = 'gears'");
   EXPECT_NO_THROW(open_store(path.string(), StoreOpen::must_exist)->history({}));
+  // Words as numbers: `<script>` as the image verdict was shown by history as the verdict.
+  for (const char* edit : {"UPDATE scene_results SET image_verdict = '<script>'",
+                           "UPDATE scene_results SET status = 'fine'",
+                           "UPDATE scene_results SET memory_verdict = 'GREAT'"}) {
+    const auto fresh = dir.path() / "words.db";
+    std::filesystem::remove(fresh);
+    open_store(fresh.string())->add(make_document(two_scenes(1)), "main");
+    Raw(fresh).exec(edit);
+    try {
+      open_store(fresh.string(), StoreOpen::must_exist)->history({});
+      ADD_FAILURE() << edit << ": read";
+    } catch (const InfraError& e) {
+      EXPECT_THAT(e.what(), HasSubstr("a word no document holds; the store is damaged"));
+    }
+  }
 }
 
 // A document's text is what its content_sha256 was taken of: one document's text copied into

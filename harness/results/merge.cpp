@@ -179,6 +179,23 @@ std::vector<Shard> checked_shards(const std::vector<MergeInput>& inputs) {
   return shards;
 }
 
+// With equal costs the split is known from the selection alone (round-robin in suite order): a
+// scene in a shard the split did not give it is a shard index edited by hand, and merged silently
+// before (two shards' documents with their indexes swapped). Split by another document's times,
+// the costs are not recorded, so only overlaps and gaps are found.
+void check_split(const Shard& shard, std::size_t position) {
+  const ShardRecord& record = shard.record;
+  if (record.cost_basis != "equal") return;
+  const std::vector<long long> equal(record.suite_scenes.size(), 1);
+  const std::vector<int> split = assign_shards(equal, record.spec.count);
+  if (position >= split.size() || split[position] == record.spec.index) return;
+  throw UsageError(
+      fmt::format("merge: {}: scene '{}' belongs to shard {}/{} of the split, not to {} "
+                  "(settings.shard.index edited?)",
+                  origin(shard), record.suite_scenes[position], split[position], record.spec.count,
+                  to_string(record.spec)));
+}
+
 // Scenes of every shard, each once, in suite order (shard order where a document has no list).
 std::vector<SceneResult> collect_scenes(const std::vector<Shard>& shards) {
   const std::vector<std::string>& suite = shards.front().record.suite_scenes;
@@ -200,6 +217,7 @@ std::vector<SceneResult> collect_scenes(const std::vector<Shard>& shards) {
                         "overlap; were they split from different selections?",
                         id, origin(*it->second), origin(shard)));
       }
+      if (!suite.empty()) check_split(shard, static_cast<std::size_t>(at - suite.begin()));
       positioned.emplace_back(suite.empty() ? positioned.size() : std::size_t(at - suite.begin()),
                               &scene);
     }

@@ -208,6 +208,27 @@ TEST(Merge, RefusesOverlappingAndRepeatedShards) {
       << merge_error(stranger);
 }
 
+// A sweep: the two shards' documents with their indexes swapped (label and settings.shard.index
+// both) merged silently. With equal costs the split is known, so a scene in the wrong shard is
+// refused, naming the shard the split gave it.
+TEST(Merge, ShardIndexesSwappedByHandAreRefused) {
+  std::vector<MergeInput> swapped = two_shards();
+  for (MergeInput& input : swapped) {
+    ShardRecord& record = *input.document.settings.shard;
+    record.spec.index = 3 - record.spec.index;
+    input.document.shard = to_string(record.spec);
+  }
+  const std::string message = merge_error(swapped);
+  EXPECT_NE(message.find("merge: b.json: scene 'gears' belongs to shard 2/2 of the split, not to "
+                         "1/2 (settings.shard.index edited?)"),
+            std::string::npos)
+      << message;
+  // Split by another document's times, the costs are not recorded: merged as before.
+  std::vector<MergeInput> by_times = two_shards();
+  for (MergeInput& input : by_times) input.document.settings.shard->cost_basis = "sha256:ab";
+  EXPECT_EQ(merge_error(by_times), "no error");
+}
+
 TEST(Merge, MissingShardIsRefusedUnlessPartialIsAllowed) {
   const std::vector<MergeInput> one{{"a.json", shard_document(1, 3)},
                                     {"c.json", shard_document(3, 3)}};

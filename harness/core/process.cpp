@@ -144,6 +144,9 @@ std::string ProcessResult::describe() const {
       break;
     case ProcessOutcome::timed_out:
       out << "timed out after " << std::fixed << std::setprecision(1) << wall_seconds << " s";
+      // The seconds past the limit are the grace a process gets after SIGTERM (a sweep read 22 s
+      // for a 20 s limit as a wrong clock).
+      if (signal == SIGKILL) out << " (it ignored SIGTERM at the limit and was killed)";
       break;
     case ProcessOutcome::spawn_failed: out << "could not start: " << spawn_error; break;
   }

@@ -92,6 +92,10 @@ TEST(Process, IgnoringSigtermStillEndsAfterTheGrace) {
   // It shrugged off TERM and was ended by KILL after the grace. (Its CPU seconds, asserted here
   // before, depend on how busy the machine is: at load 12 a spinning child got under 0.1 s.)
   EXPECT_EQ(r.signal, SIGKILL);
+  // Said, so the seconds past the limit (the grace) do not read as a wrong clock (a sweep).
+  EXPECT_NE(r.describe().find("(it ignored SIGTERM at the limit and was killed)"),
+            std::string::npos)
+      << r.describe();
 }
 
 // The log keeps its start and, after a note, its last 64 KiB from a line's start: a tracer

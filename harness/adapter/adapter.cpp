@@ -388,7 +388,7 @@ Adapter parse_adapter(std::string_view text, const std::string& origin) {
 }
 
 Adapter load_adapter(const std::filesystem::path& path) {
-  return parse_adapter(read_file(path), path.string());
+  return parse_adapter(read_json_text(path), path.string());
 }
 
 std::string adapter_hash(const Adapter& adapter) { return sha256_hex(adapter.canonical); }

@@ -217,8 +217,20 @@ Json parse_json_input(std::string_view text, const std::string& origin) {
   }
 }
 
+std::string read_json_text(const std::filesystem::path& file) {
+  constexpr std::uintmax_t kMaxBytes = std::uintmax_t{256} << 20;
+  std::error_code error;
+  const std::uintmax_t bytes = std::filesystem::file_size(file, error);
+  if (!error && bytes > kMaxBytes) {
+    throw UsageError(file.string() + ": is " + std::to_string(bytes >> 20) +
+                     " MiB; raygate reads JSON files of at most 256 MiB (a results document of "
+                     "13 scenes is a few MB)");
+  }
+  return read_file(file);
+}
+
 Json read_json_file(const std::filesystem::path& file) {
-  return parse_json_input(read_file(file), file.string());
+  return parse_json_input(read_json_text(file), file.string());
 }
 
 }  // namespace raygate

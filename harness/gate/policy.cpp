@@ -95,7 +95,7 @@ GatePolicy parse_policy(std::string_view text, const std::string& origin) {
 GatePolicy load_policy(const std::filesystem::path& path) {
   std::string text;
   try {
-    text = read_file(path);
+    text = read_json_text(path);
   } catch (const UsageError& e) {  // "/x: cannot open" said nothing of which file it was
     throw UsageError(std::string("the policy file (--policy) ") + e.what());
   }

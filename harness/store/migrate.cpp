@@ -149,11 +149,26 @@ void apply(SqlDatabase& db, const Migration& migration) {
 void refuse_foreign_tables(SqlDatabase& db) {
   for (const TableShape& table : store_tables()) {
     const std::string& name = table.name;
-    if (!db.has_table(name)) continue;
+    // The version read after the table: a raygate creating the store commits both at once.
+    if (!db.has_table(name) || db.schema_version() != 0) continue;
     throw UsageError(fmt::format(
         "results store {} is not a raygate store: it has a table '{}' that raygate did not "
         "make (another program's database?); give raygate a database of its own",
         db.location(), name));
+  }
+}
+
+void check_store_tables(SqlDatabase& db) {
+  const int found = db.schema_version();
+  if (found == 0) return refuse_foreign_tables(db);
+  // A schema version with a table it brought missing is not a raygate store either (a database
+  // whose user_version its own program set: "no such table: scene_results", exit 3; a sweep).
+  for (const TableShape& table : store_tables()) {
+    if (created_by(table) > found || db.has_table(table.name)) continue;
+    throw UsageError(fmt::format(
+        "results store {} is not a raygate store: its schema version is {}, but it has no table "
+        "'{}'; give raygate a database of its own",
+        db.location(), found, table.name));
   }
 }
 
@@ -168,6 +183,7 @@ int migrate(SqlDatabase& db, std::span<const Migration> migrations) {
                     "knows ({}); use a newer raygate",
                     db.location(), found, known));
   }
+  check_store_tables(db);
   for (const Migration& migration : migrations) {
     if (migration.version > found) apply(db, migration);
   }

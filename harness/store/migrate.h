@@ -21,6 +21,9 @@ int schema_version(SqlDatabase& db);
 // another program's database, not a store to create or read.
 void refuse_foreign_tables(SqlDatabase& db);
 
+// The same, and a UsageError when the schema version names tables the database does not have.
+void check_store_tables(SqlDatabase& db);
+
 // Applies the migrations newer than the store's version and returns the resulting version.
 // A store newer than `migrations` is a UsageError (this raygate is too old to write it).
 int migrate(SqlDatabase& db, std::span<const Migration> migrations = store_migrations());

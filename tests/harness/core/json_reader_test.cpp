@@ -74,6 +74,24 @@ TEST(JsonReader, NestingPastAHundredAndTwentyEightLevelsIsRefusedWhereItIs) {
   EXPECT_NE(refusal(nested(300000)).find("nested more than 128 levels deep"), std::string::npos);
 }
 
+// A sweep: an 8 GB file of NULs given as a results document was read whole (17 GB of memory)
+// before it was found not JSON. Past 256 MiB a JSON input is refused by its size, unread.
+TEST(JsonReader, AFileOfMoreThan256MiBIsRefusedBeforeItIsRead) {
+  TempDir dir;
+  const auto sparse = dir.path() / "sparse.json";
+  write_file_atomically(sparse, "");
+  std::filesystem::resize_file(sparse, std::uintmax_t{8} << 30);  // no blocks: a hole
+  try {
+    read_json_file(sparse);
+    FAIL() << "read";
+  } catch (const UsageError& e) {
+    EXPECT_NE(std::string(e.what()).find("sparse.json: is 8192 MiB; raygate reads JSON files of "
+                                         "at most 256 MiB"),
+              std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(JsonReader, ASyntaxErrorSaysWhereAndIsAUsageError) {
   const std::string message = refusal("{\n  \"a\": 1,\n  \"b\" 2\n}");
   EXPECT_EQ(message.rfind("in.json:3:7: not JSON: syntax error while parsing object separator", 0),

@@ -282,6 +282,24 @@ TEST(StoreSqlite, ADatabaseWithAnotherProgramsTablesIsNotMadeAStore) {
     EXPECT_THAT(e.what(), HasSubstr("not a raygate store: it has a table 'documents'"));
   }
   EXPECT_EQ(Raw(path).text("SELECT count(*) FROM sqlite_master"), "1");
+  EXPECT_EQ(Raw(path).text("PRAGMA journal_mode"), "delete");  // not switched to WAL (a sweep)
+  // Its own schema_migrations, or a user_version naming tables it lacks: refused the same way.
+  for (const std::string& setup :
+       {std::string("CREATE TABLE schema_migrations (x)"),
+        std::string("CREATE TABLE documents (x); PRAGMA user_version = 3")}) {
+    const auto other = dir.path() / "other2.db";
+    std::filesystem::remove(other);
+    Raw(other).exec(setup);
+    for (StoreOpen mode : {StoreOpen::create_if_missing, StoreOpen::must_exist}) {
+      try {
+        open_store(other.string(), mode)->history({});
+        ADD_FAILURE() << setup << ": taken for a store";
+      } catch (const UsageError& e) {
+        EXPECT_THAT(e.what(), HasSubstr("not a raygate store")) << setup;
+      }
+    }
+    EXPECT_EQ(Raw(other).text("PRAGMA journal_mode"), "delete") << setup;
+  }
 }
 
 // SQLite keeps what a hand edit gives a column: text or an impossible ratio read back would

@@ -248,7 +248,9 @@ void check_ratio(const JsonField& r) {
   const std::int64_t rounds = integer(r.member("rounds"), 0, kMaxCount);
   // Null is a ratio of no rounds: read back as 0, one with rounds would print as 0.000 beside
   // its own interval.
-  const auto ratio = number_or_null(r.member("normalized_ratio"), 0.0, kInf);
+  // At most kMaxMeasure, as the store checks what it reads back: 1e308 was imported, and every
+  // later history then called the store damaged (a sweep).
+  const auto ratio = number_or_null(r.member("normalized_ratio"), 0.0, kMaxMeasure);
   if (!ratio && rounds > 0) {
     r.member("normalized_ratio").fail(fmt::format("is null, but {} rounds measured it", rounds));
   }
@@ -257,7 +259,7 @@ void check_ratio(const JsonField& r) {
   if (ratio && *ratio == 0.0 && rounds > 0) {
     r.member("normalized_ratio").fail("is 0: a ratio of two measured times is above 0");
   }
-  const auto [lower, upper] = check_interval(r.member("ratio_interval"), 0.0, kInf);
+  const auto [lower, upper] = check_interval(r.member("ratio_interval"), 0.0, kMaxMeasure);
   const double slack = 1e-9 * (1.0 + (ratio ? *ratio : 0.0));  // printed and read as decimals
   if (ratio && lower && upper && (*ratio < *lower - slack || *ratio > *upper + slack)) {
     r.member("normalized_ratio")

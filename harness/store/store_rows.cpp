@@ -5,6 +5,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <limits>
 
 #include "core/error.h"
 #include "core/json_reader.h"
@@ -253,25 +254,26 @@ std::string short_ref_name(const std::string& ref_name) {
 }
 
 void check_history_row(const HistoryRow& row, const std::string& location) {
-  constexpr double kMaxStored = 1e18;  // as results_check's kMaxMeasure
   // Above 0 where the value is a measured time or a ratio of two; at least 0 where a document may
   // hold 0 (an interval's end, an image error, an unmeasured median).
-  const auto check = [&](const char* column, const std::optional<double>& value, bool positive) {
+  // An image's error has no bound but a double's: a pixel of 1e20 is a real (broken) render.
+  const auto check = [&](const char* column, const std::optional<double>& value, bool positive,
+                         double most = 1e18) {  // results_check's kMaxMeasure
     if (!value) return;
     const bool sense =
-        std::isfinite(*value) && *value <= kMaxStored && (positive ? *value > 0.0 : *value >= 0.0);
+        std::isfinite(*value) && *value <= most && (positive ? *value > 0.0 : *value >= 0.0);
     if (sense) return;
     throw InfraError(fmt::format(
         "results store {}: document {}, scene {}: {} is {:.6g}, which no measurement gives; the "
-        "store is damaged (re-import the document, or remove it)",
+        "store is damaged (rebuild it: raygate import its results documents into a new store)",
         location, row.document_id, row.scene_id, column, *value));
   };
   check("normalized_ratio", row.ratio, true);
   check("ratio_lower", row.ratio_lower, false);
   check("ratio_upper", row.ratio_upper, false);
   check("baseline_median_seconds", row.baseline_median_seconds, false);
-  check("image_max_error", row.image_max_error, false);
-  check("image_rms_error", row.image_rms_error, false);
+  check("image_max_error", row.image_max_error, false, std::numeric_limits<double>::max());
+  check("image_rms_error", row.image_rms_error, false, std::numeric_limits<double>::max());
   check("peak_memory_kib", row.peak_memory_kib, false);
   // Words are checked as numbers are: `<script>` edited into image_verdict was shown by history as
   // the verdict (a sweep).
@@ -279,7 +281,7 @@ void check_history_row(const HistoryRow& row, const std::string& location) {
     if (known) return;
     throw InfraError(fmt::format(
         "results store {}: document {}, scene {}: {} is '{}', a word no document holds; the store "
-        "is damaged (re-import the document, or remove it)",
+        "is damaged (rebuild it: raygate import its results documents into a new store)",
         location, row.document_id, row.scene_id, column, terminal_line(value.substr(0, 40))));
   };
   word("status", row.status, parse_scene_status(row.status).has_value());

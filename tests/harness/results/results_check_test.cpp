@@ -117,6 +117,13 @@ const std::vector<BadDocument>& bad_documents() {
       {"a ratio of 0", false,
        [](json& j) { j["scenes"][0]["ratios"]["tracer"]["normalized_ratio"] = 0.0; },
        "$.scenes[0].ratios.tracer.normalized_ratio", "is 0"},
+      // Sweep 17: 1e308 was imported, and every later history called the store damaged.
+      {"a ratio past what the store reads back", false,
+       [](json& j) {
+         j["scenes"][0]["ratios"]["tracer"]["normalized_ratio"] = 1e308;
+         j["scenes"][0]["ratios"]["tracer"]["ratio_interval"] = {{"lower", 1.0}, {"upper", 1e308}};
+       },
+       "$.scenes[0].ratios.tracer.normalized_ratio", "out of range (from 0 to 1e+18)"},
       {"a ratio outside its interval", false,
        [](json& j) {
          j["scenes"][0]["ratios"]["tracer"]["ratio_interval"] = {{"lower", 3.0}, {"upper", 4.0}};

@@ -6,6 +6,8 @@
 
 #include <fmt/core.h>
 
+#include <cmath>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -13,13 +15,25 @@
 
 namespace raygate::writers {
 
+// A value computed from finite input that no longer is (a sphere at 1e308 of radius 1e308 gave
+// vertices of "inf", written with exit 0; a sweep): the file could not be read back.
+inline double finite(double value) {
+  if (!std::isfinite(value)) {
+    throw std::invalid_argument(
+        "a value overflows once converted (coordinates or sizes near 1e308?): the file would "
+        "hold \"" +
+        fmt::format("{}", value) + "\"");
+  }
+  return value + 0.0;
+}
+
 // 0.078 -> "0.078", 100000 -> "100000", 0.1 * 0.2 -> "0.02", 1e-16 -> "1e-16"; -0 -> "0".
-inline std::string num(double value) { return fmt::format("{:.10g}", value + 0.0); }
+inline std::string num(double value) { return fmt::format("{:.10g}", finite(value)); }
 
 // The shortest text that reads back as exactly this double (up to 17 digits), for values
 // whose relations must survive the round trip: POV-Ray checks that the camera's vectors are
 // perpendicular to about 1e-10, which 10 digits do not always keep.
-inline std::string exact(double value) { return fmt::format("{}", value + 0.0); }
+inline std::string exact(double value) { return fmt::format("{}", finite(value)); }
 
 // The three components joined by `separator` (", " for POV-Ray, " " elsewhere), each written
 // by `format` (num or exact).

@@ -72,6 +72,21 @@ TEST(ScenesConvertCli, MalformedSceneIsExitTwoWithItsLocation) {
   EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.pov"));
 }
 
+// A sweep: a sphere at 1e308 of radius 1e308 was tessellated into vertices of "inf", written
+// with exit 0. A value that overflows once converted is refused and nothing is written.
+TEST(ScenesConvertCli, AValueThatOverflowsOnceConvertedIsExitTwoAndWritesNothing) {
+  TempDir dir;
+  write(dir, "huge.nff",
+        "v\nfrom 0 0 10\nat 0 0 0\nup 0 1 0\nangle 45\nhither 1\nresolution 8 8\n"
+        "f 1 1 1 1 0 0 0 0\ns 1e308 1e308 1e308 1e308\n");
+  const CliRun r =
+      run_raygate({"scenes", "convert", "huge.nff", "--to", "obj", "-o", "x.obj"}, dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_NE(r.out.find("huge.nff: a value overflows once converted"), std::string::npos) << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.obj"));
+  EXPECT_FALSE(std::filesystem::exists(dir.path() / "x.mtl"));
+}
+
 TEST(ScenesConvertCli, UnknownFormatMissingFileAndBadViewAreExitTwo) {
   TempDir dir;
   write(dir, "in.nff", kScene);

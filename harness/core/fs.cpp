@@ -135,8 +135,19 @@ TempDir::TempDir(std::string_view prefix) {
   }
   std::string pattern = (folder / (std::string(prefix) + "-XXXXXX")).string();
   if (::mkdtemp(pattern.data()) == nullptr) {
-    throw InfraError("cannot create a temporary folder in " + folder.string() + ": " +
-                     system_reason());
+    // A TMPDIR the user named that takes no folder (/proc, a read-only one) is the user's to
+    // change, as one that is missing is; a full disk is not.
+    const int reason = errno;
+    const char* tmpdir = std::getenv("TMPDIR");
+    const bool setting = reason == EACCES || reason == EPERM || reason == EROFS ||
+                         reason == ENOENT || reason == ENOTDIR;
+    const std::string message =
+        "cannot create a temporary folder in " + folder.string() + ": " + system_reason();
+    if (setting && tmpdir != nullptr && *tmpdir != '\0') {
+      throw UsageError("TMPDIR=" + std::string(tmpdir) + ": " + message +
+                       "; raygate's temporary files go there: name a writable folder, or unset it");
+    }
+    throw InfraError(message);
   }
   path_ = pattern;
 }

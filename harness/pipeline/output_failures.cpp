@@ -226,6 +226,15 @@ std::string shortened(const std::filesystem::path& path) {
 }  // namespace
 
 FilesystemFailure filesystem_failure(const std::filesystem::filesystem_error& error) {
+  // A working directory deleted under the shell: every relative path fails in the library's words
+  // ("cannot make absolute path"), and exit 3 read as raygate's failure (a sweep).
+  if (char* cwd = ::getcwd(nullptr, 0); cwd != nullptr) {
+    std::free(cwd);
+  } else if (errno == ENOENT) {
+    return {to_int(ExitCode::usage),
+            "the working directory no longer exists (it was deleted after the shell entered "
+            "it): cd to a folder that exists and run raygate again"};
+  }
   if (error.code() == std::errc::filename_too_long) {
     return {to_int(ExitCode::usage),
             "a path is too long for the file system (a name has at most 255 bytes): " +

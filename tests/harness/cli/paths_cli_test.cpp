@@ -137,5 +137,26 @@ TEST(PathsCli, ImportRefusesAShortShaThatIsNotTheStartOfTheSha) {
   EXPECT_EQ(run_raygate({"report", "r.json"}, dir).exit_code, 2);
 }
 
+// Sweep 17: a working directory deleted under the shell gave the library's "cannot make
+// absolute path", exit 3; a TMPDIR that takes no folder (/proc) exit 3, where a missing one is 2.
+// Both are the user's to change: exit 2, said in words.
+TEST(PathsCli, ADeletedWorkingDirectoryAndAnUnusableTmpdirAreTheUsers) {
+  TempDir dir;
+  ProcessSpec spec = raygate_spec({}, dir);
+  spec.argv = {"sh", "-c", "mkdir gone && cd gone && rmdir ../gone && exec \"$0\" gate r.json",
+               RAYGATE_EXE};
+  const ProcessResult gone = run_process(spec);
+  const std::string said = read_file(spec.stdout_path);
+  EXPECT_EQ(gone.exit_code, 2) << said;
+  EXPECT_NE(said.find("the working directory no longer exists"), std::string::npos) << said;
+
+  const CliStreams tmp =
+      run_raygate_streams({"doctor", "--rounds", "2"}, dir, {{"TMPDIR", "/proc"}});
+  EXPECT_EQ(tmp.exit_code, 2) << tmp.err;
+  EXPECT_NE(tmp.err.find("TMPDIR=/proc: cannot create a temporary folder in /proc"),
+            std::string::npos)
+      << tmp.err;
+}
+
 }  // namespace
 }  // namespace raygate::test

@@ -228,6 +228,21 @@ std::optional<Revision> Repository::merge_base(const std::string& a, const std::
 
 std::vector<Revision> Repository::first_parent_history(const std::string& good,
                                                        const std::string& bad) const {
+  try {
+    return walk_first_parents(good, bad);
+  } catch (const InfraError& e) {
+    // A shallow clone's history stops where it was cut: libgit2 said "object not found - no
+    // match for id", exit 3 (a sweep). It is the checkout's depth to change.
+    if (git_repository_is_shallow(repo_.get()) != 1) throw;
+    throw UsageError(fmt::format(
+        "{} is a shallow clone: its history stops before '{}' ({}); fetch the whole history "
+        "(git fetch --unshallow, or fetch-depth: 0 in actions/checkout) and bisect again",
+        where_, good, e.what()));
+  }
+}
+
+std::vector<Revision> Repository::walk_first_parents(const std::string& good,
+                                                     const std::string& bad) const {
   const Revision from = resolve(good);
   const Revision to = resolve(bad);
   if (from.sha == to.sha) return {};

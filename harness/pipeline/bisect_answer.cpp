@@ -85,9 +85,10 @@ std::string answer_text(const BisectResult& result) {
     case BisectOutcome::bad_unmeasurable: return unmeasurable_text(result);
     case BisectOutcome::hidden_by_skips:
       return fmt::format(
-          "the first bad commit is {} or one of the {} commits before it that "
-          "could not be measured",
-          first_bad.short_sha, result.unmeasured);
+          "the first bad commit is {} or one of the {} before it that could not be measured",
+          first_bad.short_sha,
+          result.unmeasured == 1 ? std::string("1 commit")
+                                 : fmt::format("{} commits", result.unmeasured));
     case BisectOutcome::found: break;
   }
   return fmt::format("first bad commit: {} {} ({}, {})", first_bad.sha, first_bad.subject,

@@ -86,6 +86,14 @@ GoldenOutcome run_verification_outcome(const GoldenVerification& v) {
 
 GoldenOutcome verify_goldens(const GoldenOptions& options, ProgressSink& lines) {
   check_golden_options(options);
+  // Said once, not as 13 "MISSING ... create it with bless" lines (a sweep): a mistyped folder.
+  if (std::error_code absent; !options.golden_dir.empty() &&
+                              !std::filesystem::exists(options.golden_dir, absent) && !absent) {
+    throw UsageError("--golden-dir " + options.golden_dir +
+                     " does not exist: no goldens to verify (bless a set there first: raygate "
+                     "golden bless --golden-dir " +
+                     options.golden_dir + ")");
+  }
   if (!options.from_run.empty()) {
     return run_verification_outcome(verify_goldens_from_run(
         from_run_request(options), std::filesystem::path(options.work_dir) / "evidence", lines));

@@ -6,6 +6,8 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+
 #include "checkout/git_fixture.h"
 #include "checkout/repository.h"
 #include "core/error.h"
@@ -88,6 +90,24 @@ TEST_F(CheckoutHistory, GoodMustBeAnAncestorOfBad) {
     EXPECT_THAT(e.what(), ::testing::HasSubstr("is not an ancestor of"));
   }
   EXPECT_THROW(open().first_parent_history(c_, "dev"), UsageError);
+}
+
+// Sweep 17: a bisect in a shallow clone ended in libgit2's "object not found", exit 3. The clone
+// is said to be shallow, with what to do: the user's checkout depth to change.
+TEST_F(CheckoutHistory, AShallowCloneIsSaidToBeShallow) {
+  const std::string origin = repo_.path().string();
+  const std::string shallow = (dir_.path() / "shallow").string();
+  ASSERT_EQ(std::system(("git -C '" + origin + "' tag old " + a_ + " && git clone -q --depth 2 " +
+                         "--no-single-branch 'file://" + origin + "' '" + shallow + "'")
+                            .c_str()),
+            0);
+  try {
+    Repository::open(shallow, dir_.path() / "cache2").first_parent_history("old", "origin/main");
+    FAIL() << "walked a shallow history";
+  } catch (const UsageError& e) {
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("is a shallow clone"));
+    EXPECT_THAT(e.what(), ::testing::HasSubstr("git fetch --unshallow"));
+  }
 }
 
 }  // namespace

@@ -195,6 +195,20 @@ TEST(GoldenCli, BlessKeepsTheSharedWithList) {
   EXPECT_EQ(m.entries.size(), 13u);
 }
 
+// Sweep 17: verify against a folder that does not exist printed 13 "MISSING ... create it with
+// bless" lines; a mistyped folder is said once.
+TEST(GoldenCli, VerifyingAFolderThatDoesNotExistSaysSoOnce) {
+  TempDir dir;
+  const CliRun r = run_raygate({"golden", "verify", "--golden-dir", "typo"}, dir);
+  EXPECT_EQ(r.exit_code, 2) << r.out;
+  EXPECT_EQ(r.out.rfind("raygate: error: --golden-dir typo does not exist: no goldens to "
+                        "verify",
+                        0),
+            0u)
+      << r.out;
+  EXPECT_EQ(r.out.find("MISSING"), std::string::npos) << r.out;
+}
+
 // A sweep: a bless killed after 5 of 13 scenes left those 5 new and 8 old, all labelled with the
 // new baseline. The renders come first and the set is swapped once: a bless that fails on its
 // second scene (as a kill there would end it) leaves the old set, manifest and images, whole.

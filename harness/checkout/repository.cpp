@@ -228,17 +228,16 @@ std::optional<Revision> Repository::merge_base(const std::string& a, const std::
 
 std::vector<Revision> Repository::first_parent_history(const std::string& good,
                                                        const std::string& bad) const {
-  try {
-    return walk_first_parents(good, bad);
-  } catch (const InfraError& e) {
-    // A shallow clone's history stops where it was cut: libgit2 said "object not found - no
-    // match for id", exit 3 (a sweep). It is the checkout's depth to change.
-    if (git_repository_is_shallow(repo_.get()) != 1) throw;
+  // A shallow clone's history stops where it was cut, and libgit2 1.5 walks it into "object not
+  // found" (exit 3; a sweep), leaking in that error path. Bisect needs the whole history: said
+  // before any walk, as the checkout's depth to change.
+  if (git_repository_is_shallow(repo_.get()) == 1) {
     throw UsageError(fmt::format(
-        "{} is a shallow clone: its history stops before '{}' ({}); fetch the whole history "
+        "{} is a shallow clone: bisect needs the whole history between '{}' and '{}'; fetch it "
         "(git fetch --unshallow, or fetch-depth: 0 in actions/checkout) and bisect again",
-        where_, good, e.what()));
+        where_, good, bad));
   }
+  return walk_first_parents(good, bad);
 }
 
 std::vector<Revision> Repository::walk_first_parents(const std::string& good,

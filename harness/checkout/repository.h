@@ -59,7 +59,7 @@ class Repository {
   git::CommitPtr commit_of(const Revision& revision) const;
   // Why `good` is not an ancestor of `bad`, for first_parent_history's message.
   std::string how_unordered(const Revision& good, const Revision& bad) const;
-  // first_parent_history's walk; a shallow clone's missing history is said by its caller.
+  // first_parent_history's walk, in a repository that is not shallow.
   std::vector<Revision> walk_first_parents(const std::string& good, const std::string& bad) const;
 
   git::Library library_;  // declared first: libgit2 must outlive the handles below

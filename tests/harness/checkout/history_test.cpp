@@ -105,7 +105,8 @@ TEST_F(CheckoutHistory, AShallowCloneIsSaidToBeShallow) {
     Repository::open(shallow, dir_.path() / "cache2").first_parent_history("old", "origin/main");
     FAIL() << "walked a shallow history";
   } catch (const UsageError& e) {
-    EXPECT_THAT(e.what(), ::testing::HasSubstr("is a shallow clone"));
+    EXPECT_THAT(e.what(),
+                ::testing::HasSubstr("is a shallow clone: bisect needs the whole history"));
     EXPECT_THAT(e.what(), ::testing::HasSubstr("git fetch --unshallow"));
   }
 }

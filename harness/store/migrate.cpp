@@ -127,7 +127,6 @@ void apply(SqlDatabase& db, const Migration& migration) {
   db.exec_script(kMigrationsTableSql);
   const int current = db.schema_version();
   if (current >= migration.version) return;
-  if (current == 0) refuse_foreign_tables(db);
   const std::string tables = schema_sql(db, migration.version);
   if (!blank(tables)) db.exec_script(tables);
   if (!blank(migration.sql)) db.exec_script(migration.sql);
@@ -147,8 +146,9 @@ void apply(SqlDatabase& db, const Migration& migration) {
 // program's: creating the store there failed in SQL's words ("relation documents already
 // exists", exit 3; a sweep). Said as the user's to fix, before anything is written.
 void refuse_foreign_tables(SqlDatabase& db) {
-  for (const TableShape& table : store_tables()) {
-    const std::string& name = table.name;
+  std::vector<std::string> names{"schema_migrations"};
+  for (const TableShape& table : store_tables()) names.push_back(table.name);
+  for (const std::string& name : names) {
     // The version read after the table: a raygate creating the store commits both at once.
     if (!db.has_table(name) || db.schema_version() != 0) continue;
     throw UsageError(fmt::format(

@@ -216,12 +216,6 @@ std::unique_ptr<ResultsStore> open_sqlite_store(const std::filesystem::path& pat
     }
     // Before the journal mode is set: another program's database is refused untouched (WAL was
     // written into its header first; a sweep).
-    if (existed && db->has_table("schema_migrations") && db->schema_version() == 0) {
-      throw UsageError(fmt::format(
-          "results store {} is not a raygate store: its table schema_migrations is another "
-          "program's; give raygate a database of its own",
-          path.string()));
-    }
     check_store_tables(*db);
     db->configure_for_store();
     return std::make_unique<SqlStore>(std::move(db));
